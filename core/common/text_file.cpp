@@ -1,0 +1,91 @@
+#include "core/common/text_file.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace sightline {
+
+StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) {
+    if (!FileExists(path)) return NotFound(path + ": no such file");
+    return NotFound(path + ": cannot be opened for reading");
+  }
+  std::vector<DataLine> lines;
+  std::string text;
+  int number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    const size_t first = text.find_first_not_of(" \t");
+    if (first == std::string::npos || text[first] == '#') continue;
+    lines.push_back({number, text.substr(first)});
+  }
+  if (in.bad()) return Unavailable(path + ": read error after line " + std::to_string(number));
+  return lines;
+}
+
+std::vector<std::string> SplitFields(const std::string& text) {
+  std::vector<std::string> fields;
+  std::string current;
+  for (char c : text) {
+    if (c == ' ' || c == '\t' || c == ',' || c == '\r') {
+      if (!current.empty()) fields.push_back(std::move(current));
+      current.clear();
+    } else {
+      current.push_back(c);
+    }
+  }
+  if (!current.empty()) fields.push_back(std::move(current));
+  return fields;
+}
+
+StatusOr<std::vector<double>> ParseNumbers(const DataLine& line, size_t min_count,
+                                           const std::string& path) {
+  const std::vector<std::string> fields = SplitFields(line.text);
+  const std::string where = path + " line " + std::to_string(line.number);
+  if (fields.size() < min_count) {
+    return ParseError(where + ": expected " + std::to_string(min_count) + " numbers, found " +
+                      std::to_string(fields.size()) + " (truncated line?)");
+  }
+  std::vector<double> values;
+  values.reserve(fields.size());
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const char* begin = fields[i].c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (end == begin || *end != '\0') {
+      return ParseError(where + ": field " + std::to_string(i + 1) + " '" + fields[i] +
+                        "' is not a number");
+    }
+    if (!std::isfinite(v)) {
+      return ParseError(where + ": field " + std::to_string(i + 1) + " is " + fields[i] +
+                        " (not finite)");
+    }
+    values.push_back(v);
+  }
+  return values;
+}
+
+bool FileExists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+bool DirectoryExists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_directory(path, ec);
+}
+
+std::string JoinPath(const std::string& a, const std::string& b) {
+  if (a.empty()) return b;
+  if (a.back() == '/') return a + b;
+  return a + "/" + b;
+}
+
+}  // namespace sightline
