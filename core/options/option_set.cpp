@@ -1,1 +1,198 @@
 #include "core/options/option_set.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/common/json_writer.h"
+
+namespace sightline {
+
+Status OptionSet::Declare(const OptionSpec& spec) {
+  if (spec.key.empty()) return InvalidArgument("an option has an empty key");
+  if (Has(spec.key)) return InvalidArgument("option '" + spec.key + "' is declared twice");
+  SIGHTLINE_RETURN_IF_ERROR(
+      CheckOptionValue(spec, spec.default_value).WithContext("default of a declared option"));
+  specs_.push_back(spec);
+  values_[spec.key] = spec.default_value;
+  return Status::Ok();
+}
+
+const OptionSpec* OptionSet::FindSpec(const std::string& key) const {
+  for (const OptionSpec& s : specs_) {
+    if (s.key == key) return &s;
+  }
+  return nullptr;
+}
+
+StatusOr<OptionValue> OptionSet::Get(const std::string& key) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) return NotFound("unknown option '" + key + "'");
+  return it->second;
+}
+
+Status OptionSet::Set(const std::string& key, const OptionValue& value, const std::string& origin) {
+  const OptionSpec* spec = FindSpec(key);
+  Status status;
+  if (spec == nullptr) {
+    status = NotFound("unknown option '" + key + "'");
+  } else {
+    // An integer given where a number is expected is fine.
+    OptionValue v = value;
+    if (spec->type == OptionType::kDouble && std::holds_alternative<int64_t>(v)) {
+      v = static_cast<double>(std::get<int64_t>(v));
+    }
+    status = CheckOptionValue(*spec, v);
+    if (status.ok()) values_[key] = v;
+  }
+  return origin.empty() ? status : status.WithContext(origin);
+}
+
+Status OptionSet::SetFromString(const std::string& key, const std::string& text,
+                                const std::string& origin) {
+  const OptionSpec* spec = FindSpec(key);
+  if (spec == nullptr) {
+    Status s = NotFound("unknown option '" + key + "'");
+    return origin.empty() ? s : s.WithContext(origin);
+  }
+  StatusOr<OptionValue> value = ParseOptionValue(*spec, text);
+  if (!value.ok()) return origin.empty() ? value.status() : value.status().WithContext(origin);
+  return Set(key, *value, origin);
+}
+
+Status OptionSet::ApplyOverride(const std::string& assignment) {
+  const size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    return InvalidArgument("--set '" + assignment + "': expected key=value");
+  }
+  return SetFromString(assignment.substr(0, eq), assignment.substr(eq + 1),
+                       "--set " + assignment);
+}
+
+void OptionSet::ResetToDefaults() {
+  for (const OptionSpec& s : specs_) values_[s.key] = s.default_value;
+}
+
+void OptionSet::Reset(const std::string& key) {
+  if (const OptionSpec* s = FindSpec(key)) values_[key] = s->default_value;
+}
+
+namespace {
+
+// Collects (dotted key, scalar text, line) from a YAML tree.
+Status Flatten(const YAML::Node& node, const std::string& prefix, const std::string& origin,
+               std::vector<std::tuple<std::string, std::string, int>>* out) {
+  const int line = node.Mark().line + 1;
+  if (node.IsMap()) {
+    for (const auto& item : node) {
+      const std::string key = item.first.as<std::string>();
+      SIGHTLINE_RETURN_IF_ERROR(
+          Flatten(item.second, prefix.empty() ? key : prefix + "." + key, origin, out));
+    }
+    return Status::Ok();
+  }
+  if (node.IsScalar()) {
+    out->emplace_back(prefix, node.Scalar(), line);
+    return Status::Ok();
+  }
+  if (node.IsNull()) {
+    return ParseError(origin + " line " + std::to_string(line) + ": option '" + prefix +
+                      "' has no value");
+  }
+  return ParseError(origin + " line " + std::to_string(line) + ": option '" + prefix +
+                    "' must be a single value, not a list");
+}
+
+}  // namespace
+
+Status OptionSet::LoadYamlText(const std::string& text, const std::string& origin) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    return ParseError(origin + " line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  if (root.IsNull()) return Status::Ok();  // An empty profile changes nothing.
+  if (!root.IsMap()) return ParseError(origin + ": a profile must be a map of option keys");
+  std::vector<std::tuple<std::string, std::string, int>> entries;
+  SIGHTLINE_RETURN_IF_ERROR(Flatten(root, "", origin, &entries));
+  OptionSet updated = *this;
+  for (const auto& [key, value, line] : entries) {
+    SIGHTLINE_RETURN_IF_ERROR(
+        updated.SetFromString(key, value, origin + " line " + std::to_string(line)));
+  }
+  *this = std::move(updated);
+  return Status::Ok();
+}
+
+Status OptionSet::LoadYaml(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return NotFound("profile " + path + ": no such file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return LoadYamlText(text.str(), path);
+}
+
+std::string OptionSet::ToYaml() const {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  // Specs are grouped by their dotted path; emit nested maps following declaration order.
+  std::vector<std::string> open;  // Currently open path components.
+  for (const OptionSpec& spec : specs_) {
+    std::vector<std::string> parts;
+    std::stringstream ss(spec.key);
+    for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+    size_t common = 0;
+    while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common]) {
+      ++common;
+    }
+    while (open.size() > common) {
+      out << YAML::EndMap;
+      open.pop_back();
+    }
+    for (size_t i = common; i + 1 < parts.size(); ++i) {
+      out << YAML::Key << parts[i] << YAML::Value << YAML::BeginMap;
+      open.push_back(parts[i]);
+    }
+    std::string comment = spec.description;
+    if (!spec.unit.empty()) comment += " [" + spec.unit + "]";
+    out << YAML::Comment(comment);
+    out << YAML::Key << parts.back() << YAML::Value << FormatOptionValue(values_.at(spec.key));
+  }
+  while (!open.empty()) {
+    out << YAML::EndMap;
+    open.pop_back();
+  }
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+Status OptionSet::SaveYaml(const std::string& path) const {
+  std::ofstream out(path);
+  if (!out) return NotFound("cannot write profile " + path);
+  out << "# Sightline options profile\n" << ToYaml();
+  out.flush();
+  if (!out) return Unavailable("write to " + path + " failed (disk full?)");
+  return Status::Ok();
+}
+
+void OptionSet::WriteJson(JsonWriter* writer) const {
+  writer->BeginObject();
+  for (const OptionSpec& spec : specs_) {
+    writer->Key(spec.key);
+    const OptionValue& v = values_.at(spec.key);
+    if (const bool* b = std::get_if<bool>(&v)) {
+      writer->Bool(*b);
+    } else if (const int64_t* i = std::get_if<int64_t>(&v)) {
+      writer->Int(*i);
+    } else if (const double* d = std::get_if<double>(&v)) {
+      writer->Double(*d);
+    } else {
+      writer->String(std::get<std::string>(v));
+    }
+  }
+  writer->EndObject();
+}
+
+}  // namespace sightline

@@ -1,0 +1,17 @@
+// The sightline-cli commands. Each returns the process exit code and prints a one-line reason
+// on failure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sightline::cli {
+
+int InfoCommand(const std::vector<std::string>& args);
+int RunCommand(const std::vector<std::string>& args);
+int OptionsCommand(const std::vector<std::string>& args);
+
+// Prints "sightline-cli: <message>" to stderr and returns 1.
+int Fail(const std::string& message);
+
+}  // namespace sightline::cli

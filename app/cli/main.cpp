@@ -1,0 +1,36 @@
+// sightline-cli: Sightline's headless commands.
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/cli/commands.h"
+
+namespace {
+
+const char kUsage[] =
+    "usage: sightline-cli COMMAND [ARGS...]\n"
+    "\n"
+    "Commands:\n"
+    "  info PATH [--json]         describe a dataset or recording (format, frames, calibration)\n"
+    "  run PIPELINE PATH --out DIR [--profile F] [--set key=value]...\n"
+    "                             run a pipeline headless; writes DIR/metrics.json\n"
+    "  options [PIPELINE] [--yaml]\n"
+    "                             list the pipelines, or the options of one with their ranges\n"
+    "\n"
+    "Run 'sightline-cli COMMAND --help' for a command's details.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string command = argv[1];
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  if (command == "info") return sightline::cli::InfoCommand(args);
+  if (command == "run") return sightline::cli::RunCommand(args);
+  if (command == "options") return sightline::cli::OptionsCommand(args);
+  return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
+}

@@ -1,0 +1,56 @@
+// sightline: the desktop application.
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+#include <cstdio>
+
+#include "app/sightline/main_window.h"
+#include "app/sightline/screenshot_driver.h"
+#include "widgets/vtk_gl_widget.h"
+
+int main(int argc, char** argv) {
+  // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
+  sightline::VtkGlWidget::SetDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("Sightline");
+  QApplication::setApplicationName("Sightline");
+  QApplication::setApplicationVersion(SIGHTLINE_VERSION);
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "Sightline: robot perception on live sensors and recorded data.");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  QCommandLineOption open_option("open", "Open a dataset folder or file at start.", "PATH");
+  QCommandLineOption screenshot_option(
+      "screenshot", "Play --frames frames, save the window as a PNG to FILE and exit.", "FILE");
+  QCommandLineOption frames_option("frames", "Frames to play before --screenshot (default 5).",
+                                   "N", "5");
+  QCommandLineOption timeout_option("timeout", "Give up on --screenshot after S seconds.", "S",
+                                    "120");
+  parser.addOptions({open_option, screenshot_option, frames_option, timeout_option});
+  parser.process(app);
+
+  sightline::MainWindow window;
+  window.show();
+
+  if (parser.isSet(screenshot_option)) {
+    if (!parser.isSet(open_option)) {
+      std::fprintf(stderr, "sightline: --screenshot needs --open PATH\n");
+      return 2;
+    }
+    bool ok = false;
+    const int frames = parser.value(frames_option).toInt(&ok);
+    if (!ok || frames < 1) {
+      std::fprintf(stderr, "sightline: --frames must be a positive number\n");
+      return 2;
+    }
+    new sightline::ScreenshotDriver(&window, parser.value(screenshot_option), frames,
+                                    parser.value(timeout_option).toInt());
+  }
+  if (parser.isSet(open_option)) {
+    const QString path = parser.value(open_option);
+    QTimer::singleShot(0, &window, [&window, path] { window.OpenPath(path); });
+  }
+  return app.exec();
+}

@@ -1,0 +1,278 @@
+#include "app/sightline/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include "app/sightline/playback_controller.h"
+#include "app/sightline/view_options.h"
+#include "core/pipeline/inspect_pipeline.h"
+#include "widgets/image_view.h"
+#include "widgets/log_panel.h"
+#include "widgets/parameter_panel.h"
+#include "widgets/playback_bar.h"
+#include "widgets/scene_view.h"
+
+namespace sightline {
+
+namespace {
+constexpr int kMaxRecent = 8;
+const char kRecentKey[] = "recent_paths";
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setWindowTitle(tr("Sightline"));
+  setAcceptDrops(true);
+  resize(1400, 900);
+  playback_ = new PlaybackController(this);
+  Status declared = options_.Declare(ViewOptions::Describe());
+  if (declared.ok()) declared = options_.Declare(InspectOptions::Describe());
+  BuildViews();
+  BuildMenus();
+  ConnectPlayback();
+  if (!declared.ok()) log_panel_->AddMessage(LogPanel::Severity::kError,
+                                             QString::fromStdString(declared.ToString()));
+  ShowWelcome();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::BuildViews() {
+  scene_view_ = new SceneView(this);
+  scene_view_->setMinimumSize(320, 240);
+  setCentralWidget(scene_view_);
+
+  auto add_dock = [this](QWidget* widget, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    return dock;
+  };
+  primary_view_ = new ImageView(this);
+  primary_view_->SetTitle(tr("Colour"));
+  secondary_view_ = new ImageView(this);
+  secondary_view_->SetTitle(tr("Depth"));
+  add_dock(primary_view_, tr("Colour"), "colour_dock", Qt::LeftDockWidgetArea);
+  add_dock(secondary_view_, tr("Depth"), "depth_dock", Qt::LeftDockWidgetArea);
+
+  parameter_panel_ = new ParameterPanel(this);
+  parameter_panel_->SetOptions(options_);
+  add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
+  log_panel_ = new LogPanel(this);
+  add_dock(log_panel_, tr("Log"), "log_dock", Qt::BottomDockWidgetArea);
+
+  playback_bar_ = new PlaybackBar(this);
+  auto* bar = new QToolBar(tr("Playback"), this);
+  bar->setObjectName("playback_toolbar");
+  bar->addWidget(playback_bar_);
+  addToolBar(Qt::BottomToolBarArea, bar);
+
+  status_label_ = new QLabel(this);
+  statusBar()->addPermanentWidget(status_label_);
+}
+
+void MainWindow::BuildMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  QAction* open_folder = file->addAction(tr("&Open dataset folder..."));
+  open_folder->setShortcut(QKeySequence::Open);
+  connect(open_folder, &QAction::triggered, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"));
+    if (!dir.isEmpty()) OpenPath(dir);
+  });
+  QAction* open_file = file->addAction(tr("Open point cloud &file..."));
+  connect(open_file, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open point cloud"), QString(),
+                                                      tr("Point clouds (*.pcd)"));
+    if (!path.isEmpty()) OpenPath(path);
+  });
+  recent_menu_ = file->addMenu(tr("Open &recent"));
+  RebuildRecentMenu();
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("&Quit"));
+  quit->setShortcut(QKeySequence::Quit);
+  connect(quit, &QAction::triggered, this, &QWidget::close);
+
+  view_menu_ = menuBar()->addMenu(tr("&View"));
+  QAction* reset = view_menu_->addAction(tr("&Reset 3D view"));
+  reset->setShortcut(Qt::Key_R | Qt::CTRL);
+  connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
+  view_menu_->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) view_menu_->addAction(dock->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  connect(help->addAction(tr("&About Sightline")), &QAction::triggered, this, [this] {
+    QMessageBox::about(this, tr("About Sightline"),
+                       tr("Sightline: robot perception for assistive and mobile robotics.\n"
+                          "Indoor mapping, mobility maps, stereo odometry and monocular "
+                          "button localisation on live sensors or recorded data."));
+  });
+}
+
+void MainWindow::ConnectPlayback() {
+  connect(playback_, &PlaybackController::FrameReady, this, &MainWindow::ShowFrame);
+  connect(playback_, &PlaybackController::Opened, this, &MainWindow::OnOpened);
+  connect(playback_, &PlaybackController::OpenFailed, this,
+          [this](const QString& path, const QString& message) {
+            log_panel_->AddMessage(LogPanel::Severity::kError,
+                                   tr("Could not open %1: %2").arg(path, message));
+            statusBar()->showMessage(tr("Could not open %1").arg(path), 10000);
+            emit DatasetFailed(message);
+          });
+  connect(playback_, &PlaybackController::ReadError, this, [this](const QString& message) {
+    log_panel_->AddMessage(LogPanel::Severity::kError, message);
+    playback_bar_->SetPlaying(false);
+  });
+  connect(playback_, &PlaybackController::EndOfStream, this, [this] {
+    log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("End of recording."));
+    playback_bar_->SetPlaying(false);
+  });
+  connect(playback_bar_, &PlaybackBar::PlayRequested, this, [this] {
+    playback_->Play();
+    playback_bar_->SetPlaying(true);
+  });
+  connect(playback_bar_, &PlaybackBar::PauseRequested, this, [this] {
+    playback_->Pause();
+    playback_bar_->SetPlaying(false);
+  });
+  connect(playback_bar_, &PlaybackBar::StepRequested, this, [this] {
+    playback_->Step();
+    playback_bar_->SetPlaying(false);
+  });
+  connect(playback_bar_, &PlaybackBar::SeekRequested, playback_, &PlaybackController::Seek);
+  connect(playback_bar_, &PlaybackBar::SpeedChanged, playback_, &PlaybackController::SetSpeed);
+  connect(playback_bar_, &PlaybackBar::LoopChanged, playback_, &PlaybackController::SetLoop);
+  connect(parameter_panel_, &ParameterPanel::OptionsChanged, this, &MainWindow::OnOptionsChanged);
+}
+
+void MainWindow::OpenPath(const QString& path) {
+  log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Opening %1 ...").arg(path));
+  statusBar()->showMessage(tr("Opening %1 ...").arg(path));
+  playback_->Open(path);
+}
+
+void MainWindow::OnOpened(const QString& path) {
+  const SourceInfo* info = playback_->info();
+  frames_shown_ = 0;
+  first_cloud_ = true;
+  scene_view_->ClearLayers();
+  const bool rgbd = info->kind == SourceKind::kRgbd;
+  const bool stereo = info->kind == SourceKind::kStereo;
+  primary_view_->SetTitle(rgbd ? tr("Colour") : stereo ? tr("Left") : tr("Image"));
+  secondary_view_->SetTitle(stereo ? tr("Right") : tr("Depth"));
+  primary_view_->Clear();
+  secondary_view_->Clear();
+  playback_bar_->SetFrameCount(info->frame_count);
+  playback_bar_->SetPosition(0);
+  playback_bar_->SetPlaying(false);
+  const QString summary = tr("%1: %2, %3 frames, %4x%5%6")
+                              .arg(QFileInfo(path).fileName(), QString::fromStdString(info->format))
+                              .arg(info->frame_count)
+                              .arg(info->width)
+                              .arg(info->height)
+                              .arg(info->has_ground_truth ? tr(", ground truth") : QString());
+  status_label_->setText(summary);
+  log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Opened %1").arg(summary));
+  for (const std::string& note : info->notes) {
+    log_panel_->AddMessage(LogPanel::Severity::kWarning, QString::fromStdString(note));
+  }
+  statusBar()->clearMessage();
+  setWindowTitle(tr("Sightline - %1").arg(QFileInfo(path).fileName()));
+  AddRecent(path);
+  playback_->SetViewOptions(options_.Extract(ViewOptions::Describe()));
+  emit DatasetOpened(path);
+}
+
+void MainWindow::ShowFrame(std::shared_ptr<const PlaybackResult> result) {
+  if (!result) return;
+  if (!result->primary_image.empty()) {
+    primary_view_->SetImage(result->primary_image);
+  }
+  if (!result->secondary_image.empty()) {
+    if (result->secondary_is_depth) {
+      const ViewOptions view = options_.Extract(ViewOptions::Describe());
+      secondary_view_->SetDepth(result->secondary_image, view.depth_range_m);
+    } else {
+      secondary_view_->SetImage(result->secondary_image);
+    }
+  }
+  if (result->cloud) {
+    scene_view_->SetPointCloud("cloud", result->cloud, SceneView::ColorMode::kAuto);
+    if (first_cloud_) {
+      scene_view_->ResetView();
+      first_cloud_ = false;
+    }
+  }
+  playback_bar_->SetPosition(result->stamp.sequence_id);
+  status_label_->setToolTip(tr("frame %1, read in %2 ms")
+                                .arg(result->stamp.sequence_id)
+                                .arg(result->prepare_ms, 0, 'f', 1));
+  ++frames_shown_;
+  emit FrameShown(result->stamp.sequence_id);
+}
+
+void MainWindow::OnOptionsChanged(const OptionSet& options) {
+  options_ = options;
+  const ViewOptions view = options_.Extract(ViewOptions::Describe());
+  std::string error;
+  if (!view.IsValid(&error)) {
+    log_panel_->AddMessage(LogPanel::Severity::kWarning, QString::fromStdString(error));
+    return;
+  }
+  playback_->SetViewOptions(view);
+}
+
+void MainWindow::ShowWelcome() {
+  log_panel_->AddMessage(
+      LogPanel::Severity::kInfo,
+      tr("No dataset open. Use File > Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image "
+         "folder or PCD files), or drop a folder on this window."));
+  status_label_->setText(tr("No dataset open"));
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (!urls.isEmpty() && urls.first().isLocalFile()) OpenPath(urls.first().toLocalFile());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  playback_->Close();
+  QMainWindow::closeEvent(event);
+}
+
+void MainWindow::AddRecent(const QString& path) {
+  QSettings settings;
+  QStringList recent = settings.value(kRecentKey).toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > kMaxRecent) recent.removeLast();
+  settings.setValue(kRecentKey, recent);
+  RebuildRecentMenu();
+}
+
+void MainWindow::RebuildRecentMenu() {
+  recent_menu_->clear();
+  const QStringList recent = QSettings().value(kRecentKey).toStringList();
+  for (const QString& path : recent) {
+    connect(recent_menu_->addAction(path), &QAction::triggered, this, [this, path] { OpenPath(path); });
+  }
+  recent_menu_->setEnabled(!recent.isEmpty());
+}
+
+}  // namespace sightline

@@ -1,0 +1,79 @@
+// Sightline's main window: dockable colour, depth and 3D views, the tuning panel, the log and
+// the playback bar around one PlaybackController.
+#pragma once
+
+#include <QMainWindow>
+#include <QStringList>
+#include <memory>
+
+#include "app/sightline/playback_result.h"
+#include "core/options/option_set.h"
+
+class QAction;
+class QLabel;
+class QMenu;
+
+namespace sightline {
+
+class ImageView;
+class LogPanel;
+class ParameterPanel;
+class PlaybackBar;
+class PlaybackController;
+class SceneView;
+
+// The window a lab engineer or presenter works in. It holds views and wiring only: reading and
+// processing happen in PlaybackController's worker thread.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a dataset folder or file in the background (File > Open, drag and drop, --open).
+  void OpenPath(const QString& path);
+
+  SceneView* scene_view() const { return scene_view_; }
+  PlaybackController* playback() const { return playback_; }
+  // Frames shown since the last open.
+  int64_t frames_shown() const { return frames_shown_; }
+
+ signals:
+  // A frame reached the views (after they were updated).
+  void FrameShown(int64_t sequence_id);
+  void DatasetOpened(const QString& path);
+  void DatasetFailed(const QString& message);
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void BuildViews();
+  void BuildMenus();
+  void ConnectPlayback();
+  void ShowFrame(std::shared_ptr<const PlaybackResult> result);
+  void OnOpened(const QString& path);
+  void OnOptionsChanged(const OptionSet& options);
+  void ShowWelcome();
+  void AddRecent(const QString& path);
+  void RebuildRecentMenu();
+
+  PlaybackController* playback_ = nullptr;
+  ImageView* primary_view_ = nullptr;
+  ImageView* secondary_view_ = nullptr;
+  SceneView* scene_view_ = nullptr;
+  ParameterPanel* parameter_panel_ = nullptr;
+  LogPanel* log_panel_ = nullptr;
+  PlaybackBar* playback_bar_ = nullptr;
+  QLabel* status_label_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  QMenu* view_menu_ = nullptr;
+  OptionSet options_;
+  int64_t frames_shown_ = 0;
+  bool first_cloud_ = true;
+};
+
+}  // namespace sightline

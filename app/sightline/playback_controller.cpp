@@ -1,0 +1,186 @@
+#include "app/sightline/playback_controller.h"
+
+#include <QPointer>
+#include <algorithm>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "core/common/depth_cloud.h"
+#include "core/common/timing.h"
+#include "core/io/dataset.h"
+#include "core/pipeline/player.h"
+
+namespace sightline {
+
+PlaybackController::PlaybackController(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<std::shared_ptr<const PlaybackResult>>();
+}
+
+PlaybackController::~PlaybackController() {
+  for (QFuture<void>& f : background_) f.waitForFinished();
+  StopWorker();
+}
+
+void PlaybackController::Open(const QString& path) {
+  const uint64_t generation = ++open_generation_;
+  QPointer<PlaybackController> self(this);
+  const std::string path_utf8 = path.toStdString();
+  // Opening reads index files and the first images: keep it off the GUI thread. The destructor
+  // waits for background tasks, so `this` outlives them.
+  Track(QtConcurrent::run([this, self, generation, path, path_utf8] {
+    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenDataset(path_utf8));
+    QMetaObject::invokeMethod(
+        this,
+        [self, generation, path, opened] {
+          if (!self || generation != self->open_generation_) return;  // A newer Open won.
+          if (!opened->ok()) {
+            emit self->OpenFailed(path, QString::fromStdString(opened->status().ToString()));
+            return;
+          }
+          self->StopWorker();
+          {
+            std::lock_guard<std::mutex> lock(self->mutex_);
+            self->info_ = std::make_shared<SourceInfo>((**opened)->info());
+          }
+          self->StartWorker(std::make_unique<Player>(std::move(**opened)));
+          emit self->Opened(path);
+        },
+        Qt::QueuedConnection);
+  }));
+}
+
+void PlaybackController::Track(QFuture<void> future) {
+  background_.erase(std::remove_if(background_.begin(), background_.end(),
+                                   [](const QFuture<void>& f) { return f.isFinished(); }),
+                    background_.end());
+  background_.push_back(std::move(future));
+}
+
+void PlaybackController::Close() {
+  ++open_generation_;
+  StopWorker();
+  std::lock_guard<std::mutex> lock(mutex_);
+  info_.reset();
+}
+
+const Trajectory* PlaybackController::ground_truth() const {
+  return player_ ? player_->ground_truth() : nullptr;
+}
+
+void PlaybackController::Play() { if (player_) player_->Play(); }
+void PlaybackController::Pause() { if (player_) player_->Pause(); }
+void PlaybackController::Step() { if (player_) player_->Step(); }
+void PlaybackController::Seek(int64_t index) { if (player_) player_->Seek(index); }
+void PlaybackController::SetSpeed(double factor) { if (player_) player_->SetSpeed(factor); }
+void PlaybackController::SetLoop(bool loop) { if (player_) player_->SetLoop(loop); }
+
+void PlaybackController::SetViewOptions(const ViewOptions& options) {
+  std::shared_ptr<const Frame> frame;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    view_options_ = options;
+    frame = last_frame_;
+  }
+  if (!frame) return;
+  // Redraw the current frame with the new options at once, also while paused.
+  Track(QtConcurrent::run([this, frame, options] { Publish(Prepare(*frame, options)); }));
+}
+
+void PlaybackController::StartWorker(std::unique_ptr<Player> player) {
+  player_ = std::move(player);
+  stop_ = false;
+  worker_ = std::thread([this] { WorkerLoop(); });
+}
+
+void PlaybackController::StopWorker() {
+  if (!player_) return;
+  stop_ = true;
+  player_->Stop();
+  if (worker_.joinable()) worker_.join();
+  player_.reset();
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_frame_.reset();
+  latest_.reset();
+}
+
+void PlaybackController::WorkerLoop() {
+  while (!stop_) {
+    const double start = HostTimeS();
+    StatusOr<Frame> frame = player_->Next();
+    if (!frame.ok()) {
+      const StatusCode code = frame.status().code();
+      if (code == StatusCode::kCancelled) break;
+      if (code == StatusCode::kOutOfRange) {
+        QMetaObject::invokeMethod(this, [this] { emit EndOfStream(); }, Qt::QueuedConnection);
+        continue;  // Next() waits for Play, Step or Seek.
+      }
+      player_->Pause();
+      const QString message = QString::fromStdString(frame.status().ToString());
+      QMetaObject::invokeMethod(this, [this, message] { emit ReadError(message); },
+                                Qt::QueuedConnection);
+      continue;
+    }
+    auto shared = std::make_shared<const Frame>(std::move(*frame));
+    ViewOptions options;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      last_frame_ = shared;
+      options = view_options_;
+    }
+    auto result = Prepare(*shared, options);
+    std::const_pointer_cast<PlaybackResult>(result)->prepare_ms = (HostTimeS() - start) * 1000;
+    Publish(std::move(result));
+  }
+}
+
+std::shared_ptr<const PlaybackResult> PlaybackController::Prepare(const Frame& frame,
+                                                                  const ViewOptions& options) const {
+  std::shared_ptr<const SourceInfo> info;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    info = info_;
+  }
+  auto result = std::make_shared<PlaybackResult>();
+  result->stamp = StampOf(frame);
+  result->frame_count = info ? info->frame_count : -1;
+  if (const auto* rgbd = std::get_if<RgbdFrame>(&frame)) {
+    result->primary_image = rgbd->color;
+    result->secondary_image = rgbd->depth_m;
+    result->secondary_is_depth = true;
+    if (info && info->rgbd) {
+      cv::Mat depth = rgbd->depth_m.clone();
+      depth.setTo(std::numeric_limits<float>::quiet_NaN(), depth > options.max_depth_m);
+      result->cloud = std::make_shared<PointCloud>(
+          DepthToCloud(depth, rgbd->color, info->rgbd->color, options.cloud_stride));
+    }
+  } else if (const auto* stereo = std::get_if<StereoFrame>(&frame)) {
+    result->primary_image = stereo->left;
+    result->secondary_image = stereo->right;
+  } else if (const auto* mono = std::get_if<MonoFrame>(&frame)) {
+    result->primary_image = mono->image;
+  } else if (const auto* cloud = std::get_if<CloudFrame>(&frame)) {
+    result->cloud = cloud->cloud;
+  }
+  return result;
+}
+
+void PlaybackController::Publish(std::shared_ptr<const PlaybackResult> result) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    latest_ = std::move(result);
+    if (delivery_pending_) return;  // The GUI has not taken the previous one: replace it.
+    delivery_pending_ = true;
+  }
+  QMetaObject::invokeMethod(this, &PlaybackController::DeliverLatest, Qt::QueuedConnection);
+}
+
+void PlaybackController::DeliverLatest() {
+  std::shared_ptr<const PlaybackResult> result;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    result = std::move(latest_);
+    delivery_pending_ = false;
+  }
+  if (result) emit FrameReady(std::move(result));
+}
+
+}  // namespace sightline

@@ -1,0 +1,86 @@
+// Opens a dataset and plays it on a worker thread; hands prepared frames to the GUI.
+#pragma once
+
+#include <QFuture>
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "app/sightline/playback_result.h"
+#include "app/sightline/view_options.h"
+#include "core/io/source.h"
+
+namespace sightline {
+
+class Player;
+
+// Owns the reading thread. All public methods are called on the GUI thread and never block on
+// file I/O; results arrive through the FrameReady signal, coalesced so that a busy GUI always
+// gets the newest frame rather than a backlog.
+//
+//   PlaybackController playback;
+//   connect(&playback, &PlaybackController::FrameReady, view, &View::Show);
+//   playback.Open("/data/tum_fr1_desk");   // Opened() or OpenFailed() follows.
+//   playback.Play();
+class PlaybackController : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit PlaybackController(QObject* parent = nullptr);
+  ~PlaybackController() override;
+
+  // Opens a dataset in the background; emits Opened or OpenFailed.
+  void Open(const QString& path);
+  void Close();
+  void Play();
+  void Pause();
+  void Step();
+  void Seek(int64_t index);
+  void SetSpeed(double factor);
+  void SetLoop(bool loop);
+  // New view options, applied to the next frame and to the current one at once.
+  void SetViewOptions(const ViewOptions& options);
+
+  bool is_open() const { return static_cast<bool>(info_); }
+  // Valid after Opened().
+  const SourceInfo* info() const { return info_.get(); }
+  const Trajectory* ground_truth() const;
+
+ signals:
+  void Opened(const QString& path);
+  void OpenFailed(const QString& path, const QString& message);
+  void FrameReady(std::shared_ptr<const sightline::PlaybackResult> result);
+  // A frame could not be read; playback pauses. The message names the file.
+  void ReadError(const QString& message);
+  void EndOfStream();
+
+ private:
+  void StartWorker(std::unique_ptr<Player> player);
+  void StopWorker();
+  void WorkerLoop();
+  std::shared_ptr<const PlaybackResult> Prepare(const Frame& frame, const ViewOptions& options) const;
+  // Stores the newest result and notifies the GUI unless a notification is already pending.
+  void Publish(std::shared_ptr<const PlaybackResult> result);
+  void DeliverLatest();
+  // Keeps a background task's future so the destructor can wait for it.
+  void Track(QFuture<void> future);
+
+  std::unique_ptr<Player> player_;
+  std::shared_ptr<const SourceInfo> info_;
+  std::thread worker_;
+  std::atomic<bool> stop_{false};
+  uint64_t open_generation_ = 0;
+  std::vector<QFuture<void>> background_;  // GUI thread only.
+
+  mutable std::mutex mutex_;  // Guards everything below.
+  ViewOptions view_options_;
+  std::shared_ptr<const Frame> last_frame_;
+  bool reprocess_ = false;
+  std::shared_ptr<const PlaybackResult> latest_;
+  bool delivery_pending_ = false;
+};
+
+}  // namespace sightline

@@ -1,0 +1,25 @@
+// What the playback worker hands the GUI for one frame: immutable, shared, ready to draw.
+#pragma once
+
+#include <QMetaType>
+#include <memory>
+#include <opencv2/core.hpp>
+
+#include "core/common/frame.h"
+
+namespace sightline {
+
+// One frame prepared for the views. Built on the worker thread, read on the GUI thread.
+struct PlaybackResult {
+  FrameStamp stamp;
+  int64_t frame_count = -1;
+  cv::Mat primary_image;    // Colour or left or mono image (BGR or gray); may be empty.
+  cv::Mat secondary_image;  // Depth (CV_32F metres) or right image; may be empty.
+  bool secondary_is_depth = false;
+  std::shared_ptr<const PointCloud> cloud;  // In the sensor frame; may be null.
+  double prepare_ms = 0;    // Worker time to read and prepare the frame.
+};
+
+}  // namespace sightline
+
+Q_DECLARE_METATYPE(std::shared_ptr<const sightline::PlaybackResult>)

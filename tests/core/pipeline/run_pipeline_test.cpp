@@ -1,0 +1,87 @@
+#include "core/pipeline/pipeline_registry.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(RunPipeline, InspectOnTumWritesMetricsInTheCommonShape) {
+  SIGHTLINE_REQUIRE_DATA(dir, "tum_fr1_desk");
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = dir;
+  request.out_dir = testing::TempDir("run") + "/out";
+  request.overrides = {"inspect.max_depth_m=5"};
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_TRUE(report.ok()) << report.status().ToString();
+  EXPECT_EQ(report->metrics.frames, 9);
+  const std::string json = ReadAll(report->metrics_path);
+  EXPECT_NE(json.find("\"pipeline\": \"inspect\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"frames\": 9"), std::string::npos);
+  EXPECT_NE(json.find("\"read\": {"), std::string::npos);
+  EXPECT_NE(json.find("\"total\": {"), std::string::npos);
+  EXPECT_NE(json.find("\"median\""), std::string::npos);
+  EXPECT_NE(json.find("\"p95\""), std::string::npos);
+  EXPECT_NE(json.find("\"gt_coverage\": 1"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"inspect.max_depth_m\": 5"), std::string::npos) << json;
+  // "total" is per frame: one sample per frame.
+  const auto& timing = report->metrics.timing_ms;
+  ASSERT_EQ(timing.back().first, "total");
+  EXPECT_EQ(timing.back().second.count, 9u);
+  // frames.csv has a header and one row per frame.
+  const std::string csv = ReadAll(request.out_dir + "/frames.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10);
+}
+
+TEST(RunPipeline, UnknownPipelineListsKnownOnes) {
+  RunRequest request;
+  request.pipeline = "mapingg";
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("inspect"), std::string::npos);
+}
+
+TEST(RunPipeline, BadOverrideAndBadProfileFailBeforeRunning) {
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = "/nonexistent";
+  request.out_dir = testing::TempDir("run") + "/out";
+  request.overrides = {"inspect.max_depth_m=-1"};
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("inspect.max_depth_m"), std::string::npos);
+
+  const std::string profile = testing::TempDir("run") + "/p.yaml";
+  std::ofstream(profile) << "inspect:\n  max_frame: 3\n";
+  request.overrides.clear();
+  request.profile_path = profile;
+  report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find(profile + " line 2"), std::string::npos)
+      << report.status().message();
+}
+
+TEST(RunPipeline, MissingDatasetNamesThePath) {
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = "/nonexistent/dataset";
+  request.out_dir = testing::TempDir("run") + "/out";
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("/nonexistent/dataset"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sightline
