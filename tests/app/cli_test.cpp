@@ -1,0 +1,95 @@
+// sightline-cli as a user runs it: exit codes, one-line reasons, outputs.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tests/app/process.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
+
+testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Cli, HelpOnEveryCommand) {
+  for (const std::string command : {"--help", "info --help", "run --help", "options --help"}) {
+    const auto r = Cli(command);
+    EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.out;
+    EXPECT_NE(r.out.find("usage: sightline-cli"), std::string::npos) << command;
+  }
+}
+
+TEST(Cli, UnknownCommandFailsWithOneLine) {
+  const auto r = Cli("frobnicate");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find("unknown command 'frobnicate'"), std::string::npos);
+}
+
+TEST(Cli, InfoOnKittiPrintsStereoPairsAndGroundTruth) {
+  SIGHTLINE_REQUIRE_DATA(dir, "kitti_clip1");
+  const auto r = Cli("info " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("KITTI"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("51 stereo pairs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ground truth: yes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1226x370"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoJsonIsMachineReadable) {
+  SIGHTLINE_REQUIRE_DATA(dir, "tum_fr1_desk");
+  const auto r = Cli("info --json " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_NE(r.out.find("\"frames\": 9"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoOnMissingPathFailsWithOneLineNamingIt) {
+  const auto r = Cli("info /nonexistent/dataset");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find("/nonexistent/dataset"), std::string::npos) << r.out;
+}
+
+TEST(Cli, RunInspectWritesMetricsJson) {
+  SIGHTLINE_REQUIRE_DATA(dir, "euroc_v1_01_static");
+  const std::string out = testing::TempDir("cli") + "/run";
+  const auto r = Cli("run inspect " + dir + " --out " + out + " --set inspect.max_frames=7");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string json = ReadAll(out + "/metrics.json");
+  EXPECT_NE(json.find("\"frames\": 7"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"timing_ms\""), std::string::npos);
+  EXPECT_NE(json.find("\"inspect.max_frames\": 7"), std::string::npos);
+}
+
+TEST(Cli, RunWithOutOfRangeOptionFailsNamingTheKey) {
+  const auto r = Cli("run inspect /tmp --out /tmp/x --set inspect.max_depth_m=1000");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.out.find("inspect.max_depth_m"), std::string::npos) << r.out;
+}
+
+TEST(Cli, RunWithoutOutFails) {
+  const auto r = Cli("run inspect /tmp");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.out.find("--out"), std::string::npos) << r.out;
+}
+
+TEST(Cli, OptionsListsDescribeTable) {
+  const auto r = Cli("options inspect");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("inspect.max_depth_m"), std::string::npos);
+  EXPECT_NE(r.out.find("[0.1, 100]"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sightline

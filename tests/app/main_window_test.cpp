@@ -1,0 +1,97 @@
+// The main window on real data under an X server: open, step, and look at the pixels.
+#include "app/sightline/main_window.h"
+
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/sightline/playback_controller.h"
+#include "tests/app/process.h"
+#include "tests/support/test_data.h"
+#include "widgets/scene_view.h"
+
+namespace sightline {
+namespace {
+
+// Pixels that differ clearly from the colour at the image corner (the background).
+int ForegroundPixels(const QImage& image) {
+  const QColor background = image.pixelColor(1, 1);
+  int count = 0;
+  for (int y = 0; y < image.height(); y += 2) {
+    for (int x = 0; x < image.width(); x += 2) {
+      const QColor c = image.pixelColor(x, y);
+      if (std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
+              std::abs(c.blue() - background.blue()) > 60) {
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+bool WaitFor(const std::function<bool()>& condition, int timeout_ms) {
+  return QTest::qWaitFor(condition, timeout_ms);
+}
+
+TEST(MainWindow, OpensTumStepsThreeFramesAndDrawsTheCloud) {
+  SIGHTLINE_REQUIRE_DATA(dir, "tum_fr1_desk");
+  MainWindow window;
+  window.resize(1200, 800);
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  window.scene_view()->SetGroundGrid(false);  // Only the cloud may differ from the background.
+
+  // Background before any data.
+  QTest::qWait(200);
+  const int empty = ForegroundPixels(window.scene_view()->grabFramebuffer());
+
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(dir));
+  ASSERT_TRUE(WaitFor([&] { return opened.count() == 1; }, 20000)) << "dataset did not open";
+  ASSERT_NE(window.playback()->info(), nullptr);
+  EXPECT_EQ(window.playback()->info()->frame_count, 9);
+
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  for (int i = 0; i < 3; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(WaitFor([&] { return shown.count() == i + 1; }, 10000)) << "step " << i;
+  }
+  EXPECT_EQ(shown.at(2).at(0).value<int64_t>(), 2);  // Frames 0, 1, 2 in order.
+  QTest::qWait(300);
+
+  const QImage frame = window.scene_view()->grabFramebuffer();
+  ASSERT_FALSE(frame.isNull());
+  const int drawn = ForegroundPixels(frame);
+  frame.save(QString::fromStdString(testing::TempDir("gui") + "/scene.png"));
+  // The desk cloud covers a large part of the view; an empty or black view has almost none.
+  EXPECT_LT(empty, 50) << "background not uniform before data";
+  EXPECT_GT(drawn, frame.width() * frame.height() / 4 / 10)
+      << "the 3D view shows too few cloud pixels: " << drawn;
+}
+
+TEST(MainWindow, MissingDatasetIsReportedNotFatal) {
+  MainWindow window;
+  window.show();
+  QSignalSpy failed(&window, &MainWindow::DatasetFailed);
+  window.OpenPath("/nonexistent/recording");
+  ASSERT_TRUE(WaitFor([&] { return failed.count() == 1; }, 10000));
+  EXPECT_TRUE(failed.at(0).at(0).toString().contains("/nonexistent/recording"));
+  EXPECT_EQ(window.playback()->info(), nullptr);
+}
+
+TEST(SightlineExecutable, ScreenshotShowsColourDepthAndCloud) {
+  SIGHTLINE_REQUIRE_DATA(dir, "tum_fr1_desk");
+  const std::string png = testing::TempDir("gui") + "/shot.png";
+  const auto r = testing::RunProcess(std::string(SIGHTLINE_BIN_DIR) + "/sightline --open " + dir +
+                                     " --screenshot " + png + " --frames 5");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  QImage shot(QString::fromStdString(png));
+  ASSERT_FALSE(shot.isNull()) << "no screenshot at " << png;
+  EXPECT_GT(shot.width(), 800);
+  EXPECT_GT(ForegroundPixels(shot), shot.width() * shot.height() / 4 / 5);
+}
+
+}  // namespace
+}  // namespace sightline
