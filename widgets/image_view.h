@@ -1,0 +1,96 @@
+// Shows one camera image (grey, BGR colour, or depth in metres with a colour legend), scaled to
+// fit with its aspect ratio, with a title and optional overlays in image coordinates.
+#pragma once
+
+#include <QImage>
+#include <QString>
+#include <QTransform>
+#include <QWidget>
+#include <functional>
+#include <opencv2/core.hpp>
+
+#include "widgets/image_overlay.h"
+
+namespace sightline {
+
+// An image panel. SetImage copies the pixels, so the cv::Mat may be released right after.
+//
+//   ImageView* view = new ImageView(this);
+//   view->SetTitle(tr("Depth"));
+//   view->SetImage(frame.depth_m, ImageView::Kind::kDepthMeters);
+//   view->SetOverlay(detections_overlay);
+class ImageView : public QWidget {
+  Q_OBJECT
+
+ public:
+  // How to interpret the cv::Mat given to SetImage.
+  enum class Kind {
+    kAuto,         // From the type: CV_8UC1 grey, CV_8UC3 BGR, CV_32FC1 depth in metres.
+    kGray,         // CV_8UC1.
+    kBgr,          // CV_8UC3 in OpenCV's BGR order.
+    kDepthMeters,  // CV_32FC1 metres; NaN, inf and <= 0 are invalid and drawn black.
+  };
+
+  // Draws over the image; `image_to_widget` maps image coordinates (pixel centres at integers)
+  // to the painter's coordinates.
+  using OverlayPainter = std::function<void(QPainter& painter, const QTransform& image_to_widget)>;
+
+  // Creates an empty view that says "No image".
+  explicit ImageView(QWidget* parent = nullptr);
+  ~ImageView() override;
+
+  // Shows a copy of `image`. An unsupported type shows a message naming it instead.
+  void SetImage(const cv::Mat& image, Kind kind = Kind::kAuto);
+  // Removes the image (and keeps title and overlays).
+  void Clear();
+  // Text above the image.
+  void SetTitle(const QString& title);
+  // Fixes the depth colour range in metres; low >= high restores automatic range (2nd to 98th
+  // percentile of the valid depths).
+  void SetDepthRange(double low_m, double high_m);
+  // Replaces the primitive overlay (empty overlay = none).
+  void SetOverlay(ImageOverlay overlay);
+  // Replaces the custom overlay painter, drawn after the primitives (nullptr = none).
+  void SetOverlayPainter(OverlayPainter painter);
+
+  // The displayed image as converted (RGB888 or Grayscale8); null when none.
+  const QImage& image() const { return image_; }
+  // The depth range used for the current depth image, in metres (0, 0 when not a depth image).
+  std::pair<double, double> depth_range() const { return {depth_low_m_, depth_high_m_}; }
+  // Where the image is drawn; image coordinates follow OpenCV (pixel centres at integers).
+  QTransform ImageToWidget() const;
+  // Whether the colour legend is shown (depth images only).
+  bool legend_visible() const { return is_depth_ && !image_.isNull(); }
+  // The rectangle of the legend's colour bar in widget coordinates (empty when not shown).
+  QRect LegendBarRect() const;
+
+  // Room for a 4:3 image with title and legend.
+  QSize sizeHint() const override;
+  // Small enough for a grid of camera views.
+  QSize minimumSizeHint() const override;
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+
+ private:
+  // Converts a depth image through the colour map into image_, choosing the range if automatic.
+  void SetDepthImage(const cv::Mat& depth_m);
+  // The part of the widget left for the image (below the title, left of the legend).
+  QRect ImageArea() const;
+  int TitleHeight() const;
+  int LegendWidth() const;
+  void DrawLegend(QPainter& painter) const;
+
+  QImage image_;
+  QString title_;
+  QString message_;  // Shown instead of an image ("No image", unsupported type).
+  bool is_depth_ = false;
+  double fixed_low_m_ = 0;
+  double fixed_high_m_ = 0;
+  double depth_low_m_ = 0;
+  double depth_high_m_ = 0;
+  ImageOverlay overlay_;
+  OverlayPainter overlay_painter_;
+};
+
+}  // namespace sightline

@@ -1,0 +1,294 @@
+#include "widgets/scene_view.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <map>
+
+#include "core/common/frame.h"
+#include "core/common/trajectory.h"
+#include "widgets/scene_geometry.h"
+
+namespace sightline {
+namespace {
+
+Rgb8 ToRgb8(const QColor& color) {
+  return Rgb8{static_cast<uint8_t>(color.red()), static_cast<uint8_t>(color.green()),
+              static_cast<uint8_t>(color.blue())};
+}
+
+// An unlit actor that shows the poly data's RGB scalars exactly as given.
+vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* poly, bool cell_colors) {
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->ScalarVisibilityOn();
+  mapper->SetColorModeToDirectScalars();
+  if (cell_colors) {
+    mapper->SetScalarModeToUseCellData();
+  } else {
+    mapper->SetScalarModeToUsePointData();
+  }
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> MakeSegmentsActor(const std::vector<ColoredSegment>& segments,
+                                            double line_width_px) {
+  vtkSmartPointer<vtkActor> actor = MakeActor(MakeSegmentsPolyData(segments), true);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(line_width_px));
+  return actor;
+}
+
+}  // namespace
+
+struct SceneView::Impl {
+  struct Layer {
+    vtkSmartPointer<vtkActor> actor;
+    Eigen::Isometry3d world_from_layer = Eigen::Isometry3d::Identity();
+    bool visible = true;
+  };
+
+  SceneView* view = nullptr;
+  vtkRenderer* renderer = nullptr;  // Owned by VtkGlWidget.
+  std::map<std::string, Layer> layers;
+  vtkSmartPointer<vtkActor> grid;
+  bool grid_visible = true;
+  double grid_spacing_m = 1.0;
+  int grid_cells = 20;
+  double grid_height_m = 0.0;
+  Eigen::Vector3d up = -Eigen::Vector3d::UnitY();
+  Eigen::Vector3d forward = Eigen::Vector3d::UnitZ();
+
+  static void ApplyPose(vtkActor* actor, const Eigen::Isometry3d& world_from_layer) {
+    vtkNew<vtkMatrix4x4> matrix;
+    const Eigen::Matrix4d m = world_from_layer.matrix();
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, m(r, c));
+    }
+    actor->SetUserMatrix(matrix);
+  }
+
+  static bool HasGeometry(vtkActor* actor) {
+    const double* b = actor->GetBounds();
+    return b != nullptr && b[0] <= b[1];
+  }
+
+  bool ShowsGeometry() const {
+    return std::any_of(layers.begin(), layers.end(), [](const auto& entry) {
+      return entry.second.visible && HasGeometry(entry.second.actor);
+    });
+  }
+
+  // Puts `actor` in place of the layer's previous one, keeping its pose and visibility.
+  void Replace(const std::string& name, vtkSmartPointer<vtkActor> actor) {
+    const bool was_empty = !ShowsGeometry();
+    Layer& layer = layers[name];
+    if (layer.actor) renderer->RemoveActor(layer.actor);
+    layer.actor = std::move(actor);
+    ApplyPose(layer.actor, layer.world_from_layer);
+    layer.actor->SetVisibility(layer.visible);
+    renderer->AddActor(layer.actor);
+    // The first geometry shown in an empty scene gets a fitted view; later updates (a new frame
+    // of the same stream) keep the camera where the user put it.
+    if (was_empty && layer.visible && HasGeometry(layer.actor)) {
+      view->ResetView();
+    } else {
+      Changed();
+    }
+  }
+
+  void RebuildGrid() {
+    if (grid) renderer->RemoveActor(grid);
+    grid = nullptr;
+    if (!grid_visible) return;
+    const Eigen::Vector3d u = (forward - forward.dot(up) * up).normalized();
+    const Eigen::Vector3d v = up.cross(u);
+    std::vector<ColoredSegment> segments;
+    AppendGrid(grid_height_m * up, u, v, grid_spacing_m, grid_cells / 2, Rgb8{80, 80, 88},
+               &segments);
+    grid = MakeSegmentsActor(segments, 1.0);
+    grid->PickableOff();
+    renderer->AddActor(grid);
+  }
+
+  void Changed() {
+    renderer->ResetCameraClippingRange();
+    view->ScheduleRender();
+  }
+};
+
+SceneView::SceneView(QWidget* parent) : VtkGlWidget(parent), impl_(std::make_unique<Impl>()) {
+  impl_->view = this;
+  impl_->renderer = renderer();
+  impl_->renderer->SetBackground(0.11, 0.11, 0.13);
+  impl_->RebuildGrid();
+  ResetView();
+}
+
+SceneView::~SceneView() = default;
+
+void SceneView::SetPointCloud(const std::string& layer, std::shared_ptr<const PointCloud> cloud,
+                              ColorMode mode, double point_size_px) {
+  PointCloud empty;
+  const PointCloud& points = cloud ? *cloud : empty;
+  CloudColoring coloring;
+  coloring.use_rgb = (mode == ColorMode::kAuto || mode == ColorMode::kRgb) && points.has_colors();
+  coloring.scalar_axis =
+      (mode == ColorMode::kHeight ? impl_->up : impl_->forward).normalized().cast<float>();
+  vtkSmartPointer<vtkActor> actor = MakeActor(MakeCloudPolyData(points, coloring), false);
+  actor->GetProperty()->SetPointSize(static_cast<float>(point_size_px));
+  impl_->Replace(layer, std::move(actor));
+}
+
+void SceneView::SetLines(const std::string& layer, const std::vector<Segment>& segments,
+                         QColor color, double line_width_px) {
+  std::vector<ColoredSegment> colored;
+  colored.reserve(segments.size());
+  const Rgb8 rgb = ToRgb8(color);
+  for (const Segment& s : segments) colored.push_back({s.first, s.second, rgb});
+  impl_->Replace(layer, MakeSegmentsActor(colored, line_width_px));
+}
+
+void SceneView::SetTrajectory(const std::string& layer, const Trajectory& trajectory, QColor color,
+                              double line_width_px) {
+  std::vector<ColoredSegment> colored;
+  const Rgb8 rgb = ToRgb8(color);
+  const auto& poses = trajectory.poses();
+  for (size_t i = 1; i < poses.size(); ++i) {
+    colored.push_back({poses[i - 1].world_from_sensor.translation(),
+                       poses[i].world_from_sensor.translation(), rgb});
+  }
+  impl_->Replace(layer, MakeSegmentsActor(colored, line_width_px));
+}
+
+void SceneView::SetPoses(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
+                         QColor color, double size) {
+  std::vector<ColoredSegment> colored;
+  colored.reserve(3 * poses.size());
+  const Rgb8 rgb = ToRgb8(color);
+  for (const Eigen::Isometry3d& pose : poses) {
+    AppendAxes(pose, size, color.isValid() ? &rgb : nullptr, &colored);
+  }
+  impl_->Replace(layer, MakeSegmentsActor(colored, 2.0));
+}
+
+void SceneView::SetFrusta(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
+                          QColor color, double size) {
+  std::vector<ColoredSegment> colored;
+  colored.reserve(10 * poses.size());
+  for (const Eigen::Isometry3d& pose : poses) AppendFrustum(pose, size, ToRgb8(color), &colored);
+  impl_->Replace(layer, MakeSegmentsActor(colored, 1.5));
+}
+
+void SceneView::RemoveLayer(const std::string& layer) {
+  auto it = impl_->layers.find(layer);
+  if (it == impl_->layers.end()) return;
+  impl_->renderer->RemoveActor(it->second.actor);
+  impl_->layers.erase(it);
+  impl_->Changed();
+}
+
+void SceneView::ClearLayers() {
+  for (auto& [name, layer] : impl_->layers) impl_->renderer->RemoveActor(layer.actor);
+  impl_->layers.clear();
+  impl_->Changed();
+}
+
+void SceneView::SetLayerPose(const std::string& layer, const Eigen::Isometry3d& world_from_layer) {
+  auto it = impl_->layers.find(layer);
+  if (it == impl_->layers.end()) return;
+  it->second.world_from_layer = world_from_layer;
+  Impl::ApplyPose(it->second.actor, world_from_layer);
+  impl_->Changed();
+}
+
+void SceneView::SetLayerVisible(const std::string& layer, bool visible) {
+  auto it = impl_->layers.find(layer);
+  if (it == impl_->layers.end()) return;
+  it->second.visible = visible;
+  it->second.actor->SetVisibility(visible);
+  impl_->Changed();
+}
+
+bool SceneView::HasLayer(const std::string& layer) const { return impl_->layers.count(layer) > 0; }
+
+std::vector<std::string> SceneView::LayerNames() const {
+  std::vector<std::string> names;
+  for (const auto& [name, layer] : impl_->layers) names.push_back(name);
+  return names;
+}
+
+void SceneView::SetGroundGrid(bool visible, double spacing_m, int cells_per_side, double height_m) {
+  impl_->grid_visible = visible;
+  impl_->grid_height_m = height_m;
+  impl_->grid_spacing_m = spacing_m > 0 ? spacing_m : 1.0;
+  impl_->grid_cells = std::max(2, cells_per_side);
+  impl_->RebuildGrid();
+  impl_->Changed();
+}
+
+void SceneView::SetViewAxes(const Eigen::Vector3d& up, const Eigen::Vector3d& forward) {
+  const Eigen::Vector3d u = up.normalized();
+  Eigen::Vector3d f = forward - forward.dot(u) * u;
+  if (!u.allFinite() || f.norm() < 1e-9) return;  // Degenerate: keep the current axes.
+  impl_->up = u;
+  impl_->forward = f.normalized();
+  impl_->RebuildGrid();
+  ResetView();
+}
+
+void SceneView::ResetView() {
+  double bounds[6] = {1, -1, 1, -1, 1, -1};  // Empty (min > max).
+  const auto merge = [&bounds](vtkActor* actor) {
+    if (!Impl::HasGeometry(actor)) return;
+    const double* b = actor->GetBounds();
+    for (int i = 0; i < 3; ++i) {
+      if (bounds[2 * i] > bounds[2 * i + 1]) {
+        bounds[2 * i] = b[2 * i];
+        bounds[2 * i + 1] = b[2 * i + 1];
+      } else {
+        bounds[2 * i] = std::min(bounds[2 * i], b[2 * i]);
+        bounds[2 * i + 1] = std::max(bounds[2 * i + 1], b[2 * i + 1]);
+      }
+    }
+  };
+  for (const auto& [name, layer] : impl_->layers) {
+    if (layer.visible) merge(layer.actor);
+  }
+  if (bounds[0] > bounds[1] && impl_->grid) merge(impl_->grid);
+  if (bounds[0] > bounds[1]) {
+    for (int i = 0; i < 3; ++i) {
+      bounds[2 * i] = -1;
+      bounds[2 * i + 1] = 1;
+    }
+  }
+  const Eigen::Vector3d center(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+                               0.5 * (bounds[4] + bounds[5]));
+  // Behind the scene along forward, raised a little along up, looking down at ~20 degrees.
+  const Eigen::Vector3d direction = (impl_->forward - 0.35 * impl_->up).normalized();
+  vtkCamera* camera = impl_->renderer->GetActiveCamera();
+  camera->SetFocalPoint(center.data());
+  const Eigen::Vector3d position = center - direction;
+  camera->SetPosition(position.data());
+  camera->SetViewUp(impl_->up.data());
+  camera->OrthogonalizeViewUp();
+  impl_->renderer->ResetCamera(bounds);  // Keeps the direction, fits the distance.
+  impl_->Changed();
+}
+
+void SceneView::SetBackground(QColor color) {
+  impl_->renderer->SetBackground(color.redF(), color.greenF(), color.blueF());
+  ScheduleRender();
+}
+
+}  // namespace sightline

@@ -1,0 +1,101 @@
+// A 3D scene of named layers (clouds, lines, trajectories, poses, camera frusta) for robot
+// perception results. VTK stays inside the .cpp files.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <QColor>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "widgets/vtk_gl_widget.h"
+
+namespace sightline {
+
+struct PointCloud;
+class Trajectory;
+
+// A 3D view with named layers. Setting a layer replaces what it showed; layers are drawn in the
+// world frame, optionally placed by SetLayerPose. The default axes suit camera optical frames
+// (z forward, y down): the first view looks along +z from behind with -y up. Call
+// SetViewAxes({0, 0, 1}, {1, 0, 0}) for z-up robot or map frames.
+//
+// Only the GUI thread may call it; hand results over with queued signals carrying
+// std::shared_ptr<const ...>. Renders are scheduled, never immediate, so updating ten layers
+// costs one render.
+//
+//   SceneView* view = new SceneView(this);
+//   view->SetPointCloud("cloud", frame.cloud, SceneView::ColorMode::kAuto);
+//   view->SetTrajectory("estimate", trajectory, Qt::yellow);
+//   view->SetFrusta("camera", {world_from_camera}, Qt::cyan, 0.3);
+class SceneView : public VtkGlWidget {
+  Q_OBJECT
+
+ public:
+  // How points of a cloud layer get their colour.
+  enum class ColorMode {
+    kAuto,    // kRgb when the cloud has colours, else kDepth.
+    kRgb,     // The cloud's own colours (falls back to kDepth without them).
+    kDepth,   // Distance along the forward axis, turbo colour map.
+    kHeight,  // Height along the up axis, turbo colour map.
+  };
+
+  // A line segment in the layer's frame, metres.
+  using Segment = std::pair<Eigen::Vector3d, Eigen::Vector3d>;
+
+  // Creates an empty scene with a ground grid and a dark background.
+  explicit SceneView(QWidget* parent = nullptr);
+  // Out of line: Impl holds VTK types.
+  ~SceneView() override;
+
+  // Shows a point cloud; NaN points are skipped. The cloud is converted at once and not kept.
+  void SetPointCloud(const std::string& layer, std::shared_ptr<const PointCloud> cloud,
+                     ColorMode mode = ColorMode::kAuto, double point_size_px = 2.0);
+  // Shows line segments in one colour.
+  void SetLines(const std::string& layer, const std::vector<Segment>& segments, QColor color,
+                double line_width_px = 2.0);
+  // Shows the path through a trajectory's positions.
+  void SetTrajectory(const std::string& layer, const Trajectory& trajectory, QColor color,
+                     double line_width_px = 2.0);
+  // Shows an axis triad of length `size` metres per pose (world_from_frame). An invalid colour
+  // (QColor()) draws x red, y green, z blue; a valid one draws all axes in it, to tell pose sets
+  // apart.
+  void SetPoses(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses, QColor color,
+                double size);
+  // Shows a camera frustum per pose (world_from_camera, optical frame): apex at the centre,
+  // image plane at `size` metres along z, and a small triangle over the image's top edge.
+  void SetFrusta(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
+                 QColor color, double size);
+  // Removes a layer; unknown names are ignored.
+  void RemoveLayer(const std::string& layer);
+  // Removes every layer (the ground grid stays).
+  void ClearLayers();
+  // Places a layer in the world (world_from_layer), e.g. a cloud in the camera frame.
+  void SetLayerPose(const std::string& layer, const Eigen::Isometry3d& world_from_layer);
+  // Shows or hides a layer without discarding it.
+  void SetLayerVisible(const std::string& layer, bool visible);
+  // Whether a layer of that name exists.
+  bool HasLayer(const std::string& layer) const;
+  // Names of all layers, sorted.
+  std::vector<std::string> LayerNames() const;
+
+  // Shows a square grid perpendicular to the up axis, `height_m` above the origin (e.g. -1.2 for
+  // the floor under a camera held at 1.2 m in an optical-frame scene).
+  void SetGroundGrid(bool visible, double spacing_m = 1.0, int cells_per_side = 20,
+                     double height_m = 0.0);
+  // The scene's up and forward directions (world frame); they orient the grid, the default
+  // view, and kHeight / kDepth colouring of clouds set afterwards.
+  void SetViewAxes(const Eigen::Vector3d& up, const Eigen::Vector3d& forward);
+  // Fits all visible layers (the grid only when nothing else is shown), looking along the
+  // forward axis from behind and slightly above, with the up axis up.
+  void ResetView();
+  // Background colour of the view.
+  void SetBackground(QColor color);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sightline
