@@ -1,6 +1,8 @@
 // sightline: the desktop application.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QLocale>
+#include <QTranslator>
 #include <QTimer>
 #include <cstdio>
 
@@ -15,6 +17,9 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName("Sightline");
   QApplication::setApplicationName("Sightline");
   QApplication::setApplicationVersion(SIGHTLINE_VERSION);
+
+  QTranslator translator;
+  if (translator.load(QLocale(), "sightline", "_", ":/i18n")) QApplication::installTranslator(&translator);
 
   QCommandLineParser parser;
   parser.setApplicationDescription(

@@ -17,7 +17,6 @@
 
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/view_options.h"
-#include "core/pipeline/inspect_pipeline.h"
 #include "widgets/image_view.h"
 #include "widgets/log_panel.h"
 #include "widgets/parameter_panel.h"
@@ -37,7 +36,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   resize(1400, 900);
   playback_ = new PlaybackController(this);
   Status declared = options_.Declare(ViewOptions::Describe());
-  if (declared.ok()) declared = options_.Declare(InspectOptions::Describe());
   BuildViews();
   BuildMenus();
   ConnectPlayback();
@@ -62,11 +60,9 @@ void MainWindow::BuildViews() {
     return dock;
   };
   primary_view_ = new ImageView(this);
-  primary_view_->SetTitle(tr("Colour"));
   secondary_view_ = new ImageView(this);
-  secondary_view_->SetTitle(tr("Depth"));
-  add_dock(primary_view_, tr("Colour"), "colour_dock", Qt::LeftDockWidgetArea);
-  add_dock(secondary_view_, tr("Depth"), "depth_dock", Qt::LeftDockWidgetArea);
+  primary_dock_ = add_dock(primary_view_, tr("Colour"), "colour_dock", Qt::LeftDockWidgetArea);
+  secondary_dock_ = add_dock(secondary_view_, tr("Depth"), "depth_dock", Qt::LeftDockWidgetArea);
 
   parameter_panel_ = new ParameterPanel(this);
   parameter_panel_->SetOptions(options_);
@@ -170,8 +166,8 @@ void MainWindow::OnOpened(const QString& path) {
   scene_view_->ClearLayers();
   const bool rgbd = info->kind == SourceKind::kRgbd;
   const bool stereo = info->kind == SourceKind::kStereo;
-  primary_view_->SetTitle(rgbd ? tr("Colour") : stereo ? tr("Left") : tr("Image"));
-  secondary_view_->SetTitle(stereo ? tr("Right") : tr("Depth"));
+  primary_dock_->setWindowTitle(rgbd ? tr("Colour") : stereo ? tr("Left") : tr("Image"));
+  secondary_dock_->setWindowTitle(stereo ? tr("Right") : tr("Depth"));
   primary_view_->Clear();
   secondary_view_->Clear();
   playback_bar_->SetFrameCount(info->frame_count);
@@ -186,7 +182,7 @@ void MainWindow::OnOpened(const QString& path) {
   status_label_->setText(summary);
   log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Opened %1").arg(summary));
   for (const std::string& note : info->notes) {
-    log_panel_->AddMessage(LogPanel::Severity::kWarning, QString::fromStdString(note));
+    log_panel_->AddMessage(LogPanel::Severity::kInfo, QString::fromStdString(note));
   }
   statusBar()->clearMessage();
   setWindowTitle(tr("Sightline - %1").arg(QFileInfo(path).fileName()));
@@ -203,7 +199,8 @@ void MainWindow::ShowFrame(std::shared_ptr<const PlaybackResult> result) {
   if (!result->secondary_image.empty()) {
     if (result->secondary_is_depth) {
       const ViewOptions view = options_.Extract(ViewOptions::Describe());
-      secondary_view_->SetDepth(result->secondary_image, view.depth_range_m);
+      secondary_view_->SetDepthRange(0.0, view.depth_range_m);
+      secondary_view_->SetImage(result->secondary_image, ImageView::Kind::kDepthMeters);
     } else {
       secondary_view_->SetImage(result->secondary_image);
     }

@@ -10,6 +10,7 @@
 #include "core/options/option_set.h"
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 
@@ -64,6 +65,8 @@ class MainWindow : public QMainWindow {
   PlaybackController* playback_ = nullptr;
   ImageView* primary_view_ = nullptr;
   ImageView* secondary_view_ = nullptr;
+  QDockWidget* primary_dock_ = nullptr;
+  QDockWidget* secondary_dock_ = nullptr;
   SceneView* scene_view_ = nullptr;
   ParameterPanel* parameter_panel_ = nullptr;
   LogPanel* log_panel_ = nullptr;

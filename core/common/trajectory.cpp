@@ -49,6 +49,11 @@ StatusOr<Trajectory> ReadTumTrajectory(const std::string& path) {
   for (const DataLine& line : *lines) {
     auto numbers = ParseNumbers(line, 8, path);
     if (!numbers.ok()) return numbers.status();
+    if (numbers->size() != 8) {
+      return ParseError(path + " line " + std::to_string(line.number) +
+                        ": expected 8 numbers (t tx ty tz qx qy qz qw), found " +
+                        std::to_string(numbers->size()));
+    }
     const std::vector<double>& v = *numbers;
     Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
     const double norm = q.norm();
@@ -88,11 +93,20 @@ StatusOr<Trajectory> ReadKittiTrajectory(const std::string& path,
                                          const std::vector<double>& times_s, double period_s) {
   auto lines = ReadDataLines(path);
   if (!lines.ok()) return lines.status();
-  const bool use_times = times_s.size() == lines->size();
+  if (!times_s.empty() && times_s.size() != lines->size()) {
+    return InvalidArgument(path + " has " + std::to_string(lines->size()) + " poses but " +
+                           std::to_string(times_s.size()) + " timestamps were given");
+  }
+  const bool use_times = !times_s.empty();
   Trajectory trajectory;
   for (size_t i = 0; i < lines->size(); ++i) {
     auto numbers = ParseNumbers((*lines)[i], 12, path);
     if (!numbers.ok()) return numbers.status();
+    if (numbers->size() != 12) {
+      return ParseError(path + " line " + std::to_string((*lines)[i].number) +
+                        ": expected 12 numbers (3x4 pose), found " +
+                        std::to_string(numbers->size()));
+    }
     const std::vector<double>& v = *numbers;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     for (int r = 0; r < 3; ++r) {

@@ -46,7 +46,7 @@ StatusOr<Trajectory> ReadTumTrajectory(const std::string& path);
 Status WriteTumTrajectory(const Trajectory& trajectory, const std::string& path);
 
 // Reads KITTI poses (12 numbers per line: the top 3x4 of world_from_camera). Times are taken
-// from `times_s` when it has one entry per pose, else set to index * period_s.
+// from `times_s` (which must then have one entry per pose), else set to index * period_s.
 StatusOr<Trajectory> ReadKittiTrajectory(const std::string& path,
                                          const std::vector<double>& times_s = {},
                                          double period_s = 0.1);

@@ -280,17 +280,9 @@ Status EurocSource::Open() {
 
 StatusOr<Frame> EurocSource::Load(int64_t index) {
   const size_t i = static_cast<size_t>(index);
-  auto left = LoadImage8(left_files_[i]);
-  if (!left.ok()) return left.status();
-  auto right = LoadImage8(right_files_[i]);
-  if (!right.ok()) return right.status();
-  if (left->size() != right->size() || left->type() != right->type()) {
-    return ParseError(right_files_[i] + ": size or type differs from the left image " +
-                      left_files_[i]);
-  }
-  StereoFrame frame;
-  frame.left = std::move(*left);
-  frame.right = std::move(*right);
+  StatusOr<StereoFrame> pair = LoadStereoPair(left_files_[i], right_files_[i]);
+  if (!pair.ok()) return pair.status();
+  StereoFrame frame = std::move(*pair);
   frame.stamp = MakeStamp(index);
   return Frame(std::move(frame));
 }

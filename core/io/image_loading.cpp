@@ -105,4 +105,19 @@ StatusOr<cv::Mat> LoadDepthImage(const std::string& path, double units_per_metre
   return depth_m;
 }
 
+StatusOr<StereoFrame> LoadStereoPair(const std::string& left_path,
+                                     const std::string& right_path) {
+  auto left = LoadImage8(left_path);
+  if (!left.ok()) return left.status();
+  auto right = LoadImage8(right_path);
+  if (!right.ok()) return right.status();
+  if (left->size() != right->size() || left->type() != right->type()) {
+    return ParseError(right_path + ": size or type differs from the left image " + left_path);
+  }
+  StereoFrame frame;
+  frame.left = std::move(*left);
+  frame.right = std::move(*right);
+  return frame;
+}
+
 }  // namespace sightline

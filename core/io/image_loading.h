@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/common/frame.h"
 #include "core/common/status.h"
 
 namespace sightline {
@@ -26,5 +27,8 @@ StatusOr<cv::Mat> LoadDepthImage(const std::string& path, double units_per_metre
 
 // "8-bit 1-channel" for CV_8UC1 etc., for messages.
 std::string DescribeMatType(int type);
+
+// Loads a left/right pair (8-bit grey or colour); both must have the same size and type.
+StatusOr<StereoFrame> LoadStereoPair(const std::string& left_path, const std::string& right_path);
 
 }  // namespace sightline

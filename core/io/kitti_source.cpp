@@ -156,12 +156,13 @@ Status KittiSource::Open() {
     poses_path = JoinPath(JoinPath(folder_, "../../poses"), BaseName(folder_) + ".txt");
   }
   if (FileExists(poses_path)) {
-    auto read = ReadKittiTrajectory(poses_path, times);
+    auto read = ReadKittiTrajectory(poses_path);
     if (!read.ok()) return read.status();
     if (read->size() != n) {
       return ParseError(poses_path + ": " + std::to_string(read->size()) + " poses for " +
                         std::to_string(n) + " image pairs");
     }
+    for (size_t i = 0; i < n; ++i) read->mutable_poses()[i].time_s = times[i];
     ground_truth = std::move(*read);
     info.notes.push_back("ground truth from " + BaseName(poses_path) +
                          ": left camera in the frame of the left camera at image 0");
@@ -173,17 +174,9 @@ Status KittiSource::Open() {
 
 StatusOr<Frame> KittiSource::Load(int64_t index) {
   const size_t i = static_cast<size_t>(index);
-  auto left = LoadImage8(left_files_[i]);
-  if (!left.ok()) return left.status();
-  auto right = LoadImage8(right_files_[i]);
-  if (!right.ok()) return right.status();
-  if (left->size() != right->size() || left->type() != right->type()) {
-    return ParseError(right_files_[i] + ": size or type differs from the left image " +
-                      left_files_[i]);
-  }
-  StereoFrame frame;
-  frame.left = std::move(*left);
-  frame.right = std::move(*right);
+  StatusOr<StereoFrame> pair = LoadStereoPair(left_files_[i], right_files_[i]);
+  if (!pair.ok()) return pair.status();
+  StereoFrame frame = std::move(*pair);
   frame.stamp = MakeStamp(index);
   return Frame(std::move(frame));
 }

@@ -2,10 +2,18 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <cstring>
 
 #include "widgets/vtk_gl_widget.h"
 
 int main(int argc, char** argv) {
+  // Listing tests (ctest discovery at build time) needs no display.
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--gtest_list_tests") == 0) {
+      ::testing::InitGoogleTest(&argc, argv);
+      return RUN_ALL_TESTS();
+    }
+  }
   sightline::VtkGlWidget::SetDefaultSurfaceFormat();
   QApplication app(argc, argv);
   QApplication::setOrganizationName("SightlineTests");

@@ -87,6 +87,19 @@ TEST(Trajectory, TruncatedLineIsAnError) {
   EXPECT_NE(t.status().message().find("expected 12"), std::string::npos);
 }
 
+TEST(Trajectory, ExtraFieldsAndMismatchedTimesAreErrors) {
+  const std::string dir = testing::TempDir("traj");
+  std::ofstream(dir + "/gt.txt") << "1.0 0 0 0 0 0 0 1 7\n";
+  StatusOr<Trajectory> tum = ReadTumTrajectory(dir + "/gt.txt");
+  ASSERT_FALSE(tum.ok());
+  EXPECT_NE(tum.status().message().find("found 9"), std::string::npos) << tum.status().message();
+  std::ofstream(dir + "/p.txt") << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1 0\n";
+  EXPECT_TRUE(ReadKittiTrajectory(dir + "/p.txt").ok());
+  StatusOr<Trajectory> kitti = ReadKittiTrajectory(dir + "/p.txt", {0.0, 0.1, 0.2});
+  ASSERT_FALSE(kitti.ok());
+  EXPECT_EQ(kitti.status().code(), StatusCode::kInvalidArgument);
+}
+
 TEST(Trajectory, MissingFileIsNotFound) {
   StatusOr<Trajectory> t = ReadTumTrajectory("/nonexistent/gt.txt");
   ASSERT_FALSE(t.ok());
