@@ -10,6 +10,7 @@ namespace sightline::cli {
 int InfoCommand(const std::vector<std::string>& args);
 int RunCommand(const std::vector<std::string>& args);
 int OptionsCommand(const std::vector<std::string>& args);
+int EvalCommand(const std::vector<std::string>& args);
 
 // Prints "sightline-cli: <message>" to stderr and returns 1.
 int Fail(const std::string& message);

@@ -17,6 +17,8 @@ const char kUsage[] =
     "                             run a pipeline headless; writes DIR/metrics.json\n"
     "  options [PIPELINE] [--yaml]\n"
     "                             list the pipelines, or the options of one with their ranges\n"
+    "  eval EST GT [--align se3|sim3|none] [--json] [--plot DIR]\n"
+    "                             accuracy of a trajectory against ground truth (ATE, RPE, KITTI)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -32,5 +34,6 @@ int main(int argc, char** argv) {
   if (command == "info") return sightline::cli::InfoCommand(args);
   if (command == "run") return sightline::cli::RunCommand(args);
   if (command == "options") return sightline::cli::OptionsCommand(args);
+  if (command == "eval") return sightline::cli::EvalCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }
