@@ -15,6 +15,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "app/sightline/evaluation_panel.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/view_options.h"
 #include "widgets/image_view.h"
@@ -68,7 +69,12 @@ void MainWindow::BuildViews() {
   parameter_panel_->SetOptions(options_);
   add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
   log_panel_ = new LogPanel(this);
-  add_dock(log_panel_, tr("Log"), "log_dock", Qt::BottomDockWidgetArea);
+  QDockWidget* log_dock = add_dock(log_panel_, tr("Log"), "log_dock", Qt::BottomDockWidgetArea);
+  evaluation_panel_ = new EvaluationPanel(this);
+  evaluation_dock_ = add_dock(evaluation_panel_, tr("Evaluation"), "evaluation_dock",
+                              Qt::BottomDockWidgetArea);
+  tabifyDockWidget(log_dock, evaluation_dock_);
+  log_dock->raise();
 
   playback_bar_ = new PlaybackBar(this);
   auto* bar = new QToolBar(tr("Playback"), this);
@@ -107,6 +113,13 @@ void MainWindow::BuildMenus() {
   connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
   view_menu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view_menu_->addAction(dock->toggleViewAction());
+
+  QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+  QAction* evaluate = tools->addAction(tr("&Evaluate trajectory..."));
+  connect(evaluate, &QAction::triggered, this, [this] {
+    evaluation_dock_->show();
+    evaluation_dock_->raise();
+  });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   connect(help->addAction(tr("&About Sightline")), &QAction::triggered, this, [this] {

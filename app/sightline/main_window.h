@@ -16,6 +16,7 @@ class QMenu;
 
 namespace sightline {
 
+class EvaluationPanel;
 class ImageView;
 class LogPanel;
 class ParameterPanel;
@@ -36,6 +37,7 @@ class MainWindow : public QMainWindow {
   void OpenPath(const QString& path);
 
   SceneView* scene_view() const { return scene_view_; }
+  EvaluationPanel* evaluation_panel() const { return evaluation_panel_; }
   PlaybackController* playback() const { return playback_; }
   // Frames shown since the last open.
   int64_t frames_shown() const { return frames_shown_; }
@@ -66,6 +68,8 @@ class MainWindow : public QMainWindow {
   ImageView* primary_view_ = nullptr;
   ImageView* secondary_view_ = nullptr;
   QDockWidget* primary_dock_ = nullptr;
+  QDockWidget* evaluation_dock_ = nullptr;
+  EvaluationPanel* evaluation_panel_ = nullptr;
   QDockWidget* secondary_dock_ = nullptr;
   SceneView* scene_view_ = nullptr;
   ParameterPanel* parameter_panel_ = nullptr;

@@ -4,12 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <sstream>
 #include <QSignalSpy>
 #include <QTest>
 
+#include "app/sightline/evaluation_panel.h"
 #include "app/sightline/playback_controller.h"
 #include "tests/app/process.h"
 #include "tests/support/test_data.h"
+#include "widgets/image_view.h"
 #include "widgets/scene_view.h"
 
 namespace sightline {
@@ -91,6 +97,53 @@ TEST(SightlineExecutable, ScreenshotShowsColourDepthAndCloud) {
   ASSERT_FALSE(shot.isNull()) << "no screenshot at " << png;
   EXPECT_GT(shot.width(), 800);
   EXPECT_GT(ForegroundPixels(shot), shot.width() * shot.height() / 4 / 5);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(EvaluationPanel, EvaluatesKittiGroundTruthAgainstItselfAndAScaledCopy) {
+  SIGHTLINE_REQUIRE_DATA(dir, "kitti_clip1");
+  MainWindow window;
+  window.show();
+  EvaluationPanel* panel = window.evaluation_panel();
+  QSignalSpy finished(panel, &EvaluationPanel::Finished);
+  panel->Evaluate(QString::fromStdString(dir + "/poses.txt"),
+                  QString::fromStdString(dir + "/poses.txt"), "se3");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 20000));
+  EXPECT_NEAR(panel->Figure("ate_rmse_m"), 0.0, 1e-9);
+  EXPECT_NEAR(panel->Figure("pairs"), 51, 0);
+  EXPECT_FALSE(panel->top_view()->image().isNull());
+  EXPECT_FALSE(panel->error_view()->image().isNull());
+
+  // A copy whose translations are 1% longer: length error 1% without alignment.
+  std::ifstream in(dir + "/poses.txt");
+  const std::string scaled = testing::TempDir("eval_gui") + "/scaled.txt";
+  std::ofstream out(scaled);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::vector<double> v((std::istream_iterator<double>(fields)), std::istream_iterator<double>());
+    if (v.size() != 12) continue;
+    for (int i : {3, 7, 11}) v[i] *= 1.01;
+    for (size_t i = 0; i < v.size(); ++i) out << (i ? " " : "") << std::setprecision(12) << v[i];
+    out << "\n";
+  }
+  out.close();
+  panel->Evaluate(QString::fromStdString(scaled), QString::fromStdString(dir + "/poses.txt"),
+                  "none");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 2; }, 20000));
+  EXPECT_NEAR(panel->Figure("length_error_pct"), 1.0, 1e-3);
+}
+
+TEST(EvaluationPanel, MissingFileIsReported) {
+  EvaluationPanel panel;
+  QSignalSpy failed(&panel, &EvaluationPanel::Failed);
+  panel.Evaluate("/nonexistent/est.txt", "/nonexistent/gt.txt", "se3");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return failed.count() == 1; }, 10000));
+  EXPECT_TRUE(failed.at(0).at(0).toString().contains("/nonexistent/est.txt"));
 }
 
 }  // namespace
