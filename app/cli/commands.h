@@ -11,6 +11,7 @@ int InfoCommand(const std::vector<std::string>& args);
 int RunCommand(const std::vector<std::string>& args);
 int OptionsCommand(const std::vector<std::string>& args);
 int EvalCommand(const std::vector<std::string>& args);
+int SimulateCommand(const std::vector<std::string>& args);
 
 // Prints "sightline-cli: <message>" to stderr and returns 1.
 int Fail(const std::string& message);

@@ -19,6 +19,8 @@ const char kUsage[] =
     "                             list the pipelines, or the options of one with their ranges\n"
     "  eval EST GT [--align se3|sim3|none] [--json] [--plot DIR]\n"
     "                             accuracy of a trajectory against ground truth (ATE, RPE, KITTI)\n"
+    "  simulate SCENE --out DIR [--frames N] [--seed S] [--noise PROFILE]\n"
+    "                             write a simulated recording (corridor, terrain, panel)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -35,5 +37,6 @@ int main(int argc, char** argv) {
   if (command == "run") return sightline::cli::RunCommand(args);
   if (command == "options") return sightline::cli::OptionsCommand(args);
   if (command == "eval") return sightline::cli::EvalCommand(args);
+  if (command == "simulate") return sightline::cli::SimulateCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }
