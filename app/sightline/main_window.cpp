@@ -1,6 +1,7 @@
 #include "app/sightline/main_window.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -11,11 +12,13 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 
 #include "app/sightline/evaluation_panel.h"
+#include "app/sightline/pipeline_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/view_options.h"
 #include "widgets/image_view.h"
@@ -114,6 +117,15 @@ void MainWindow::BuildMenus() {
   view_menu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view_menu_->addAction(dock->toggleViewAction());
 
+  pipeline_menu_ = menuBar()->addMenu(tr("&Pipeline"));
+  pipeline_actions_ = new QActionGroup(this);
+  QAction* none = pipeline_menu_->addAction(tr("None (show frames only)"));
+  none->setCheckable(true);
+  none->setChecked(true);
+  pipeline_actions_->addAction(none);
+  connect(none, &QAction::triggered, this, [this] { ActivatePipeline(QString()); });
+  pipeline_menu_->addSeparator();
+
   QMenu* tools = menuBar()->addMenu(tr("&Tools"));
   QAction* evaluate = tools->addAction(tr("&Evaluate trajectory..."));
   connect(evaluate, &QAction::triggered, this, [this] {
@@ -164,6 +176,70 @@ void MainWindow::ConnectPlayback() {
   connect(playback_bar_, &PlaybackBar::SpeedChanged, playback_, &PlaybackController::SetSpeed);
   connect(playback_bar_, &PlaybackBar::LoopChanged, playback_, &PlaybackController::SetLoop);
   connect(parameter_panel_, &ParameterPanel::OptionsChanged, this, &MainWindow::OnOptionsChanged);
+}
+
+void MainWindow::AddPipeline(PipelinePresenter* presenter) {
+  presenter->setParent(this);
+  pipelines_.push_back(presenter);
+  QAction* action = pipeline_menu_->addAction(presenter->Title());
+  action->setCheckable(true);
+  pipeline_actions_->addAction(action);
+  connect(action, &QAction::triggered, this,
+          [this, title = presenter->Title()] { ActivatePipeline(title); });
+  connect(presenter, &PipelinePresenter::Message, this, [this](int severity, const QString& text) {
+    log_panel_->AddMessage(severity >= 2   ? LogPanel::Severity::kError
+                           : severity == 1 ? LogPanel::Severity::kWarning
+                                           : LogPanel::Severity::kInfo,
+                           text);
+  });
+}
+
+bool MainWindow::ActivatePipeline(const QString& title) {
+  PipelinePresenter* next = nullptr;
+  for (PipelinePresenter* p : pipelines_) {
+    if (p->Title() == title) next = p;
+  }
+  if (!title.isEmpty() && next == nullptr) return false;
+  if (active_pipeline_ != nullptr) active_pipeline_->Detach();
+  active_pipeline_ = next;
+  for (QAction* action : pipeline_actions_->actions()) {
+    action->setChecked(action->text() == (next ? next->Title() : tr("None (show frames only)")));
+  }
+  // The panel shows the view options and the active pipeline's options.
+  OptionSet options;
+  Status declared = options.Declare(ViewOptions::Describe());
+  if (declared.ok() && next != nullptr) declared = next->DeclareOptions(&options);
+  if (!declared.ok()) {
+    log_panel_->AddMessage(LogPanel::Severity::kError, QString::fromStdString(declared.ToString()));
+    return false;
+  }
+  // Keep the user's view settings.
+  for (const OptionSpec& spec : options_.specs()) {
+    if (options.Has(spec.key)) (void)options.Set(spec.key, *options_.Get(spec.key));
+  }
+  options_ = options;
+  parameter_panel_->SetOptions(options_);
+  if (next == nullptr) {
+    playback_->SetProcessorFactory(nullptr, options_);
+    log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("No pipeline: showing frames only."));
+    return true;
+  }
+  next->Attach(this);
+  QPointer<PipelinePresenter> presenter(next);
+  playback_->SetProcessorFactory(
+      [presenter](const SourceInfo& info) -> std::unique_ptr<FrameProcessor> {
+        if (!presenter || !presenter->Accepts(info.kind)) return nullptr;
+        return presenter->CreateProcessor(info);
+      },
+      options_);
+  log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Pipeline: %1").arg(next->Title()));
+  if (playback_->info() != nullptr && !next->Accepts(playback_->info()->kind)) {
+    log_panel_->AddMessage(
+        LogPanel::Severity::kWarning,
+        tr("%1 cannot run on %2 frames; open another dataset.")
+            .arg(next->Title(), QString::fromUtf8(SourceKindName(playback_->info()->kind))));
+  }
+  return true;
 }
 
 void MainWindow::OpenPath(const QString& path) {
@@ -225,6 +301,13 @@ void MainWindow::ShowFrame(std::shared_ptr<const PlaybackResult> result) {
       first_cloud_ = false;
     }
   }
+  if (active_pipeline_ != nullptr && result->pipeline) {
+    if (!result->pipeline->status.ok()) {
+      log_panel_->AddMessage(LogPanel::Severity::kWarning,
+                             QString::fromStdString(result->pipeline->status.ToString()));
+    }
+    active_pipeline_->Show(*result);
+  }
   playback_bar_->SetPosition(result->stamp.sequence_id);
   status_label_->setToolTip(tr("frame %1, read in %2 ms")
                                 .arg(result->stamp.sequence_id)
@@ -242,6 +325,7 @@ void MainWindow::OnOptionsChanged(const OptionSet& options) {
     return;
   }
   playback_->SetViewOptions(view);
+  if (active_pipeline_ != nullptr) playback_->SetPipelineOptions(options_);
 }
 
 void MainWindow::ShowWelcome() {

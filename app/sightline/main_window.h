@@ -5,11 +5,13 @@
 #include <QMainWindow>
 #include <QStringList>
 #include <memory>
+#include <vector>
 
 #include "app/sightline/playback_result.h"
 #include "core/options/option_set.h"
 
 class QAction;
+class QActionGroup;
 class QDockWidget;
 class QLabel;
 class QMenu;
@@ -21,6 +23,7 @@ class ImageView;
 class LogPanel;
 class ParameterPanel;
 class PlaybackBar;
+class PipelinePresenter;
 class PlaybackController;
 class SceneView;
 
@@ -35,6 +38,11 @@ class MainWindow : public QMainWindow {
 
   // Opens a dataset folder or file in the background (File > Open, drag and drop, --open).
   void OpenPath(const QString& path);
+  // Adds a pipeline to the Pipeline menu.
+  void AddPipeline(PipelinePresenter* presenter);
+  // Makes a pipeline (by menu title) the one that runs on every frame; "" for none.
+  bool ActivatePipeline(const QString& title);
+  PipelinePresenter* active_pipeline() const { return active_pipeline_; }
 
   SceneView* scene_view() const { return scene_view_; }
   EvaluationPanel* evaluation_panel() const { return evaluation_panel_; }
@@ -78,6 +86,10 @@ class MainWindow : public QMainWindow {
   QLabel* status_label_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   QMenu* view_menu_ = nullptr;
+  QMenu* pipeline_menu_ = nullptr;
+  QActionGroup* pipeline_actions_ = nullptr;
+  std::vector<PipelinePresenter*> pipelines_;
+  PipelinePresenter* active_pipeline_ = nullptr;
   OptionSet options_;
   int64_t frames_shown_ = 0;
   bool first_cloud_ = true;

@@ -41,6 +41,7 @@ void PlaybackController::Open(const QString& path) {
             std::lock_guard<std::mutex> lock(self->mutex_);
             self->info_ = std::make_shared<SourceInfo>((**opened)->info());
           }
+          self->RebuildProcessor();
           self->StartWorker(std::make_unique<Player>(std::move(**opened)));
           emit self->Opened(path);
         },
@@ -58,8 +59,11 @@ void PlaybackController::Track(QFuture<void> future) {
 void PlaybackController::Close() {
   ++open_generation_;
   StopWorker();
-  std::lock_guard<std::mutex> lock(mutex_);
-  info_.reset();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    info_.reset();
+  }
+  RebuildProcessor();
 }
 
 const Trajectory* PlaybackController::ground_truth() const {
@@ -83,6 +87,69 @@ void PlaybackController::SetViewOptions(const ViewOptions& options) {
   if (!frame) return;
   // Redraw the current frame with the new options at once, also while paused.
   Track(QtConcurrent::run([this, frame, options] { Publish(Prepare(*frame, options)); }));
+}
+
+void PlaybackController::SetProcessorFactory(ProcessorFactory factory, const OptionSet& options) {
+  processor_factory_ = std::move(factory);
+  {
+    std::lock_guard<std::mutex> lock(processor_mutex_);
+    processor_options_ = options;
+    processor_options_dirty_ = true;
+  }
+  RebuildProcessor();
+}
+
+void PlaybackController::RebuildProcessor() {
+  std::unique_ptr<FrameProcessor> processor;
+  if (processor_factory_ && info_) processor = processor_factory_(*info_);
+  std::lock_guard<std::mutex> lock(processor_mutex_);
+  processor_ = std::move(processor);
+  processor_options_dirty_ = true;
+  last_processed_id_ = -1;
+}
+
+void PlaybackController::SetPipelineOptions(const OptionSet& options) {
+  {
+    std::lock_guard<std::mutex> lock(processor_mutex_);
+    processor_options_ = options;
+    processor_options_dirty_ = true;
+  }
+  std::shared_ptr<const Frame> frame;
+  ViewOptions view;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    frame = last_frame_;
+    view = view_options_;
+  }
+  if (!frame) return;
+  // Tuning while paused: show the current frame with the new thresholds at once.
+  Track(QtConcurrent::run([this, frame, view] {
+    auto result = std::const_pointer_cast<PlaybackResult>(Prepare(*frame, view));
+    result->pipeline = RunProcessor(*frame, /*replay=*/true);
+    Publish(std::move(result));
+  }));
+}
+
+std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(const Frame& frame,
+                                                                            bool replay) {
+  std::lock_guard<std::mutex> lock(processor_mutex_);
+  if (!processor_) return nullptr;
+  if (processor_options_dirty_) {
+    processor_options_dirty_ = false;
+    const Status configured = processor_->Configure(processor_options_);
+    if (!configured.ok()) {
+      auto failed = std::make_shared<PipelineFrameResult>();
+      failed->stamp = StampOf(frame);
+      failed->status = configured;
+      return failed;
+    }
+  }
+  const int64_t id = StampOf(frame).sequence_id;
+  if (replay) return processor_->Reprocess(frame);
+  // A seek or a loop breaks the sequence: the pipeline starts over.
+  if (last_processed_id_ >= 0 && id != last_processed_id_ + 1) processor_->Reset();
+  last_processed_id_ = id;
+  return processor_->Process(frame);
 }
 
 void PlaybackController::StartWorker(std::unique_ptr<Player> player) {
@@ -126,8 +193,9 @@ void PlaybackController::WorkerLoop() {
       last_frame_ = shared;
       options = view_options_;
     }
-    auto result = Prepare(*shared, options);
-    std::const_pointer_cast<PlaybackResult>(result)->prepare_ms = (HostTimeS() - start) * 1000;
+    auto result = std::const_pointer_cast<PlaybackResult>(Prepare(*shared, options));
+    result->pipeline = RunProcessor(*shared, /*replay=*/false);
+    result->prepare_ms = (HostTimeS() - start) * 1000;
     Publish(std::move(result));
   }
 }

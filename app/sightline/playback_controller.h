@@ -5,6 +5,7 @@
 #include <QObject>
 #include <QString>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -44,6 +45,14 @@ class PlaybackController : public QObject {
   // New view options, applied to the next frame and to the current one at once.
   void SetViewOptions(const ViewOptions& options);
 
+  // Makes a pipeline's processor for an opened source (its calibration and folder).
+  using ProcessorFactory =
+      std::function<std::unique_ptr<FrameProcessor>(const SourceInfo& info)>;
+  // Runs a pipeline on every frame from now on (nullptr: none). Also made anew on each Open.
+  void SetProcessorFactory(ProcessorFactory factory, const OptionSet& options);
+  // New pipeline options: applied before the next frame, and the current frame is run again.
+  void SetPipelineOptions(const OptionSet& options);
+
   bool is_open() const { return static_cast<bool>(info_); }
   // Valid after Opened().
   const SourceInfo* info() const { return info_.get(); }
@@ -65,6 +74,10 @@ class PlaybackController : public QObject {
   // Stores the newest result and notifies the GUI unless a notification is already pending.
   void Publish(std::shared_ptr<const PlaybackResult> result);
   void DeliverLatest();
+  // Builds the processor for the current source from the factory (GUI thread).
+  void RebuildProcessor();
+  // Runs the processor on a frame (any thread; serialised by processor_mutex_).
+  std::shared_ptr<const PipelineFrameResult> RunProcessor(const Frame& frame, bool replay);
   // Keeps a background task's future so the destructor can wait for it.
   void Track(QFuture<void> future);
 
@@ -74,6 +87,14 @@ class PlaybackController : public QObject {
   std::atomic<bool> stop_{false};
   uint64_t open_generation_ = 0;
   std::vector<QFuture<void>> background_;  // GUI thread only.
+
+  ProcessorFactory processor_factory_;  // GUI thread only.
+
+  std::mutex processor_mutex_;  // Guards the processor and its bookkeeping.
+  std::unique_ptr<FrameProcessor> processor_;
+  OptionSet processor_options_;
+  bool processor_options_dirty_ = false;
+  int64_t last_processed_id_ = -1;
 
   mutable std::mutex mutex_;  // Guards everything below.
   ViewOptions view_options_;

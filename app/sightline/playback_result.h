@@ -5,6 +5,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 
+#include "app/sightline/frame_processor.h"
 #include "core/common/frame.h"
 
 namespace sightline {
@@ -18,6 +19,7 @@ struct PlaybackResult {
   bool secondary_is_depth = false;
   std::shared_ptr<const PointCloud> cloud;  // In the sensor frame; may be null.
   double prepare_ms = 0;    // Worker time to read and prepare the frame.
+  std::shared_ptr<const PipelineFrameResult> pipeline;  // The active pipeline's result, if any.
 };
 
 }  // namespace sightline
