@@ -6,7 +6,9 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
+#include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
 #include "widgets/vtk_gl_widget.h"
 
@@ -33,15 +35,17 @@ int main(int argc, char** argv) {
                                    "N", "5");
   QCommandLineOption timeout_option("timeout", "Give up on --screenshot after S seconds.", "S",
                                     "120");
-  parser.addOptions({open_option, screenshot_option, frames_option, timeout_option});
+  QCommandLineOption demo_option(
+      "demo", "Open the built-in demo (simulated recordings, generated once into the cache).");
+  parser.addOptions({open_option, demo_option, screenshot_option, frames_option, timeout_option});
   parser.process(app);
 
   sightline::MainWindow window;
   window.show();
 
   if (parser.isSet(screenshot_option)) {
-    if (!parser.isSet(open_option)) {
-      std::fprintf(stderr, "sightline: --screenshot needs --open PATH\n");
+    if (!parser.isSet(open_option) && !parser.isSet(demo_option)) {
+      std::fprintf(stderr, "sightline: --screenshot needs --open PATH or --demo\n");
       return 2;
     }
     bool ok = false;
@@ -53,7 +57,21 @@ int main(int argc, char** argv) {
     new sightline::ScreenshotDriver(&window, parser.value(screenshot_option), frames,
                                     parser.value(timeout_option).toInt());
   }
-  if (parser.isSet(open_option)) {
+  if (parser.isSet(demo_option)) {
+    auto* demo = new sightline::DemoGenerator(sightline::DemoGenerator::DefaultFolder(), &window);
+    window.ShowDemoProgress(demo);
+    const bool autoplay = !parser.isSet(screenshot_option);
+    QObject::connect(demo, &sightline::DemoGenerator::Ready, &window,
+                     [&window, autoplay](const QString& corridor) {
+                       if (autoplay) {
+                         QObject::connect(&window, &sightline::MainWindow::DatasetOpened, &window,
+                                          [&window] { window.PlayLooping(); },
+                                          Qt::SingleShotConnection);
+                       }
+                       window.OpenPath(corridor);
+                     });
+    demo->Start();
+  } else if (parser.isSet(open_option)) {
     const QString path = parser.value(open_option);
     QTimer::singleShot(0, &window, [&window, path] { window.OpenPath(path); });
   }

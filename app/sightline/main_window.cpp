@@ -12,11 +12,13 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressBar>
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/pipeline_presenter.h"
 #include "app/sightline/playback_controller.h"
@@ -78,6 +80,9 @@ void MainWindow::BuildViews() {
                               Qt::BottomDockWidgetArea);
   tabifyDockWidget(log_dock, evaluation_dock_);
   log_dock->raise();
+  // Images and the 3D view get the room; the log a few lines.
+  resizeDocks({log_dock}, {170}, Qt::Vertical);
+  resizeDocks({primary_dock_}, {420}, Qt::Horizontal);
 
   playback_bar_ = new PlaybackBar(this);
   auto* bar = new QToolBar(tr("Playback"), this);
@@ -176,6 +181,43 @@ void MainWindow::ConnectPlayback() {
   connect(playback_bar_, &PlaybackBar::SpeedChanged, playback_, &PlaybackController::SetSpeed);
   connect(playback_bar_, &PlaybackBar::LoopChanged, playback_, &PlaybackController::SetLoop);
   connect(parameter_panel_, &ParameterPanel::OptionsChanged, this, &MainWindow::OnOptionsChanged);
+}
+
+void MainWindow::ShowDemoProgress(DemoGenerator* demo) {
+  auto* bar = new QProgressBar(this);
+  bar->setMaximumWidth(240);
+  bar->setFormat(tr("Demo %p%"));
+  bar->hide();
+  statusBar()->addWidget(bar);
+  connect(demo, &DemoGenerator::Progress, this, [this, bar](int done, int total) {
+    if (bar->isHidden()) {
+      bar->show();
+      log_panel_->AddMessage(LogPanel::Severity::kInfo,
+                             tr("Generating the demo recordings (only the first time)..."));
+    }
+    bar->setRange(0, total);
+    bar->setValue(done);
+  });
+  connect(demo, &DemoGenerator::Ready, this, [this, bar, demo] {
+    bar->deleteLater();
+    log_panel_->AddMessage(
+        LogPanel::Severity::kInfo,
+        tr("Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, "
+           "exact ground truth). The arm-camera panel approach is in %1.")
+            .arg(demo->panel_path()));
+  });
+  connect(demo, &DemoGenerator::Failed, this, [this, bar](const QString& message) {
+    bar->deleteLater();
+    log_panel_->AddMessage(LogPanel::Severity::kError, tr("The demo could not be made: %1").arg(message));
+    emit DatasetFailed(message);
+  });
+}
+
+void MainWindow::PlayLooping() {
+  playback_->SetLoop(true);
+  playback_bar_->SetLoop(true);
+  playback_->Play();
+  playback_bar_->SetPlaying(true);
 }
 
 void MainWindow::AddPipeline(PipelinePresenter* presenter) {

@@ -18,6 +18,7 @@ class QMenu;
 
 namespace sightline {
 
+class DemoGenerator;
 class EvaluationPanel;
 class ImageView;
 class LogPanel;
@@ -38,6 +39,10 @@ class MainWindow : public QMainWindow {
 
   // Opens a dataset folder or file in the background (File > Open, drag and drop, --open).
   void OpenPath(const QString& path);
+  // Shows the demo's generation progress and errors in the status bar and the log.
+  void ShowDemoProgress(DemoGenerator* demo);
+  // Starts playback with looping on (the demo).
+  void PlayLooping();
   // Adds a pipeline to the Pipeline menu.
   void AddPipeline(PipelinePresenter* presenter);
   // Makes a pipeline (by menu title) the one that runs on every frame; "" for none.

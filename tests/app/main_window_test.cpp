@@ -11,6 +11,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/playback_controller.h"
 #include "tests/app/process.h"
@@ -144,6 +145,42 @@ TEST(EvaluationPanel, MissingFileIsReported) {
   panel.Evaluate("/nonexistent/est.txt", "/nonexistent/gt.txt", "se3");
   ASSERT_TRUE(QTest::qWaitFor([&] { return failed.count() == 1; }, 10000));
   EXPECT_TRUE(failed.at(0).at(0).toString().contains("/nonexistent/est.txt"));
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(DemoGenerator, MakesReadableRecordingsOnceThenReusesThem) {
+  const QString folder = QString::fromStdString(testing::TempDir("demo") + "/demo");
+  {
+    DemoGenerator demo(folder, nullptr, 6, 4);
+    QSignalSpy ready(&demo, &DemoGenerator::Ready);
+    QSignalSpy progress(&demo, &DemoGenerator::Progress);
+    demo.Start();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return ready.count() == 1; }, 120000));
+    EXPECT_GE(progress.count(), 10);
+    EXPECT_EQ(ready.at(0).at(0).toString(), demo.corridor_path());
+  }
+  // The corridor opens as RGB-D with ground truth, in the main window.
+  MainWindow window;
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(folder + "/corridor");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  ASSERT_NE(window.playback()->info(), nullptr);
+  EXPECT_EQ(window.playback()->info()->kind, SourceKind::kRgbd);
+  EXPECT_EQ(window.playback()->info()->frame_count, 6);
+  EXPECT_TRUE(window.playback()->info()->has_ground_truth);
+  // A second start finds the complete demo and renders nothing.
+  DemoGenerator again(folder, nullptr, 6, 4);
+  QSignalSpy ready(&again, &DemoGenerator::Ready);
+  QSignalSpy progress(&again, &DemoGenerator::Progress);
+  again.Start();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return ready.count() == 1; }, 5000));
+  EXPECT_EQ(progress.count(), 0);
 }
 
 }  // namespace
