@@ -62,10 +62,11 @@ PixelRect ProjectedBoxRect(const Eigen::Vector3d* corners, const PinholeCamera& 
   }
   PixelRect r;
   if (!any) return r;
-  r.u0 = static_cast<int>(std::max(0.0, std::floor(x0)));
-  r.u1 = static_cast<int>(std::min(cam.width - 1.0, std::ceil(x1)));
-  r.v0 = static_cast<int>(std::max(0.0, std::floor(y0)));
-  r.v1 = static_cast<int>(std::min(cam.height - 1.0, std::ceil(y1)));
+  // Clamped before the casts: projections of points near the near plane can be huge.
+  r.u0 = static_cast<int>(std::clamp(std::floor(x0), 0.0, static_cast<double>(cam.width)));
+  r.u1 = static_cast<int>(std::clamp(std::ceil(x1), -1.0, cam.width - 1.0));
+  r.v0 = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(cam.height)));
+  r.v1 = static_cast<int>(std::clamp(std::ceil(y1), -1.0, cam.height - 1.0));
   return r;
 }
 
@@ -108,8 +109,10 @@ void RasterPlane(const ViewItem& item, int index, const PreparedView& view,
   const double a_inv = n.x() / (cam.fx * item.d);
   const double b_inv = n.y() / (cam.fy * item.d);
   const double c_inv = (n.z() - n.x() * cam.cx / cam.fx - n.y() * cam.cy / cam.fy) / item.d;
-  const int v0 = std::max(0, static_cast<int>(std::ceil(y_min - kEdgeTolerancePx)));
-  const int v1 = std::min(cam.height - 1, static_cast<int>(std::floor(y_max + kEdgeTolerancePx)));
+  const int v0 = static_cast<int>(
+      std::ceil(std::clamp(y_min, 0.0, static_cast<double>(cam.height)) - kEdgeTolerancePx));
+  const int v1 = static_cast<int>(
+      std::floor(std::clamp(y_max, -1.0, cam.height - 1.0) + kEdgeTolerancePx));
   const bool disc = item.kind == ViewItem::kDisc;
   const double r2 = item.radius * item.radius;
   for (int v = v0; v <= v1; ++v) {
@@ -125,6 +128,9 @@ void RasterPlane(const ViewItem& item, int index, const PreparedView& view,
         hi = -1;
       }
     }
+    // lo and hi may be huge for edges nearly parallel to the rows: clamp before the casts.
+    lo = std::min(lo, static_cast<double>(cam.width));
+    hi = std::max(hi, -1.0);
     const int u0 = std::max(0, static_cast<int>(std::ceil(lo - kEdgeTolerancePx)));
     const int u1 = std::min(cam.width - 1, static_cast<int>(std::floor(hi + kEdgeTolerancePx)));
     if (u0 > u1) continue;
