@@ -136,7 +136,15 @@ StatusOr<std::unique_ptr<Source>> OpenDataset(const std::string& path,
   if (FileExists(path)) return InvalidArgument(path + ": not a dataset file; " + kLookedFor);
   const std::vector<DetectedDataset> sensors = FindRecordingSensors(path);
   if (sensors.empty()) return InvalidArgument(path + ": not a dataset; " + kLookedFor);
-  if (!want) return OpenDetected(sensors.front());
+  if (!want) {
+    // Without a wish, the richest sensor: RGB-D, then stereo, mono, point clouds.
+    for (SourceKind kind : {SourceKind::kRgbd, SourceKind::kStereo, SourceKind::kMono}) {
+      for (const DetectedDataset& sensor : sensors) {
+        if (sensor.kind == kind) return OpenDetected(sensor);
+      }
+    }
+    return OpenDetected(sensors.front());
+  }
   for (const DetectedDataset& sensor : sensors) {
     if (sensor.kind == *want) return OpenDetected(sensor);
   }

@@ -44,7 +44,7 @@ std::unique_ptr<Source> MakeDatasetSource(const DetectedDataset& dataset);
 
 // Detects the format of `path`, opens it and returns the open source. When `path` is no dataset
 // itself but a recording with sensor sub-folders, opens the sub-folder whose kind is `want`, or
-// the first one when `want` is unset. Errors: NotFound for a missing path or a recording without
+// the RGB-D one (else stereo, else mono, else the first) when `want` is unset. Errors: NotFound for a missing path or a recording without
 // a sensor of kind `want`; InvalidArgument for a path that is not a dataset (the message lists
 // what was looked for) or a dataset of another kind than `want`; else the reader's own error.
 //

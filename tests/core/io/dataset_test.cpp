@@ -2,6 +2,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
 #include <yaml-cpp/yaml.h>
 
 #include <cctype>
@@ -158,9 +160,15 @@ TEST(DatasetTest, OpensSensorSubFolderOfARecording) {
   auto mono = OpenDataset(rec, SourceKind::kMono);
   ASSERT_TRUE(mono.ok());
   EXPECT_EQ((*mono)->info().format, "image folder");
-  auto first = OpenDataset(rec);  // No wish: the first sensor in name order.
-  ASSERT_TRUE(first.ok());
-  EXPECT_EQ((*first)->info().kind, SourceKind::kCloud);
+  auto richest = OpenDataset(rec);  // No wish: RGB-D before stereo, mono and clouds.
+  ASSERT_TRUE(richest.ok());
+  EXPECT_EQ((*richest)->info().kind, SourceKind::kRgbd);
+  std::filesystem::remove(rec + "/rgbd");
+  std::filesystem::remove(rec + "/stereo");
+  std::filesystem::remove(rec + "/mono");
+  auto only_cloud = OpenDataset(rec);
+  ASSERT_TRUE(only_cloud.ok());
+  EXPECT_EQ((*only_cloud)->info().kind, SourceKind::kCloud);
 }
 
 TEST(DatasetTest, RecordingWithoutTheWantedKindIsNotFoundListingSensors) {
