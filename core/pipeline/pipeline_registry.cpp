@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/pipeline/inspect_pipeline.h"
+#include "core/pipeline/stereo_vo_pipeline.h"
 
 namespace sightline {
 
@@ -25,6 +26,7 @@ const PipelineInfo* PipelineRegistry::Find(const std::string& name) const {
 PipelineRegistry BuiltinPipelines() {
   PipelineRegistry registry;
   Status s = registry.Register(InspectPipeline());
+  s = registry.Register(StereoVoPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }

@@ -1,0 +1,59 @@
+// Temporal feature tracking on the left image (the seed's Fig. 5): Shi-Tomasi corners, pyramidal
+// Lucas-Kanade tracking from the previous left image with a forward-backward check, and new
+// corners in the buckets of a grid that lack features, so that features cover the image.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "core/options/option_table.h"
+#include "core/stereo/image_pyramid.h"
+
+namespace sightline {
+
+// Tracking and detection options. Keys "stereo.tracking.*".
+struct FeatureTrackerOptions {
+  int max_features = 1500;        // Features kept per frame (tracked + new).
+  int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
+  double quality_level = 0.005;   // Shi-Tomasi: corners weaker than this x the strongest are dropped.
+  double min_distance_px = 7;     // Shi-Tomasi: minimum distance between corners [px].
+  int block_size = 3;             // Shi-Tomasi: window of the gradient covariance [px].
+  int window_px = 15;             // KLT window side [px] (odd).
+  int pyramid_levels = 3;         // KLT pyramid levels above full resolution.
+  int max_iterations = 20;        // KLT iterations per level.
+  double epsilon_px = 0.01;       // KLT stops when the update is smaller [px].
+  double max_forward_backward_px = 0.5;  // Tracked back to the start within this [px]; 0 = no check.
+  int border_px = 8;              // Features closer to the image border are dropped [px].
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<FeatureTrackerOptions> Describe();
+};
+
+// Stateless per call: the caller (StereoOdometry) owns the features and pyramids.
+//
+//   FeatureTracker tracker(options);
+//   tracker.Track(previous_left, left, points, &tracked, &ok);
+//   std::vector<cv::Point2f> fresh = tracker.Detect(left.image, surviving_points);
+class FeatureTracker {
+ public:
+  explicit FeatureTracker(FeatureTrackerOptions options = {}) : options_(options) {}
+  const FeatureTrackerOptions& options() const { return options_; }
+
+  // Tracks `points` from `previous` into `current`; ok[i] is 0 where a point was lost (KLT
+  // failure, forward-backward disagreement, or too close to the border).
+  void Track(const ImagePyramid& previous, const ImagePyramid& current,
+             const std::vector<cv::Point2f>& points, std::vector<cv::Point2f>* tracked,
+             std::vector<unsigned char>* ok) const;
+
+  // New Shi-Tomasi corners, strongest first, in buckets that hold fewer than their share of
+  // max_features, at least min_distance_px away from `existing`; at most
+  // max_features - existing.size().
+  std::vector<cv::Point2f> Detect(const cv::Mat& image,
+                                  const std::vector<cv::Point2f>& existing) const;
+
+ private:
+  FeatureTrackerOptions options_;
+};
+
+}  // namespace sightline

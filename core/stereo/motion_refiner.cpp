@@ -1,0 +1,152 @@
+#include "core/stereo/motion_refiner.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+
+#include "core/stereo/option_check.h"
+
+namespace sightline {
+
+using stereo_internal::Invalid;
+
+bool MotionRefinerOptions::IsValid(std::string* error) const {
+  if (max_iterations < 0) return Invalid(error, "stereo.refine.max_iterations must be >= 0");
+  if (!(huber_px > 0)) return Invalid(error, "stereo.refine.huber_px must be > 0");
+  if (!(min_step > 0)) return Invalid(error, "stereo.refine.min_step must be > 0");
+  return true;
+}
+
+OptionTable<MotionRefinerOptions> MotionRefinerOptions::Describe() {
+  using O = MotionRefinerOptions;
+  return OptionTable<O>("stereo.refine")
+      .Int("max_iterations", &O::max_iterations, "", 0, 100, 1,
+           "Gauss-Newton iterations on the reprojection error; 0 keeps the RANSAC motion.")
+      .Double("huber_px", &O::huber_px, "px", 0.01, 100, 0.1,
+              "Huber threshold of the robust weight.")
+      .Double("min_step", &O::min_step, "", 1e-12, 1, 1e-8,
+              "Stop when the update is smaller (radians or metres).")
+      .Bool("symmetric", &O::symmetric,
+            "Also project current points into the previous images (uses both depths).");
+}
+
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+// Adds the residuals of point y (in the frame of `obs`) with dy/d(delta) = dy_ddelta.
+void AddTerm(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
+             const Eigen::Matrix<double, 3, 6>& dy_ddelta, const StereoObservation& obs,
+             double huber, Matrix6d* h, Vector6d* g, double* cost, int* count) {
+  if (!(y.z() > 1e-3)) return;
+  const double iz = 1.0 / y.z();
+  const double fx = c.f * iz;
+  const double ul = c.f * y.x() * iz + c.cx;
+  const double ur = c.f * (y.x() - c.baseline_m) * iz + c.cx;
+  const double v = c.f * y.y() * iz + c.cy;
+  const double r[4] = {ul - obs.u_left, v - obs.v, ur - obs.u_right, v - obs.v};
+  Eigen::Matrix<double, 4, 3> dr_dy;
+  dr_dy << fx, 0, -fx * y.x() * iz,  //
+      0, fx, -fx * y.y() * iz,         //
+      fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
+      0, fx, -fx * y.y() * iz;
+  const Eigen::Matrix<double, 4, 6> j = dr_dy * dy_ddelta;
+  for (int k = 0; k < 4; k += 2) {
+    // Weight the (u, v) pair of each image together.
+    const double e = std::sqrt(r[k] * r[k] + r[k + 1] * r[k + 1]);
+    const double w = e <= huber ? 1.0 : huber / e;
+    for (int m = k; m < k + 2; ++m) {
+      *h += w * j.row(m).transpose() * j.row(m);
+      *g += w * j.row(m).transpose() * r[m];
+    }
+    *cost += r[k] * r[k] + r[k + 1] * r[k + 1];
+    *count += 2;
+  }
+}
+
+}  // namespace
+
+double MotionRefiner::RmsReprojectionPx(const RectifiedStereoCamera& camera,
+                                        const std::vector<StereoCorrespondence>& correspondences,
+                                        const std::vector<int>& indices,
+                                        const Eigen::Isometry3d& current_from_previous) {
+  double sum = 0;
+  int n = 0;
+  for (int i : indices) {
+    const StereoCorrespondence& c = correspondences[static_cast<size_t>(i)];
+    const Eigen::Vector3d y = current_from_previous * c.x_previous;
+    if (!(y.z() > 1e-3)) continue;
+    const Eigen::Vector2d l = camera.ProjectLeft(y), r = camera.ProjectRight(y);
+    sum += (l - Eigen::Vector2d(c.current.u_left, c.current.v)).squaredNorm() +
+           (r - Eigen::Vector2d(c.current.u_right, c.current.v)).squaredNorm();
+    n += 4;
+  }
+  return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
+RefinementSummary MotionRefiner::Refine(const RectifiedStereoCamera& camera,
+                                        const std::vector<StereoCorrespondence>& correspondences,
+                                        const std::vector<int>& indices,
+                                        Eigen::Isometry3d* current_from_previous) const {
+  RefinementSummary summary;
+  summary.initial_rms_px =
+      RmsReprojectionPx(camera, correspondences, indices, *current_from_previous);
+  summary.final_rms_px = summary.initial_rms_px;
+  if (indices.size() < 3) return summary;
+  Eigen::Isometry3d t = *current_from_previous;
+  for (int it = 0; it < options_.max_iterations; ++it) {
+    Matrix6d h = Matrix6d::Zero();
+    Vector6d g = Vector6d::Zero();
+    double cost = 0;
+    int count = 0;
+    const Eigen::Matrix3d rt = t.rotation().transpose();
+    for (int i : indices) {
+      const StereoCorrespondence& c = correspondences[static_cast<size_t>(i)];
+      // Forward: y = exp(delta) * T * x_prev, dy/d(rho, phi) = [I, -[y]x].
+      const Eigen::Vector3d y = t * c.x_previous;
+      Eigen::Matrix<double, 3, 6> jf;
+      jf << Eigen::Matrix3d::Identity(), -Skew(y);
+      AddTerm(camera, y, jf, c.current, options_.huber_px, &h, &g, &cost, &count);
+      if (options_.symmetric) {
+        // Backward: z = T^-1 exp(-delta) x_cur, dz/d(rho, phi) = R^T [-I, [x_cur]x].
+        const Eigen::Vector3d z = t.inverse() * c.x_current;
+        Eigen::Matrix<double, 3, 6> jb;
+        jb << -rt, rt * Skew(c.x_current);
+        AddTerm(camera, z, jb, c.previous, options_.huber_px, &h, &g, &cost, &count);
+      }
+    }
+    if (count < 6) break;
+    Eigen::LDLT<Matrix6d> ldlt(h);
+    if (ldlt.info() != Eigen::Success) break;
+    const Vector6d delta = -ldlt.solve(g);
+    if (!delta.allFinite()) break;
+    Eigen::Isometry3d update = Eigen::Isometry3d::Identity();
+    const double angle = delta.tail<3>().norm();
+    if (angle > 1e-12) {
+      update.linear() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
+    }
+    update.translation() = delta.head<3>();
+    t = update * t;
+    summary.iterations = it + 1;
+    if (delta.norm() < options_.min_step) {
+      summary.converged = true;
+      break;
+    }
+  }
+  // Re-orthonormalise the rotation against drift from repeated products.
+  Eigen::Quaterniond q(t.rotation());
+  q.normalize();
+  t.linear() = q.toRotationMatrix();
+  summary.final_rms_px = RmsReprojectionPx(camera, correspondences, indices, t);
+  *current_from_previous = t;
+  if (summary.iterations == options_.max_iterations) summary.converged = true;
+  return summary;
+}
+
+}  // namespace sightline

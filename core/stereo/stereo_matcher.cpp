@@ -1,0 +1,138 @@
+#include "core/stereo/stereo_matcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <opencv2/video/tracking.hpp>
+
+#include "core/stereo/option_check.h"
+
+namespace sightline {
+
+using stereo_internal::Invalid;
+
+bool StereoMatcherOptions::IsValid(std::string* error) const {
+  if (!(min_disparity_px >= 0)) return Invalid(error, "stereo.matching.min_disparity_px must be >= 0");
+  if (!(max_disparity_px > min_disparity_px)) {
+    return Invalid(error, "stereo.matching.max_disparity_px must exceed min_disparity_px");
+  }
+  if (!(max_row_error_px > 0)) return Invalid(error, "stereo.matching.max_row_error_px must be > 0");
+  if (!(max_left_right_px >= 0)) return Invalid(error, "stereo.matching.max_left_right_px must be >= 0");
+  if (window_px < 5 || window_px % 2 == 0) {
+    return Invalid(error, "stereo.matching.window_px must be odd and >= 5");
+  }
+  if (klt_levels < 0 || klt_levels > 6) return Invalid(error, "stereo.matching.klt_levels must lie in [0, 6]");
+  if (coarse_level < 0 || coarse_level > 6) {
+    return Invalid(error, "stereo.matching.coarse_level must lie in [0, 6]");
+  }
+  if (coarse_window_px < 3 || coarse_window_px % 2 == 0) {
+    return Invalid(error, "stereo.matching.coarse_window_px must be odd and >= 3");
+  }
+  if (!(max_coarse_sad > 0)) return Invalid(error, "stereo.matching.max_coarse_sad must be > 0");
+  return true;
+}
+
+OptionTable<StereoMatcherOptions> StereoMatcherOptions::Describe() {
+  using O = StereoMatcherOptions;
+  return OptionTable<O>("stereo.matching")
+      .Double("min_disparity_px", &O::min_disparity_px, "px", 0, 100, 0.1,
+              "Matches with a smaller disparity (too far to triangulate) are rejected.")
+      .Double("max_disparity_px", &O::max_disparity_px, "px", 1, 1000, 1,
+              "Largest disparity searched and accepted.")
+      .Double("max_row_error_px", &O::max_row_error_px, "px", 0.01, 20, 0.1,
+              "Epipolar (row) constraint: largest row difference of a match.")
+      .Double("max_left_right_px", &O::max_left_right_px, "px", 0, 20, 0.1,
+              "Left-right check: the right point tracked back must land this close; 0 = no check.")
+      .Int("window_px", &O::window_px, "px", 5, 61, 2, "KLT window side (odd).")
+      .Int("klt_levels", &O::klt_levels, "levels", 0, 6, 1,
+           "KLT pyramid levels used around the disparity guess.")
+      .Int("coarse_level", &O::coarse_level, "level", 0, 6, 1,
+           "Pyramid level of the row search for features without a disparity guess.")
+      .Int("coarse_window_px", &O::coarse_window_px, "px", 3, 31, 2,
+           "SAD window side of the row search, at its level.")
+      .Double("max_coarse_sad", &O::max_coarse_sad, "grey", 1, 255, 1,
+              "Row search: mean absolute difference above this means no match.");
+}
+
+float StereoMatcher::CoarseDisparity(const cv::Mat& left, const cv::Mat& right, cv::Point2f p,
+                                     int scale) const {
+  const int h = options_.coarse_window_px / 2;
+  const int x = cvRound(p.x / scale), y = cvRound(p.y / scale);
+  if (x - h < 0 || y - h < 0 || x + h >= left.cols || y + h >= left.rows) {
+    return std::numeric_limits<float>::quiet_NaN();
+  }
+  const int d_min = std::max(0, static_cast<int>(std::floor(options_.min_disparity_px / scale)));
+  const int d_max = std::min(x - h, static_cast<int>(std::ceil(options_.max_disparity_px / scale)));
+  int best_d = -1;
+  int best = std::numeric_limits<int>::max();
+  for (int d = d_min; d <= d_max; ++d) {
+    int sad = 0;
+    for (int dy = -h; dy <= h && sad < best; ++dy) {
+      const unsigned char* l = left.ptr<unsigned char>(y + dy) + (x - h);
+      const unsigned char* r = right.ptr<unsigned char>(y + dy) + (x - h - d);
+      for (int dx = 0; dx <= 2 * h; ++dx) sad += std::abs(static_cast<int>(l[dx]) - r[dx]);
+    }
+    if (sad < best) {
+      best = sad;
+      best_d = d;
+    }
+  }
+  const int n = (2 * h + 1) * (2 * h + 1);
+  if (best_d < 0 || best > options_.max_coarse_sad * n) return std::numeric_limits<float>::quiet_NaN();
+  return static_cast<float>(best_d * scale);
+}
+
+void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
+                          const std::vector<cv::Point2f>& left_points,
+                          const std::vector<float>& disparity_guess,
+                          std::vector<cv::Point2f>* right_points,
+                          std::vector<unsigned char>* ok) const {
+  const size_t n = left_points.size();
+  right_points->assign(n, cv::Point2f(0, 0));
+  ok->assign(n, 0);
+  if (n == 0 || left.empty() || right.empty()) return;
+  const int coarse = std::min({options_.coarse_level, left.max_level, right.max_level});
+  const int scale = 1 << coarse;
+  std::vector<unsigned char> has_guess(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    float d = i < disparity_guess.size() ? disparity_guess[i] : std::numeric_limits<float>::quiet_NaN();
+    if (!std::isfinite(d)) d = CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
+    if (!std::isfinite(d)) continue;
+    has_guess[i] = 1;
+    (*right_points)[i] = cv::Point2f(left_points[i].x - d, left_points[i].y);
+  }
+  const cv::Size window(options_.window_px, options_.window_px);
+  const int levels = std::min({options_.klt_levels, left.max_level, right.max_level});
+  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 20, 0.01);
+  std::vector<unsigned char> status;
+  std::vector<float> error;
+  cv::calcOpticalFlowPyrLK(left.levels, right.levels, left_points, *right_points, status, error,
+                           window, levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+  std::vector<unsigned char> back_status;
+  std::vector<cv::Point2f> back;
+  if (options_.max_left_right_px > 0) {
+    back = left_points;
+    cv::calcOpticalFlowPyrLK(right.levels, left.levels, *right_points, back, back_status, error,
+                             window, 0, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+  }
+  const double max_lr2 = options_.max_left_right_px * options_.max_left_right_px;
+  for (size_t i = 0; i < n; ++i) {
+    if (!has_guess[i] || !status[i]) continue;
+    cv::Point2f& r = (*right_points)[i];
+    const cv::Point2f& l = left_points[i];
+    const double disparity = l.x - r.x;
+    if (!(disparity >= options_.min_disparity_px && disparity <= options_.max_disparity_px)) continue;
+    if (!(std::abs(r.y - l.y) <= options_.max_row_error_px)) continue;
+    if (r.x < 0 || r.x > right.image.cols - 1) continue;
+    if (!back.empty()) {
+      if (!back_status[i]) continue;
+      const cv::Point2f d = back[i] - l;
+      if (d.x * d.x + d.y * d.y > max_lr2) continue;
+    }
+    r.y = l.y;
+    (*ok)[i] = 1;
+  }
+}
+
+}  // namespace sightline

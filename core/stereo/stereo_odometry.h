@@ -1,0 +1,146 @@
+// Stereo visual odometry (seed 003), frame by frame: rectify, track Shi-Tomasi features on the
+// left image with KLT, match them in the right image, replenish features, triangulate at both
+// times, RANSAC with the rigidity test + absolute orientation, reprojection refinement, gating,
+// pose accumulation. Every stage is timed; the result carries what a view needs to draw.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/camera.h"
+#include "core/common/frame.h"
+#include "core/common/status.h"
+#include "core/common/timing.h"
+#include "core/common/trajectory.h"
+#include "core/options/option_table.h"
+#include "core/stereo/feature_tracker.h"
+#include "core/stereo/image_pyramid.h"
+#include "core/stereo/motion_estimator.h"
+#include "core/stereo/motion_gate.h"
+#include "core/stereo/motion_refiner.h"
+#include "core/stereo/rectifier.h"
+#include "core/stereo/stereo_matcher.h"
+
+namespace sightline {
+
+// Every option of the odometry, keys "stereo.<stage>.*".
+struct StereoOdometryOptions {
+  RectifierOptions rectify;
+  FeatureTrackerOptions tracking;
+  StereoMatcherOptions matching;
+  MotionEstimatorOptions ransac;
+  MotionRefinerOptions refine;
+  MotionGateOptions gate;
+  int refine_rounds = 2;  // Refine, re-select inliers by UMBRAL3, refine again (rounds in total).
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<StereoOdometryOptions> Describe();
+};
+
+// How a feature took part in the frame's motion estimate.
+enum class FeatureRole {
+  kInlier,   // Tracked from the previous frame and consistent with the motion.
+  kOutlier,  // Tracked, but rejected by RANSAC / reprojection.
+  kNew,      // Detected in this frame (no motion information yet).
+};
+
+// One feature of the current frame, in rectified pixel coordinates.
+struct TrackedFeature {
+  int64_t id = -1;           // Stable across frames while tracked.
+  cv::Point2f left;          // Left image position [px].
+  cv::Point2f right;         // Right image position (same row) [px].
+  cv::Point2f previous_left; // Left position in the previous frame; == left for new features.
+  int age = 0;               // Frames tracked (0 = new).
+  FeatureRole role = FeatureRole::kNew;
+};
+
+// Statistics of one frame (also written as a row of frames.csv).
+struct FrameStats {
+  int tracked = 0;             // Features tracked from the previous left image.
+  int new_features = 0;        // Detected this frame (and matched in the right image).
+  int stereo_matches = 0;      // Features matched in the right image (tracked + new).
+  int correspondences = 0;     // Features with stereo at both times (RANSAC input).
+  int inliers = 0;             // After refinement.
+  int ransac_iterations = 0;   // Rigid samples tried.
+  int rigidity_failures = 0;   // Samples rejected by the rigidity test.
+  double residual_px = 0;      // Refined RMS reprojection error over the inliers [px].
+  double translation_m = 0;    // Length of the applied motion [m].
+  double rotation_deg = 0;     // Angle of the applied motion [deg].
+  bool gated = false;          // The estimate was rejected (or failed) and a fallback applied.
+  std::string status = "ok";   // "ok", "first frame", or why the estimate was rejected.
+  // Per-stage wall time [ms].
+  double rectify_ms = 0, pyramid_ms = 0, tracking_ms = 0, matching_ms = 0, detection_ms = 0,
+         ransac_ms = 0, refine_ms = 0, total_ms = 0;
+};
+
+// The result of one frame, shared immutable with views.
+struct StereoOdometryResult {
+  FrameStamp stamp;
+  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();  // Left camera pose.
+  Eigen::Isometry3d current_from_previous = Eigen::Isometry3d::Identity();  // Applied motion.
+  FrameStats stats;
+  std::vector<TrackedFeature> features;  // After this frame's replenishment.
+  cv::Mat left_rectified;                // CV_8UC1, what the feature positions refer to.
+  cv::Mat right_rectified;               // CV_8UC1.
+};
+
+// The odometry. Construct, Configure() with the rig, then Process() frames in order.
+//
+//   StereoOdometry vo(options);
+//   SIGHTLINE_RETURN_IF_ERROR(vo.Configure(*source.info().stereo));
+//   while (...) {
+//     StatusOr<std::shared_ptr<const StereoOdometryResult>> r = vo.Process(frame);
+//     if (!r.ok()) return r.status();
+//     trajectory.Add((*r)->stamp.sensor_time_s, (*r)->world_from_camera);
+//   }
+//
+// Bad input (empty, black or uniform images, no stereo matches) is not an error: the frame's
+// stats say why and the gate holds the pose.
+class StereoOdometry {
+ public:
+  explicit StereoOdometry(StereoOdometryOptions options = {});
+
+  // Checks the options and sets up rectification. Fails naming the bad option or calibration field.
+  Status Configure(const StereoRig& rig);
+  const RectifiedStereoCamera& camera() const { return rectifier_.camera(); }
+  const StereoOdometryOptions& options() const { return options_; }
+
+  // Processes the next frame. Errors only when not configured; `timing` (optional) receives
+  // every stage's duration under "rectify", "pyramid", "tracking", "matching", "detection",
+  // "ransac", "refine".
+  StatusOr<std::shared_ptr<const StereoOdometryResult>> Process(const StereoFrame& frame,
+                                                                TimingStats* timing = nullptr);
+  // Forgets features, motion history and pose (back to identity).
+  void Reset();
+
+ private:
+  struct Feature {
+    int64_t id;
+    cv::Point2f left, right;
+    int age;
+  };
+
+  StereoOdometryOptions options_;
+  Rectifier rectifier_;
+  FeatureTracker tracker_;
+  StereoMatcher matcher_;
+  MotionEstimator estimator_;
+  MotionRefiner refiner_;
+  MotionGate gate_;
+  bool configured_ = false;
+  int pyramid_levels_ = 3;
+  int pyramid_window_ = 15;
+
+  ImagePyramid previous_left_;
+  std::vector<Feature> features_;
+  double previous_time_s_ = 0;
+  bool has_previous_ = false;
+  int64_t next_id_ = 0;
+  Eigen::Isometry3d world_from_camera_ = Eigen::Isometry3d::Identity();
+};
+
+}  // namespace sightline

@@ -1,0 +1,103 @@
+// End-to-end accuracy of the stereo odometry against ground truth: kitti_clip1 (bounds set to
+// beat libviso2's figures on the same clip), the subsampling sweep, EuRoC's static sequence (no
+// false motion) and the simulator's corridor with turns.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "core/eval/evaluation.h"
+#include "core/eval/subsample_sweep.h"
+#include "core/pipeline/stereo_vo_pipeline.h"
+#include "core/sim/simulate.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+std::map<std::string, double> Figures(const StereoVoRun& run) {
+  std::vector<std::string> notes;
+  std::map<std::string, double> m;
+  for (const auto& [key, value] : StereoVoAccuracy(run, 0.02, &notes)) m[key] = value;
+  return m;
+}
+
+int GatedFrames(const StereoVoRun& run) {
+  int n = 0;
+  for (const FrameStats& s : run.frames) n += s.gated ? 1 : 0;
+  return n;
+}
+
+TEST(StereoAccuracy, KittiClipBeatsLibviso2) {
+  SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
+  StatusOr<StereoVoRun> run = RunStereoOdometry(path, {}, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  ASSERT_EQ(run->frames.size(), 51u);
+  EXPECT_EQ(GatedFrames(*run), 0);
+  std::map<std::string, double> m = Figures(*run);
+  // libviso2 on this clip: 0.69 %, 1.06 %, 0.120 m, 1.07 %.
+  EXPECT_LE(m["length_error_pct"], 0.5);
+  EXPECT_LE(m["endpoint_error_pct"], 0.8);
+  EXPECT_LE(m["ate_rmse_m"], 0.10);
+  EXPECT_LE(m["rpe_trans_pct"], 0.9);
+  EXPECT_TRUE(m.count("kitti_t_err_pct"));
+  for (const auto& [k, v] : m) std::cout << "kitti_clip1 " << k << " = " << v << "\n";
+}
+
+TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
+  SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
+  std::vector<SubsampleEstimate> estimates;
+  std::optional<Trajectory> gt;
+  for (int k = 1; k <= 5; ++k) {
+    StereoVoRunOptions run_options;
+    run_options.subsample = k;
+    StatusOr<StereoVoRun> run = RunStereoOdometry(path, {}, run_options);
+    ASSERT_TRUE(run.ok()) << run.status().ToString();
+    estimates.push_back({k, run->estimate});
+    gt = run->ground_truth;
+  }
+  ASSERT_TRUE(gt);
+  StatusOr<std::vector<SubsampleRow>> table = EvaluateSubsampleSweep(estimates, *gt, 0.02);
+  ASSERT_TRUE(table.ok()) << table.status().ToString();
+  std::cout << FormatSubsampleTable(*table);
+  for (const SubsampleRow& row : *table) EXPECT_LT(row.length_error_pct, 1.5) << "k = " << row.factor;
+}
+
+TEST(StereoAccuracy, EurocStaticShowsNoFalseMotion) {
+  SIGHTLINE_REQUIRE_DATA(path, "euroc_v1_01_static");
+  StatusOr<StereoVoRun> run = RunStereoOdometry(path, {}, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  std::map<std::string, double> m = Figures(*run);
+  ASSERT_TRUE(m.count("static_translation_m"));
+  std::cout << "euroc static: " << run->frames.size() << " frames, "
+            << m["static_translation_m"] * 1000 << " mm, " << m["static_rotation_deg"] << " deg\n";
+  EXPECT_LT(m["static_translation_m"], 0.005);
+  EXPECT_LT(m["static_rotation_deg"], 0.2);
+}
+
+TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
+  // 300 frames at 10 Hz, 1 m/s: about 30 m around the corridor loop's corners.
+  sim::SimulationOptions options = sim::SimulationOptions::ForScene("corridor");
+  options.frames = 300;
+  options.rate_hz = 10;
+  options.motion.speed_mps = 1.0;
+  options.sensors = "stereo";
+  const std::string dir = testing::TempDir("stereo_corridor");
+  ASSERT_TRUE(sim::Simulate(options, dir).ok());
+  StatusOr<StereoVoRun> run = RunStereoOdometry(dir, {}, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  ASSERT_TRUE(run->ground_truth);
+  EvaluationOptions eval;
+  StatusOr<TrajectoryErrors> errors = EvaluateTrajectory(run->estimate, *run->ground_truth, eval);
+  ASSERT_TRUE(errors.ok()) << errors.status().ToString();
+  ASSERT_TRUE(errors->kitti);
+  for (const auto& [k, v] : AccuracyFigures(*errors)) std::cout << "corridor " << k << " = " << v << "\n";
+  std::cout << "corridor gated frames: " << GatedFrames(*run) << ", gt length "
+            << errors->ground_truth_length_m << " m\n";
+  std::map<std::string, double> m;
+  for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
+  EXPECT_LT(m["kitti_t_err_pct"], 0.5);
+  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 0.5);
+}
+
+}  // namespace
+}  // namespace sightline
