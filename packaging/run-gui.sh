@@ -17,4 +17,4 @@ fi
 echo "run-gui.sh: no display found; running the GUI under Xvfb and saving a screenshot instead."
 xvfb-run -a -s "-screen 0 1400x900x24" build/bin/sightline "${args[@]}" \
   --screenshot build/sightline-window.png --frames 30 --timeout 900
-echo "run-gui.sh: see build/sightline-window.png
+echo "run-gui.sh: see build/sightline-window.png"

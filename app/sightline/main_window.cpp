@@ -16,6 +16,7 @@
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
 #include "app/sightline/demo_generator.h"
@@ -80,9 +81,12 @@ void MainWindow::BuildViews() {
                               Qt::BottomDockWidgetArea);
   tabifyDockWidget(log_dock, evaluation_dock_);
   log_dock->raise();
-  // Images and the 3D view get the room; the log a few lines.
-  resizeDocks({log_dock}, {170}, Qt::Vertical);
-  resizeDocks({primary_dock_}, {420}, Qt::Horizontal);
+  // Images and the 3D view get the room; the log a few lines. Dock sizes apply once the
+  // window has its size, hence after the first event-loop turn.
+  QTimer::singleShot(0, this, [this, log_dock] {
+    resizeDocks({log_dock}, {170}, Qt::Vertical);
+    resizeDocks({primary_dock_}, {420}, Qt::Horizontal);
+  });
 
   playback_bar_ = new PlaybackBar(this);
   auto* bar = new QToolBar(tr("Playback"), this);
