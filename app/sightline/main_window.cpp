@@ -75,18 +75,15 @@ void MainWindow::BuildViews() {
   parameter_panel_->SetOptions(options_);
   add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
   log_panel_ = new LogPanel(this);
-  QDockWidget* log_dock = add_dock(log_panel_, tr("Log"), "log_dock", Qt::BottomDockWidgetArea);
+  QDockWidget* log_dock = add_dock(log_panel_, tr("Log"), "log_dock", Qt::RightDockWidgetArea);
   evaluation_panel_ = new EvaluationPanel(this);
   evaluation_dock_ = add_dock(evaluation_panel_, tr("Evaluation"), "evaluation_dock",
-                              Qt::BottomDockWidgetArea);
+                              Qt::RightDockWidgetArea);
   tabifyDockWidget(log_dock, evaluation_dock_);
   log_dock->raise();
-  // Images and the 3D view get the room; the log a few lines. Dock sizes apply once the
-  // window has its size, hence after the first event-loop turn.
-  QTimer::singleShot(0, this, [this, log_dock] {
-    resizeDocks({log_dock}, {170}, Qt::Vertical);
-    resizeDocks({primary_dock_}, {420}, Qt::Horizontal);
-  });
+  // The images and the 3D view get the full height; dock sizes apply once the window has its
+  // size, hence after the first event-loop turn.
+  QTimer::singleShot(0, this, [this] { resizeDocks({primary_dock_}, {420}, Qt::Horizontal); });
 
   playback_bar_ = new PlaybackBar(this);
   auto* bar = new QToolBar(tr("Playback"), this);
