@@ -1,0 +1,192 @@
+#include "core/sensors/driver_registry.h"
+
+#include <cctype>
+
+#include "core/io/dataset.h"
+#include "core/sensors/aravis_options.h"
+#include "core/sensors/openni2_options.h"
+#include "core/sensors/v4l2_source.h"
+
+#ifdef SIGHTLINE_HAVE_OPENNI2
+#include "core/sensors/openni2_source.h"
+#endif
+#ifdef SIGHTLINE_HAVE_ARAVIS
+#include "core/sensors/aravis_source.h"
+#include "core/sensors/aravis_stereo_source.h"
+#endif
+
+namespace sightline {
+namespace {
+
+constexpr char kOpenNi2Scheme[] = "openni2://";
+constexpr char kAravisScheme[] = "aravis://";
+constexpr char kV4l2Scheme[] = "v4l2://";
+
+bool StartsWith(const std::string& text, const std::string& prefix) {
+  return text.rfind(prefix, 0) == 0;
+}
+
+// The URI without its scheme, or the URI itself when it has another one.
+std::string StripScheme(const std::string& uri, const std::string& scheme) {
+  return StartsWith(uri, scheme) ? uri.substr(scheme.size()) : uri;
+}
+
+// Extracts a typed Options struct; InvalidArgument when it fails its own check.
+template <typename T>
+StatusOr<T> ExtractChecked(const OptionSet& set) {
+  T options = set.Extract(T::Describe());
+  std::string error;
+  if (!options.IsValid(&error)) return InvalidArgument(error);
+  return options;
+}
+
+// A path ending in ".oni", any case (as OpenNi2Source::IsRecordingPath, which may not be built).
+bool OpenNi2IsRecording(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".oni";
+}
+
+DriverInfo OpenNi2Driver() {
+  DriverInfo d;
+  d.name = "openni2";
+  d.description = "OpenNI2 RGB-D cameras (Kinect, Xtion, Carmine) and .oni recordings";
+  d.scheme = kOpenNi2Scheme;
+  d.declare_options = [](OptionSet* set) { return set->Declare(OpenNi2Options::Describe()); };
+#ifdef SIGHTLINE_HAVE_OPENNI2
+  d.available = [] { return OpenNi2Source::Available(); };
+  d.enumerate = [](const OptionSet&) { return OpenNi2Source::Enumerate(); };
+  d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
+    StatusOr<OpenNi2Options> options = ExtractChecked<OpenNi2Options>(set);
+    if (!options.ok()) return options.status();
+    return std::unique_ptr<Source>(
+        std::make_unique<OpenNi2Source>(StripScheme(uri, kOpenNi2Scheme), *options));
+  };
+#else
+  const Status off = Unavailable(
+      "not built: Sightline was configured with SIGHTLINE_WITH_OPENNI2=OFF (install "
+      "libopenni2-dev and reconfigure)");
+  d.available = [off] { return off; };
+  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
+  d.create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
+    return off;
+  };
+#endif
+  return d;
+}
+
+DriverInfo AravisDriver() {
+  DriverInfo d;
+  d.name = "aravis";
+  d.description =
+      "GigE Vision / USB3 Vision cameras through Aravis: one camera, or a stereo pair as "
+      "aravis://LEFT_ID,RIGHT_ID";
+  d.scheme = kAravisScheme;
+  d.declare_options = [](OptionSet* set) {
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(AravisOptions::Describe()));
+    return set->Declare(AravisStereoOptions::Describe());
+  };
+#ifdef SIGHTLINE_HAVE_ARAVIS
+  d.available = [] { return AravisSource::Available(); };
+  d.enumerate = [](const OptionSet& set) {
+    return AravisSource::Enumerate(set.Extract(AravisOptions::Describe()).fake_interface);
+  };
+  d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
+    StatusOr<AravisOptions> options = ExtractChecked<AravisOptions>(set);
+    if (!options.ok()) return options.status();
+    const std::string ids = StripScheme(uri, kAravisScheme);
+    const size_t comma = ids.find(',');
+    if (comma == std::string::npos) {
+      return std::unique_ptr<Source>(std::make_unique<AravisSource>(ids, *options));
+    }
+    StatusOr<AravisStereoOptions> stereo = ExtractChecked<AravisStereoOptions>(set);
+    if (!stereo.ok()) return stereo.status();
+    const std::string left = ids.substr(0, comma), right = ids.substr(comma + 1);
+    if (left.empty() || right.empty() || right.find(',') != std::string::npos) {
+      return InvalidArgument(
+          "a stereo Aravis URI names two cameras, aravis://LEFT_ID,RIGHT_ID; "
+          "got '" +
+          uri + "'");
+    }
+    return std::unique_ptr<Source>(
+        std::make_unique<AravisStereoSource>(left, right, *options, *stereo));
+  };
+#else
+  const Status off = Unavailable(
+      "not built: Sightline was configured with SIGHTLINE_WITH_ARAVIS=OFF (install "
+      "libaravis-dev and reconfigure)");
+  d.available = [off] { return off; };
+  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
+  d.create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
+    return off;
+  };
+#endif
+  return d;
+}
+
+DriverInfo V4l2Driver() {
+  DriverInfo d;
+  d.name = "v4l2";
+  d.description = "USB webcams through OpenCV's V4L2 backend";
+  d.scheme = kV4l2Scheme;
+  d.declare_options = [](OptionSet* set) { return set->Declare(V4l2Options::Describe()); };
+  d.available = [] { return V4l2Source::Available(); };
+  d.enumerate = [](const OptionSet&) { return V4l2Source::Enumerate(); };
+  d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
+    StatusOr<V4l2Options> options = ExtractChecked<V4l2Options>(set);
+    if (!options.ok()) return options.status();
+    const std::string device = StripScheme(uri, kV4l2Scheme);
+    if (device.empty())
+      return InvalidArgument("a V4L2 URI names a device: v4l2://0 or v4l2:///dev/video0");
+    return std::unique_ptr<Source>(std::make_unique<V4l2Source>(device, *options));
+  };
+  return d;
+}
+
+}  // namespace
+
+std::vector<DriverInfo> BuiltinDrivers() { return {OpenNi2Driver(), AravisDriver(), V4l2Driver()}; }
+
+const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::string& name) {
+  for (const DriverInfo& d : drivers) {
+    if (d.name == name) return &d;
+  }
+  return nullptr;
+}
+
+Status DeclareSensorOptions(OptionSet* options) {
+  for (const DriverInfo& d : BuiltinDrivers())
+    SIGHTLINE_RETURN_IF_ERROR(d.declare_options(options));
+  return Status::Ok();
+}
+
+bool IsSensorUri(const std::string& uri) {
+  return StartsWith(uri, kOpenNi2Scheme) || StartsWith(uri, kAravisScheme) ||
+         StartsWith(uri, kV4l2Scheme) || OpenNi2IsRecording(uri);
+}
+
+StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const OptionSet& options) {
+  const std::vector<DriverInfo> drivers = BuiltinDrivers();
+  const DriverInfo* driver = nullptr;
+  for (const DriverInfo& d : drivers) {
+    if (StartsWith(uri, d.scheme)) driver = &d;
+  }
+  if (driver == nullptr && OpenNi2IsRecording(uri)) driver = FindDriver(drivers, "openni2");
+  if (driver == nullptr) {
+    const size_t scheme_end = uri.find("://");
+    if (scheme_end != std::string::npos && uri.find('/') > scheme_end) {
+      return InvalidArgument("unknown source scheme '" + uri.substr(0, scheme_end + 3) + "' in '" +
+                             uri +
+                             "' (known: openni2://, aravis://, v4l2://, an .oni file or a "
+                             "dataset path)");
+    }
+    return OpenDataset(uri);
+  }
+  StatusOr<std::unique_ptr<Source>> source = driver->create(uri, options);
+  if (!source.ok()) return source.status();
+  SIGHTLINE_RETURN_IF_ERROR((*source)->Open());
+  return source;
+}
+
+}  // namespace sightline

@@ -1,0 +1,66 @@
+// The sensor drivers Sightline has, each with an availability probe, device enumeration, its
+// options and a factory; and OpenSource(), which opens any sensor URI or dataset path.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/common/status.h"
+#include "core/io/source.h"
+#include "core/options/option_set.h"
+#include "core/sensors/device_info.h"
+
+namespace sightline {
+
+// One sensor driver. Built explicitly by BuiltinDrivers() (no static registration). A driver
+// left out of the build is still listed: available() then says so, which lets a GUI show it
+// greyed out with the reason.
+struct DriverInfo {
+  std::string name;         // "openni2", "aravis", "v4l2".
+  std::string description;  // One line for menus and `--help`.
+  std::string scheme;       // URI prefix, e.g. "openni2://".
+  // Ok when the driver can be used here; else kUnavailable with the reason ("not built: ...",
+  // "no /dev/video* device", "OpenNI2 failed to initialise: ...").
+  std::function<Status()> available;
+  // Devices attached now (may block about a second, e.g. GigE discovery). Reads the driver's
+  // options from the set (e.g. sensors.aravis.fake_interface); empty when unavailable.
+  std::function<std::vector<DeviceInfo>(const OptionSet& options)> enumerate;
+  // Declares the driver's options (`sensors.<name>.*`) in a set.
+  std::function<Status(OptionSet*)> declare_options;
+  // A source for a URI of this driver's scheme (or, for openni2, an .oni path), not yet opened,
+  // configured from the options in the set (undeclared keys take their defaults). Fails for
+  // invalid options or when the driver is not built.
+  std::function<StatusOr<std::unique_ptr<Source>>(const std::string& uri, const OptionSet& options)>
+      create;
+};
+
+// openni2, aravis and v4l2, in that order.
+std::vector<DriverInfo> BuiltinDrivers();
+
+// The driver called `name` in `drivers`, or nullptr.
+const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::string& name);
+
+// Declares the options of every built-in driver.
+Status DeclareSensorOptions(OptionSet* options);
+
+// True for "openni2://...", "aravis://...", "v4l2://..." and paths ending in .oni.
+bool IsSensorUri(const std::string& uri);
+
+// Opens anything Sightline can read frames from and returns the open source:
+//   "openni2://" (first device), "openni2://DEVICE_URI", "openni2://file.oni" or "file.oni";
+//   "aravis://" (first camera), "aravis://DEVICE_ID", "aravis://LEFT_ID,RIGHT_ID" (stereo);
+//   "v4l2://0", "v4l2:///dev/video0";
+//   anything else: a dataset or recording folder through OpenDataset().
+// core/io cannot open sensors itself (core/sensors sits above it); front ends call this.
+//
+//   OptionSet options;
+//   DeclareSensorOptions(&options);
+//   options.ApplyOverride("sensors.aravis.exposure_us=5000");
+//   auto source = OpenSource("aravis://Basler-21234567", options);
+//   if (!source.ok()) return source.status();   // e.g. "Aravis camera '...' is not available"
+StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri,
+                                             const OptionSet& options = OptionSet());
+
+}  // namespace sightline
