@@ -4,6 +4,7 @@
 
 #include "core/pipeline/inspect_pipeline.h"
 #include "core/pipeline/stereo_vo_pipeline.h"
+#include "core/pipeline/mapping_pipeline.h"
 
 namespace sightline {
 
@@ -26,6 +27,7 @@ const PipelineInfo* PipelineRegistry::Find(const std::string& name) const {
 PipelineRegistry BuiltinPipelines() {
   PipelineRegistry registry;
   Status s = registry.Register(InspectPipeline());
+  s = registry.Register(MappingPipeline());
   s = registry.Register(StereoVoPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;

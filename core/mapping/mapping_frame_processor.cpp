@@ -1,0 +1,213 @@
+#include "core/mapping/mapping_frame_processor.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "core/mapping/option_check.h"
+
+namespace sightline {
+
+using mapping_internal::Invalid;
+
+bool MappingOptions::IsValid(std::string* error) const {
+  if (extractor != "multi_line_ransac" && extractor != "split_and_merge") {
+    return Invalid(error, "mapping.extractor must be multi_line_ransac or split_and_merge");
+  }
+  return floor.IsValid(error) && occupancy.IsValid(error) && scan.IsValid(error) &&
+         ransac.IsValid(error) && split_merge.IsValid(error) && rotation.IsValid(error) &&
+         stitch.IsValid(error) && people.IsValid(error);
+}
+
+OptionTable<MappingOptions> MappingOptions::Describe() {
+  using O = MappingOptions;
+  return OptionTable<O>("")
+      .Choice("mapping.extractor", &O::extractor, {"multi_line_ransac", "split_and_merge"},
+              "Wall-line extractor: the seed's multi-line RANSAC or split-and-merge.")
+      .Nested(&O::floor, FloorPlaneOptions::Describe())
+      .Nested(&O::occupancy, OccupancyImageOptions::Describe())
+      .Nested(&O::scan, PolarScanOptions::Describe())
+      .Nested(&O::ransac, MultiLineRansacOptions::Describe())
+      .Nested(&O::split_merge, SplitAndMergeOptions::Describe())
+      .Nested(&O::rotation, ManhattanRotationOptions::Describe())
+      .Nested(&O::stitch, OccupancyGridMapOptions::Describe())
+      .Nested(&O::people, PersonDetectorOptions::Describe());
+}
+
+namespace {
+
+// Milliseconds since `start`.
+double MsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+MappingFrameProcessor::MappingFrameProcessor(MappingOptions options)
+    : options_(std::move(options)),
+      occupancy_(options_.occupancy),
+      scanner_(options_.scan),
+      rotation_(options_.rotation),
+      map_(options_.stitch) {
+  if (options_.extractor == "split_and_merge") {
+    extractor_ = std::make_unique<SplitAndMerge>(options_.split_merge);
+  } else {
+    extractor_ = std::make_unique<MultiLineRansac>(options_.ransac);
+  }
+}
+
+MappingFrameProcessor::~MappingFrameProcessor() = default;
+
+Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCamera& camera) {
+  configured_ = false;
+  std::string error;
+  if (!options_.IsValid(&error)) return InvalidArgument(error);
+  SIGHTLINE_RETURN_IF_ERROR(occupancy_.Configure(floor, camera));
+  SIGHTLINE_RETURN_IF_ERROR(scanner_.Configure(options_.occupancy.width_cells,
+                                               options_.occupancy.height_cells,
+                                               options_.occupancy.cell_size_m,
+                                               occupancy_.fov_min_rad(), occupancy_.fov_max_rad()));
+  base_from_camera_ = Eigen::Isometry3d::Identity();
+  base_from_camera_.linear() = occupancy_.base_from_camera_rotation();
+  base_from_camera_.translation() = Eigen::Vector3d(0, 0, floor.CameraHeightM());
+  configured_ = true;
+  Restart();
+  return Status::Ok();
+}
+
+void MappingFrameProcessor::Restart() {
+  rotation_.Restart(0);
+  odometry_.Reset();
+  map_.Clear();
+  pose_ = Pose2d();
+  trajectory_.clear();
+  times_.clear();
+  camera_poses_.clear();
+  reset_log_.clear();
+  frames_ = 0;
+}
+
+StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Process(
+    const MappingInput& input, TimingStats* timing) {
+  if (!configured_) return FailedPrecondition("mapping: Configure() was not called");
+  if (!input.depth_m.empty() && input.depth_m.type() != CV_32FC1) {
+    return InvalidArgument("mapping: depth must be CV_32FC1 metres (NaN = invalid)");
+  }
+  auto result = std::make_shared<MappingFrameResult>();
+  result->stamp = input.stamp;
+  result->frame_index = frames_;
+  MappingStageTimes& times = result->times;
+  const auto frame_start = std::chrono::steady_clock::now();
+
+  // People.
+  const std::string& source = options_.people.source;
+  const bool use_truth = (source == "ground_truth" || source == "auto") && input.people.has_value();
+  const bool use_hog = source == "hog" || (source == "auto" && !input.people.has_value());
+  if (use_truth) {
+    result->people = *input.people;
+  } else if (use_hog && !input.color.empty()) {
+    auto start = std::chrono::steady_clock::now();
+    if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
+    StatusOr<std::vector<PersonBox>> found = detector_->Detect(input.color);
+    if (!found.ok()) return found.status();
+    result->people = std::move(*found);
+    times.people_ms = MsSince(start);
+    if (timing) timing->Add("people", times.people_ms);
+  }
+
+  // Occupancy image.
+  auto start = std::chrono::steady_clock::now();
+  StatusOr<OccupancyImage> image = occupancy_.Build(input.depth_m, result->people);
+  if (!image.ok()) return image.status();
+  result->occupancy = std::move(*image);
+  times.occupancy_ms = MsSince(start);
+
+  // Polar scan.
+  start = std::chrono::steady_clock::now();
+  StatusOr<PolarScan> scan = scanner_.Scan(result->occupancy);
+  if (!scan.ok()) return scan.status();
+  result->scan = std::move(*scan);
+  times.scan_ms = MsSince(start);
+
+  // Wall lines.
+  start = std::chrono::steady_clock::now();
+  StatusOr<LineExtraction> lines = extractor_->Extract(result->scan);
+  if (!lines.ok()) return lines.status();
+  result->lines = std::move(*lines);
+  times.lines_ms = MsSince(start);
+
+  // Rotation and dead reckoning.
+  start = std::chrono::steady_clock::now();
+  if (frames_ == 0 && input.odometry) {
+    pose_ = *input.odometry;  // The estimate lives in the pose source's world frame.
+    rotation_.Restart(pose_.heading_rad);
+  }
+  const OdometryIncrement step = odometry_.Update(input.odometry);
+  const double previous_heading = pose_.heading_rad;
+  result->rotation = rotation_.Update(result->lines.lines, step);
+  rotation_.Classify(result->rotation, &result->lines.lines);
+  if (step.valid) {
+    const double c = std::cos(previous_heading), s = std::sin(previous_heading);
+    const Eigen::Vector2d& d = step.translation_in_previous_base;
+    pose_.x += c * d.x() - s * d.y();
+    pose_.y += s * d.x() + c * d.y();
+  }
+  pose_.heading_rad = result->rotation.heading_rad;
+  result->pose = pose_;
+  result->world_from_camera = pose_.ToIsometry() * base_from_camera_;
+  times.rotation_ms = MsSince(start);
+
+  // Map stitching.
+  start = std::chrono::steady_clock::now();
+  if (result->rotation.reset) {
+    result->reset = true;
+    char text[64];
+    std::snprintf(text, sizeof(text), "frame %lld (t = %.3f s): ",
+                  static_cast<long long>(frames_), input.stamp.sensor_time_s);
+    reset_log_.push_back(text + result->rotation.reset_reason);
+    if (options_.stitch.clear_on_reset) {
+      map_.Clear();
+      result->map_cleared = true;
+    }
+  }
+  SIGHTLINE_RETURN_IF_ERROR(map_.Insert(result->occupancy, pose_, &result->scan));
+  times.stitch_ms = MsSince(start);
+
+  trajectory_.push_back(pose_);
+  times_.push_back(input.stamp.sensor_time_s);
+  camera_poses_.push_back(result->world_from_camera);
+  if (options_.stitch.render_every_n > 0 && frames_ % options_.stitch.render_every_n == 0 &&
+      !map_.empty()) {
+    result->map_image = std::make_shared<const cv::Mat>(map_.RenderBgr(trajectory_));
+    result->map_origin = map_.origin();
+    result->map_resolution_m = map_.resolution_m();
+  }
+
+  // What was degenerate, for people.
+  const OccupancyImage& occ = result->occupancy;
+  const int valid = occ.sampled_pixels - occ.invalid_pixels;
+  if (input.depth_m.empty()) {
+    result->status = "no depth";
+  } else if (valid == 0) {
+    result->status = "no valid depth";
+  } else if (occ.person_pixels > occ.occupied_pixels && occ.person_pixels > valid / 4) {
+    result->status = "view blocked by people";
+  } else if (occ.floor_pixels == 0) {
+    result->status = "no floor visible";
+  } else if (result->lines.lines.empty()) {
+    result->status = "no walls";
+  } else {
+    result->status = "ok";
+  }
+  times.total_ms = MsSince(frame_start);
+  if (timing) {
+    timing->Add("occupancy", times.occupancy_ms);
+    timing->Add("scan", times.scan_ms);
+    timing->Add("lines", times.lines_ms);
+    timing->Add("rotation", times.rotation_ms);
+    timing->Add("stitch", times.stitch_ms);
+  }
+  ++frames_;
+  return std::shared_ptr<const MappingFrameResult>(std::move(result));
+}
+
+}  // namespace sightline

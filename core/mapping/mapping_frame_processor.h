@@ -1,0 +1,154 @@
+// One depth frame through the whole indoor mapping chain of seed 000: person boxes, occupancy
+// image, polar scan, wall lines, Manhattan rotation with dead reckoning, map stitching; with
+// per-stage timing. The CLI pipeline and the GUI worker both call this.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/camera.h"
+#include "core/common/frame.h"
+#include "core/common/status.h"
+#include "core/common/timing.h"
+#include "core/mapping/dead_reckoning.h"
+#include "core/mapping/floor_plane.h"
+#include "core/mapping/line_extractor.h"
+#include "core/mapping/manhattan_rotation.h"
+#include "core/mapping/multi_line_ransac.h"
+#include "core/mapping/occupancy_grid_map.h"
+#include "core/mapping/occupancy_image.h"
+#include "core/mapping/person_boxes.h"
+#include "core/mapping/polar_scan.h"
+#include "core/mapping/split_and_merge.h"
+#include "core/options/option_table.h"
+
+namespace sightline {
+
+// Every option of the mapping chain: keys "mapping.extractor", "mapping.floor.*",
+// "mapping.occupancy.*", "mapping.scan.*", "mapping.ransac.*", "mapping.split_merge.*",
+// "mapping.rotation.*", "mapping.stitch.*", "mapping.people.*".
+struct MappingOptions {
+  std::string extractor = "multi_line_ransac";  // Or "split_and_merge".
+  FloorPlaneOptions floor;
+  OccupancyImageOptions occupancy;
+  PolarScanOptions scan;
+  MultiLineRansacOptions ransac;
+  SplitAndMergeOptions split_merge;
+  ManhattanRotationOptions rotation;
+  OccupancyGridMapOptions stitch;
+  PersonDetectorOptions people;
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<MappingOptions> Describe();
+};
+
+// One frame's input.
+struct MappingInput {
+  FrameStamp stamp;
+  cv::Mat depth_m;  // CV_32FC1 metres, NaN = invalid (any resolution; seed: 320 x 240).
+  cv::Mat color;    // BGR, optional; the HOG detector runs on it when boxes are not given.
+  // world_from_base of the pose source (wheel odometry, visual odometry) at this frame.
+  std::optional<Pose2d> odometry;
+  // Ground-truth person boxes; nullopt = unknown (the detector may run, see mapping.people).
+  std::optional<std::vector<PersonBox>> people;
+};
+
+// Per-stage durations of one frame [ms]; stages that did not run are 0.
+struct MappingStageTimes {
+  double people_ms = 0;
+  double occupancy_ms = 0;
+  double scan_ms = 0;
+  double lines_ms = 0;
+  double rotation_ms = 0;
+  double stitch_ms = 0;
+  double total_ms = 0;  // All of the above.
+};
+
+// Everything one frame produced, immutable once returned, for the GUI to draw: the occupancy
+// image (OccupancyCell values), the scan's rays (robot at occupancy.ToImage({0, 0}), each point's
+// cell), the wall lines with their Manhattan direction class, the pose, and every few frames the
+// global map with the trajectory.
+struct MappingFrameResult {
+  FrameStamp stamp;
+  std::vector<PersonBox> people;       // Boxes used (image pixels).
+  OccupancyImage occupancy;
+  PolarScan scan;
+  LineExtraction lines;                // Base frame; direction_class set.
+  RotationEstimate rotation;
+  Pose2d pose;                         // world_from_base estimate.
+  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+  bool reset = false;                  // The reset rule fired (rotation.reset_reason says why).
+  bool map_cleared = false;            // ... and the map was started anew.
+  std::string status;                  // "ok" or what was degenerate ("no valid depth", ...).
+  MappingStageTimes times;
+  int64_t frame_index = 0;             // Frames processed before this one.
+  // Every mapping.stitch.render_every_n frames (else null): the global map as BGR with the
+  // trajectory in red; map_origin is the world position of its bottom-left corner.
+  std::shared_ptr<const cv::Mat> map_image;
+  Eigen::Vector2d map_origin = Eigen::Vector2d::Zero();
+  double map_resolution_m = 0;
+};
+
+// Runs the chain frame by frame. One instance per run; not thread-safe (one worker drives it).
+//
+//   MappingFrameProcessor processor(options);
+//   SIGHTLINE_RETURN_IF_ERROR(processor.Configure(floor, camera));
+//   for (...) {
+//     StatusOr<std::shared_ptr<const MappingFrameResult>> r = processor.Process(input, &timing);
+//     if (!r.ok()) return r.status();
+//   }
+//   processor.map().SaveRos(out_dir);
+class MappingFrameProcessor {
+ public:
+  explicit MappingFrameProcessor(MappingOptions options = {});
+  ~MappingFrameProcessor();
+  MappingFrameProcessor(const MappingFrameProcessor&) = delete;
+  MappingFrameProcessor& operator=(const MappingFrameProcessor&) = delete;
+
+  // Sets the floor plane and the depth camera and restarts the run. Fails on invalid options,
+  // plane or camera, naming the field.
+  Status Configure(const FloorPlane& floor, const PinholeCamera& camera);
+  // One frame. When `timing` is given, adds "people" (if run), "occupancy", "scan", "lines",
+  // "rotation" and "stitch" durations to it. Degenerate input (empty or all-invalid depth, no
+  // floor, people everywhere) gives an ok result whose status says so.
+  StatusOr<std::shared_ptr<const MappingFrameResult>> Process(const MappingInput& input,
+                                                              TimingStats* timing = nullptr);
+  // Forgets poses, reference and map (Configure() does this too).
+  void Restart();
+
+  const OccupancyGridMap& map() const { return map_; }
+  // Estimated poses (world_from_base) and their times, one per processed frame.
+  const std::vector<Pose2d>& trajectory() const { return trajectory_; }
+  const std::vector<double>& trajectory_times() const { return times_; }
+  // Camera poses (world_from_camera) of the trajectory, for TUM output.
+  const std::vector<Eigen::Isometry3d>& camera_trajectory() const { return camera_poses_; }
+  // Times the reset rule fired, and why.
+  const std::vector<std::string>& reset_log() const { return reset_log_; }
+  // base_from_camera of the configured floor plane.
+  const Eigen::Isometry3d& base_from_camera() const { return base_from_camera_; }
+  const MappingOptions& options() const { return options_; }
+
+ private:
+  MappingOptions options_;
+  bool configured_ = false;
+  OccupancyImageBuilder occupancy_;
+  PolarScanner scanner_;
+  std::unique_ptr<LineExtractor> extractor_;
+  std::unique_ptr<HogPersonDetector> detector_;
+  ManhattanRotation rotation_;
+  DeadReckoning odometry_;
+  OccupancyGridMap map_;
+  Eigen::Isometry3d base_from_camera_ = Eigen::Isometry3d::Identity();
+  Pose2d pose_;
+  std::vector<Pose2d> trajectory_;
+  std::vector<double> times_;
+  std::vector<Eigen::Isometry3d> camera_poses_;
+  std::vector<std::string> reset_log_;
+  int64_t frames_ = 0;
+};
+
+}  // namespace sightline

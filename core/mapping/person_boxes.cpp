@@ -1,0 +1,196 @@
+#include "core/mapping/person_boxes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/objdetect.hpp>
+#include <sstream>
+
+#include "core/common/text_file.h"
+#include "core/mapping/option_check.h"
+
+namespace sightline {
+
+using mapping_internal::Invalid;
+
+bool PersonDetectorOptions::IsValid(std::string* error) const {
+  if (source != "auto" && source != "ground_truth" && source != "hog" && source != "none") {
+    return Invalid(error, "mapping.people.source must be auto, ground_truth, hog or none");
+  }
+  if (hog_max_columns < 64) return Invalid(error, "mapping.people.hog_max_columns must be >= 64");
+  if (!(hog_scale_step > 1.0)) return Invalid(error, "mapping.people.hog_scale_step must be > 1");
+  if (!(hog_box_shrink >= 0 && hog_box_shrink < 0.5)) {
+    return Invalid(error, "mapping.people.hog_box_shrink must lie in [0, 0.5)");
+  }
+  return true;
+}
+
+OptionTable<PersonDetectorOptions> PersonDetectorOptions::Describe() {
+  using O = PersonDetectorOptions;
+  return OptionTable<O>("mapping.people")
+      .Choice("source", &O::source, {"auto", "ground_truth", "hog", "none"},
+              "Where person boxes come from: the dataset's ground truth, OpenCV's HOG detector, "
+              "auto (ground truth when present, else HOG) or none.")
+      .Double("hog_hit_threshold", &O::hog_hit_threshold, "", -2, 5, 0.1,
+              "SVM score a HOG window needs to count as a person.")
+      .Int("hog_max_columns", &O::hog_max_columns, "px", 64, 4096, 32,
+           "The colour image is downscaled to at most this width before detection.")
+      .Double("hog_scale_step", &O::hog_scale_step, "", 1.01, 2, 0.01,
+              "Image pyramid step of the HOG detector (smaller is slower and finds more).")
+      .Double("hog_box_shrink", &O::hog_box_shrink, "", 0, 0.45, 0.01,
+              "HOG boxes include padding; each side is shrunk by this fraction of the box.");
+}
+
+struct HogPersonDetector::Impl {
+  cv::HOGDescriptor hog;
+  cv::Mat small;
+  cv::Mat gray;
+};
+
+HogPersonDetector::HogPersonDetector(PersonDetectorOptions options)
+    : options_(std::move(options)), impl_(std::make_unique<Impl>()) {
+  impl_->hog.setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
+}
+
+HogPersonDetector::~HogPersonDetector() = default;
+
+StatusOr<std::vector<PersonBox>> HogPersonDetector::Detect(const cv::Mat& image) {
+  std::string error;
+  if (!options_.IsValid(&error)) return InvalidArgument(error);
+  std::vector<PersonBox> people;
+  if (image.empty()) return people;
+  if (image.type() != CV_8UC3 && image.type() != CV_8UC1) {
+    return InvalidArgument("person detector: expected an 8-bit BGR or grey image");
+  }
+  const double scale = image.cols > options_.hog_max_columns
+                           ? static_cast<double>(options_.hog_max_columns) / image.cols : 1.0;
+  const cv::Mat* input = &image;
+  if (scale < 1.0) {
+    cv::resize(image, impl_->small, cv::Size(), scale, scale, cv::INTER_AREA);
+    input = &impl_->small;
+  }
+  if (input->rows < impl_->hog.winSize.height || input->cols < impl_->hog.winSize.width) {
+    return people;
+  }
+  std::vector<cv::Rect> found;
+  std::vector<double> weights;
+  impl_->hog.detectMultiScale(*input, found, weights, options_.hog_hit_threshold, cv::Size(8, 8),
+                              cv::Size(), options_.hog_scale_step, 2.0);
+  for (size_t i = 0; i < found.size(); ++i) {
+    const cv::Rect& r = found[i];
+    const double sx = options_.hog_box_shrink * r.width, sy = options_.hog_box_shrink * r.height;
+    PersonBox person;
+    person.box = cv::Rect2d((r.x + sx) / scale, (r.y + sy) / scale, (r.width - 2 * sx) / scale,
+                            (r.height - 2 * sy) / scale);
+    person.image_size = image.size();
+    person.score = i < weights.size() ? weights[i] : 1.0;
+    people.push_back(person);
+  }
+  return people;
+}
+
+// --- Ground-truth table ---------------------------------------------------------------------
+
+void PersonBoxTable::Add(int64_t frame, double time_s, const PersonBox& box) {
+  by_frame_[frame].push_back(box);
+  if (std::isfinite(time_s)) frame_of_time_[time_s] = frame;
+}
+
+void PersonBoxTable::SetImageSize(const cv::Size& size) {
+  for (auto& [frame, boxes] : by_frame_) {
+    for (PersonBox& box : boxes) {
+      if (box.image_size.area() == 0) box.image_size = size;
+    }
+  }
+}
+
+const std::vector<PersonBox>& PersonBoxTable::ForFrame(int64_t frame) const {
+  auto it = by_frame_.find(frame);
+  return it == by_frame_.end() ? empty_ : it->second;
+}
+
+const std::vector<PersonBox>& PersonBoxTable::ForTime(double time_s, double tolerance_s) const {
+  if (frame_of_time_.empty()) return empty_;
+  auto it = frame_of_time_.lower_bound(time_s);
+  const std::pair<const double, int64_t>* best = nullptr;
+  if (it != frame_of_time_.end()) best = &*it;
+  if (it != frame_of_time_.begin()) {
+    auto prev = std::prev(it);
+    if (best == nullptr || time_s - prev->first < best->first - time_s) best = &*prev;
+  }
+  if (best == nullptr || std::abs(best->first - time_s) > tolerance_s) return empty_;
+  return ForFrame(best->second);
+}
+
+StatusOr<PersonBoxTable> PersonBoxTable::Read(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return NotFound("person boxes " + path + " not found");
+  std::string line;
+  int number = 0;
+  std::vector<std::string> header;
+  while (header.empty() && std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line[0] == '#') line = line.substr(1);
+    header = SplitFields(line.substr(0, line.find('(')));  // Drop a trailing "(comment)".
+  }
+  if (header.empty()) return ParseError(path + ": empty file, expected a header line");
+  auto column = [&header](std::initializer_list<const char*> names) {
+    for (const char* name : names) {
+      for (size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == name) return static_cast<int>(i);
+      }
+    }
+    return -1;
+  };
+  const int c_frame = column({"frame", "frame_index", "index"});
+  const int c_time = column({"time_s", "timestamp", "time", "t"});
+  const int c_id = column({"person", "person_id", "id"});
+  // Corner columns: u0, v0, u1, v1 (the simulator's, inclusive) or x_min, ... (exclusive).
+  const int c_u0 = column({"u0"}), c_v0 = column({"v0"}), c_u1 = column({"u1"}),
+            c_v1 = column({"v1"});
+  const bool inclusive = c_u0 >= 0 && c_v0 >= 0 && c_u1 >= 0 && c_v1 >= 0;
+  const int c_x0 = inclusive ? c_u0 : column({"u_min", "x_min", "left", "x"});
+  const int c_y0 = inclusive ? c_v0 : column({"v_min", "y_min", "top", "y"});
+  const int c_x1 = inclusive ? c_u1 : column({"u_max", "x_max", "right"});
+  const int c_y1 = inclusive ? c_v1 : column({"v_max", "y_max", "bottom"});
+  const int c_pixels = column({"pixels"});
+  const int c_w = column({"width", "w"});
+  const int c_h = column({"height", "h"});
+  const int c_iw = column({"image_width", "image_w"});
+  const int c_ih = column({"image_height", "image_h"});
+  if ((c_frame < 0 && c_time < 0) || c_x0 < 0 || c_y0 < 0 || (c_x1 < 0 && c_w < 0) ||
+      (c_y1 < 0 && c_h < 0)) {
+    return ParseError(path + " line " + std::to_string(number) +
+                      ": expected a header with frame (or time_s), x_min, y_min and x_max, "
+                      "y_max (or width, height)");
+  }
+  PersonBoxTable table;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    DataLine data{number, line};
+    StatusOr<std::vector<double>> values = ParseNumbers(data, header.size(), path);
+    if (!values.ok()) return values.status();
+    const std::vector<double>& v = *values;
+    if (c_pixels >= 0 && v[c_pixels] <= 0) continue;  // Person out of view.
+    PersonBox box;
+    box.id = c_id >= 0 ? static_cast<int>(v[c_id]) : -1;
+    const double x0 = v[c_x0], y0 = v[c_y0];
+    const double x1 = c_x1 >= 0 ? v[c_x1] + (inclusive ? 1 : 0) : x0 + v[c_w];
+    const double y1 = c_y1 >= 0 ? v[c_y1] + (inclusive ? 1 : 0) : y0 + v[c_h];
+    if (x1 < x0 || y1 < y0) {
+      return ParseError(path + " line " + std::to_string(number) + ": box has negative size");
+    }
+    box.box = cv::Rect2d(x0, y0, x1 - x0, y1 - y0);
+    if (c_iw >= 0 && c_ih >= 0) {
+      box.image_size = cv::Size(static_cast<int>(v[c_iw]), static_cast<int>(v[c_ih]));
+    }
+    const int64_t frame = c_frame >= 0 ? static_cast<int64_t>(v[c_frame]) : -1;
+    const double time_s = c_time >= 0 ? v[c_time] : NAN;
+    table.Add(frame >= 0 ? frame : static_cast<int64_t>(table.by_frame_.size()), time_s, box);
+  }
+  return table;
+}
+
+}  // namespace sightline

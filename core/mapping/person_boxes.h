@@ -1,0 +1,86 @@
+// People in the image, so that mapping never fits walls to them (seed 000: skeleton-tracked
+// people are boxed and excluded). Boxes come from a dataset's ground truth (the simulator's
+// people.csv) or from OpenCV's HOG people detector on the colour image.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/status.h"
+#include "core/options/option_table.h"
+
+namespace sightline {
+
+// A person's box in one image.
+struct PersonBox {
+  int id = -1;           // Ground-truth person id, or -1 for a detection.
+  cv::Rect2d box;        // Pixels of the image it was found in.
+  cv::Size image_size;   // Size of that image (boxes are scaled to the depth image).
+  double score = 1;      // Detector confidence (1 for ground truth).
+};
+
+// Where person boxes come from. Keys "mapping.people.*".
+struct PersonDetectorOptions {
+  std::string source = "auto";   // auto: ground truth when the dataset has it, else HOG;
+                                 // ground_truth, hog or none.
+  double hog_hit_threshold = 0.3;  // SVM score a HOG window needs.
+  int hog_max_columns = 320;     // The colour image is downscaled to at most this width first.
+  double hog_scale_step = 1.08;  // Pyramid step of detectMultiScale.
+  double hog_box_shrink = 0.1;   // HOG boxes are padded; shrink each side by this fraction.
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<PersonDetectorOptions> Describe();
+};
+
+// OpenCV's HOG + linear SVM people detector (Dalal and Triggs; getDefaultPeopleDetector).
+// About 20-60 ms per 320 x 240 image on one core: far slower than the rest of mapping, so it is
+// timed as its own stage and only runs when no ground-truth boxes exist.
+//
+//   HogPersonDetector detector(options);
+//   StatusOr<std::vector<PersonBox>> people = detector.Detect(frame.color);
+class HogPersonDetector {
+ public:
+  explicit HogPersonDetector(PersonDetectorOptions options = {});
+  ~HogPersonDetector();
+  HogPersonDetector(const HogPersonDetector&) = delete;
+  HogPersonDetector& operator=(const HogPersonDetector&) = delete;
+
+  // People in a BGR or grey image. An empty image gives no people.
+  StatusOr<std::vector<PersonBox>> Detect(const cv::Mat& image);
+
+ private:
+  struct Impl;
+  PersonDetectorOptions options_;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Ground-truth person boxes per frame, read from a CSV file.
+class PersonBoxTable {
+ public:
+  // Reads a people.csv written by the simulator ("# frame,person,u0,v0,u1,v1,pixels", inclusive
+  // corners, pixels = 0 when out of view) or any CSV whose header names frame (or time_s),
+  // x_min, y_min and x_max, y_max (or width, height). Boxes carry no image size unless the file
+  // has image_width and image_height columns; set it with SetImageSize. Errors name the file and
+  // line.
+  static StatusOr<PersonBoxTable> Read(const std::string& path);
+
+  // Boxes of one frame (by frame index); empty when none.
+  const std::vector<PersonBox>& ForFrame(int64_t frame) const;
+  // Boxes nearest in time within tolerance_s; empty when none. For tables with times.
+  const std::vector<PersonBox>& ForTime(double time_s, double tolerance_s) const;
+  size_t frames() const { return by_frame_.size(); }
+  // Adds one box (for tests and other sources).
+  void Add(int64_t frame, double time_s, const PersonBox& box);
+  // Sets the image size of every box that has none (the annotated camera's resolution).
+  void SetImageSize(const cv::Size& size);
+
+ private:
+  std::map<int64_t, std::vector<PersonBox>> by_frame_;
+  std::map<double, int64_t> frame_of_time_;
+  std::vector<PersonBox> empty_;
+};
+
+}  // namespace sightline
