@@ -1,5 +1,6 @@
 #include "core/pipeline/stereo_vo_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,11 @@
 #include "core/io/dataset.h"
 
 namespace sightline {
+
+namespace {
+// A ground-truth path shorter than this is a static recording [m].
+constexpr double kStaticPathM = 0.05;
+}  // namespace
 
 bool StereoVoRunOptions::IsValid(std::string* error) const {
   if (subsample < 1) {
@@ -98,7 +104,24 @@ std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& 
                                                              double gt_tolerance_s,
                                                              std::vector<std::string>* notes) {
   std::vector<std::pair<std::string, double>> figures;
-  if (run.ground_truth) {
+  if (run.ground_truth && run.ground_truth->LengthM() < kStaticPathM) {
+    // A static recording: relative figures (% of a path of millimetres) mean nothing; the only
+    // error is any motion at all.
+    double max_translation = 0, max_rotation = 0;
+    const Eigen::Isometry3d first_inverse = run.estimate.poses().front().world_from_sensor.inverse();
+    for (const TimedPose& p : run.estimate.poses()) {
+      const Eigen::Isometry3d rel = first_inverse * p.world_from_sensor;
+      max_translation = std::max(max_translation, rel.translation().norm());
+      max_rotation = std::max(max_rotation, Eigen::AngleAxisd(rel.rotation()).angle() * 180 / M_PI);
+    }
+    figures.emplace_back("static_translation_m", max_translation);
+    figures.emplace_back("static_rotation_deg", max_rotation);
+    if (notes) {
+      notes->push_back("the ground truth moves less than 5 cm: static recording, reporting the "
+                       "estimated motion (static_translation_m, static_rotation_deg) instead of "
+                       "trajectory errors");
+    }
+  } else if (run.ground_truth) {
     EvaluationOptions eval;
     eval.max_time_difference_s = gt_tolerance_s;
     StatusOr<TrajectoryErrors> errors = EvaluateTrajectory(run.estimate, *run.ground_truth, eval);
@@ -107,18 +130,6 @@ std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& 
       if (notes) notes->insert(notes->end(), errors->notes.begin(), errors->notes.end());
     } else if (notes) {
       notes->push_back("trajectory accuracy not computed: " + errors.status().message());
-    }
-    if (!errors.ok() && run.ground_truth->LengthM() < 0.05) {
-      // A static recording: the only error is any motion at all.
-      double max_translation = 0, max_rotation = 0;
-      const Eigen::Isometry3d first_inverse = run.estimate.poses().front().world_from_sensor.inverse();
-      for (const TimedPose& p : run.estimate.poses()) {
-        const Eigen::Isometry3d rel = first_inverse * p.world_from_sensor;
-        max_translation = std::max(max_translation, rel.translation().norm());
-        max_rotation = std::max(max_rotation, Eigen::AngleAxisd(rel.rotation()).angle() * 180 / M_PI);
-      }
-      figures.emplace_back("static_translation_m", max_translation);
-      figures.emplace_back("static_rotation_deg", max_rotation);
     }
   }
   figures.emplace_back("estimated_length_m", run.estimate.LengthM());

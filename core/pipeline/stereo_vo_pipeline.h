@@ -48,8 +48,8 @@ StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
                                         const std::atomic<bool>* cancel = nullptr);
 
 // Accuracy figures of a run against its ground truth: AccuracyFigures() of EvaluateTrajectory,
-// or, when the ground truth does not move, the estimated motion (static_translation_m, the
-// largest distance from the first pose, and static_rotation_deg). Always adds
+// or, when the ground truth moves less than 5 cm (static), the estimated motion instead
+// (static_translation_m, the largest distance from the first pose, and static_rotation_deg). Always adds
 // estimated_length_m. Notes explain figures left out.
 std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& run,
                                                              double gt_tolerance_s,

@@ -14,9 +14,7 @@ using stereo_internal::Invalid;
 bool FeatureTrackerOptions::IsValid(std::string* error) const {
   if (max_features < 8) return Invalid(error, "stereo.tracking.max_features must be >= 8");
   if (bucket_size_px < 8) return Invalid(error, "stereo.tracking.bucket_size_px must be >= 8");
-  if (!(quality_level > 0 && quality_level < 1)) {
-    return Invalid(error, "stereo.tracking.quality_level must lie in (0, 1)");
-  }
+  if (!(min_eigenvalue > 0)) return Invalid(error, "stereo.tracking.min_eigenvalue must be > 0");
   if (!(min_distance_px >= 1)) return Invalid(error, "stereo.tracking.min_distance_px must be >= 1");
   if (block_size < 3 || block_size % 2 == 0) {
     return Invalid(error, "stereo.tracking.block_size must be odd and >= 3");
@@ -33,6 +31,10 @@ bool FeatureTrackerOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.tracking.max_forward_backward_px must be >= 0");
   }
   if (border_px < 0) return Invalid(error, "stereo.tracking.border_px must be >= 0");
+  if (refine_window_px < 0) return Invalid(error, "stereo.tracking.refine_window_px must be >= 0");
+  if (detection_level < 0 || detection_level > pyramid_levels) {
+    return Invalid(error, "stereo.tracking.detection_level must lie in [0, pyramid_levels]");
+  }
   return true;
 }
 
@@ -43,8 +45,8 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
            "Features kept per frame, tracked plus new.")
       .Int("bucket_size_px", &O::bucket_size_px, "px", 8, 1000, 4,
            "Side of the detection grid's buckets; each holds at most its share of max_features.")
-      .Double("quality_level", &O::quality_level, "", 1e-5, 0.99, 0.001,
-              "Shi-Tomasi quality: corners weaker than this times the strongest are dropped.")
+      .Double("min_eigenvalue", &O::min_eigenvalue, "", 1e-7, 1, 1e-4,
+              "Shi-Tomasi: smallest minimum eigenvalue of a corner (cv::cornerMinEigenVal units).")
       .Double("min_distance_px", &O::min_distance_px, "px", 1, 100, 1,
               "Minimum distance between corners.")
       .Int("block_size", &O::block_size, "px", 3, 31, 2, "Shi-Tomasi gradient window.")
@@ -56,14 +58,21 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
               "KLT stops when its update is smaller than this.")
       .Double("max_forward_backward_px", &O::max_forward_backward_px, "px", 0, 20, 0.1,
               "A track must return to its start within this when tracked backwards; 0 = no check.")
-      .Int("border_px", &O::border_px, "px", 0, 200, 1, "Features this close to the border are dropped.");
+      .Int("border_px", &O::border_px, "px", 0, 200, 1, "Features this close to the border are dropped.")
+      .Int("detection_level", &O::detection_level, "level", 0, 6, 1,
+           "Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).")
+      .Int("refine_window_px", &O::refine_window_px, "px", 0, 20, 1,
+           "Half-size of the sub-pixel corner refinement at full resolution after detection on a "
+           "reduced level; 0 = none.");
 }
 
 void FeatureTracker::Track(const ImagePyramid& previous, const ImagePyramid& current,
                            const std::vector<cv::Point2f>& points,
+                           const std::vector<cv::Point2f>& predicted,
                            std::vector<cv::Point2f>* tracked,
                            std::vector<unsigned char>* ok) const {
-  tracked->clear();
+  const bool use_prediction = predicted.size() == points.size();
+  *tracked = use_prediction ? predicted : points;
   ok->assign(points.size(), 0);
   if (points.empty() || previous.empty() || current.empty()) return;
   const cv::Size window(options_.window_px, options_.window_px);
@@ -73,7 +82,7 @@ void FeatureTracker::Track(const ImagePyramid& previous, const ImagePyramid& cur
   std::vector<float> error;
   std::vector<unsigned char> status;
   cv::calcOpticalFlowPyrLK(previous.levels, current.levels, points, *tracked, status, error, window,
-                           levels, criteria, 0, 1e-4);
+                           levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   std::vector<unsigned char> back_status;
   std::vector<cv::Point2f> back;
   if (options_.max_forward_backward_px > 0) {
@@ -97,53 +106,92 @@ void FeatureTracker::Track(const ImagePyramid& previous, const ImagePyramid& cur
   }
 }
 
-std::vector<cv::Point2f> FeatureTracker::Detect(const cv::Mat& image,
+std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
                                                 const std::vector<cv::Point2f>& existing) const {
   std::vector<cv::Point2f> fresh;
   const int wanted = options_.max_features - static_cast<int>(existing.size());
-  if (wanted <= 0 || image.empty()) return fresh;
+  if (wanted <= 0 || pyramid.empty()) return fresh;
+  const int level = std::min(options_.detection_level, pyramid.max_level);
+  const float scale = static_cast<float>(1 << level);
+  const cv::Mat& image = pyramid.Level(level);
+  // Buckets and distances are in full-resolution pixels.
   const int bs = options_.bucket_size_px;
-  const int cols = (image.cols + bs - 1) / bs, rows = (image.rows + bs - 1) / bs;
+  const int cols = (pyramid.image.cols + bs - 1) / bs, rows = (pyramid.image.rows + bs - 1) / bs;
   const int per_bucket =
       std::max(1, static_cast<int>(std::ceil(static_cast<double>(options_.max_features) /
                                              (cols * rows))));
-  std::vector<int> count(static_cast<size_t>(cols * rows), 0);
-  cv::Mat mask(image.size(), CV_8UC1, cv::Scalar(0));
-  const int b = options_.border_px;
-  if (image.cols > 2 * b && image.rows > 2 * b) {
-    mask(cv::Rect(b, b, image.cols - 2 * b, image.rows - 2 * b)).setTo(255);
-  }
-  const int radius = static_cast<int>(std::ceil(options_.min_distance_px));
+  std::vector<std::vector<cv::Point2f>> in_bucket(static_cast<size_t>(cols * rows));
   for (const cv::Point2f& p : existing) {
     const int bx = std::clamp(static_cast<int>(p.x) / bs, 0, cols - 1);
     const int by = std::clamp(static_cast<int>(p.y) / bs, 0, rows - 1);
-    ++count[static_cast<size_t>(by * cols + bx)];
-    cv::circle(mask, cv::Point(cvRound(p.x), cvRound(p.y)), radius, cv::Scalar(0), cv::FILLED);
+    in_bucket[static_cast<size_t>(by * cols + bx)].push_back(p);
   }
-  // Buckets already full need no corners.
-  for (int by = 0; by < rows; ++by) {
-    for (int bx = 0; bx < cols; ++bx) {
-      if (count[static_cast<size_t>(by * cols + bx)] < per_bucket) continue;
-      const cv::Rect cell(bx * bs, by * bs, std::min(bs, image.cols - bx * bs),
-                          std::min(bs, image.rows - by * bs));
-      mask(cell).setTo(0);
+  const double min_d2 = options_.min_distance_px * options_.min_distance_px;
+  auto far_from = [&](const cv::Point2f& p, int bx, int by) {
+    for (int y = std::max(0, by - 1); y <= std::min(rows - 1, by + 1); ++y) {
+      for (int x = std::max(0, bx - 1); x <= std::min(cols - 1, bx + 1); ++x) {
+        for (const cv::Point2f& q : in_bucket[static_cast<size_t>(y * cols + x)]) {
+          const cv::Point2f d = p - q;
+          if (d.x * d.x + d.y * d.y < min_d2) return false;
+        }
+      }
+    }
+    return true;
+  };
+  const int border = static_cast<int>(std::ceil(options_.border_px / scale));
+  const cv::Rect inside(border, border, image.cols - 2 * border, image.rows - 2 * border);
+  const int margin = options_.block_size / 2 + 2;
+  cv::Mat eig;
+  std::vector<std::pair<float, cv::Point>> candidates;
+  for (int by = 0; by < rows && static_cast<int>(fresh.size()) < wanted; ++by) {
+    for (int bx = 0; bx < cols && static_cast<int>(fresh.size()) < wanted; ++bx) {
+      std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
+      const int need = per_bucket - static_cast<int>(here.size());
+      if (need <= 0) continue;
+      const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
+                                     cvCeil(bs / scale), cvCeil(bs / scale)) & inside;
+      if (cell.width < 3 || cell.height < 3) continue;
+      const cv::Rect ext = cv::Rect(cell.x - margin, cell.y - margin, cell.width + 2 * margin,
+                                    cell.height + 2 * margin) & cv::Rect(0, 0, image.cols, image.rows);
+      cv::cornerMinEigenVal(image(ext), eig, options_.block_size, 3);
+      candidates.clear();
+      for (int y = cell.y; y < cell.y + cell.height; ++y) {
+        const int ey = y - ext.y;
+        if (ey < 1 || ey + 1 >= eig.rows) continue;
+        const float* up = eig.ptr<float>(ey - 1);
+        const float* row = eig.ptr<float>(ey);
+        const float* down = eig.ptr<float>(ey + 1);
+        for (int x = cell.x; x < cell.x + cell.width; ++x) {
+          const int ex = x - ext.x;
+          if (ex < 1 || ex + 1 >= eig.cols) continue;
+          const float v = row[ex];
+          if (v < options_.min_eigenvalue) continue;
+          if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
+              v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
+            continue;
+          }
+          candidates.emplace_back(v, cv::Point(x, y));
+        }
+      }
+      std::sort(candidates.begin(), candidates.end(),
+                [](const auto& a, const auto& b) { return a.first > b.first; });
+      int added = 0;
+      for (const auto& [value, pixel] : candidates) {
+        if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
+        const cv::Point2f p(pixel.x * scale, pixel.y * scale);
+        if (!far_from(p, bx, by)) continue;
+        here.push_back(p);
+        fresh.push_back(p);
+        ++added;
+      }
     }
   }
-  std::vector<cv::Point2f> corners;
-  cv::goodFeaturesToTrack(image, corners, 4 * options_.max_features, options_.quality_level,
-                          options_.min_distance_px, mask, options_.block_size);
-  for (const cv::Point2f& p : corners) {
-    if (static_cast<int>(fresh.size()) >= wanted) break;
-    const int bx = std::clamp(static_cast<int>(p.x) / bs, 0, cols - 1);
-    const int by = std::clamp(static_cast<int>(p.y) / bs, 0, rows - 1);
-    int& c = count[static_cast<size_t>(by * cols + bx)];
-    if (c >= per_bucket) continue;
-    ++c;
-    fresh.push_back(p);
-  }
-  if (!fresh.empty()) {
-    cv::cornerSubPix(image, fresh, cv::Size(3, 3), cv::Size(-1, -1),
-                     cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 10, 0.03));
+  if (level > 0 && !fresh.empty() && options_.refine_window_px > 0) {
+    // Corners found on a reduced level sit up to a pixel off the full-resolution corner; move
+    // them onto it so KLT tracks a well-localised patch.
+    const int w = options_.refine_window_px;
+    cv::cornerSubPix(pyramid.image, fresh, cv::Size(w, w), cv::Size(-1, -1),
+                     cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 10, 0.01));
   }
   return fresh;
 }

@@ -16,15 +16,20 @@ namespace sightline {
 struct FeatureTrackerOptions {
   int max_features = 1500;        // Features kept per frame (tracked + new).
   int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
-  double quality_level = 0.005;   // Shi-Tomasi: corners weaker than this x the strongest are dropped.
+  double min_eigenvalue = 5e-4;   // Shi-Tomasi: smallest accepted minimum eigenvalue of the
+                                  // gradient covariance (cv::cornerMinEigenVal units).
   double min_distance_px = 7;     // Shi-Tomasi: minimum distance between corners [px].
   int block_size = 3;             // Shi-Tomasi: window of the gradient covariance [px].
-  int window_px = 15;             // KLT window side [px] (odd).
+  int window_px = 9;              // KLT window side [px] (odd).
   int pyramid_levels = 3;         // KLT pyramid levels above full resolution.
   int max_iterations = 20;        // KLT iterations per level.
   double epsilon_px = 0.01;       // KLT stops when the update is smaller [px].
   double max_forward_backward_px = 0.5;  // Tracked back to the start within this [px]; 0 = no check.
   int border_px = 8;              // Features closer to the image border are dropped [px].
+  int detection_level = 0;        // Pyramid level corners are detected on (0 = full
+                                  // resolution; fine corners track best with small windows).
+  int refine_window_px = 2;       // Half-size of the full-resolution sub-pixel corner refinement
+                                  // of corners detected on a reduced level [px]; 0 = none.
 
   bool IsValid(std::string* error) const;
   static OptionTable<FeatureTrackerOptions> Describe();
@@ -40,16 +45,18 @@ class FeatureTracker {
   explicit FeatureTracker(FeatureTrackerOptions options = {}) : options_(options) {}
   const FeatureTrackerOptions& options() const { return options_; }
 
-  // Tracks `points` from `previous` into `current`; ok[i] is 0 where a point was lost (KLT
+  // Tracks `points` from `previous` into `current`, starting from `predicted` (same size; empty
+  // = no prediction, start where the points were); ok[i] is 0 where a point was lost (KLT
   // failure, forward-backward disagreement, or too close to the border).
   void Track(const ImagePyramid& previous, const ImagePyramid& current,
-             const std::vector<cv::Point2f>& points, std::vector<cv::Point2f>* tracked,
-             std::vector<unsigned char>* ok) const;
+             const std::vector<cv::Point2f>& points, const std::vector<cv::Point2f>& predicted,
+             std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* ok) const;
 
-  // New Shi-Tomasi corners, strongest first, in buckets that hold fewer than their share of
-  // max_features, at least min_distance_px away from `existing`; at most
-  // max_features - existing.size().
-  std::vector<cv::Point2f> Detect(const cv::Mat& image,
+  // New Shi-Tomasi corners (local maxima of the minimum eigenvalue), strongest first within each
+  // bucket that holds fewer than its share of max_features, at least min_distance_px away from
+  // `existing` and each other; at most max_features - existing.size(). Only the buckets that
+  // need corners are searched, which keeps detection cheap while most features are tracked.
+  std::vector<cv::Point2f> Detect(const ImagePyramid& image,
                                   const std::vector<cv::Point2f>& existing) const;
 
  private:

@@ -111,6 +111,7 @@ MotionHypothesis MotionEstimator::Estimate(
   MotionRefinerOptions sample_refine;
   sample_refine.max_iterations = options_.sample_refine_iterations;
   sample_refine.symmetric = false;
+  sample_refine.joint_points = false;
   sample_refine.huber_px = 1e9;
   const MotionRefiner refiner(sample_refine);
   const size_t stop_count = static_cast<size_t>(std::ceil(options_.stop_inlier_fraction * n));

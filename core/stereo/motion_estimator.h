@@ -23,7 +23,7 @@ struct MotionEstimatorOptions {
   double rigidity_sigmas = 3.0;         // ... plus this many depth sigmas of both points.
   double disparity_sigma_px = 0.5;      // Disparity noise behind the depth sigma Z^2 s / (f b) [px].
   int max_rigidity_failures = 2000;     // UMBRAL2: rigidity rejections before RANSAC gives up.
-  double inlier_threshold_px = 1.5;     // UMBRAL3: reprojection error of an inlier [px].
+  double inlier_threshold_px = 1.0;     // UMBRAL3: reprojection error of an inlier [px].
   double stop_inlier_fraction = 0.95;   // UMBRAL4: stop once this fraction is inlier.
   int max_iterations = 200;             // UMBRAL5: samples that pass the rigidity test.
   int min_inliers = 12;                 // Fewer inliers means the estimate failed.

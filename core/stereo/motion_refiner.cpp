@@ -26,7 +26,12 @@ OptionTable<MotionRefinerOptions> MotionRefinerOptions::Describe() {
       .Double("min_step", &O::min_step, "", 1e-12, 1, 1e-8,
               "Stop when the update is smaller (radians or metres).")
       .Bool("symmetric", &O::symmetric,
-            "Also project current points into the previous images (uses both depths).");
+            "Also project current points into the previous images (uses both depths).")
+      .Bool("joint_points", &O::joint_points,
+            "Refine the 3D points with the motion (two-frame bundle adjustment); removes the "
+            "depth bias of triangulation.")
+      .Bool("center_weighting", &O::center_weighting,
+            "Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.");
 }
 
 namespace {
@@ -70,7 +75,127 @@ void AddTerm(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
   }
 }
 
+// Residuals (left u, v; right u, v) of point y against `obs` and their derivative in y.
+bool StereoResidual(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
+                    const StereoObservation& obs, Eigen::Vector4d* r,
+                    Eigen::Matrix<double, 4, 3>* dr_dy) {
+  if (!(y.z() > 1e-3)) return false;
+  const double iz = 1.0 / y.z();
+  const double fx = c.f * iz;
+  const double v = c.f * y.y() * iz + c.cy;
+  *r << c.f * y.x() * iz + c.cx - obs.u_left, v - obs.v,
+      c.f * (y.x() - c.baseline_m) * iz + c.cx - obs.u_right, v - obs.v;
+  *dr_dy << fx, 0, -fx * y.x() * iz,  //
+      0, fx, -fx * y.y() * iz,          //
+      fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
+      0, fx, -fx * y.y() * iz;
+  return true;
+}
+
+// Huber weights of the left and right image of a residual, as a diagonal.
+Eigen::Vector4d HuberWeights(const Eigen::Vector4d& r, double huber) {
+  const double el = std::hypot(r(0), r(1)), er = std::hypot(r(2), r(3));
+  const double wl = el <= huber ? 1.0 : huber / el, wr = er <= huber ? 1.0 : huber / er;
+  return {wl, wl, wr, wr};
+}
+
 }  // namespace
+
+RefinementSummary MotionRefiner::RefineJoint(
+    const RectifiedStereoCamera& camera, const std::vector<StereoCorrespondence>& correspondences,
+    const std::vector<int>& indices, Eigen::Isometry3d* current_from_previous) const {
+  RefinementSummary summary;
+  summary.initial_rms_px =
+      RmsReprojectionPx(camera, correspondences, indices, *current_from_previous);
+  summary.final_rms_px = summary.initial_rms_px;
+  if (indices.size() < 3) return summary;
+  const size_t n = indices.size();
+  std::vector<Eigen::Vector3d> points(n);
+  for (size_t k = 0; k < n; ++k) points[k] = correspondences[static_cast<size_t>(indices[k])].x_previous;
+  std::vector<Eigen::Matrix3d> hll_inv(n);
+  std::vector<Eigen::Matrix<double, 6, 3>> hpl(n);
+  std::vector<Eigen::Vector3d> gl(n);
+  std::vector<unsigned char> valid(n);
+  Eigen::Isometry3d t = *current_from_previous;
+  for (int it = 0; it < options_.max_iterations; ++it) {
+    Matrix6d s = Matrix6d::Zero();
+    Vector6d b = Vector6d::Zero();
+    const Eigen::Matrix3d rotation = t.rotation();
+    int used = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const StereoCorrespondence& c = correspondences[static_cast<size_t>(indices[k])];
+      const Eigen::Vector3d& x = points[k];
+      const Eigen::Vector3d y = t * x;
+      Eigen::Vector4d r0, r1;
+      Eigen::Matrix<double, 4, 3> a0, a1;
+      valid[k] = StereoResidual(camera, x, c.previous, &r0, &a0) &&
+                 StereoResidual(camera, y, c.current, &r1, &a1);
+      if (!valid[k]) continue;
+      ++used;
+      Eigen::Vector4d w0 = HuberWeights(r0, options_.huber_px);
+      Eigen::Vector4d w1 = HuberWeights(r1, options_.huber_px);
+      if (options_.center_weighting) {
+        w0 *= 1.0 / (std::abs(c.previous.u_left - camera.cx) / camera.cx + 0.05);
+        w1 *= 1.0 / (std::abs(c.current.u_left - camera.cx) / camera.cx + 0.05);
+      }
+      Eigen::Matrix<double, 3, 6> dy_dpose;
+      dy_dpose << Eigen::Matrix3d::Identity(), -Skew(y);
+      const Eigen::Matrix<double, 4, 6> jp = a1 * dy_dpose;
+      const Eigen::Matrix<double, 4, 3> jl = a1 * rotation;
+      const Eigen::Matrix<double, 6, 4> jpw = jp.transpose() * w1.asDiagonal();
+      const Matrix6d hpp = jpw * jp;
+      hpl[k] = jpw * jl;
+      Eigen::Matrix3d hll = a0.transpose() * w0.asDiagonal() * a0 +
+                            jl.transpose() * w1.asDiagonal() * jl;
+      hll += 1e-9 * Eigen::Matrix3d::Identity();
+      const Vector6d gp = jpw * r1;
+      gl[k] = a0.transpose() * w0.asDiagonal() * r0 + jl.transpose() * w1.asDiagonal() * r1;
+      hll_inv[k] = hll.inverse();
+      s += hpp - hpl[k] * hll_inv[k] * hpl[k].transpose();
+      b += gp - hpl[k] * hll_inv[k] * gl[k];
+    }
+    if (used < 3) break;
+    Eigen::LDLT<Matrix6d> ldlt(s);
+    if (ldlt.info() != Eigen::Success) break;
+    const Vector6d delta = -ldlt.solve(b);
+    if (!delta.allFinite()) break;
+    for (size_t k = 0; k < n; ++k) {
+      if (valid[k]) points[k] -= hll_inv[k] * (gl[k] + hpl[k].transpose() * delta);
+    }
+    Eigen::Isometry3d update = Eigen::Isometry3d::Identity();
+    const double angle = delta.tail<3>().norm();
+    if (angle > 1e-12) {
+      update.linear() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
+    }
+    update.translation() = delta.head<3>();
+    t = update * t;
+    summary.iterations = it + 1;
+    if (delta.norm() < options_.min_step) {
+      summary.converged = true;
+      break;
+    }
+  }
+  Eigen::Quaterniond q(t.rotation());
+  q.normalize();
+  t.linear() = q.toRotationMatrix();
+  // RMS over all four observations with the refined points.
+  double sum = 0;
+  int count = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const StereoCorrespondence& c = correspondences[static_cast<size_t>(indices[k])];
+    Eigen::Vector4d r0, r1;
+    Eigen::Matrix<double, 4, 3> a;
+    if (!StereoResidual(camera, points[k], c.previous, &r0, &a) ||
+        !StereoResidual(camera, t * points[k], c.current, &r1, &a)) {
+      continue;
+    }
+    sum += r0.squaredNorm() + r1.squaredNorm();
+    count += 8;
+  }
+  summary.final_rms_px = count > 0 ? std::sqrt(sum / count) : summary.initial_rms_px;
+  *current_from_previous = t;
+  return summary;
+}
 
 double MotionRefiner::RmsReprojectionPx(const RectifiedStereoCamera& camera,
                                         const std::vector<StereoCorrespondence>& correspondences,
@@ -94,6 +219,7 @@ RefinementSummary MotionRefiner::Refine(const RectifiedStereoCamera& camera,
                                         const std::vector<StereoCorrespondence>& correspondences,
                                         const std::vector<int>& indices,
                                         Eigen::Isometry3d* current_from_previous) const {
+  if (options_.joint_points) return RefineJoint(camera, correspondences, indices, current_from_previous);
   RefinementSummary summary;
   summary.initial_rms_px =
       RmsReprojectionPx(camera, correspondences, indices, *current_from_previous);

@@ -1,6 +1,7 @@
 // Non-linear least-squares refinement of a frame-to-frame motion: Gauss-Newton on the
 // reprojection error in both images of the rectified pair (as libviso2), with Huber weights,
-// seeded by the RANSAC estimate. Optionally symmetric: previous points into the current images
+// seeded by the RANSAC estimate. By default the points are refined too (two-frame bundle
+// adjustment, reduced to the 6 motion parameters by the Schur complement). Optionally symmetric: previous points into the current images
 // and current points into the previous images, which uses both depth estimates.
 #pragma once
 
@@ -20,6 +21,13 @@ struct MotionRefinerOptions {
   double huber_px = 1.0;        // Residuals beyond this get weight huber / |r| [px].
   double min_step = 1e-8;       // Stop when the update (rad or m) is smaller.
   bool symmetric = true;        // Also project the current points into the previous images.
+  // Estimate the 3D points together with the motion (two-frame bundle adjustment, Schur
+  // complement): removes the depth bias of triangulated points (E[1/d] > 1/E[d]) that makes
+  // motion-only refinement overestimate translation. Replaces `symmetric` when on.
+  bool joint_points = true;
+  // Weight observations by 1 / (|u - cx| / cx + 0.05) as libviso2 does: the image centre, where
+  // rectification and lens model are best, counts more (joint refinement only).
+  bool center_weighting = true;
 
   bool IsValid(std::string* error) const;
   static OptionTable<MotionRefinerOptions> Describe();
@@ -56,6 +64,12 @@ class MotionRefiner {
                                   const Eigen::Isometry3d& current_from_previous);
 
  private:
+  // The joint motion + points refinement.
+  RefinementSummary RefineJoint(const RectifiedStereoCamera& camera,
+                                const std::vector<StereoCorrespondence>& correspondences,
+                                const std::vector<int>& indices,
+                                Eigen::Isometry3d* current_from_previous) const;
+
   MotionRefinerOptions options_;
 };
 

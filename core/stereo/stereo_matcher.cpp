@@ -23,6 +23,7 @@ bool StereoMatcherOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.matching.window_px must be odd and >= 5");
   }
   if (klt_levels < 0 || klt_levels > 6) return Invalid(error, "stereo.matching.klt_levels must lie in [0, 6]");
+  if (max_iterations < 1) return Invalid(error, "stereo.matching.max_iterations must be >= 1");
   if (coarse_level < 0 || coarse_level > 6) {
     return Invalid(error, "stereo.matching.coarse_level must lie in [0, 6]");
   }
@@ -47,6 +48,7 @@ OptionTable<StereoMatcherOptions> StereoMatcherOptions::Describe() {
       .Int("window_px", &O::window_px, "px", 5, 61, 2, "KLT window side (odd).")
       .Int("klt_levels", &O::klt_levels, "levels", 0, 6, 1,
            "KLT pyramid levels used around the disparity guess.")
+      .Int("max_iterations", &O::max_iterations, "", 1, 200, 1, "KLT iterations per level.")
       .Int("coarse_level", &O::coarse_level, "level", 0, 6, 1,
            "Pyramid level of the row search for features without a disparity guess.")
       .Int("coarse_window_px", &O::coarse_window_px, "px", 3, 31, 2,
@@ -104,7 +106,8 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
   }
   const cv::Size window(options_.window_px, options_.window_px);
   const int levels = std::min({options_.klt_levels, left.max_level, right.max_level});
-  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 20, 0.01);
+  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
+                                  options_.max_iterations, 0.01);
   std::vector<unsigned char> status;
   std::vector<float> error;
   cv::calcOpticalFlowPyrLK(left.levels, right.levels, left_points, *right_points, status, error,

@@ -82,6 +82,8 @@ void StereoOdometry::Reset() {
   features_.clear();
   has_previous_ = false;
   previous_time_s_ = 0;
+  last_motion_ = Eigen::Isometry3d::Identity();
+  last_motion_dt_s_ = 0;
   world_from_camera_ = Eigen::Isometry3d::Identity();
   gate_.Reset();
 }
@@ -129,7 +131,32 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   std::vector<unsigned char> tracked_ok;
   previous_points.reserve(features_.size());
   for (const Feature& f : features_) previous_points.push_back(f.left);
-  if (has_previous_) tracker_.Track(previous_left_, left_pyramid, previous_points, &tracked, &tracked_ok);
+  // Predict where features land under constant motion, so KLT starts near the answer even for
+  // fast motion and subsampled input.
+  std::vector<cv::Point2f> predicted;
+  if (has_previous_ && last_motion_dt_s_ > 0 && dt > 0) {
+    const double scale = dt / last_motion_dt_s_;
+    const Eigen::AngleAxisd aa(last_motion_.rotation());
+    Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+    motion.linear() = Eigen::AngleAxisd(aa.angle() * scale, aa.axis()).toRotationMatrix();
+    motion.translation() = last_motion_.translation() * scale;
+    const RectifiedStereoCamera& c = rectifier_.camera();
+    predicted.reserve(features_.size());
+    for (const Feature& f : features_) {
+      const Eigen::Vector3d y = motion * c.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x);
+      cv::Point2f p = f.left;
+      if (y.z() > 0.1) {
+        const Eigen::Vector2d q = c.ProjectLeft(y);
+        if (q.x() >= 0 && q.y() >= 0 && q.x() < c.width && q.y() < c.height) {
+          p = cv::Point2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
+        }
+      }
+      predicted.push_back(p);
+    }
+  }
+  if (has_previous_) {
+    tracker_.Track(previous_left_, left_pyramid, previous_points, predicted, &tracked, &tracked_ok);
+  }
   std::vector<cv::Point2f> points;
   std::vector<float> guesses;
   std::vector<int> source;  // Index into features_, or -1 for new.
@@ -143,7 +170,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   Record(timing, "tracking", clock.Lap(), &stats.tracking_ms);
 
   // New corners where tracks are missing.
-  const std::vector<cv::Point2f> fresh = tracker_.Detect(left, points);
+  const std::vector<cv::Point2f> fresh = tracker_.Detect(left_pyramid, points);
   for (const cv::Point2f& p : fresh) {
     points.push_back(p);
     guesses.push_back(std::numeric_limits<float>::quiet_NaN());
@@ -238,6 +265,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       return std::shared_ptr<const StereoOdometryResult>(result);
     }
     world_from_camera_ = world_from_camera_ * decision.current_from_previous.inverse();
+    last_motion_ = decision.current_from_previous;
+    last_motion_dt_s_ = dt;
   }
   result->world_from_camera = world_from_camera_;
   stats.translation_m = result->current_from_previous.translation().norm();

@@ -138,6 +138,8 @@ class StereoOdometry {
   ImagePyramid previous_left_;
   std::vector<Feature> features_;
   double previous_time_s_ = 0;
+  Eigen::Isometry3d last_motion_ = Eigen::Isometry3d::Identity();  // Last applied motion ...
+  double last_motion_dt_s_ = 0;                                     // ... and its time span.
   bool has_previous_ = false;
   int64_t next_id_ = 0;
   Eigen::Isometry3d world_from_camera_ = Eigen::Isometry3d::Identity();
