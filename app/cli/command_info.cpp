@@ -3,6 +3,7 @@
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
 #include "core/io/dataset.h"
+#include "core/sensors/driver_registry.h"
 
 namespace sightline::cli {
 
@@ -16,7 +17,8 @@ int InfoCommand(const std::vector<std::string>& args) {
       "usage: sightline-cli info PATH [--json]\n"
       "\n"
       "Detects the format of PATH (TUM RGB-D, EuRoC MAV, KITTI odometry, image folder, PCD file\n"
-      "or folder, or a recording with one sub-folder per sensor) and prints its frames,\n"
+      "or folder, an OpenNI2 .oni file, a recording with one sub-folder per sensor, or a sensor\n"
+      "URI: openni2://, aravis://ID, v4l2://0) and prints its frames,\n"
       "resolution, calibration, ground truth and duration. --json prints the same as JSON.\n";
   StatusOr<CliArgs> parsed = CliArgs::Parse(args, {}, {"--json", "--help"});
   if (!parsed.ok()) return Fail("info: " + parsed.status().message());
@@ -25,7 +27,7 @@ int InfoCommand(const std::vector<std::string>& args) {
     return 0;
   }
   if (parsed->positionals().size() != 1) return Fail("info: expected one PATH (see --help)");
-  StatusOr<std::unique_ptr<Source>> source = OpenDataset(parsed->positionals()[0]);
+  StatusOr<std::unique_ptr<Source>> source = OpenSource(parsed->positionals()[0]);
   if (!source.ok()) return Fail(source.status().ToString());
   const std::string text =
       parsed->Has("--json") ? DescribeSourceJson(**source) : DescribeSourceText(**source);

@@ -103,10 +103,10 @@ void MainWindow::BuildMenus() {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"));
     if (!dir.isEmpty()) OpenPath(dir);
   });
-  QAction* open_file = file->addAction(tr("Open point cloud &file..."));
+  QAction* open_file = file->addAction(tr("Open recording &file (PCD, ONI)..."));
   connect(open_file, &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open point cloud"), QString(),
-                                                      tr("Point clouds (*.pcd)"));
+                                                      tr("Recordings (*.pcd *.oni)"));
     if (!path.isEmpty()) OpenPath(path);
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));

@@ -7,6 +7,7 @@
 #include "core/common/depth_cloud.h"
 #include "core/common/timing.h"
 #include "core/io/dataset.h"
+#include "core/sensors/driver_registry.h"
 #include "core/pipeline/player.h"
 
 namespace sightline {
@@ -27,7 +28,7 @@ void PlaybackController::Open(const QString& path) {
   // Opening reads index files and the first images: keep it off the GUI thread. The destructor
   // waits for background tasks, so `this` outlives them.
   Track(QtConcurrent::run([this, self, generation, path, path_utf8] {
-    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenDataset(path_utf8));
+    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenSource(path_utf8));
     QMetaObject::invokeMethod(
         this,
         [self, generation, path, opened] {
@@ -180,12 +181,23 @@ void PlaybackController::WorkerLoop() {
         QMetaObject::invokeMethod(this, [this] { emit EndOfStream(); }, Qt::QueuedConnection);
         continue;  // Next() waits for Play, Step or Seek.
       }
-      player_->Pause();
       const QString message = QString::fromStdString(frame.status().ToString());
+      if (code == StatusCode::kUnavailable && info_ && info_->live) {
+        // A sensor timed out or went away: say so (once per outage) and keep trying; the
+        // source reconnects by itself.
+        if (!live_outage_) {
+          live_outage_ = true;
+          QMetaObject::invokeMethod(this, [this, message] { emit ReadError(message); },
+                                    Qt::QueuedConnection);
+        }
+        continue;
+      }
+      player_->Pause();
       QMetaObject::invokeMethod(this, [this, message] { emit ReadError(message); },
                                 Qt::QueuedConnection);
       continue;
     }
+    live_outage_ = false;
     auto shared = std::make_shared<const Frame>(std::move(*frame));
     ViewOptions options;
     {

@@ -33,7 +33,8 @@ class PlaybackController : public QObject {
   explicit PlaybackController(QObject* parent = nullptr);
   ~PlaybackController() override;
 
-  // Opens a dataset in the background; emits Opened or OpenFailed.
+  // Opens a dataset, a recording (.oni) or a sensor URI (openni2://, aravis://, v4l2://) in the
+  // background; emits Opened or OpenFailed.
   void Open(const QString& path);
   void Close();
   void Play();
@@ -85,6 +86,7 @@ class PlaybackController : public QObject {
   std::shared_ptr<const SourceInfo> info_;
   std::thread worker_;
   std::atomic<bool> stop_{false};
+  bool live_outage_ = false;  // Worker thread only: a live source is currently not delivering.
   uint64_t open_generation_ = 0;
   std::vector<QFuture<void>> background_;  // GUI thread only.
 

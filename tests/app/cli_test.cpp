@@ -93,3 +93,23 @@ TEST(Cli, OptionsListsDescribeTable) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(Cli, InfoPlaysAnOniRecordingThroughOpenNi2) {
+  SIGHTLINE_REQUIRE_DATA(oni, "oni_livingroom/test.oni");
+  const auto r = Cli("info " + oni);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("12 RGB-D frames"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoOnAnAbsentSensorFailsWithOneLine) {
+  const auto r = Cli("info v4l2:///dev/video99");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find("/dev/video99"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sightline

@@ -192,3 +192,25 @@ TEST(DemoGenerator, MakesReadableRecordingsOnceThenReusesThem) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(MainWindow, PlaysAnOniRecording) {
+  SIGHTLINE_REQUIRE_DATA(oni, "oni_livingroom/test.oni");
+  MainWindow window;
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(oni));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  EXPECT_EQ(window.playback()->info()->frame_count, 12);
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  for (int i = 0; i < 3; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 10000)) << "step " << i;
+  }
+  EXPECT_EQ(shown.at(2).at(0).value<int64_t>(), 2);
+}
+
+}  // namespace
+}  // namespace sightline
