@@ -144,16 +144,29 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
   cv::Mat eig;
   std::vector<std::pair<float, cv::Point>> candidates;
   for (int by = 0; by < rows && static_cast<int>(fresh.size()) < wanted; ++by) {
-    for (int bx = 0; bx < cols && static_cast<int>(fresh.size()) < wanted; ++bx) {
+    // One eigenvalue image per bucket row, spanning its buckets that need corners.
+    int first = -1, last = -1;
+    for (int bx = 0; bx < cols; ++bx) {
+      if (static_cast<int>(in_bucket[static_cast<size_t>(by * cols + bx)].size()) < per_bucket) {
+        if (first < 0) first = bx;
+        last = bx;
+      }
+    }
+    if (first < 0) continue;
+    const cv::Rect span = cv::Rect(cvFloor(first * bs / scale), cvFloor(by * bs / scale),
+                                   cvCeil((last - first + 1) * bs / scale), cvCeil(bs / scale)) &
+                          inside;
+    if (span.width < 3 || span.height < 3) continue;
+    const cv::Rect ext = cv::Rect(span.x - margin, span.y - margin, span.width + 2 * margin,
+                                  span.height + 2 * margin) & cv::Rect(0, 0, image.cols, image.rows);
+    cv::cornerMinEigenVal(image(ext), eig, options_.block_size, 3);
+    for (int bx = first; bx <= last && static_cast<int>(fresh.size()) < wanted; ++bx) {
       std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
       const int need = per_bucket - static_cast<int>(here.size());
       if (need <= 0) continue;
       const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
-                                     cvCeil(bs / scale), cvCeil(bs / scale)) & inside;
-      if (cell.width < 3 || cell.height < 3) continue;
-      const cv::Rect ext = cv::Rect(cell.x - margin, cell.y - margin, cell.width + 2 * margin,
-                                    cell.height + 2 * margin) & cv::Rect(0, 0, image.cols, image.rows);
-      cv::cornerMinEigenVal(image(ext), eig, options_.block_size, 3);
+                                     cvCeil(bs / scale), cvCeil(bs / scale)) & span;
+      if (cell.width < 1 || cell.height < 1) continue;
       candidates.clear();
       for (int y = cell.y; y < cell.y + cell.height; ++y) {
         const int ey = y - ext.y;

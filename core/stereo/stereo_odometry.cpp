@@ -134,6 +134,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   // Predict where features land under constant motion, so KLT starts near the answer even for
   // fast motion and subsampled input.
   std::vector<cv::Point2f> predicted;
+  std::vector<float> predicted_disparity;
   if (has_previous_ && last_motion_dt_s_ > 0 && dt > 0) {
     const double scale = dt / last_motion_dt_s_;
     const Eigen::AngleAxisd aa(last_motion_.rotation());
@@ -145,13 +146,16 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     for (const Feature& f : features_) {
       const Eigen::Vector3d y = motion * c.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x);
       cv::Point2f p = f.left;
+      float d = f.left.x - f.right.x;
       if (y.z() > 0.1) {
         const Eigen::Vector2d q = c.ProjectLeft(y);
         if (q.x() >= 0 && q.y() >= 0 && q.x() < c.width && q.y() < c.height) {
           p = cv::Point2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
+          d = static_cast<float>(c.f * c.baseline_m / y.z());
         }
       }
       predicted.push_back(p);
+      predicted_disparity.push_back(d);
     }
   }
   if (has_previous_) {
@@ -163,7 +167,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   for (size_t i = 0; i < tracked_ok.size(); ++i) {
     if (!tracked_ok[i]) continue;
     points.push_back(tracked[i]);
-    guesses.push_back(features_[i].left.x - features_[i].right.x);
+    guesses.push_back(predicted_disparity.empty() ? features_[i].left.x - features_[i].right.x
+                                                  : predicted_disparity[i]);
     source.push_back(static_cast<int>(i));
   }
   stats.tracked = static_cast<int>(points.size());
