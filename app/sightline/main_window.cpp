@@ -24,6 +24,7 @@
 #include "app/sightline/pipeline_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/view_options.h"
+#include "core/sensors/driver_registry.h"
 #include "widgets/image_view.h"
 #include "widgets/log_panel.h"
 #include "widgets/parameter_panel.h"
@@ -122,6 +123,23 @@ void MainWindow::BuildMenus() {
   connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
   view_menu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view_menu_->addAction(dock->toggleViewAction());
+
+  // Every sensor driver, greyed out with the reason when it cannot run here.
+  QMenu* sensors = menuBar()->addMenu(tr("&Sensors"));
+  sensors->setToolTipsVisible(true);
+  for (const DriverInfo& driver : BuiltinDrivers()) {
+    const Status available = driver.available ? driver.available() : Status::Ok();
+    QString text = QString::fromStdString(driver.description);
+    if (!available.ok()) text += tr(" (unavailable)");
+    QAction* connect_action = sensors->addAction(text);
+    connect_action->setEnabled(available.ok());
+    connect_action->setToolTip(available.ok()
+                                   ? tr("Connect to the first %1 device").arg(
+                                         QString::fromStdString(driver.name))
+                                   : QString::fromStdString(available.message()));
+    const QString uri = QString::fromStdString(driver.scheme);
+    connect(connect_action, &QAction::triggered, this, [this, uri] { OpenPath(uri); });
+  }
 
   pipeline_menu_ = menuBar()->addMenu(tr("&Pipeline"));
   pipeline_actions_ = new QActionGroup(this);
