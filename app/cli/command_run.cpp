@@ -24,11 +24,14 @@ int RunCommand(const std::vector<std::string>& args) {
       "DIR/metrics.json (frames, per-stage timing median/p95 in ms, accuracy when the dataset\n"
       "has ground truth, and the effective options). --profile loads a YAML options profile;\n"
       "--set overrides one option (see 'sightline-cli options PIPELINE'). Ctrl-C stops the run.\n"
+      "stereo-vo: --subsample K (= --set stereo.subsample=K) processes every K-th frame;\n"
+      "--format kitti (= --set stereo.output_format=kitti) writes trajectory.txt as KITTI poses.\n"
       "\nPipelines:\n";
   for (const PipelineInfo& p : registry.pipelines()) help += "  " + p.name + "  " + p.summary + "\n";
 
   StatusOr<CliArgs> parsed =
-      CliArgs::Parse(args, {"--out", "--profile", "--set"}, {"--help", "--quiet"});
+      CliArgs::Parse(args, {"--out", "--profile", "--set", "--subsample", "--format"},
+                     {"--help", "--quiet"});
   if (!parsed.ok()) return Fail("run: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(help.c_str(), stdout);
@@ -43,6 +46,9 @@ int RunCommand(const std::vector<std::string>& args) {
   request.out_dir = *parsed->Value("--out");
   request.profile_path = parsed->Value("--profile").value_or("");
   request.overrides = parsed->Values("--set");
+  // Aliases of stereo-vo options.
+  if (auto k = parsed->Value("--subsample")) request.overrides.push_back("stereo.subsample=" + *k);
+  if (auto f = parsed->Value("--format")) request.overrides.push_back("stereo.output_format=" + *f);
   ProgressLine progress(request.pipeline);
   request.progress = [&progress](int64_t done, int64_t total) { progress.Update(done, total); };
   request.cancel = &g_interrupted;

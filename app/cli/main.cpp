@@ -21,6 +21,8 @@ const char kUsage[] =
     "                             accuracy of a trajectory against ground truth (ATE, RPE, KITTI)\n"
     "  simulate SCENE --out DIR [--frames N] [--seed S] [--noise PROFILE]\n"
     "                             write a simulated recording (corridor, terrain, panel)\n"
+    "  sweep stereo-vo PATH --subsample A..B [--out DIR]\n"
+    "                             path-length error per subsampling factor (table + plot)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -38,5 +40,6 @@ int main(int argc, char** argv) {
   if (command == "options") return sightline::cli::OptionsCommand(args);
   if (command == "eval") return sightline::cli::EvalCommand(args);
   if (command == "simulate") return sightline::cli::SimulateCommand(args);
+  if (command == "sweep") return sightline::cli::SweepCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

@@ -1,0 +1,90 @@
+// `sightline-cli run stereo-vo` and `sightline-cli sweep stereo-vo` as a user runs them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "tests/app/process.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
+
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
+  SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
+  const std::string out = testing::TempDir("stereo_vo_cli_run");
+  const testing::ProcessResult r = Cli("run stereo-vo " + kitti + " --out " + out + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string metrics = Read(out + "/metrics.json");
+  for (const char* key : {"\"length_error_pct\"", "\"endpoint_error_pct\"", "\"ate_rmse_m\"",
+                          "\"rpe_trans_pct\"", "\"rpe_rot_deg_per_m\"", "\"kitti_t_err_pct\"",
+                          "\"kitti_r_err_deg_per_100m\"", "\"tracking\"", "\"matching\"",
+                          "\"ransac\"", "\"refine\""}) {
+    EXPECT_NE(metrics.find(key), std::string::npos) << key;
+  }
+  const std::string frames = Read(out + "/frames.csv");
+  EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 52);  // Header + 51 frames.
+  std::istringstream trajectory(Read(out + "/trajectory.txt"));
+  std::string line;
+  while (std::getline(trajectory, line) && (line.empty() || line[0] == '#')) {
+  }
+  std::istringstream values(line);
+  int fields = 0;
+  for (double v; values >> v;) ++fields;
+  EXPECT_EQ(fields, 8);  // TUM: time, position, quaternion.
+}
+
+TEST(StereoVoCli, SubsampleAndKittiFormatFlags) {
+  SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
+  const std::string out = testing::TempDir("stereo_vo_cli_flags");
+  const testing::ProcessResult r =
+      Cli("run stereo-vo " + kitti + " --out " + out + " --subsample 5 --format kitti --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string trajectory = Read(out + "/trajectory.txt");
+  EXPECT_EQ(std::count(trajectory.begin(), trajectory.end(), '\n'), 11);  // Frames 0, 5, ..., 50.
+  std::istringstream values(trajectory.substr(0, trajectory.find('\n')));
+  int fields = 0;
+  for (double v; values >> v;) ++fields;
+  EXPECT_EQ(fields, 12);  // KITTI: 3x4 matrix.
+  EXPECT_NE(Read(out + "/metrics.json").find("\"stereo.subsample\": 5"), std::string::npos);
+}
+
+TEST(StereoVoCli, SweepPrintsTheTableAndWritesAPlot) {
+  SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
+  const std::string out = testing::TempDir("stereo_vo_cli_sweep");
+  const testing::ProcessResult r = Cli("sweep stereo-vo " + kitti + " --subsample 1..3 --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("factor"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(out + "/sweep.png"));
+  const std::string csv = Read(out + "/sweep.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // Header + k = 1, 2, 3.
+}
+
+TEST(StereoVoCli, FailuresAreOneLine) {
+  testing::ProcessResult r = Cli("sweep stereo-vo /nonexistent --subsample 1..2");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.out.find("sightline-cli: sweep"), std::string::npos) << r.out;
+  r = Cli("sweep stereo-vo /nonexistent --subsample 3..1");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.out.find("--subsample expects"), std::string::npos) << r.out;
+  r = Cli("run stereo-vo /nonexistent --out /tmp/x --format bogus");
+  EXPECT_NE(r.exit_code, 0);
+}
+
+}  // namespace
+}  // namespace sightline
