@@ -23,6 +23,8 @@ const char kUsage[] =
     "                             write a simulated recording (corridor, terrain, panel)\n"
     "  sweep stereo-vo PATH --subsample A..B [--out DIR]\n"
     "                             path-length error per subsampling factor (table + plot)\n"
+    "  floor PATH --out FILE [--frames N]\n"
+    "                             calibrate the floor plane for indoor mapping\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -41,5 +43,6 @@ int main(int argc, char** argv) {
   if (command == "eval") return sightline::cli::EvalCommand(args);
   if (command == "simulate") return sightline::cli::SimulateCommand(args);
   if (command == "sweep") return sightline::cli::SweepCommand(args);
+  if (command == "floor") return sightline::cli::FloorCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

@@ -3,20 +3,27 @@
 //
 // Wall directions repeat every 90 deg. One frame's dominant direction is the weighted circular
 // mean of 4 theta (algorithms.md):
-//     m = 1/4 atan2(sum w_i sin 4 theta_i, sum w_i cos 4 theta_i),   w_i = line length,
-// which has no +-45 deg wrap problem. The first frame with walls fixes the reference direction
+//     m = 1/4 atan2(sum w_i sin 4 theta_i, sum w_i cos 4 theta_i),
+// which has no +-45 deg wrap problem (weights: line length, lowered for lines whose points
+// scatter). The first frame with enough, unambiguous wall fixes the reference direction
 // alpha_ref (in the world frame). In every later frame the pose source predicts the heading
 // psi_pred; the walls say psi = alpha_ref - m modulo 90 deg, and the candidate nearest psi_pred
-// is taken. So the heading never drifts while walls are in view, one wall is enough, and a frame
-// without walls falls back to dead reckoning.
+// is taken. So the heading does not drift while walls are in view, one wall is enough, and a
+// frame without walls falls back to dead reckoning.
+//
+// Robustness (a corridor has boxes, bins and doors recessed behind the wall faces, which give
+// lines a few degrees off): lines vote only inside a tracking gate around the predicted wall
+// direction that widens with the distance and angle driven since the last correction (the error
+// dead reckoning can have accumulated); of the voters, a weighted median (weights favouring the
+// prediction) picks the direction and only lines within trim_deg of it are averaged.
 //
 // Reset (seed: "reset the map when large rotations or translations were detected"): the reference
 // is dropped and re-set from the current frame when the pose source jumps by more than
-// reset_rotation_deg or reset_translation_m between two frames, or when the walls disagree with
-// the prediction by more than max_correction_deg in reset_disagreement_frames consecutive frames
-// (the building is no longer aligned with the reference). Frames without walls never trigger a
-// reset, and resets are at least reset_cooldown_frames apart, so degenerate input cannot cause a
-// reset storm.
+// reset_rotation_deg or reset_translation_m between two frames, or when long walls outside the
+// gate agree among themselves on another direction in reset_disagreement_frames consecutive
+// frames (the building is no longer aligned with the reference). Frames without walls never
+// trigger a reset, and resets are at least reset_cooldown_frames apart, so degenerate input
+// cannot cause a reset storm. After a reset the heading continues from dead reckoning.
 #pragma once
 
 #include <optional>

@@ -130,7 +130,12 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
   const int w = options_.width_cells, h = options_.height_cells;
   OccupancyImage image;
   image.cell_size_m = options_.cell_size_m;
-  image.cells = cv::Mat(h, w, CV_8UC1, cv::Scalar(0));
+  // Reuse the last frame's cells unless a caller still holds them (results are immutable).
+  if (cells_.rows != h || cells_.cols != w || cells_.u == nullptr || cells_.u->refcount > 1) {
+    cells_ = cv::Mat(h, w, CV_8UC1);
+  }
+  cells_.setTo(0);
+  image.cells = cells_;
   if (depth_m.empty()) return image;
   SIGHTLINE_RETURN_IF_ERROR(PrepareTable(depth_m.cols, depth_m.rows));
   occupied_counts_.assign(static_cast<size_t>(w) * h, 0);

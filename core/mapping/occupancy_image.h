@@ -122,6 +122,7 @@ class OccupancyImageBuilder {
   int table_cols_ = 0, table_rows_ = 0, step_ = 1;
   std::vector<Eigen::Vector3f> ray_table_;
   std::vector<uint8_t> occupied_counts_;
+  cv::Mat cells_;  // The last image's cells, reused when no result holds them any more.
   std::vector<uint8_t> person_mask_;  // Per sampled pixel, when people are given.
 };
 

@@ -1,0 +1,167 @@
+// Indoor mapping from the command line as a user runs it: simulate a corridor, calibrate the
+// floor, run the mapping pipeline, check its files and metrics.json.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "tests/app/process.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
+
+testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The number after "key": inside the JSON object that follows "section": (a flat search, enough
+// for metrics.json's fixed shape).
+std::optional<double> JsonNumber(const std::string& json, const std::string& section,
+                                 const std::string& key) {
+  const size_t start = json.find("\"" + section + "\":");
+  if (start == std::string::npos) return std::nullopt;
+  const size_t end = json.find('}', json.find('{', start));
+  const size_t at = json.find("\"" + key + "\":", start);
+  if (at == std::string::npos || at > end) return std::nullopt;
+  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
+}
+
+// A 100-frame corridor drive (20 m at 1 m/s, 5 Hz, the first left turn included) at 320x240
+// with wheel odometry drifting 2 deg/m, simulated once for all tests.
+class MappingCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(testing::TempDir("mapping_cli") + "/corridor");
+    const auto r = Cli("simulate corridor --out " + *dir_ +
+                       " --frames 100 --seed 3 --sensors rgbd --quiet"
+                       " --set sim.rgbd.resolution=320x240 --set sim.rate_hz=5"
+                       " --set sim.motion.speed_mps=1 --set sim.odometry.heading_drift_deg_per_m=2");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static std::string* dir_;
+};
+
+std::string* MappingCli::dir_ = nullptr;
+
+TEST_F(MappingCli, RunWritesTrajectoryLinesMapAndMetrics) {
+  const std::string out = testing::TempDir("mapping_cli_run");
+  const auto r = Cli("run mapping " + *dir_ + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(Contains(r.out, "mapping on")) << r.out;
+  EXPECT_TRUE(Contains(r.out, "accuracy.heading_error_deg_max")) << r.out;
+  for (const char* file : {"trajectory.txt", "lines.csv", "map.pgm", "map.yaml", "map.png",
+                           "floor.yaml", "mapping_log.txt", "metrics.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
+  }
+  const std::string metrics = ReadFile(out + "/metrics.json");
+  EXPECT_TRUE(Contains(metrics, "\"pipeline\": \"mapping\"")) << metrics;
+  EXPECT_TRUE(Contains(metrics, "\"frames\": 100")) << metrics;
+  for (const char* stage : {"occupancy", "scan", "lines", "rotation", "stitch", "total"}) {
+    const auto median = JsonNumber(metrics, stage, "median");
+    const auto p95 = JsonNumber(metrics, stage, "p95");
+    ASSERT_TRUE(median && p95) << stage;
+    EXPECT_GE(*median, 0) << stage;
+    EXPECT_GE(*p95, *median) << stage;
+  }
+  const auto value = [&](const char* key) { return JsonNumber(metrics, "accuracy", key); };
+  ASSERT_TRUE(value("heading_error_deg_mean") && value("heading_error_deg_max") &&
+              value("wall_angle_error_deg_median") && value("ate_rmse_m") && value("map_iou"))
+      << metrics;
+  // 20 m with odometry drifting 2 deg/m (40 deg uncorrected).
+  EXPECT_LT(*value("heading_error_deg_max"), 1.5);
+  EXPECT_LT(*value("heading_error_deg_mean"), 0.5);
+  EXPECT_LT(*value("wall_angle_error_deg_median"), 0.5);
+  EXPECT_LT(*value("ate_rmse_m"), 0.3);  // The simulator's odometry is 1 % long.
+  EXPECT_GT(*value("map_iou"), 0.5);
+  EXPECT_LE(*value("map_iou"), 1.0);
+  EXPECT_EQ(JsonNumber(metrics, "counts", "resets").value_or(-1), 0);
+
+  // lines.csv: header, then frame, time, line id, end points, angle, inliers, ...
+  std::ifstream lines(out + "/lines.csv");
+  std::string header, first;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  EXPECT_TRUE(Contains(header, "frame,time_s,line,x1_m,y1_m,x2_m,y2_m,angle_deg,inliers")) << header;
+  EXPECT_EQ(std::count(first.begin(), first.end(), ','), 10) << first;
+  // map.yaml in the ROS map_server convention.
+  const std::string yaml = ReadFile(out + "/map.yaml");
+  EXPECT_TRUE(Contains(yaml, "image: map.pgm")) << yaml;
+  EXPECT_TRUE(Contains(yaml, "resolution: 0.05")) << yaml;
+  // trajectory.txt: one TUM pose per frame.
+  std::ifstream trajectory(out + "/trajectory.txt");
+  int poses = 0;
+  for (std::string line; std::getline(trajectory, line);) poses += !line.empty() && line[0] != '#';
+  EXPECT_EQ(poses, 100);
+}
+
+TEST_F(MappingCli, WithoutManhattanCorrectionTheHeadingDrifts) {
+  const std::string out = testing::TempDir("mapping_cli_off");
+  const auto r = Cli("run mapping " + *dir_ + " --out " + out +
+                     " --set mapping.rotation.enabled=false --set mapping.run.max_frames=60");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string metrics = ReadFile(out + "/metrics.json");
+  const auto max = JsonNumber(metrics, "accuracy", "heading_error_deg_max");
+  ASSERT_TRUE(max);
+  EXPECT_GT(*max, 10.0);  // 12 m at 2 deg/m.
+}
+
+TEST_F(MappingCli, FloorCalibrationFileIsWrittenAndUsed) {
+  const std::string out = testing::TempDir("mapping_cli_floor");
+  const auto floor = Cli("floor " + *dir_ + " --out " + out + "/floor.yaml --frames 3");
+  ASSERT_EQ(floor.exit_code, 0) << floor.out;
+  EXPECT_TRUE(Contains(floor.out, "camera 0.80")) << floor.out;  // The robot's Kinect at 0.8 m.
+  const std::string yaml = ReadFile(out + "/floor.yaml");
+  EXPECT_TRUE(Contains(yaml, "camera_height_m: 0.80")) << yaml;
+  EXPECT_TRUE(Contains(yaml, "pitch_down_deg: 10.0")) << yaml;  // Tilted 10 deg down.
+  const auto run = Cli("run mapping " + *dir_ + " --out " + out + "/run --set mapping.run.max_frames=10"
+                       " --set mapping.run.floor_file=" + out + "/floor.yaml");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_TRUE(Contains(ReadFile(out + "/run/mapping_log.txt"), "floor: " + out + "/floor.yaml"));
+}
+
+TEST(MappingCliErrors, ClearMessages) {
+  const auto help = Cli("floor --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_TRUE(Contains(help.out, "usage: sightline-cli floor PATH --out FILE")) << help.out;
+  EXPECT_TRUE(Contains(Cli("--help").out, "floor PATH"));
+  const std::string dir = testing::TempDir("mapping_cli_errors");
+  const auto missing = Cli("floor " + dir + "/absent --out " + dir + "/floor.yaml");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_TRUE(Contains(missing.out, "absent")) << missing.out;
+  const auto bad_key = Cli("floor " + dir + " --out x.yaml --set mapping.floor.nope=1");
+  EXPECT_NE(bad_key.exit_code, 0);
+  EXPECT_TRUE(Contains(bad_key.out, "mapping.floor.nope")) << bad_key.out;
+  const auto bad_file = Cli("run mapping " + dir + "/absent --out " + dir + "/run");
+  EXPECT_NE(bad_file.exit_code, 0);
+  EXPECT_TRUE(Contains(bad_file.out, "absent")) << bad_file.out;
+}
+
+TEST(MappingCliRealData, FloorOfAPcdCloud) {
+  SIGHTLINE_REQUIRE_DATA(path, "pcl_clouds/milk_cartoon_all_small_clorox.pcd");
+  const std::string out = testing::TempDir("mapping_cli_pcd") + "/floor.yaml";
+  const auto r = Cli("floor " + path + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(Contains(r.out, "camera 0.4")) << r.out;  // SOURCES.txt: about 0.47 m.
+}
+
+}  // namespace
+}  // namespace sightline
