@@ -8,6 +8,7 @@
 
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
+#include "app/sightline/mapping_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
 #include "widgets/vtk_gl_widget.h"
@@ -41,6 +42,8 @@ int main(int argc, char** argv) {
   parser.process(app);
 
   sightline::MainWindow window;
+  auto* mapping = new sightline::MappingPresenter();
+  window.AddPipeline(mapping);
   window.show();
 
   if (parser.isSet(screenshot_option)) {
@@ -70,6 +73,8 @@ int main(int argc, char** argv) {
                        }
                        window.OpenPath(corridor);
                      });
+    // The demo shows the pipelines that run on its corridor drive.
+    window.ActivatePipeline(mapping->Title());
     demo->Start();
   } else if (parser.isSet(open_option)) {
     const QString path = parser.value(open_option);

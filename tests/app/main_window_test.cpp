@@ -16,6 +16,9 @@
 
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
+#include "app/sightline/mapping_presenter.h"
+#include "core/sim/simulate.h"
+#include "widgets/parameter_panel.h"
 #include "app/sightline/playback_controller.h"
 #include "tests/app/process.h"
 #include "tests/support/test_data.h"
@@ -240,6 +243,48 @@ TEST(MainWindow, SensorsMenuListsEveryDriverWithItsAvailability) {
   }
   if (!QDir("/dev").entryList({"video*"}, QDir::System).isEmpty()) GTEST_SKIP() << "a webcam exists";
   EXPECT_TRUE(webcam_checked);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdChange) {
+  const std::string dir = testing::TempDir("gui_mapping") + "/corridor";
+  sim::SimulationOptions options = sim::SimulationOptions::ForScene("corridor");
+  options.frames = 14;
+  options.sensors = "rgbd";
+  ASSERT_TRUE(sim::Simulate(options, dir).ok());
+
+  MainWindow window;
+  auto* mapping = new MappingPresenter();
+  window.AddPipeline(mapping);
+  ASSERT_TRUE(window.ActivatePipeline(mapping->Title()));
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(dir));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  // Five frames calibrate the floor; then every frame maps; the map renders every 10th frame.
+  for (int i = 0; i < 12; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 20000)) << "step " << i;
+  }
+  EXPECT_FALSE(mapping->occupancy_view()->image().isNull());
+  EXPECT_FALSE(mapping->map_view()->image().isNull());
+
+  // A threshold change while paused re-runs the current frame at once.
+  const int before = shown.count();
+  auto* panel = window.findChild<ParameterPanel*>();
+  ASSERT_NE(panel, nullptr);
+  OptionSet changed = panel->options();
+  ASSERT_TRUE(changed.ApplyOverride("mapping.ransac.max_iterations=100").ok());
+  panel->SetOptions(changed);
+  emit panel->OptionsChanged(changed);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() > before; }, 20000));
+  EXPECT_EQ(shown.last().at(0).value<int64_t>(), 11);  // The same frame again.
 }
 
 }  // namespace

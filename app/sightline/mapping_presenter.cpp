@@ -1,0 +1,222 @@
+#include "app/sightline/mapping_presenter.h"
+
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QPainter>
+#include <cstdio>
+
+#include "core/mapping/mapping_frame_processor.h"
+#include "core/pipeline/mapping_pipeline.h"
+#include "core/pipeline/mapping_recording.h"
+#include "widgets/image_view.h"
+
+namespace sightline {
+
+namespace {
+
+// What the mapping processor hands the GUI for one frame.
+struct MappingViewResult : PipelineFrameResult {
+  std::shared_ptr<const MappingFrameResult> mapping;
+  std::string note;  // E.g. "calibrating the floor (2 of 5 frames)".
+};
+
+// Runs MappingFrameProcessor on the playback worker. The floor is calibrated from the first
+// frames, as the headless pipeline does; a threshold change restarts the map from the current
+// frame so that its effect shows at once.
+class MappingProcessor : public FrameProcessor {
+ public:
+  explicit MappingProcessor(SourceInfo info) : info_(std::move(info)) {}
+
+  Status Configure(const OptionSet& options) override {
+    MappingOptions mapping = options.Extract(MappingOptions::Describe());
+    MappingRunOptions run = options.Extract(MappingRunOptions::Describe());
+    std::string error;
+    if (!mapping.IsValid(&error) || !run.IsValid(&error)) return InvalidArgument(error);
+    StatusOr<MappingRecording> recording = LoadMappingRecording(info_, run);
+    if (!recording.ok()) return recording.status();
+    recording_ = std::move(*recording);
+    options_ = mapping;
+    run_ = run;
+    processor_ = std::make_unique<MappingFrameProcessor>(options_);
+    if (floor_) return processor_->Configure(*floor_, recording_.camera);
+    return Status::Ok();
+  }
+
+  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+    return Run(frame);
+  }
+
+  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
+    if (processor_ && floor_) processor_->Restart();
+    return Run(frame);
+  }
+
+  void Reset() override {
+    if (processor_ && floor_) processor_->Restart();
+  }
+
+ private:
+  std::shared_ptr<const PipelineFrameResult> Run(const Frame& frame) {
+    auto result = std::make_shared<MappingViewResult>();
+    result->stamp = StampOf(frame);
+    const auto* rgbd = std::get_if<RgbdFrame>(&frame);
+    if (rgbd == nullptr || !processor_) {
+      result->status = FailedPrecondition("mapping needs RGB-D frames");
+      return result;
+    }
+    if (!floor_) {
+      // Calibrate the floor from the first frames, as `sightline-cli run mapping` does.
+      AppendDepthPoints(rgbd->depth_m, recording_.camera, options_.floor.max_depth_m, 2,
+                        &floor_points_);
+      if (++floor_frames_ < run_.floor_frames) {
+        char note[96];
+        std::snprintf(note, sizeof(note), "calibrating the floor (%d of %d frames)",
+                      floor_frames_, run_.floor_frames);
+        result->note = note;
+        return result;
+      }
+      StatusOr<FloorFitResult> fit = FloorPlaneEstimator(options_.floor).Fit(floor_points_);
+      floor_points_.clear();
+      floor_frames_ = 0;
+      if (!fit.ok()) {
+        result->status = fit.status().WithContext("floor calibration");
+        return result;
+      }
+      floor_ = fit->plane;
+      const Status configured = processor_->Configure(*floor_, recording_.camera);
+      if (!configured.ok()) {
+        result->status = configured;
+        floor_.reset();
+        return result;
+      }
+      char note[128];
+      std::snprintf(note, sizeof(note), "floor: camera %.3f m above it, pitched %.1f deg down",
+                    floor_->CameraHeightM(), floor_->PitchDownDeg());
+      result->note = note;
+    }
+    StatusOr<std::shared_ptr<const MappingFrameResult>> mapped =
+        processor_->Process(recording_.MakeInput(*rgbd, run_.gt_tolerance_s));
+    if (!mapped.ok()) {
+      result->status = mapped.status();
+      return result;
+    }
+    result->mapping = *mapped;
+    const MappingStageTimes& t = (*mapped)->times;
+    result->stats = {{"mapping/occupancy_ms", t.occupancy_ms}, {"mapping/scan_ms", t.scan_ms},
+                     {"mapping/lines_ms", t.lines_ms},         {"mapping/rotation_ms", t.rotation_ms},
+                     {"mapping/stitch_ms", t.stitch_ms},       {"mapping/total_ms", t.total_ms}};
+    return result;
+  }
+
+  SourceInfo info_;
+  MappingOptions options_;
+  MappingRunOptions run_;
+  MappingRecording recording_;
+  std::unique_ptr<MappingFrameProcessor> processor_;
+  std::optional<FloorPlane> floor_;
+  std::vector<Eigen::Vector3f> floor_points_;
+  int floor_frames_ = 0;
+};
+
+// Free cells green, occupied red, people white, unknown dark grey (the seed's Fig. 4.19).
+cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
+  cv::Mat bgr(occupancy.cells.size(), CV_8UC3, cv::Scalar(40, 40, 40));
+  for (int r = 0; r < occupancy.height(); ++r) {
+    const uint8_t* cells = occupancy.cells.ptr<uint8_t>(r);
+    cv::Vec3b* out = bgr.ptr<cv::Vec3b>(r);
+    for (int c = 0; c < occupancy.width(); ++c) {
+      switch (static_cast<OccupancyCell>(cells[c])) {
+        case OccupancyCell::kFree: out[c] = {60, 160, 60}; break;
+        case OccupancyCell::kOccupied: out[c] = {40, 40, 220}; break;
+        case OccupancyCell::kPerson: out[c] = {230, 230, 230}; break;
+        case OccupancyCell::kUnknown: break;
+      }
+    }
+  }
+  return bgr;
+}
+
+}  // namespace
+
+MappingPresenter::MappingPresenter(QObject* parent) : PipelinePresenter(parent) {}
+
+QString MappingPresenter::Title() const { return tr("Indoor mapping (Manhattan walls)"); }
+
+Status MappingPresenter::DeclareOptions(OptionSet* options) const {
+  // Headless runs never render the map per frame; the GUI shows it growing.
+  MappingOptions defaults;
+  defaults.stitch.render_every_n = 10;
+  SIGHTLINE_RETURN_IF_ERROR(options->Declare(MappingOptions::Describe(), defaults));
+  return options->Declare(MappingRunOptions::Describe());
+}
+
+bool MappingPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kRgbd; }
+
+std::unique_ptr<FrameProcessor> MappingPresenter::CreateProcessor(const SourceInfo& info) {
+  return std::make_unique<MappingProcessor>(info);
+}
+
+void MappingPresenter::Attach(QMainWindow* window) {
+  if (occupancy_dock_ == nullptr) {
+    occupancy_view_ = new ImageView(window);
+    map_view_ = new ImageView(window);
+    occupancy_dock_ = new QDockWidget(tr("Occupancy, scan and walls"), window);
+    occupancy_dock_->setObjectName("mapping_occupancy_dock");
+    occupancy_dock_->setWidget(occupancy_view_);
+    map_dock_ = new QDockWidget(tr("Stitched map"), window);
+    map_dock_->setObjectName("mapping_map_dock");
+    map_dock_->setWidget(map_view_);
+  }
+  window->addDockWidget(Qt::LeftDockWidgetArea, occupancy_dock_);
+  window->addDockWidget(Qt::LeftDockWidgetArea, map_dock_);
+  occupancy_dock_->show();
+  map_dock_->show();
+}
+
+void MappingPresenter::Detach() {
+  if (occupancy_dock_ != nullptr) occupancy_dock_->hide();
+  if (map_dock_ != nullptr) map_dock_->hide();
+}
+
+void MappingPresenter::Show(const PlaybackResult& result) {
+  const auto* view = dynamic_cast<const MappingViewResult*>(result.pipeline.get());
+  if (view == nullptr || occupancy_view_ == nullptr) return;
+  if (!view->note.empty()) emit Message(0, QString::fromStdString(view->note));
+  if (!view->mapping) return;
+  const std::shared_ptr<const MappingFrameResult> mapping = view->mapping;
+  occupancy_view_->SetImage(OccupancyToBgr(mapping->occupancy));
+  // Rays from the robot to each scan point, and the wall lines by Manhattan direction.
+  occupancy_view_->SetOverlayPainter([mapping](QPainter& painter, const QTransform& to_widget) {
+    const OccupancyImage& occ = mapping->occupancy;
+    const Eigen::Vector2d robot = occ.ToImage({0, 0});
+    const QPointF origin = to_widget.map(QPointF(robot.x(), robot.y()));
+    painter.setPen(QPen(QColor(255, 170, 0, 90), 1));
+    for (size_t i = 0; i < mapping->scan.points.size(); i += 3) {
+      const cv::Point& cell = mapping->scan.points[i].cell;
+      painter.drawLine(origin, to_widget.map(QPointF(cell.x, cell.y)));
+    }
+    for (const WallSegment& line : mapping->lines.lines) {
+      const QColor color = line.direction_class == 0   ? QColor(0, 200, 255)
+                           : line.direction_class == 1 ? QColor(255, 0, 255)
+                                                       : QColor(255, 255, 0);
+      painter.setPen(QPen(color, 3));
+      const Eigen::Vector2d a = occ.ToImage(line.start), b = occ.ToImage(line.end);
+      painter.drawLine(to_widget.map(QPointF(a.x(), a.y())), to_widget.map(QPointF(b.x(), b.y())));
+    }
+    painter.setBrush(QColor(255, 220, 0));
+    painter.setPen(Qt::NoPen);
+    painter.drawRect(QRectF(origin - QPointF(5, 5), QSizeF(10, 10)));
+  });
+  if (mapping->map_image) map_view_->SetImage(*mapping->map_image);
+  if (mapping->reset) {
+    emit Message(1, tr("Manhattan reference reset: %1")
+                        .arg(QString::fromStdString(mapping->rotation.reset_reason)));
+  }
+  // Degenerate frames are said once per change, not once per frame.
+  if (mapping->status != last_status_) {
+    if (mapping->status != "ok") emit Message(1, QString::fromStdString(mapping->status));
+    last_status_ = mapping->status;
+  }
+}
+
+}  // namespace sightline

@@ -1,0 +1,44 @@
+// What a mapping run reads beside the depth frames of a recording, shared by the headless
+// pipeline and the GUI: wheel odometry, person boxes, true walls and the camera's offset.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/camera.h"
+#include "core/common/frame.h"
+#include "core/common/trajectory.h"
+#include "core/io/source.h"
+#include "core/mapping/mapping_accuracy.h"
+#include "core/mapping/mapping_frame_processor.h"
+#include "core/mapping/person_boxes.h"
+
+namespace sightline {
+
+struct MappingRunOptions;
+
+// A recording's extra files for mapping, found in its top folder (the parent of an rgbd/
+// sensor folder): odometry.txt, people.csv, walls.csv, scene.yaml.
+struct MappingRecording {
+  std::string root;                         // The folder the files were looked for in.
+  PinholeCamera camera;                     // The depth camera.
+  std::optional<Trajectory> odometry;       // world_from_base of the wheel odometry.
+  std::optional<PersonBoxTable> people;     // Ground-truth person boxes.
+  std::optional<std::vector<TrueWall>> walls;  // True wall faces, for accuracy.
+  double camera_forward_m = 0;              // Optical centre ahead of the odometry base [m].
+  std::vector<std::string> log_lines;       // What was found, for the run's log.
+
+  // One frame's mapping input: depth, colour, the odometry pose (moved to the camera) within
+  // `tolerance_s` of the frame, and the frame's person boxes.
+  MappingInput MakeInput(const RgbdFrame& frame, double tolerance_s) const;
+};
+
+// The folder holding a recording's extra files for a dataset path.
+std::string MappingRecordingRoot(const std::string& dataset_path);
+
+// Loads the extras of the recording the source was opened from. Errors name the bad file.
+StatusOr<MappingRecording> LoadMappingRecording(const SourceInfo& info,
+                                                const MappingRunOptions& run);
+
+}  // namespace sightline
