@@ -180,6 +180,7 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
     result->map_image = std::make_shared<const cv::Mat>(map_.RenderBgr(trajectory_));
     result->map_origin = map_.origin();
     result->map_resolution_m = map_.resolution_m();
+    result->trajectory = std::make_shared<const std::vector<Pose2d>>(trajectory_);
   }
 
   // What was degenerate, for people.

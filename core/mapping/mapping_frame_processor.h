@@ -70,8 +70,9 @@ struct MappingStageTimes {
 
 // Everything one frame produced, immutable once returned, for the GUI to draw: the occupancy
 // image (OccupancyCell values), the scan's rays (robot at occupancy.ToImage({0, 0}), each point's
-// cell), the wall lines with their Manhattan direction class, the pose, and every few frames the
-// global map with the trajectory.
+// cell), the wall lines with their Manhattan direction class (base frame; occupancy.ToImage()
+// turns their end points into image coordinates), the pose, and every few frames the global map
+// with the trajectory. A busy view can draw the pose alone.
 struct MappingFrameResult {
   FrameStamp stamp;
   std::vector<PersonBox> people;       // Boxes used (image pixels).
@@ -91,6 +92,8 @@ struct MappingFrameResult {
   std::shared_ptr<const cv::Mat> map_image;
   Eigen::Vector2d map_origin = Eigen::Vector2d::Zero();
   double map_resolution_m = 0;
+  // With map_image: the estimated poses so far (world_from_base), to draw or plot.
+  std::shared_ptr<const std::vector<Pose2d>> trajectory;
 };
 
 // Runs the chain frame by frame. One instance per run; not thread-safe (one worker drives it).

@@ -16,6 +16,7 @@
 #include "core/mapping/mapping_accuracy.h"
 #include "core/mapping/mapping_frame_processor.h"
 #include "core/mapping/option_check.h"
+#include "core/pipeline/mapping_recording.h"
 
 namespace sightline {
 
@@ -63,32 +64,6 @@ OptionTable<MappingRunOptions> MappingRunOptions::Describe() {
 
 namespace {
 
-// The folder holding a recording's extra files (odometry.txt, people.csv, walls.csv).
-std::string RecordingRoot(const std::string& path) {
-  namespace fs = std::filesystem;
-  if (!DetectDataset(path)) return path;  // A recording with sensor sub-folders.
-  const std::string parent = fs::path(path).lexically_normal().parent_path().string();
-  for (const char* name : {"odometry.txt", "walls.csv", "people.csv", "scene.yaml"}) {
-    if (!parent.empty() && FileExists(JoinPath(parent, name))) return parent;
-  }
-  return path;
-}
-
-// "  sim.motion.camera_forward_m: 0.1" in a simulator's scene.yaml.
-std::optional<double> CameraForwardFromSceneYaml(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    const size_t key = line.find("motion.camera_forward_m:");
-    if (key == std::string::npos) continue;
-    char* end = nullptr;
-    const std::string value = line.substr(line.find(':', key) + 1);
-    const double v = std::strtod(value.c_str(), &end);
-    if (end != value.c_str() && std::isfinite(v)) return v;
-  }
-  return std::nullopt;
-}
-
 RgbdFrame* AsRgbd(Frame* frame) { return std::get_if<RgbdFrame>(frame); }
 
 // Camera of an RGB-D source.
@@ -122,39 +97,12 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
   StatusOr<std::unique_ptr<Source>> opened = OpenDataset(context.dataset_path, SourceKind::kRgbd);
   if (!opened.ok()) return opened.status();
   Source& source = **opened;
-  StatusOr<PinholeCamera> camera = SourceCamera(source);
-  if (!camera.ok()) return camera.status();
-
-  // The recording's extra files.
-  const std::string root = RecordingRoot(context.dataset_path);
-  std::vector<std::string> log_lines;
-  std::optional<Trajectory> odometry;
-  if (const std::string path = JoinPath(root, "odometry.txt"); FileExists(path)) {
-    StatusOr<Trajectory> read = ReadTumTrajectory(path);
-    if (!read.ok()) return read.status();
-    odometry = std::move(*read);
-    log_lines.push_back("pose source: wheel odometry " + path);
-  } else {
-    log_lines.push_back("pose source: none (no odometry.txt); heading from walls only");
-  }
-  std::optional<PersonBoxTable> people;
-  if (const std::string path = JoinPath(root, "people.csv"); FileExists(path)) {
-    StatusOr<PersonBoxTable> read = PersonBoxTable::Read(path);
-    if (!read.ok()) return read.status();
-    people = std::move(*read);
-    people->SetImageSize(cv::Size(camera->width, camera->height));
-    log_lines.push_back("person boxes: ground truth " + path);
-  }
-  std::optional<std::vector<TrueWall>> walls;
-  if (const std::string path = JoinPath(root, "walls.csv"); FileExists(path)) {
-    StatusOr<std::vector<TrueWall>> read = ReadWallsCsv(path);
-    if (!read.ok()) return read.status();
-    walls = std::move(*read);
-  }
-  double camera_forward_m = run.camera_forward_m;
-  if (run.camera_offset_from_scene) {
-    if (auto v = CameraForwardFromSceneYaml(JoinPath(root, "scene.yaml"))) camera_forward_m = *v;
-  }
+  // The recording's extra files: odometry, person boxes, true walls, camera offset.
+  StatusOr<MappingRecording> recording = LoadMappingRecording(source.info(), run);
+  if (!recording.ok()) return recording.status();
+  const PinholeCamera* camera = &recording->camera;
+  std::vector<std::string> log_lines = recording->log_lines;
+  const std::optional<std::vector<TrueWall>>& walls = recording->walls;
 
   int64_t total = source.info().frame_count;
   if (run.max_frames > 0 && (total < 0 || total > run.max_frames)) total = run.max_frames;
@@ -241,20 +189,7 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
     RgbdFrame frame = std::move(pending.front());
     pending.pop_front();
 
-    MappingInput input;
-    input.stamp = frame.stamp;
-    input.depth_m = frame.depth_m;
-    input.color = frame.color;
-    if (odometry) {
-      if (auto i = odometry->Nearest(frame.stamp.sensor_time_s, run.gt_tolerance_s)) {
-        Pose2d pose = Pose2d::FromIsometry(odometry->poses()[*i].world_from_sensor);
-        pose.x += camera_forward_m * std::cos(pose.heading_rad);
-        pose.y += camera_forward_m * std::sin(pose.heading_rad);
-        input.odometry = pose;
-      }
-    }
-    if (people) input.people = people->ForFrame(frame.stamp.sequence_id);
-
+    const MappingInput input = recording->MakeInput(frame, run.gt_tolerance_s);
     StatusOr<std::shared_ptr<const MappingFrameResult>> processed =
         processor.Process(input, context.timing);
     if (!processed.ok()) {

@@ -158,6 +158,8 @@ TEST_F(MappingFrameProcessorTest, MapImageEveryNFrames) {
     if ((*r)->map_image) {
       EXPECT_EQ((*r)->map_image->type(), CV_8UC3);
       EXPECT_DOUBLE_EQ((*r)->map_resolution_m, 0.05);
+      ASSERT_NE((*r)->trajectory, nullptr);
+      EXPECT_EQ((*r)->trajectory->size(), static_cast<size_t>(k + 1));
     }
   }
 }
