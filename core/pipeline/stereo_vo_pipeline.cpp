@@ -74,18 +74,13 @@ StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
     if (cancel != nullptr && cancel->load()) {
       return Cancelled("run cancelled after " + std::to_string(index) + " frames");
     }
-    const double grab_start = HostTimeS();
+    const double read_start = HostTimeS();
     const Status grabbed = source.Grab();
-    if (timing) timing->Add("read", (HostTimeS() - grab_start) * 1000.0);
     if (grabbed.code() == StatusCode::kOutOfRange) break;
     if (!grabbed.ok()) return grabbed;
     if (index % run.subsample != 0) continue;  // Grabbed but not decoded.
-    StatusOr<Frame> frame = Internal("not read");
-    {
-      const double start = HostTimeS();
-      frame = source.Retrieve();
-      if (timing) timing->Add("read", (HostTimeS() - start) * 1000.0);
-    }
+    StatusOr<Frame> frame = source.Retrieve();
+    if (timing) timing->Add("read", (HostTimeS() - read_start) * 1000.0);
     if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
     const StereoFrame* stereo = std::get_if<StereoFrame>(&*frame);
     if (stereo == nullptr) return InvalidArgument(path + " does not give stereo frames");

@@ -14,7 +14,7 @@ namespace sightline {
 
 // Tracking and detection options. Keys "stereo.tracking.*".
 struct FeatureTrackerOptions {
-  int max_features = 1500;        // Features kept per frame (tracked + new).
+  int max_features = 1000;        // Features kept per frame (tracked + new).
   int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
   double min_eigenvalue = 5e-4;   // Shi-Tomasi: smallest accepted minimum eigenvalue of the
                                   // gradient covariance (cv::cornerMinEigenVal units).
