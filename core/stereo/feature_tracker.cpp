@@ -32,6 +32,9 @@ bool FeatureTrackerOptions::IsValid(std::string* error) const {
   }
   if (border_px < 0) return Invalid(error, "stereo.tracking.border_px must be >= 0");
   if (refine_window_px < 0) return Invalid(error, "stereo.tracking.refine_window_px must be >= 0");
+  if (!(refill_fraction > 0 && refill_fraction <= 1)) {
+    return Invalid(error, "stereo.tracking.refill_fraction must lie in (0, 1]");
+  }
   if (detection_level < 0 || detection_level > pyramid_levels) {
     return Invalid(error, "stereo.tracking.detection_level must lie in [0, pyramid_levels]");
   }
@@ -61,6 +64,9 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
       .Int("border_px", &O::border_px, "px", 0, 200, 1, "Features this close to the border are dropped.")
       .Int("detection_level", &O::detection_level, "level", 0, 6, 1,
            "Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).")
+      .Double("refill_fraction", &O::refill_fraction, "", 0.01, 1, 0.05,
+              "A bucket gets new corners only when it holds fewer than this fraction of its "
+              "share of max_features (1 = whenever it is not full).")
       .Int("refine_window_px", &O::refine_window_px, "px", 0, 20, 1,
            "Half-size of the sub-pixel corner refinement at full resolution after detection on a "
            "reduced level; 0 = none.");
@@ -143,16 +149,21 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
   const int margin = options_.block_size / 2 + 2;
   cv::Mat eig;
   std::vector<std::pair<float, cv::Point>> candidates;
+  // Buckets that need corners: fewer than refill_fraction of their share.
+  const int refill_below = std::max(
+      1, static_cast<int>(std::ceil(options_.refill_fraction * per_bucket)));
+  auto needy = [&](int bx, int by) {
+    return static_cast<int>(in_bucket[static_cast<size_t>(by * cols + bx)].size()) < refill_below;
+  };
   for (int by = 0; by < rows && static_cast<int>(fresh.size()) < wanted; ++by) {
-    // One eigenvalue image per bucket row, spanning its buckets that need corners.
-    int first = -1, last = -1;
-    for (int bx = 0; bx < cols; ++bx) {
-      if (static_cast<int>(in_bucket[static_cast<size_t>(by * cols + bx)].size()) < per_bucket) {
-        if (first < 0) first = bx;
-        last = bx;
-      }
-    }
-    if (first < 0) continue;
+   for (int run_start = 0; run_start < cols && static_cast<int>(fresh.size()) < wanted;) {
+    // One eigenvalue image per run of neighbouring buckets that need corners.
+    while (run_start < cols && !needy(run_start, by)) ++run_start;
+    if (run_start >= cols) break;
+    int run_end = run_start;
+    while (run_end + 1 < cols && needy(run_end + 1, by)) ++run_end;
+    const int first = run_start, last = run_end;
+    run_start = run_end + 1;
     const cv::Rect span = cv::Rect(cvFloor(first * bs / scale), cvFloor(by * bs / scale),
                                    cvCeil((last - first + 1) * bs / scale), cvCeil(bs / scale)) &
                           inside;
@@ -198,6 +209,7 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
         ++added;
       }
     }
+   }
   }
   if (level > 0 && !fresh.empty() && options_.refine_window_px > 0) {
     // Corners found on a reduced level sit up to a pixel off the full-resolution corner; move

@@ -15,7 +15,9 @@ namespace sightline {
 // Tracking and detection options. Keys "stereo.tracking.*".
 struct FeatureTrackerOptions {
   int max_features = 1000;        // Features kept per frame (tracked + new).
-  int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
+  int bucket_size_px = 48;
+  double refill_fraction = 1.0;   // A bucket is refilled when it holds fewer than this fraction
+                                  // of its share of max_features (1 = whenever not full).        // Side of the square buckets of the detection grid [px].
   double min_eigenvalue = 5e-4;   // Shi-Tomasi: smallest accepted minimum eigenvalue of the
                                   // gradient covariance (cv::cornerMinEigenVal units).
   double min_distance_px = 7;     // Shi-Tomasi: minimum distance between corners [px].
