@@ -1,6 +1,10 @@
 #include "app/sightline/mapping_presenter.h"
 
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QVBoxLayout>
 #include <QMainWindow>
 #include <QPainter>
 #include <cstdio>
@@ -9,6 +13,7 @@
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mapping_recording.h"
 #include "widgets/image_view.h"
+#include "widgets/scene_view.h"
 
 namespace sightline {
 
@@ -17,6 +22,8 @@ namespace {
 // What the mapping processor hands the GUI for one frame.
 struct MappingViewResult : PipelineFrameResult {
   std::shared_ptr<const MappingFrameResult> mapping;
+  std::optional<FloorPlane> floor;  // The floor calibration in use.
+  Eigen::Isometry3d base_from_camera = Eigen::Isometry3d::Identity();
   std::string note;  // E.g. "calibrating the floor (2 of 5 frames)".
 };
 
@@ -25,7 +32,9 @@ struct MappingViewResult : PipelineFrameResult {
 // frame so that its effect shows at once.
 class MappingProcessor : public FrameProcessor {
  public:
-  explicit MappingProcessor(SourceInfo info) : info_(std::move(info)) {}
+  MappingProcessor(SourceInfo info, std::shared_ptr<const std::atomic<int>> recalibrations)
+      : info_(std::move(info)), recalibrations_(std::move(recalibrations)),
+        recalibrations_seen_(recalibrations_->load()) {}
 
   Status Configure(const OptionSet& options) override {
     MappingOptions mapping = options.Extract(MappingOptions::Describe());
@@ -64,6 +73,12 @@ class MappingProcessor : public FrameProcessor {
       result->status = FailedPrecondition("mapping needs RGB-D frames");
       return result;
     }
+    if (const int requested = recalibrations_->load(); requested != recalibrations_seen_) {
+      recalibrations_seen_ = requested;  // The operator asked for a new floor calibration.
+      floor_.reset();
+      floor_points_.clear();
+      floor_frames_ = 0;
+    }
     if (!floor_) {
       // Calibrate the floor from the first frames, as `sightline-cli run mapping` does.
       AppendDepthPoints(rgbd->depth_m, recording_.camera, options_.floor.max_depth_m, 2,
@@ -101,6 +116,8 @@ class MappingProcessor : public FrameProcessor {
       return result;
     }
     result->mapping = *mapped;
+    result->floor = floor_;
+    result->base_from_camera = processor_->base_from_camera();
     const MappingStageTimes& t = (*mapped)->times;
     result->stats = {{"mapping/occupancy_ms", t.occupancy_ms}, {"mapping/scan_ms", t.scan_ms},
                      {"mapping/lines_ms", t.lines_ms},         {"mapping/rotation_ms", t.rotation_ms},
@@ -109,6 +126,8 @@ class MappingProcessor : public FrameProcessor {
   }
 
   SourceInfo info_;
+  std::shared_ptr<const std::atomic<int>> recalibrations_;
+  int recalibrations_seen_ = 0;
   MappingOptions options_;
   MappingRunOptions run_;
   MappingRecording recording_;
@@ -136,6 +155,37 @@ cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
   return bgr;
 }
 
+// The walls (as upright rectangles up to `height_m`) and a patch of the floor, in the camera
+// frame, for the 3D view beside the depth cloud. Walls are split by Manhattan class.
+struct SceneLines {
+  std::vector<SceneView::Segment> walls[3];  // Class 0, class 1, unclassified.
+  std::vector<SceneView::Segment> floor;
+};
+
+SceneLines WallsAndFloorInCamera(const MappingFrameResult& mapping,
+                                 const Eigen::Isometry3d& base_from_camera) {
+  constexpr double kWallHeightM = 1.2;
+  const Eigen::Isometry3d camera_from_base = base_from_camera.inverse();
+  auto at = [&](const Eigen::Vector2d& xy, double z) {
+    return Eigen::Vector3d(camera_from_base * Eigen::Vector3d(xy.x(), xy.y(), z));
+  };
+  SceneLines out;
+  for (const WallSegment& line : mapping.lines.lines) {
+    auto& segments = out.walls[line.direction_class == 0 ? 0 : line.direction_class == 1 ? 1 : 2];
+    segments.push_back({at(line.start, 0), at(line.end, 0)});
+    segments.push_back({at(line.start, kWallHeightM), at(line.end, kWallHeightM)});
+    segments.push_back({at(line.start, 0), at(line.start, kWallHeightM)});
+    segments.push_back({at(line.end, 0), at(line.end, kWallHeightM)});
+  }
+  // A 0.5 m grid on the calibrated floor plane, 0.5-4 m ahead and 2 m to each side.
+  for (double x = 0.5; x <= 4.0 + 1e-9; x += 0.5) out.floor.push_back({at({x, -2}, 0), at({x, 2}, 0)});
+  for (double y = -2; y <= 2 + 1e-9; y += 0.5) out.floor.push_back({at({0.5, y}, 0), at({4, y}, 0)});
+  return out;
+}
+
+constexpr const char* kWallLayers[3] = {"mapping/walls_0", "mapping/walls_1", "mapping/walls_other"};
+constexpr const char* kFloorLayer = "mapping/floor";
+
 }  // namespace
 
 MappingPresenter::MappingPresenter(QObject* parent) : PipelinePresenter(parent) {}
@@ -153,7 +203,7 @@ Status MappingPresenter::DeclareOptions(OptionSet* options) const {
 bool MappingPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kRgbd; }
 
 std::unique_ptr<FrameProcessor> MappingPresenter::CreateProcessor(const SourceInfo& info) {
-  return std::make_unique<MappingProcessor>(info);
+  return std::make_unique<MappingProcessor>(info, recalibrations_);
 }
 
 void MappingPresenter::Attach(QMainWindow* window) {
@@ -162,11 +212,33 @@ void MappingPresenter::Attach(QMainWindow* window) {
     map_view_ = new ImageView(window);
     occupancy_dock_ = new QDockWidget(tr("Occupancy, scan and walls"), window);
     occupancy_dock_->setObjectName("mapping_occupancy_dock");
-    occupancy_dock_->setWidget(occupancy_view_);
+    auto* panel = new QWidget(window);
+    auto* layout = new QVBoxLayout(panel);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* buttons = new QHBoxLayout;
+    auto* calibrate = new QPushButton(tr("Calibrate floor"), panel);
+    calibrate->setToolTip(tr("Fit the floor plane again from the next frames (the robot should "
+                             "see open floor)."));
+    connect(calibrate, &QPushButton::clicked, this, &MappingPresenter::RecalibrateFloor);
+    auto* save = new QPushButton(tr("Save floor..."), panel);
+    save->setToolTip(tr("Save the floor calibration in use, for mapping.run.floor_file or "
+                        "`sightline-cli run mapping --set mapping.run.floor_file=...`."));
+    connect(save, &QPushButton::clicked, this, [this, window] {
+      const QString path = QFileDialog::getSaveFileName(window, tr("Save floor calibration"),
+                                                        "floor.yaml", tr("YAML (*.yaml)"));
+      if (!path.isEmpty()) SaveFloor(path);
+    });
+    buttons->addWidget(calibrate);
+    buttons->addWidget(save);
+    buttons->addStretch();
+    layout->addLayout(buttons);
+    layout->addWidget(occupancy_view_, 1);
+    occupancy_dock_->setWidget(panel);
     map_dock_ = new QDockWidget(tr("Stitched map"), window);
     map_dock_->setObjectName("mapping_map_dock");
     map_dock_->setWidget(map_view_);
   }
+  scene_ = window->findChild<SceneView*>();
   window->addDockWidget(Qt::LeftDockWidgetArea, occupancy_dock_);
   window->addDockWidget(Qt::LeftDockWidgetArea, map_dock_);
   occupancy_dock_->show();
@@ -174,6 +246,10 @@ void MappingPresenter::Attach(QMainWindow* window) {
 }
 
 void MappingPresenter::Detach() {
+  if (scene_ != nullptr) {
+    for (const char* layer : kWallLayers) scene_->RemoveLayer(layer);
+    scene_->RemoveLayer(kFloorLayer);
+  }
   if (occupancy_dock_ != nullptr) occupancy_dock_->hide();
   if (map_dock_ != nullptr) map_dock_->hide();
 }
@@ -183,6 +259,7 @@ void MappingPresenter::Show(const PlaybackResult& result) {
   if (view == nullptr || occupancy_view_ == nullptr) return;
   if (!view->note.empty()) emit Message(0, QString::fromStdString(view->note));
   if (!view->mapping) return;
+  floor_ = view->floor;
   const std::shared_ptr<const MappingFrameResult> mapping = view->mapping;
   occupancy_view_->SetImage(OccupancyToBgr(mapping->occupancy));
   // Rays from the robot to each scan point, and the wall lines by Manhattan direction.
@@ -208,6 +285,12 @@ void MappingPresenter::Show(const PlaybackResult& result) {
     painter.drawRect(QRectF(origin - QPointF(5, 5), QSizeF(10, 10)));
   });
   if (mapping->map_image) map_view_->SetImage(*mapping->map_image);
+  if (scene_ != nullptr) {
+    const SceneLines lines = WallsAndFloorInCamera(*mapping, view->base_from_camera);
+    const QColor colors[3] = {QColor(0, 200, 255), QColor(255, 0, 255), QColor(255, 255, 0)};
+    for (int k = 0; k < 3; ++k) scene_->SetLines(kWallLayers[k], lines.walls[k], colors[k], 3.0);
+    scene_->SetLines(kFloorLayer, lines.floor, QColor(60, 200, 60), 1.0);
+  }
   if (mapping->reset) {
     emit Message(1, tr("Manhattan reference reset: %1")
                         .arg(QString::fromStdString(mapping->rotation.reset_reason)));
@@ -217,6 +300,29 @@ void MappingPresenter::Show(const PlaybackResult& result) {
     if (mapping->status != "ok") emit Message(1, QString::fromStdString(mapping->status));
     last_status_ = mapping->status;
   }
+}
+
+std::vector<std::string> MappingPresenter::SceneLayers() {
+  return {kWallLayers[0], kWallLayers[1], kWallLayers[2], kFloorLayer};
+}
+
+void MappingPresenter::RecalibrateFloor() {
+  recalibrations_->fetch_add(1);
+  emit Message(0, tr("Calibrating the floor again from the next frames."));
+}
+
+Status MappingPresenter::SaveFloor(const QString& path) {
+  if (!floor_) {
+    const Status none = FailedPrecondition("no floor calibration yet: play a few frames first");
+    emit Message(2, QString::fromStdString(none.message()));
+    return none;
+  }
+  FloorCalibration calibration;
+  calibration.plane = *floor_;
+  const Status written = WriteFloorCalibration(calibration, path.toStdString());
+  emit Message(written.ok() ? 0 : 2, written.ok() ? tr("Saved the floor calibration to %1").arg(path)
+                                                  : QString::fromStdString(written.ToString()));
+  return written;
 }
 
 }  // namespace sightline

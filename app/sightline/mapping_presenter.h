@@ -2,15 +2,20 @@
 // (coloured by Manhattan direction), and the stitched map growing with the trajectory.
 #pragma once
 
+#include <atomic>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "app/sightline/pipeline_presenter.h"
+#include "core/mapping/floor_plane.h"
 
 class QDockWidget;
 
 namespace sightline {
 
 class ImageView;
+class SceneView;
 
 // Presenter of the "mapping" pipeline (seed 000). Needs RGB-D frames.
 class MappingPresenter : public PipelinePresenter {
@@ -27,16 +32,27 @@ class MappingPresenter : public PipelinePresenter {
   void Detach() override;
   void Show(const PlaybackResult& result) override;
 
+  // Fits the floor again from the next frames ("Calibrate floor").
+  void RecalibrateFloor();
+  // Writes the floor calibration in use to a file that mapping.run.floor_file can name.
+  Status SaveFloor(const QString& path);
+
   // The views, for tests.
   const ImageView* occupancy_view() const { return occupancy_view_; }
   const ImageView* map_view() const { return map_view_; }
+  // Names of the 3D layers it draws (walls by Manhattan class, the floor grid).
+  static std::vector<std::string> SceneLayers();
 
  private:
   QDockWidget* occupancy_dock_ = nullptr;
   QDockWidget* map_dock_ = nullptr;
   ImageView* occupancy_view_ = nullptr;
   ImageView* map_view_ = nullptr;
+  SceneView* scene_ = nullptr;  // The window's 3D view: walls and floor beside the cloud.
   std::string last_status_ = "ok";
+  // Shared with the processor on the worker thread: bumped to ask for a new floor fit.
+  std::shared_ptr<std::atomic<int>> recalibrations_ = std::make_shared<std::atomic<int>>(0);
+  std::optional<FloorPlane> floor_;  // The calibration of the last shown frame.
 };
 
 }  // namespace sightline

@@ -274,6 +274,10 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
   }
   EXPECT_FALSE(mapping->occupancy_view()->image().isNull());
   EXPECT_FALSE(mapping->map_view()->image().isNull());
+  // The 3D view shows the floor grid and the walls found beside the cloud.
+  for (const std::string& layer : MappingPresenter::SceneLayers()) {
+    EXPECT_TRUE(window.scene_view()->HasLayer(layer)) << layer;
+  }
 
   // A threshold change while paused re-runs the current frame at once.
   const int before = shown.count();
@@ -285,6 +289,22 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
   emit panel->OptionsChanged(changed);
   ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() > before; }, 20000));
   EXPECT_EQ(shown.last().at(0).value<int64_t>(), 11);  // The same frame again.
+
+  // Calibrate floor: the saved calibration holds the simulated camera height; a new fit starts
+  // from the next frame.
+  const std::string floor_file = testing::TempDir("gui_mapping") + "/floor.yaml";
+  ASSERT_TRUE(mapping->SaveFloor(QString::fromStdString(floor_file)).ok());
+  StatusOr<FloorCalibration> floor = ReadFloorCalibration(floor_file);
+  ASSERT_TRUE(floor.ok()) << floor.status().ToString();
+  EXPECT_NEAR(floor->plane.CameraHeightM(), options.motion.camera_height_m, 0.03);
+  QSignalSpy messages(mapping, &PipelinePresenter::Message);
+  mapping->RecalibrateFloor();
+  const int stepped = shown.count();
+  window.playback()->Step();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() > stepped; }, 20000));
+  bool calibrating = false;
+  for (const auto& m : messages) calibrating |= m.at(1).toString().contains("calibrating the floor (1 of");
+  EXPECT_TRUE(calibrating);
 }
 
 }  // namespace
