@@ -9,6 +9,7 @@
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
+#include "app/sightline/stereo_vo_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
 #include "widgets/vtk_gl_widget.h"
@@ -38,13 +39,24 @@ int main(int argc, char** argv) {
                                     "120");
   QCommandLineOption demo_option(
       "demo", "Open the built-in demo (simulated recordings, generated once into the cache).");
-  parser.addOptions({open_option, demo_option, screenshot_option, frames_option, timeout_option});
+  QCommandLineOption pipeline_option(
+      "pipeline", "Run a pipeline on every frame: a word of its menu title, e.g. mapping, stereo.",
+      "NAME");
+  parser.addOptions({open_option, demo_option, pipeline_option, screenshot_option, frames_option,
+                     timeout_option});
   parser.process(app);
 
   sightline::MainWindow window;
   auto* mapping = new sightline::MappingPresenter();
   window.AddPipeline(mapping);
+  window.AddPipeline(new sightline::StereoVoPresenter());
   window.show();
+  if (parser.isSet(pipeline_option) &&
+      !window.ActivatePipelineByWord(parser.value(pipeline_option))) {
+    std::fprintf(stderr, "sightline: no pipeline matches '%s' (see the Pipeline menu)\n",
+                 qPrintable(parser.value(pipeline_option)));
+    return 2;
+  }
 
   if (parser.isSet(screenshot_option)) {
     if (!parser.isSet(open_option) && !parser.isSet(demo_option)) {

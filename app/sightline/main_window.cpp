@@ -303,6 +303,13 @@ bool MainWindow::ActivatePipeline(const QString& title) {
   return true;
 }
 
+bool MainWindow::ActivatePipelineByWord(const QString& word) {
+  for (PipelinePresenter* p : pipelines_) {
+    if (p->Title().contains(word, Qt::CaseInsensitive)) return ActivatePipeline(p->Title());
+  }
+  return false;
+}
+
 void MainWindow::OpenPath(const QString& path) {
   log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Opening %1 ...").arg(path));
   statusBar()->showMessage(tr("Opening %1 ...").arg(path));

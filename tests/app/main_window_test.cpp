@@ -17,6 +17,8 @@
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/mapping_presenter.h"
+#include "app/sightline/stereo_vo_presenter.h"
+#include "core/io/dataset.h"
 #include "core/sim/simulate.h"
 #include "widgets/parameter_panel.h"
 #include "app/sightline/playback_controller.h"
@@ -305,6 +307,40 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
   bool calibrating = false;
   for (const auto& m : messages) calibrating |= m.at(1).toString().contains("calibrating the floor (1 of");
   EXPECT_TRUE(calibrating);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(StereoVoPresenter, DrawsTracksAndATrajectoryThatFollowsKittiGroundTruth) {
+  SIGHTLINE_REQUIRE_DATA(dir, "kitti_clip1");
+  MainWindow window;
+  auto* vo = new StereoVoPresenter();
+  window.AddPipeline(vo);
+  ASSERT_TRUE(window.ActivatePipeline(vo->Title()));
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(dir));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  constexpr int kFrames = 6;
+  for (int i = 0; i < kFrames; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 20000)) << "step " << i;
+  }
+  EXPECT_FALSE(vo->tracks_view()->image().isNull());
+  ASSERT_EQ(vo->estimate().size(), static_cast<size_t>(kFrames));
+  EXPECT_TRUE(window.scene_view()->HasLayer("vo/estimate"));
+  EXPECT_TRUE(window.scene_view()->HasLayer("vo/ground_truth"));
+  // The car drives about 1.2 m per frame; the estimate's length over 5 steps is within 5 % of it.
+  auto gt = OpenDataset(dir, SourceKind::kStereo);
+  ASSERT_TRUE(gt.ok());
+  Trajectory truth;
+  for (int i = 0; i < kFrames; ++i) truth.mutable_poses().push_back((*gt)->ground_truth()->poses()[i]);
+  EXPECT_NEAR(vo->estimate().LengthM(), truth.LengthM(), 0.05 * truth.LengthM());
 }
 
 }  // namespace
