@@ -48,6 +48,18 @@ bool OpenNi2IsRecording(const std::string& path) {
   return ext == ".oni";
 }
 
+// Makes a driver that was configured out say so everywhere it is asked for.
+[[maybe_unused]] void MarkNotBuilt(DriverInfo* d, const std::string& option,
+                                   const std::string& package) {
+  const Status off = Unavailable("not built: Sightline was configured with " + option +
+                                 "=OFF (install " + package + " and reconfigure)");
+  d->available = [off] { return off; };
+  d->enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
+  d->create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
+    return off;
+  };
+}
+
 DriverInfo OpenNi2Driver() {
   DriverInfo d;
   d.name = "openni2";
@@ -64,14 +76,7 @@ DriverInfo OpenNi2Driver() {
         std::make_unique<OpenNi2Source>(StripScheme(uri, kOpenNi2Scheme), *options));
   };
 #else
-  const Status off = Unavailable(
-      "not built: Sightline was configured with SIGHTLINE_WITH_OPENNI2=OFF (install "
-      "libopenni2-dev and reconfigure)");
-  d.available = [off] { return off; };
-  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
-  d.create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
-    return off;
-  };
+  MarkNotBuilt(&d, "SIGHTLINE_WITH_OPENNI2", "libopenni2-dev");
 #endif
   return d;
 }
@@ -113,14 +118,7 @@ DriverInfo AravisDriver() {
         std::make_unique<AravisStereoSource>(left, right, *options, *stereo));
   };
 #else
-  const Status off = Unavailable(
-      "not built: Sightline was configured with SIGHTLINE_WITH_ARAVIS=OFF (install "
-      "libaravis-dev and reconfigure)");
-  d.available = [off] { return off; };
-  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
-  d.create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
-    return off;
-  };
+  MarkNotBuilt(&d, "SIGHTLINE_WITH_ARAVIS", "libaravis-dev");
 #endif
   return d;
 }

@@ -39,6 +39,24 @@ namespace {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
+// The pose change of a Gauss-Newton step: translation delta[0..2], rotation vector delta[3..5].
+Eigen::Isometry3d PoseIncrement(const Vector6d& delta) {
+  Eigen::Isometry3d update = Eigen::Isometry3d::Identity();
+  const double angle = delta.tail<3>().norm();
+  if (angle > 1e-12) {
+    update.linear() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
+  }
+  update.translation() = delta.head<3>();
+  return update;
+}
+
+// Re-orthonormalises the rotation against drift from repeated products.
+void Orthonormalize(Eigen::Isometry3d* pose) {
+  Eigen::Quaterniond q(pose->rotation());
+  q.normalize();
+  pose->linear() = q.toRotationMatrix();
+}
+
 Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;
   s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
@@ -162,22 +180,14 @@ RefinementSummary MotionRefiner::RefineJoint(
     for (size_t k = 0; k < n; ++k) {
       if (valid[k]) points[k] -= hll_inv[k] * (gl[k] + hpl[k].transpose() * delta);
     }
-    Eigen::Isometry3d update = Eigen::Isometry3d::Identity();
-    const double angle = delta.tail<3>().norm();
-    if (angle > 1e-12) {
-      update.linear() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
-    }
-    update.translation() = delta.head<3>();
-    t = update * t;
+    t = PoseIncrement(delta) * t;
     summary.iterations = it + 1;
     if (delta.norm() < options_.min_step) {
       summary.converged = true;
       break;
     }
   }
-  Eigen::Quaterniond q(t.rotation());
-  q.normalize();
-  t.linear() = q.toRotationMatrix();
+  Orthonormalize(&t);
   // RMS over all four observations with the refined points.
   double sum = 0;
   int count = 0;
@@ -252,23 +262,14 @@ RefinementSummary MotionRefiner::Refine(const RectifiedStereoCamera& camera,
     if (ldlt.info() != Eigen::Success) break;
     const Vector6d delta = -ldlt.solve(g);
     if (!delta.allFinite()) break;
-    Eigen::Isometry3d update = Eigen::Isometry3d::Identity();
-    const double angle = delta.tail<3>().norm();
-    if (angle > 1e-12) {
-      update.linear() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
-    }
-    update.translation() = delta.head<3>();
-    t = update * t;
+    t = PoseIncrement(delta) * t;
     summary.iterations = it + 1;
     if (delta.norm() < options_.min_step) {
       summary.converged = true;
       break;
     }
   }
-  // Re-orthonormalise the rotation against drift from repeated products.
-  Eigen::Quaterniond q(t.rotation());
-  q.normalize();
-  t.linear() = q.toRotationMatrix();
+  Orthonormalize(&t);
   summary.final_rms_px = RmsReprojectionPx(camera, correspondences, indices, t);
   *current_from_previous = t;
   if (summary.iterations == options_.max_iterations) summary.converged = true;
