@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <opencv2/core/persistence.hpp>
 
 namespace sightline {
@@ -189,6 +191,78 @@ StatusOr<StereoRig> ReadStereoCalibration(const std::string& path) {
   Status valid = rig.Validate();
   if (!valid.ok()) return ParseError(path + ": key 'T': " + valid.message());
   return rig;
+}
+
+}  // namespace sightline
+
+namespace sightline {
+
+Status WriteHandEyeCalibration(const HandEyeResult& result, const std::string& path) {
+  cv::FileStorage fs;
+  SIGHTLINE_RETURN_IF_ERROR(Open(&fs, path));
+  fs.writeComment("Sightline hand-eye calibration (" + result.method + ", " +
+                  std::to_string(result.pairs) + " pairs): end_effector_from_camera is the "
+                  "camera's optical frame in the end-effector frame, metres");
+  const Eigen::Isometry3d& t = result.end_effector_from_camera;
+  const Eigen::Quaterniond q(t.linear());
+  fs << "end_effector_from_camera" << "{";
+  fs << "translation" << std::vector<double>{t.translation().x(), t.translation().y(),
+                                             t.translation().z()};
+  fs << "quaternion_xyzw" << std::vector<double>{q.x(), q.y(), q.z(), q.w()};
+  fs << "}";
+  cv::Mat r(3, 3, CV_64F);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) r.at<double>(i, j) = t.linear()(i, j);
+  }
+  fs << "rotation" << r;
+  fs << "method" << result.method << "pairs" << result.pairs;
+  fs << "max_rotation_deg" << result.max_rotation_deg;
+  fs << "board_rotation_rms_deg" << result.board_rotation_rms_deg;
+  fs << "board_translation_rms_m" << result.board_translation_rms_m;
+  fs.release();
+  return Status::Ok();
+}
+
+StatusOr<Eigen::Isometry3d> ReadEndEffectorFromCamera(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) return NotFound(path + " does not exist");
+  // The simulator writes plain YAML without OpenCV's "%YAML:1.0" line, which FileStorage needs.
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string content = text.str();
+  if (content.rfind("%YAML", 0) != 0) content = "%YAML:1.0\n---\n" + content;
+  cv::FileStorage fs;
+  try {
+    if (!fs.open(content, cv::FileStorage::READ | cv::FileStorage::MEMORY |
+                              cv::FileStorage::FORMAT_YAML)) {
+      return ParseError(path + ": not a YAML file");
+    }
+  } catch (const cv::Exception& e) {
+    return ParseError(path + ": not a YAML file (" + e.err + ")");
+  }
+  const cv::FileNode node = fs["end_effector_from_camera"];
+  if (node.empty() || !node.isMap()) {
+    return ParseError(path + ": key 'end_effector_from_camera' is missing");
+  }
+  std::vector<double> t, q;
+  try {
+    node["translation"] >> t;
+    node["quaternion_xyzw"] >> q;
+  } catch (const cv::Exception&) {
+    t.clear();
+  }
+  if (t.size() != 3 || q.size() != 4) {
+    return ParseError(path + ": end_effector_from_camera needs 'translation' (3 numbers) and "
+                      "'quaternion_xyzw' (4 numbers)");
+  }
+  const Eigen::Quaterniond quaternion(q[3], q[0], q[1], q[2]);
+  if (!(std::abs(quaternion.norm() - 1) < 1e-3)) {
+    return ParseError(path + ": end_effector_from_camera.quaternion_xyzw is not a unit quaternion");
+  }
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = quaternion.normalized().toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+  return pose;
 }
 
 }  // namespace sightline

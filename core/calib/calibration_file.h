@@ -10,6 +10,7 @@
 
 #include <string>
 
+#include "core/calib/hand_eye.h"
 #include "core/calib/mono_calibration.h"
 #include "core/calib/stereo_calibration.h"
 #include "core/common/camera.h"
@@ -31,5 +32,13 @@ Status WriteStereoCalibration(const StereoCalibration& calibration,
 // Reads an OpenCV stereo file (M1 D1 M2 D2 R T, image_width/height) into a rig. NotFound when
 // missing; ParseError naming the file and the missing or malformed field.
 StatusOr<StereoRig> ReadStereoCalibration(const std::string& path);
+
+// Writes a hand-eye result in the layout of the simulator's hand_eye.yaml (end_effector_from_camera
+// with translation [m] and quaternion_xyzw), plus the rotation matrix and the fit's figures.
+Status WriteHandEyeCalibration(const HandEyeResult& result, const std::string& path);
+
+// Reads end_effector_from_camera (translation + quaternion_xyzw) from a hand-eye file: the
+// simulator's hand_eye.yaml or WriteHandEyeCalibration's. ParseError naming file and key.
+StatusOr<Eigen::Isometry3d> ReadEndEffectorFromCamera(const std::string& path);
 
 }  // namespace sightline
