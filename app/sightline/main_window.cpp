@@ -20,6 +20,7 @@
 #include <QToolBar>
 
 #include "app/sightline/demo_generator.h"
+#include "app/sightline/calibration_dialog.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/pipeline_presenter.h"
 #include "app/sightline/playback_controller.h"
@@ -155,6 +156,10 @@ void MainWindow::BuildMenus() {
   connect(evaluate, &QAction::triggered, this, [this] {
     evaluation_dock_->show();
     evaluation_dock_->raise();
+  });
+  connect(tools->addAction(tr("&Calibrate camera...")), &QAction::triggered, this, [this] {
+    const SourceInfo* info = playback_->info();
+    OpenCalibrationDialog(this, info ? QString::fromStdString(info->path) : QString());
   });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -36,6 +36,7 @@ Status DetectInFile(const std::string& file, const ChessboardOptions& board, Boa
   StatusOr<cv::Mat> image = LoadImage8(file);
   if (!image.ok()) return image.status();
   view->name = BaseName(file);
+  view->path = file;
   view->image_size = image->size();
   *found = FindChessboard(*image, board, &view->corners);
   return Status::Ok();
@@ -241,7 +242,7 @@ StatusOr<Detections> DetectBoardsInSource(Source* source, const ChessboardOption
     }
     ++result.inputs;
     const double t = StampOf(*frame).sensor_time_s;
-    BoardView left{label, first.size(), {}, t}, right{label, second.size(), {}, t};
+    BoardView left{label, first.size(), {}, t, {}}, right{label, second.size(), {}, t, {}};
     const bool found = FindChessboard(first, board, &left.corners) &&
                        (!stereo || FindChessboard(second, board, &right.corners));
     if (found && IsNewView(left, result.views, options.min_change)) {

@@ -39,6 +39,7 @@ struct BoardView {
   cv::Size image_size;              // Pixels.
   std::vector<cv::Point2f> corners;  // Inner corners in the order of ObjectPoints(), pixels.
   double time_s = -1;               // Timestamp of a source frame, seconds; -1 for files.
+  std::string path;                 // The image file; empty for source frames.
 };
 
 // Finds the board in a grey or BGR image. Returns false when it is not found completely.
