@@ -79,9 +79,6 @@ TEST(CalibrateCli, BadInputFailsWithOneClearLine) {
   EXPECT_EQ(wrong_board.exit_code, 1);
   EXPECT_NE(wrong_board.out.find("no 9x7 chessboard found in any of 3 images"), std::string::npos)
       << wrong_board.out;
-  auto no_boards = Cli("calibrate mono " + dir + "/middlebury_aloe --images 'aloeL.jpg' --out " + out);
-  EXPECT_EQ(no_boards.exit_code, 1);
-  EXPECT_NE(no_boards.out.find("no 9x6 chessboard found"), std::string::npos) << no_boards.out;
   auto few = Cli("calibrate mono " + dir + " --images 'left0[1-3].jpg' --out " + out);
   EXPECT_EQ(few.exit_code, 1);
   EXPECT_NE(few.out.find("at least 5 needed"), std::string::npos) << few.out;

@@ -1,0 +1,98 @@
+// RunCalibration as the GUI runs it: image folders, and frames of a source (the image-folder
+// reader here, standing in for a recording or a camera) with view selection.
+#include "core/calib/calibration_job.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "board_renderer.h"
+#include "core/io/camera_yaml.h"
+#include "core/io/dataset.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+using ::sightline::testing::BoardFromCameraLookingAt;
+
+// Eight rendered views of the default board, written as frame_N.png with times.txt.
+std::string WriteViews() {
+  const std::string dir = ::sightline::testing::TempDir("calib_job_views");
+  PinholeCamera camera;
+  camera.width = 640;
+  camera.height = 480;
+  camera.fx = camera.fy = 500;
+  camera.cx = 320;
+  camera.cy = 240;
+  std::ofstream times(dir + "/times.txt");
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Isometry3d board_from_camera =
+        BoardFromCameraLookingAt(ChessboardOptions{}, 0.5, 15 + 5 * (i % 3), 45 * i, 0);
+    const std::string name = "frame_" + std::to_string(i) + ".png";
+    cv::imwrite(dir + "/" + name, ::sightline::testing::RenderBoardView(
+                                      camera, board_from_camera.inverse(), ChessboardOptions{}, 1, i));
+    times << 0.1 * i << " " << name << "\n";
+  }
+  return dir;
+}
+
+TEST(CalibrationJob, CalibratesAnImageFolderAndSavesACameraYaml) {
+  CalibrationRequest request;
+  request.input = WriteViews();
+  request.settings.mono.fix_k3 = true;
+  auto outcome = RunCalibration(request, nullptr);
+  ASSERT_TRUE(outcome.ok()) << outcome.status().ToString();
+  ASSERT_TRUE(outcome->mono.has_value());
+  EXPECT_EQ(outcome->detections.views.size(), 8u);
+  EXPECT_FALSE(outcome->detections.views[0].path.empty());
+  EXPECT_NEAR(outcome->mono->camera.fx, 500, 5);
+  EXPECT_NE(outcome->report.find("RMS "), std::string::npos);
+  const std::string path = request.input + "/out.yaml";
+  ASSERT_TRUE(SaveCalibration(*outcome, path).ok());
+  EXPECT_TRUE(ReadCameraYaml(path).ok());
+}
+
+TEST(CalibrationJob, ReadsFramesOfASourceWhenTheInputIsNoImageFolder) {
+  CalibrationRequest request;
+  request.input = WriteViews();
+  request.pattern = "no_such_image*";  // Not an image folder under this pattern: a source.
+  request.settings.mono.fix_k3 = true;
+  int opened = 0;
+  const SourceOpener open = [&opened](const std::string& path) {
+    ++opened;
+    return OpenDataset(path);
+  };
+  auto outcome = RunCalibration(request, open);
+  ASSERT_TRUE(outcome.ok()) << outcome.status().ToString();
+  EXPECT_EQ(opened, 1);
+  ASSERT_EQ(outcome->detections.views.size(), 8u);
+  EXPECT_NEAR(outcome->detections.views[3].time_s, 0.3, 1e-9);
+  EXPECT_NEAR(outcome->mono->camera.fx, 500, 5);
+
+  // Without an opener the same input is refused with a reason.
+  auto refused = RunCalibration(request, nullptr);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.status().message().find("not an image folder"), std::string::npos);
+  // A stereo request on a mono source says so.
+  request.stereo = true;
+  auto stereo = RunCalibration(request, open);
+  ASSERT_FALSE(stereo.ok());
+  EXPECT_NE(stereo.status().message().find("not a stereo source"), std::string::npos)
+      << stereo.status().message();
+}
+
+TEST(CalibrationJob, NewViewsMustDifferFromTheAcceptedOnes) {
+  BoardView a{"a", {640, 480}, {{100, 100}, {200, 100}, {200, 200}, {100, 200}}};
+  BoardView same = a;
+  BoardView moved = a;
+  for (auto& p : moved.corners) p.x += 100;
+  EXPECT_FALSE(IsNewView(same, {a}, 0.05));
+  EXPECT_TRUE(IsNewView(moved, {a}, 0.05));
+  EXPECT_TRUE(IsNewView(same, {a}, 0.0));
+  EXPECT_TRUE(IsNewView(same, {}, 0.05));
+}
+
+}  // namespace
+}  // namespace sightline
