@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/calib/board_detection.h"
 #include "core/calib/calibration_file.h"
@@ -69,6 +70,9 @@ TEST_F(HandEyeOnSimulatedArm, RecoversTheSimulatorsCameraMountFromImages) {
     auto result = CalibrateHandEye(ArmPoses(), boards, options);
     ASSERT_TRUE(result.ok()) << method << ": " << result.status().ToString();
     const Eigen::Isometry3d& truth = scene_->end_effector_from_camera;
+    std::printf("  %-10s rotation error %.4f deg, translation error %.3f mm\n", method.c_str(),
+                AngleBetweenDeg(result->end_effector_from_camera, truth),
+                1000 * (result->end_effector_from_camera.translation() - truth.translation()).norm());
     EXPECT_LT(AngleBetweenDeg(result->end_effector_from_camera, truth), 0.5) << method;
     EXPECT_LT((result->end_effector_from_camera.translation() - truth.translation()).norm(), 0.003)
         << method;
