@@ -300,4 +300,221 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation type="unfinished"></translation>
     </message>
 </context>
+<context>
+    <name>sightline::CalibrationDialog</name>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="80"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="95"/>
+        <source>&amp;Calibrate</source>
+        <translation>&amp;Kalibrieren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="96"/>
+        <source>&amp;Save YAML...</source>
+        <translation>YAML &amp;speichern...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="93"/>
+        <source>Board</source>
+        <translation>Brett</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="214"/>
+        <source>Board found in %1 of %2 %3.</source>
+        <translation>Brett in %1 von %2 %3 gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="60"/>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="42"/>
+        <source>Calibrate camera</source>
+        <translation>Kamera kalibrieren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="208"/>
+        <source>Calibration failed: %1</source>
+        <translation>Kalibrierung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="62"/>
+        <source>Calibration images</source>
+        <translation>Kalibrierbilder</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="108"/>
+        <source>Choose a source and the board, then press Calibrate.</source>
+        <translation>Quelle und Brett wählen, dann Kalibrieren drücken.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="171"/>
+        <source>Choose a source first.</source>
+        <translation>Zuerst eine Quelle wählen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="131"/>
+        <source>Coverage (views per cell)</source>
+        <translation>Abdeckung (Ansichten je Zelle)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="129"/>
+        <source>Detected corners</source>
+        <translation>Gefundene Ecken</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="305"/>
+        <source>Detected corners: %1 (%2 px)</source>
+        <translation>Gefundene Ecken: %1 (%2 px)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="177"/>
+        <source>Detecting the board...</source>
+        <translation>Suche das Brett...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
+        <source>Error (px)</source>
+        <translation>Fehler (px)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="69"/>
+        <source>File name pattern inside a mono image folder, e.g. left*.jpg</source>
+        <translation>Dateinamenmuster im Mono-Bildordner, z. B. left*.jpg</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="253"/>
+        <source>Hint: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="59"/>
+        <source>Image folder, stereo folder, recording or camera URI</source>
+        <translation>Bildordner, Stereo-Ordner, Aufnahme oder Kamera-URI</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="92"/>
+        <source>Image pattern</source>
+        <translation>Bildmuster</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="90"/>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="56"/>
+        <source>Mono (one camera)</source>
+        <translation>Mono (eine Kamera)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="336"/>
+        <source>Nothing to save: calibrate first.</source>
+        <translation>Nichts zu speichern: zuerst kalibrieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="350"/>
+        <source>OpenCV YAML (*.yaml *.yml)</source>
+        <translation>OpenCV-YAML (*.yaml *.yml)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="241"/>
+        <source>RMS %1 px; %2 views used, %3 rejected.</source>
+        <translation>RMS %1 px; %2 Ansichten verwendet, %3 verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="233"/>
+        <source>RMS left %1 px, right %2 px, stereo %3 px; baseline %4 mm; %5 of %6 pairs used.</source>
+        <translation>RMS links %1 px, rechts %2 px, Stereo %3 px; Basislinie %4 mm; %5 von %6 Paaren verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
+        <source>Right error (px)</source>
+        <translation>Fehler rechts (px)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="349"/>
+        <source>Save calibration</source>
+        <translation>Kalibrierung speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="344"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="353"/>
+        <source>Saving failed: %1</source>
+        <translation>Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="91"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="57"/>
+        <source>Stereo (left and right)</source>
+        <translation>Stereo (links und rechts)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="247"/>
+        <source>fx %1 fy %2 cx %3 cy %4; coverage: %5</source>
+        <translation>fx %1 fy %2 cx %3 cy %4; Abdeckung: %5</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="217"/>
+        <source>images</source>
+        <translation>Bildern</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="85"/>
+        <source>inner corners, squares of</source>
+        <translation>innere Ecken, Felder von</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="217"/>
+        <source>pairs</source>
+        <translation>Paaren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="278"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="292"/>
+        <source>rejected</source>
+        <translation>verworfen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="278"/>
+        <source>used</source>
+        <translation>verwendet</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="83"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MainWindow</name>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="160"/>
+        <source>&amp;Calibrate camera...</source>
+        <translation>Kamera &amp;kalibrieren...</translation>
+    </message>
+</context>
 </TS>
