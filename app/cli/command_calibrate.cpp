@@ -8,6 +8,7 @@
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
 #include "core/calib/calibration_file.h"
+#include "core/calib/calibration_job.h"
 #include "core/calib/calibration_report.h"
 #include "core/common/trajectory.h"
 #include "core/io/camera_yaml.h"
@@ -48,77 +49,46 @@ struct Context {
   int frames = 2000;
 };
 
-bool IsImageFolder(const std::string& path, const std::string& pattern) {
-  return std::filesystem::is_directory(path) && ListCalibrationImages(path, pattern).ok();
-}
-
-StatusOr<Detections> FromSource(const std::string& uri, const Context& c, bool* live) {
-  auto source = OpenSource(uri);
-  if (!source.ok()) return source.status();
-  *live = (*source)->info().live;
-  SourceDetectionOptions options;
-  options.max_frames = c.frames;
-  options.min_change = *live ? 0.05 : 0.0;  // A camera repeats views; keep the new ones.
-  std::fprintf(stderr, "examining up to %d frames of %s\n", c.frames, uri.c_str());
-  return DetectBoardsInSource(source->get(), c.settings.board, options);
-}
-
-int Mono(const std::vector<std::string>& in, const std::string& pattern, const Context& c) {
-  if (in.size() != 1) return Fail("calibrate mono: expected one DIR_OR_SOURCE (see --help)");
-  StatusOr<Detections> detections = Status(StatusCode::kInternal, "unset");
-  if (IsImageFolder(in[0], pattern)) {
-    auto files = ListCalibrationImages(in[0], pattern);
-    detections = DetectBoardsInFiles(*files, c.settings.board);
-  } else {
-    bool live = false;
-    detections = FromSource(in[0], c, &live);
-  }
-  if (!detections.ok()) return Fail("calibrate mono: " + detections.status().ToString());
-  auto calibration =
-      CalibrateMono(detections->views, c.settings.board, c.settings.mono, c.settings.coverage);
-  if (!calibration.ok()) return Fail("calibrate mono: " + calibration.status().ToString());
-  std::fputs(MonoReport(*calibration, *detections).c_str(), stdout);
-  Status written = WriteMonoCalibration(*calibration, c.settings.board, c.out);
-  if (!written.ok()) return Fail("calibrate mono: " + written.ToString());
-  std::printf("wrote %s\n", c.out.c_str());
-  return 0;
-}
-
-int Stereo(const std::vector<std::string>& in, const Context& c) {
-  StatusOr<Detections> detections = Status(StatusCode::kInternal, "unset");
-  if (in.size() == 2) {
+// Mono and stereo: folders, recordings and cameras through RunCalibration (as the GUI does).
+int MonoOrStereo(bool stereo, const std::vector<std::string>& in, const std::string& pattern,
+                 const Context& c) {
+  const char* what = stereo ? "calibrate stereo: " : "calibrate mono: ";
+  CalibrationRequest request;
+  request.stereo = stereo;
+  request.pattern = pattern;
+  request.settings = c.settings;
+  request.max_frames = c.frames;
+  if (stereo && in.size() == 2) {
+    // Two folders: pair their images by position.
     auto left = ListCalibrationImages(in[0]);
-    if (!left.ok()) return Fail("calibrate stereo: " + left.status().ToString());
+    if (!left.ok()) return Fail(what + left.status().ToString());
     auto right = ListCalibrationImages(in[1]);
-    if (!right.ok()) return Fail("calibrate stereo: " + right.status().ToString());
+    if (!right.ok()) return Fail(what + right.status().ToString());
     auto files = PairImageLists(*left, *right);
-    if (!files.ok()) return Fail("calibrate stereo: " + files.status().ToString());
-    detections = DetectBoardsInPairs(*files, c.settings.board);
+    if (!files.ok()) return Fail(what + files.status().ToString());
+    request.input = in[0] + " + " + in[1];
+    request.files = std::move(*files);
   } else if (in.size() == 1) {
-    auto files = FindStereoImages(in[0]);
-    if (files.ok()) {
-      detections = DetectBoardsInPairs(*files, c.settings.board);
-    } else {
-      bool live = false;
-      detections = FromSource(in[0], c, &live);
-      if (!detections.ok()) detections = files.status();  // Say what the folder lacks.
-    }
+    request.input = in[0];
   } else {
-    return Fail("calibrate stereo: expected DIR or LEFT_DIR RIGHT_DIR (see --help)");
+    return Fail(std::string(what) + "expected " +
+                (stereo ? "DIR or LEFT_DIR RIGHT_DIR" : "one DIR_OR_SOURCE") + " (see --help)");
   }
-  if (!detections.ok()) return Fail("calibrate stereo: " + detections.status().ToString());
-  if (detections->right_views.size() != detections->views.size()) {
-    return Fail("calibrate stereo: " + in[0] + " is not a stereo source");
+  const SourceOpener open = [](const std::string& uri) {
+    std::fprintf(stderr, "reading frames of %s\n", uri.c_str());
+    return OpenSource(uri);
+  };
+  auto outcome = RunCalibration(request, open);
+  if (!outcome.ok()) return Fail(what + outcome.status().ToString());
+  std::fputs(outcome->report.c_str(), stdout);
+  Status written = SaveCalibration(*outcome, c.out);
+  if (!written.ok()) return Fail(what + written.ToString());
+  if (stereo) {
+    std::printf("wrote %s, %s, %s\n", c.out.c_str(), StereoCameraFilePath(c.out, "left").c_str(),
+                StereoCameraFilePath(c.out, "right").c_str());
+  } else {
+    std::printf("wrote %s\n", c.out.c_str());
   }
-  auto calibration = CalibrateStereo(detections->views, detections->right_views,
-                                     c.settings.board, c.settings.mono, c.settings.stereo,
-                                     c.settings.coverage);
-  if (!calibration.ok()) return Fail("calibrate stereo: " + calibration.status().ToString());
-  std::fputs(StereoReport(*calibration, *detections).c_str(), stdout);
-  Status written = WriteStereoCalibration(*calibration, c.settings.board, c.out);
-  if (!written.ok()) return Fail("calibrate stereo: " + written.ToString());
-  std::printf("wrote %s, %s, %s\n", c.out.c_str(), StereoCameraFilePath(c.out, "left").c_str(),
-              StereoCameraFilePath(c.out, "right").c_str());
   return 0;
 }
 
@@ -220,8 +190,8 @@ int CalibrateCommand(const std::vector<std::string>& args) {
   c.out = *parsed->Value("--out");
   const std::string mode = positionals[0];
   const std::vector<std::string> inputs(positionals.begin() + 1, positionals.end());
-  if (mode == "mono") return Mono(inputs, parsed->Value("--images").value_or("*"), c);
-  if (mode == "stereo") return Stereo(inputs, c);
+  const std::string pattern = parsed->Value("--images").value_or("*");
+  if (mode == "mono" || mode == "stereo") return MonoOrStereo(mode == "stereo", inputs, pattern, c);
   if (mode == "handeye") return HandEye(inputs, parsed->Value("--camera"), c);
   return Fail("calibrate: unknown mode '" + mode + "' (mono, stereo, handeye, floor)");
 }

@@ -23,6 +23,7 @@ StatusOr<Detections> Detect(const CalibrationRequest& request, const SourceOpene
   const CalibrationSettings& s = request.settings;
   const bool folder = std::filesystem::is_directory(request.input);
   if (request.stereo) {
+    if (request.files) return DetectBoardsInPairs(*request.files, s.board, callbacks);
     if (folder) {
       auto files = FindStereoImages(request.input);
       if (files.ok()) return DetectBoardsInPairs(*files, s.board, callbacks);
@@ -37,6 +38,8 @@ StatusOr<Detections> Detect(const CalibrationRequest& request, const SourceOpene
   if (folder) {
     auto files = ListCalibrationImages(request.input, request.pattern);
     if (files.ok()) return DetectBoardsInFiles(*files, s.board, callbacks);
+    // A pattern that matches nothing is a mistake, not a request to read the whole folder.
+    if (request.pattern != "*") return files.status();
   }
   return FromSource(request, open, callbacks);
 }

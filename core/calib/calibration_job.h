@@ -19,6 +19,8 @@ struct CalibrationRequest {
   // FindStereoImages) or a stereo source.
   std::string input;
   std::string pattern = "*";
+  // Stereo: explicit left/right files (e.g. two folders); when set, `input` only names them.
+  std::optional<StereoImageFiles> files;
   CalibrationSettings settings;
   int max_frames = 2000;  // Sources only.
 };

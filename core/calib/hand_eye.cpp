@@ -191,7 +191,7 @@ StatusOr<std::vector<Eigen::Isometry3d>> BoardPoses(const std::vector<BoardView>
                                                     const PinholeCamera& camera,
                                                     const ChessboardOptions& board,
                                                     std::vector<double>* rms_px) {
-  SIGHTLINE_RETURN_IF_ERROR(calib_internal::CheckViews(views, board, 1, "board poses"));
+  SIGHTLINE_RETURN_IF_ERROR(calib_internal::CheckViews(views, board, 1, "board poses", "one view"));
   const std::vector<cv::Point3f> object = board.ObjectPoints();
   const cv::Mat k = calib_internal::CameraMatrix(camera);
   const cv::Mat d = calib_internal::DistortionVector(camera);

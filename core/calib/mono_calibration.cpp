@@ -63,13 +63,13 @@ PinholeCamera ToCamera(const cv::Mat& k, const cv::Mat& d, cv::Size size) {
 }
 
 Status CheckViews(const std::vector<BoardView>& views, const ChessboardOptions& board,
-                  int min_views, const std::string& what) {
+                  int min_views, const std::string& what, const std::string& min_key) {
   std::string error;
   if (!board.IsValid(&error)) return InvalidArgument(error);
   if (static_cast<int>(views.size()) < min_views) {
     return InvalidArgument(what + ": " + std::to_string(views.size()) + " views with a " +
                            board.SizeText() + " board, at least " + std::to_string(min_views) +
-                           " needed (calib.mono.min_views)");
+                           " needed (" + min_key + ")");
   }
   const size_t corners = static_cast<size_t>(board.columns) * board.rows;
   for (const BoardView& view : views) {
@@ -151,7 +151,8 @@ StatusOr<MonoCalibration> CalibrateMono(const std::vector<BoardView>& views,
   std::string error;
   if (!options.IsValid(&error) || !coverage.IsValid(&error)) return InvalidArgument(error);
   SIGHTLINE_RETURN_IF_ERROR(
-      calib_internal::CheckViews(views, board, options.min_views, "mono calibration"));
+      calib_internal::CheckViews(views, board, options.min_views, "mono calibration",
+                                 "calib.mono.min_views"));
   MonoCalibration result;
   result.views.resize(views.size());
   for (size_t i = 0; i < views.size(); ++i) {

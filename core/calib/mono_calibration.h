@@ -60,9 +60,10 @@ namespace calib_internal {
 cv::Mat CameraMatrix(const PinholeCamera& camera);
 cv::Mat DistortionVector(const PinholeCamera& camera);
 PinholeCamera ToCamera(const cv::Mat& k, const cv::Mat& d, cv::Size size);
-// Checks sizes and corner counts of views; names the offending view.
+// Checks sizes and corner counts of views; names the offending view. `min_key` is the option
+// that sets min_views, for the message.
 Status CheckViews(const std::vector<BoardView>& views, const ChessboardOptions& board,
-                  int min_views, const std::string& what);
+                  int min_views, const std::string& what, const std::string& min_key);
 }  // namespace calib_internal
 
 }  // namespace sightline

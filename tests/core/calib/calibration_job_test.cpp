@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
@@ -17,9 +18,10 @@ namespace {
 
 using ::sightline::testing::BoardFromCameraLookingAt;
 
-// Eight rendered views of the default board, written as frame_N.png with times.txt.
-std::string WriteViews() {
-  const std::string dir = ::sightline::testing::TempDir("calib_job_views");
+// Eight rendered views of the default board, written to `dir` as frame_N.png with times.txt.
+std::string WriteViews(std::string dir = "") {
+  if (dir.empty()) dir = ::sightline::testing::TempDir("calib_job_views");
+  std::filesystem::create_directories(dir);
   PinholeCamera camera;
   camera.width = 640;
   camera.height = 480;
@@ -55,15 +57,25 @@ TEST(CalibrationJob, CalibratesAnImageFolderAndSavesACameraYaml) {
 }
 
 TEST(CalibrationJob, ReadsFramesOfASourceWhenTheInputIsNoImageFolder) {
-  CalibrationRequest request;
-  request.input = WriteViews();
-  request.pattern = "no_such_image*";  // Not an image folder under this pattern: a source.
-  request.settings.mono.fix_k3 = true;
+  const std::string recording = ::sightline::testing::TempDir("calib_job_recording");
+  WriteViews(recording + "/mono");  // A recording with one sensor folder: no images at the top.
   int opened = 0;
   const SourceOpener open = [&opened](const std::string& path) {
     ++opened;
     return OpenDataset(path);
   };
+  CalibrationRequest request;
+  request.settings.mono.fix_k3 = true;
+  // A pattern matching nothing is an error, never a silent switch to reading the folder.
+  request.input = recording + "/mono";
+  request.pattern = "no_such_image*";
+  auto typo = RunCalibration(request, open);
+  ASSERT_FALSE(typo.ok());
+  EXPECT_NE(typo.status().message().find("matches 'no_such_image*'"), std::string::npos)
+      << typo.status().message();
+  EXPECT_EQ(opened, 0);
+  request.input = recording;
+  request.pattern = "*";
   auto outcome = RunCalibration(request, open);
   ASSERT_TRUE(outcome.ok()) << outcome.status().ToString();
   EXPECT_EQ(opened, 1);
