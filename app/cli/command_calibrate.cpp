@@ -31,7 +31,8 @@ const char kHelp[] =
     "           Writes a camera.yaml that the dataset readers accept.\n"
     "  stereo   DIR with left/ and right/ (or image_0/ image_1/, cam0/ cam1/) or files named\n"
     "           left*/right*; or two folders; or a stereo recording or camera. Writes OpenCV's\n"
-    "           stereo file (M1 D1 M2 D2 R T E F R1 R2 P1 P2 Q) and FILE_left.yaml, FILE_right.yaml.\n"
+    "           stereo file (M1 D1 M2 D2 R T E F R1 R2 P1 P2 Q) and FILE_left.yaml, "
+    "FILE_right.yaml.\n"
     "  handeye  POSES: TUM file of base_from_end_effector (the simulator's arm_poses.txt);\n"
     "           VIEWS: image folder with times.txt and camera.yaml (or --camera FILE). Views are\n"
     "           paired with poses by timestamp. Writes end_effector_from_camera.\n"
@@ -115,8 +116,8 @@ int HandEye(const std::vector<std::string>& in, const std::optional<std::string>
   auto detections = DetectBoardsInSource(source->get(), c.settings.board, options);
   if (!detections.ok()) return Fail("calibrate handeye: " + detections.status().ToString());
   std::vector<int> kept;
-  const std::vector<Eigen::Isometry3d> arm = ArmPosesForViews(
-      *poses, detections->views, c.settings.hand_eye.max_time_offset_s, &kept);
+  const std::vector<Eigen::Isometry3d> arm =
+      ArmPosesForViews(*poses, detections->views, c.settings.hand_eye.max_time_offset_s, &kept);
   std::vector<BoardView> views;
   for (int i : kept) views.push_back(detections->views[i]);
   std::printf("board found in %zu of %d views, %zu paired with an arm pose within %.3f s\n",
@@ -145,7 +146,8 @@ int CalibrateCommand(const std::vector<std::string>& args) {
     return FloorCommand(std::vector<std::string>(args.begin() + 1, args.end()));
   }
   StatusOr<CliArgs> parsed = CliArgs::Parse(
-      args, {"--out", "--board", "--square", "--images", "--method", "--frames", "--camera", "--set"},
+      args,
+      {"--out", "--board", "--square", "--images", "--method", "--frames", "--camera", "--set"},
       {"--help", "--options"});
   if (!parsed.ok()) return Fail("calibrate: " + parsed.status().message());
   OptionSet options;
@@ -160,7 +162,8 @@ int CalibrateCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::vector<std::string>& positionals = parsed->positionals();
-  if (positionals.empty()) return Fail("calibrate: expected mono, stereo, handeye or floor (see --help)");
+  if (positionals.empty())
+    return Fail("calibrate: expected mono, stereo, handeye or floor (see --help)");
   for (const std::string& assignment : parsed->Values("--set")) {
     Status s = options.ApplyOverride(assignment);
     if (!s.ok()) return Fail("calibrate: " + s.ToString());

@@ -146,7 +146,9 @@ void CalibrationDialog::BuildUi() {
   layout->addWidget(split, 1);
 }
 
-void CalibrationDialog::SetSource(const QString& path_or_uri) { source_edit_->setText(path_or_uri); }
+void CalibrationDialog::SetSource(const QString& path_or_uri) {
+  source_edit_->setText(path_or_uri);
+}
 
 void CalibrationDialog::Calibrate(bool stereo, const QString& input, const QString& pattern,
                                   int columns, int rows, double square_m) {
@@ -163,7 +165,9 @@ void CalibrationDialog::StartFromForm() {
   CalibrationRequest request;
   request.stereo = mode_combo_->currentIndex() == 1;
   request.input = source_edit_->text().trimmed().toStdString();
-  request.pattern = pattern_edit_->text().trimmed().isEmpty() ? "*" : pattern_edit_->text().trimmed().toStdString();
+  request.pattern = pattern_edit_->text().trimmed().isEmpty()
+                        ? "*"
+                        : pattern_edit_->text().trimmed().toStdString();
   request.settings.board.columns = columns_spin_->value();
   request.settings.board.rows = rows_spin_->value();
   request.settings.board.square_size_m = square_spin_->value() / 1000.0;
@@ -184,18 +188,24 @@ void CalibrationDialog::StartFromForm() {
     DetectionCallbacks callbacks;
     callbacks.cancel = cancel.get();
     callbacks.progress = [this, self](int done, int total) {
-      QMetaObject::invokeMethod(this, [self, done, total] {
-        if (!self) return;
-        self->progress_->setRange(0, total);
-        self->progress_->setValue(done);
-      }, Qt::QueuedConnection);
+      QMetaObject::invokeMethod(
+          this,
+          [self, done, total] {
+            if (!self) return;
+            self->progress_->setRange(0, total);
+            self->progress_->setValue(done);
+          },
+          Qt::QueuedConnection);
     };
     const SourceOpener open = [](const std::string& uri) { return OpenSource(uri); };
     auto result = std::make_shared<const StatusOr<CalibrationOutcome>>(
         RunCalibration(request, open, callbacks));
-    QMetaObject::invokeMethod(this, [self, generation, result] {
-      if (self && generation == self->generation_) self->Show(result);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this,
+        [self, generation, result] {
+          if (self && generation == self->generation_) self->Show(result);
+        },
+        Qt::QueuedConnection);
   });
 }
 
@@ -250,7 +260,8 @@ QString CalibrationDialog::FiguresText() const {
                      .arg(c.cx, 0, 'f', 2)
                      .arg(c.cy, 0, 'f', 2)
                      .arg(Qs(first.coverage.Summary()));
-  for (const std::string& hint : first.coverage.Hints()) text += "\n" + tr("Hint: %1").arg(Qs(hint));
+  for (const std::string& hint : first.coverage.Hints())
+    text += "\n" + tr("Hint: %1").arg(Qs(hint));
   return text;
 }
 
@@ -302,8 +313,8 @@ void CalibrationDialog::ShowView(int row) {
   }
   corner_view_->SetImage(image);
   corner_view_->SetOverlay(std::move(overlay));
-  corner_view_->SetTitle(tr("Detected corners: %1 (%2 px)")
-                             .arg(Qs(view.name), view_errors_->item(row, 1)->text()));
+  corner_view_->SetTitle(
+      tr("Detected corners: %1 (%2 px)").arg(Qs(view.name), view_errors_->item(row, 1)->text()));
 }
 
 void CalibrationDialog::ShowCoverage() {
@@ -320,11 +331,12 @@ void CalibrationDialog::ShowCoverage() {
                           static_cast<int>(cw) + 1, static_cast<int>(ch) + 1);
       // Dark red: no view; green, brighter with more views (saturating at 4).
       const double level = std::min(n, 4) / 4.0;
-      const cv::Scalar colour = n == 0 ? cv::Scalar(30, 30, 110) : cv::Scalar(40, 90 + 160 * level, 40);
+      const cv::Scalar colour =
+          n == 0 ? cv::Scalar(30, 30, 110) : cv::Scalar(40, 90 + 160 * level, 40);
       cv::rectangle(canvas, cell, colour, cv::FILLED);
       cv::rectangle(canvas, cell, cv::Scalar(90, 90, 90), 1);
-      overlay.texts.push_back({QPointF(col * cw + cw * 0.4, row * ch + ch * 0.6), QString::number(n),
-                               QColor(Qt::white)});
+      overlay.texts.push_back({QPointF(col * cw + cw * 0.4, row * ch + ch * 0.6),
+                               QString::number(n), QColor(Qt::white)});
     }
   }
   coverage_view_->SetImage(canvas);

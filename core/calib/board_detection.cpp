@@ -45,9 +45,9 @@ Status DetectInFile(const std::string& file, const ChessboardOptions& board, Boa
 Status CheckSize(const BoardView& view, const std::vector<BoardView>& views) {
   if (views.empty() || view.image_size == views[0].image_size) return Status::Ok();
   return InvalidArgument("image '" + view.name + "' is " + std::to_string(view.image_size.width) +
-                         "x" + std::to_string(view.image_size.height) + " but '" +
-                         views[0].name + "' is " + std::to_string(views[0].image_size.width) +
-                         "x" + std::to_string(views[0].image_size.height) +
+                         "x" + std::to_string(view.image_size.height) + " but '" + views[0].name +
+                         "' is " + std::to_string(views[0].image_size.width) + "x" +
+                         std::to_string(views[0].image_size.height) +
                          "; calibrate one camera at one resolution");
 }
 
@@ -94,8 +94,8 @@ StatusOr<StereoImageFiles> PairImageLists(std::vector<std::string> left,
 
 StatusOr<StereoImageFiles> FindStereoImages(const std::string& dir) {
   if (!std::filesystem::is_directory(dir)) return NotFound(dir + " is not a folder");
-  for (const auto& [l, r] : {std::pair{"left", "right"}, std::pair{"image_0", "image_1"},
-                             std::pair{"cam0", "cam1"}}) {
+  for (const auto& [l, r] :
+       {std::pair{"left", "right"}, std::pair{"image_0", "image_1"}, std::pair{"cam0", "cam1"}}) {
     const std::string ld = Join(dir, l), rd = Join(dir, r);
     if (std::filesystem::is_directory(ld) && std::filesystem::is_directory(rd)) {
       auto left = ListCalibrationImages(ld);
@@ -113,7 +113,8 @@ StatusOr<StereoImageFiles> FindStereoImages(const std::string& dir) {
     if (name.rfind("right", 0) == 0) right_by_key[name.substr(5)] = Join(dir, name);
   }
   if (left_by_key.empty() && right_by_key.empty()) {
-    return NotFound(dir + " holds no stereo images: expected left/ and right/ (or image_0/ and "
+    return NotFound(dir +
+                    " holds no stereo images: expected left/ and right/ (or image_0/ and "
                     "image_1/, cam0/ and cam1/) folders, or files named left*/right*");
   }
   StereoImageFiles files;
@@ -190,7 +191,8 @@ StatusOr<Detections> DetectBoardsInPairs(const StereoImageFiles& files,
     if (callbacks.progress) callbacks.progress(result.inputs, static_cast<int>(files.left.size()));
   }
   if (result.views.empty()) {
-    return NoBoardError(board, result.inputs, BaseName(files.left[0]), "stereo pairs (both images)");
+    return NoBoardError(board, result.inputs, BaseName(files.left[0]),
+                        "stereo pairs (both images)");
   }
   return result;
 }
@@ -238,7 +240,8 @@ StatusOr<Detections> DetectBoardsInSource(Source* source, const ChessboardOption
     } else if (const auto* r = std::get_if<RgbdFrame>(&*frame)) {
       first = r->color;
     } else {
-      return InvalidArgument(info.path + ": point clouds cannot be used for chessboard calibration");
+      return InvalidArgument(info.path +
+                             ": point clouds cannot be used for chessboard calibration");
     }
     ++result.inputs;
     const double t = StampOf(*frame).sensor_time_s;

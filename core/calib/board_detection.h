@@ -22,8 +22,8 @@ struct DetectionCallbacks {
 
 // Boards found in a set of images.
 struct Detections {
-  std::vector<BoardView> views;           // Mono: one per image with a board.
-  std::vector<BoardView> right_views;     // Stereo: right[i] pairs with views[i].
+  std::vector<BoardView> views;            // Mono: one per image with a board.
+  std::vector<BoardView> right_views;      // Stereo: right[i] pairs with views[i].
   std::vector<std::string> without_board;  // Images (or pairs) where the board was not found.
   int inputs = 0;                          // Images or pairs examined.
 };

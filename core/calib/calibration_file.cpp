@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <opencv2/core/persistence.hpp>
+#include <sstream>
 
 namespace sightline {
 namespace {
@@ -20,7 +20,8 @@ std::string Format(const char* format, double value) {
 
 // The camera.yaml keys (core/io/camera_yaml.h) of one camera.
 void WriteCameraKeys(cv::FileStorage& fs, const PinholeCamera& c) {
-  fs << "model" << "pinhole";
+  fs << "model"
+     << "pinhole";
   fs << "width" << c.width << "height" << c.height;
   fs << "fx" << c.fx << "fy" << c.fy << "cx" << c.cx << "cy" << c.cy;
   fs << "distortion" << std::vector<double>(c.distortion.begin(), c.distortion.end());
@@ -165,7 +166,8 @@ StatusOr<StereoRig> ReadStereoCalibration(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) return NotFound(path + " does not exist");
   cv::FileStorage fs;
   try {
-    if (!fs.open(path, cv::FileStorage::READ)) return ParseError(path + ": not an OpenCV YAML/XML file");
+    if (!fs.open(path, cv::FileStorage::READ))
+      return ParseError(path + ": not an OpenCV YAML/XML file");
   } catch (const cv::Exception& e) {
     return ParseError(path + ": not an OpenCV YAML/XML file (" + e.err + ")");
   }
@@ -201,13 +203,15 @@ Status WriteHandEyeCalibration(const HandEyeResult& result, const std::string& p
   cv::FileStorage fs;
   SIGHTLINE_RETURN_IF_ERROR(Open(&fs, path));
   fs.writeComment("Sightline hand-eye calibration (" + result.method + ", " +
-                  std::to_string(result.pairs) + " pairs): end_effector_from_camera is the "
+                  std::to_string(result.pairs) +
+                  " pairs): end_effector_from_camera is the "
                   "camera's optical frame in the end-effector frame, metres");
   const Eigen::Isometry3d& t = result.end_effector_from_camera;
   const Eigen::Quaterniond q(t.linear());
-  fs << "end_effector_from_camera" << "{";
-  fs << "translation" << std::vector<double>{t.translation().x(), t.translation().y(),
-                                             t.translation().z()};
+  fs << "end_effector_from_camera"
+     << "{";
+  fs << "translation"
+     << std::vector<double>{t.translation().x(), t.translation().y(), t.translation().z()};
   fs << "quaternion_xyzw" << std::vector<double>{q.x(), q.y(), q.z(), q.w()};
   fs << "}";
   cv::Mat r(3, 3, CV_64F);
@@ -233,8 +237,8 @@ StatusOr<Eigen::Isometry3d> ReadEndEffectorFromCamera(const std::string& path) {
   if (content.rfind("%YAML", 0) != 0) content = "%YAML:1.0\n---\n" + content;
   cv::FileStorage fs;
   try {
-    if (!fs.open(content, cv::FileStorage::READ | cv::FileStorage::MEMORY |
-                              cv::FileStorage::FORMAT_YAML)) {
+    if (!fs.open(content,
+                 cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML)) {
       return ParseError(path + ": not a YAML file");
     }
   } catch (const cv::Exception& e) {
@@ -252,7 +256,8 @@ StatusOr<Eigen::Isometry3d> ReadEndEffectorFromCamera(const std::string& path) {
     t.clear();
   }
   if (t.size() != 3 || q.size() != 4) {
-    return ParseError(path + ": end_effector_from_camera needs 'translation' (3 numbers) and "
+    return ParseError(path +
+                      ": end_effector_from_camera needs 'translation' (3 numbers) and "
                       "'quaternion_xyzw' (4 numbers)");
   }
   const Eigen::Quaterniond quaternion(q[3], q[0], q[1], q[2]);

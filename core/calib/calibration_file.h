@@ -26,8 +26,8 @@ Status WriteMonoCalibration(const MonoCalibration& calibration, const Chessboard
 std::string StereoCameraFilePath(const std::string& stereo_path, const std::string& side);
 
 // Writes a stereo calibration in OpenCV's layout plus the two camera.yaml files.
-Status WriteStereoCalibration(const StereoCalibration& calibration,
-                              const ChessboardOptions& board, const std::string& path);
+Status WriteStereoCalibration(const StereoCalibration& calibration, const ChessboardOptions& board,
+                              const std::string& path);
 
 // Reads an OpenCV stereo file (M1 D1 M2 D2 R T, image_width/height) into a rig. NotFound when
 // missing; ParseError naming the file and the missing or malformed field.

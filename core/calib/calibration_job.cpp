@@ -59,8 +59,8 @@ StatusOr<CalibrationOutcome> RunCalibration(const CalibrationRequest& request,
   outcome.detections = std::move(*detections);
   const CalibrationSettings& s = request.settings;
   if (request.stereo) {
-    auto stereo = CalibrateStereo(outcome.detections.views, outcome.detections.right_views,
-                                  s.board, s.mono, s.stereo, s.coverage);
+    auto stereo = CalibrateStereo(outcome.detections.views, outcome.detections.right_views, s.board,
+                                  s.mono, s.stereo, s.coverage);
     if (!stereo.ok()) return stereo.status();
     outcome.report = StereoReport(*stereo, outcome.detections);
     outcome.stereo = std::move(*stereo);
@@ -74,8 +74,10 @@ StatusOr<CalibrationOutcome> RunCalibration(const CalibrationRequest& request,
 }
 
 Status SaveCalibration(const CalibrationOutcome& outcome, const std::string& path) {
-  if (outcome.stereo) return WriteStereoCalibration(*outcome.stereo, outcome.request.settings.board, path);
-  if (outcome.mono) return WriteMonoCalibration(*outcome.mono, outcome.request.settings.board, path);
+  if (outcome.stereo)
+    return WriteStereoCalibration(*outcome.stereo, outcome.request.settings.board, path);
+  if (outcome.mono)
+    return WriteMonoCalibration(*outcome.mono, outcome.request.settings.board, path);
   return FailedPrecondition("no calibration to save");
 }
 

@@ -17,10 +17,11 @@ std::string Printf(const char* format, ...) {
 }
 
 std::string CameraLine(const char* label, const PinholeCamera& c) {
-  return Printf("%s: %dx%d fx %.2f fy %.2f cx %.2f cy %.2f k1 %.4f k2 %.4f p1 %.5f p2 %.5f "
-                "k3 %.4f\n",
-                label, c.width, c.height, c.fx, c.fy, c.cx, c.cy, c.distortion[0],
-                c.distortion[1], c.distortion[2], c.distortion[3], c.distortion[4]);
+  return Printf(
+      "%s: %dx%d fx %.2f fy %.2f cx %.2f cy %.2f k1 %.4f k2 %.4f p1 %.5f p2 %.5f "
+      "k3 %.4f\n",
+      label, c.width, c.height, c.fx, c.fy, c.cx, c.cy, c.distortion[0], c.distortion[1],
+      c.distortion[2], c.distortion[3], c.distortion[4]);
 }
 
 std::string CoverageLines(const Coverage& coverage) {
@@ -65,8 +66,8 @@ std::string CalibrationSettings::Check() const {
 }
 
 std::string MonoReport(const MonoCalibration& c, const Detections& detections) {
-  std::string text = Printf("board found in %zu of %d images\n", detections.views.size(),
-                            detections.inputs);
+  std::string text =
+      Printf("board found in %zu of %d images\n", detections.views.size(), detections.inputs);
   text += WithoutBoard(detections);
   text += "per-view RMS reprojection error (px):\n";
   for (const ViewError& v : c.views) {
@@ -87,8 +88,8 @@ std::string StereoReport(const StereoCalibration& c, const Detections& detection
     text += Printf("  %-28s %.4f  %.4f%s\n", p.name.c_str(), p.left_rms_px, p.right_rms_px,
                    p.rejected ? "  rejected" : "");
   }
-  text += Printf("RMS left %.4f px, right %.4f px, stereo %.4f px (%d pairs used)\n",
-                 c.left.rms_px, c.right.rms_px, c.rms_px, c.used_pairs());
+  text += Printf("RMS left %.4f px, right %.4f px, stereo %.4f px (%d pairs used)\n", c.left.rms_px,
+                 c.right.rms_px, c.rms_px, c.used_pairs());
   const Eigen::Vector3d t = c.rig.right_from_left.translation();
   const double angle = Eigen::AngleAxisd(c.rig.right_from_left.linear()).angle() * 180 / M_PI;
   text += Printf("baseline %.2f mm (T = %.2f %.2f %.2f mm, rotation %.3f deg)\n",
@@ -104,10 +105,11 @@ std::string HandEyeReport(const HandEyeResult& r) {
   const Eigen::Quaterniond q(x.linear());
   std::string text = Printf("hand-eye (%s) from %d pairs; arm rotation up to %.1f deg\n",
                             r.method.c_str(), r.pairs, r.max_rotation_deg);
-  text += Printf("end_effector_from_camera: translation %.4f %.4f %.4f m, quaternion_xyzw "
-                 "%.6f %.6f %.6f %.6f (%.2f deg)\n",
-                 x.translation().x(), x.translation().y(), x.translation().z(), q.x(), q.y(),
-                 q.z(), q.w(), aa.angle() * 180 / M_PI);
+  text += Printf(
+      "end_effector_from_camera: translation %.4f %.4f %.4f m, quaternion_xyzw "
+      "%.6f %.6f %.6f %.6f (%.2f deg)\n",
+      x.translation().x(), x.translation().y(), x.translation().z(), q.x(), q.y(), q.z(), q.w(),
+      aa.angle() * 180 / M_PI);
   text += Printf("board in the base frame: spread %.2f mm, %.3f deg RMS\n",
                  1000 * r.board_translation_rms_m, r.board_rotation_rms_deg);
   return text;

@@ -81,7 +81,8 @@ bool FindChessboard(const cv::Mat& image, const ChessboardOptions& options,
                                        cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_ACCURACY);
   }
   const bool found = cv::findChessboardCorners(
-      gray, pattern, *corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_FAST_CHECK);
+      gray, pattern, *corners,
+      cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_FAST_CHECK);
   if (!found) {
     corners->clear();
     return false;

@@ -19,7 +19,7 @@ struct ChessboardOptions {
   // Use cv::findChessboardCornersSB (sector-based, more robust to blur) instead of the classic
   // detector followed by cornerSubPix.
   bool sector_based = false;
-  int subpix_half_window = 11;   // cornerSubPix half window, pixels (classic detector only).
+  int subpix_half_window = 11;  // cornerSubPix half window, pixels (classic detector only).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ChessboardOptions> Describe();
@@ -35,11 +35,11 @@ Status ParseBoardSize(const std::string& text, ChessboardOptions* options);
 
 // One image in which the board was found.
 struct BoardView {
-  std::string name;                 // File name or frame label, for reports.
-  cv::Size image_size;              // Pixels.
+  std::string name;                  // File name or frame label, for reports.
+  cv::Size image_size;               // Pixels.
   std::vector<cv::Point2f> corners;  // Inner corners in the order of ObjectPoints(), pixels.
-  double time_s = -1;               // Timestamp of a source frame, seconds; -1 for files.
-  std::string path;                 // The image file; empty for source frames.
+  double time_s = -1;                // Timestamp of a source frame, seconds; -1 for files.
+  std::string path;                  // The image file; empty for source frames.
 };
 
 // Finds the board in a grey or BGR image. Returns false when it is not found completely.

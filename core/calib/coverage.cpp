@@ -52,8 +52,8 @@ Coverage ComputeCoverage(const std::vector<BoardView>& views, cv::Size image_siz
     c.scale_min = std::min(c.scale_min, scale);
     c.scale_max = std::max(c.scale_max, scale);
   }
-  const auto covered = std::count_if(c.cell_views.begin(), c.cell_views.end(),
-                                     [](int n) { return n > 0; });
+  const auto covered =
+      std::count_if(c.cell_views.begin(), c.cell_views.end(), [](int n) { return n > 0; });
   c.cells_covered = static_cast<double>(covered) / c.cell_views.size();
   return c;
 }
@@ -75,9 +75,9 @@ std::string Coverage::Summary() const {
   const int covered = static_cast<int>(std::lround(cells_covered * cell_views.size()));
   char text[256];
   std::snprintf(text, sizeof(text),
-                "%d views; cells %d/%zu (%.0f %%), x %.2f-%.2f, y %.2f-%.2f, size %.2f-%.2f",
-                views, covered, cell_views.size(), 100 * cells_covered, x_min, x_max, y_min,
-                y_max, scale_min, scale_max);
+                "%d views; cells %d/%zu (%.0f %%), x %.2f-%.2f, y %.2f-%.2f, size %.2f-%.2f", views,
+                covered, cell_views.size(), 100 * cells_covered, x_min, x_max, y_min, y_max,
+                scale_min, scale_max);
   std::string summary = text;
   if (tilt_max_deg >= 0) {
     std::snprintf(text, sizeof(text), ", tilt %.0f-%.0f deg", tilt_min_deg, tilt_max_deg);

@@ -150,9 +150,8 @@ StatusOr<MonoCalibration> CalibrateMono(const std::vector<BoardView>& views,
                                         const CoverageOptions& coverage) {
   std::string error;
   if (!options.IsValid(&error) || !coverage.IsValid(&error)) return InvalidArgument(error);
-  SIGHTLINE_RETURN_IF_ERROR(
-      calib_internal::CheckViews(views, board, options.min_views, "mono calibration",
-                                 "calib.mono.min_views"));
+  SIGHTLINE_RETURN_IF_ERROR(calib_internal::CheckViews(views, board, options.min_views,
+                                                       "mono calibration", "calib.mono.min_views"));
   MonoCalibration result;
   result.views.resize(views.size());
   for (size_t i = 0; i < views.size(); ++i) {
@@ -176,11 +175,10 @@ StatusOr<MonoCalibration> CalibrateMono(const std::vector<BoardView>& views,
         }
       }
       if (static_cast<int>(kept.size()) < options.min_views) {
-        return InvalidArgument("mono calibration: only " + std::to_string(kept.size()) +
-                               " views left after rejecting views above " +
-                               std::to_string(options.max_view_error_px) +
-                               " px (calib.mono.max_view_error_px); " +
-                               std::to_string(options.min_views) + " needed");
+        return InvalidArgument(
+            "mono calibration: only " + std::to_string(kept.size()) +
+            " views left after rejecting views above " + std::to_string(options.max_view_error_px) +
+            " px (calib.mono.max_view_error_px); " + std::to_string(options.min_views) + " needed");
       }
       result.used = kept;
       fit = Calibrate(views, result.used, board, flags);
@@ -200,7 +198,8 @@ StatusOr<MonoCalibration> CalibrateMono(const std::vector<BoardView>& views,
   result.coverage = ComputeCoverage(accepted, views[0].image_size, coverage);
   SetCoverageTilts(result.rvecs, &result.coverage);
   Status valid = result.camera.Validate();
-  if (!valid.ok()) return InvalidArgument("mono calibration gave an invalid camera: " + valid.message());
+  if (!valid.ok())
+    return InvalidArgument("mono calibration gave an invalid camera: " + valid.message());
   return result;
 }
 

@@ -16,9 +16,9 @@ namespace sightline {
 
 // How to calibrate one camera. Keys "calib.mono.*".
 struct MonoCalibrationOptions {
-  int min_views = 5;             // Fewer accepted views is an error.
-  bool fix_k3 = false;           // Estimate k1 k2 p1 p2 only (k3 = 0): wide boards, few views.
-  bool zero_tangential = false;  // Force p1 = p2 = 0.
+  int min_views = 5;              // Fewer accepted views is an error.
+  bool fix_k3 = false;            // Estimate k1 k2 p1 p2 only (k3 = 0): wide boards, few views.
+  bool zero_tangential = false;   // Force p1 = p2 = 0.
   bool fix_aspect_ratio = false;  // fx = fy.
   // A view whose RMS reprojection error exceeds this is rejected and the camera recalibrated
   // without it (0 = keep every view), pixels.
@@ -40,11 +40,11 @@ struct ViewError {
 // A calibrated camera.
 struct MonoCalibration {
   PinholeCamera camera;
-  double rms_px = 0;                 // RMS over every corner of the accepted views, pixels.
-  std::vector<ViewError> views;      // One per input view, in input order.
-  std::vector<int> used;             // Indices of the accepted views.
+  double rms_px = 0;                    // RMS over every corner of the accepted views, pixels.
+  std::vector<ViewError> views;         // One per input view, in input order.
+  std::vector<int> used;                // Indices of the accepted views.
   std::vector<cv::Vec3d> rvecs, tvecs;  // camera_from_board of each accepted view.
-  Coverage coverage;                 // Of the accepted views, with tilts.
+  Coverage coverage;                    // Of the accepted views, with tilts.
   int rejected() const;
 };
 

@@ -132,9 +132,9 @@ StatusOr<StereoCalibration> CalibrateStereo(const std::vector<BoardView>& left,
     result.pairs.push_back(pair);
   }
   auto too_few = [&](const std::string& why) {
-    return InvalidArgument("stereo calibration: " + std::to_string(used.size()) +
-                           " usable pairs " + why + ", at least " +
-                           std::to_string(options.min_pairs) + " needed (calib.stereo.min_pairs)");
+    return InvalidArgument("stereo calibration: " + std::to_string(used.size()) + " usable pairs " +
+                           why + ", at least " + std::to_string(options.min_pairs) +
+                           " needed (calib.stereo.min_pairs)");
   };
   if (static_cast<int>(used.size()) < options.min_pairs) return too_few("after mono rejection");
   try {
@@ -165,7 +165,8 @@ StatusOr<StereoCalibration> CalibrateStereo(const std::vector<BoardView>& left,
     return InvalidArgument("stereo calibration failed: " + std::string(e.what()));
   }
   Status valid = result.rig.Validate();
-  if (!valid.ok()) return InvalidArgument("stereo calibration gave an invalid rig: " + valid.message());
+  if (!valid.ok())
+    return InvalidArgument("stereo calibration gave an invalid rig: " + valid.message());
   return result;
 }
 

@@ -13,8 +13,8 @@ namespace sightline {
 
 // How to calibrate a stereo rig. Keys "calib.stereo.*".
 struct StereoCalibrationOptions {
-  int min_pairs = 5;            // Fewer usable pairs is an error.
-  bool fix_intrinsics = true;   // Keep each camera's own calibration; estimate only R and T.
+  int min_pairs = 5;           // Fewer usable pairs is an error.
+  bool fix_intrinsics = true;  // Keep each camera's own calibration; estimate only R and T.
   // A pair whose RMS error in either image exceeds this is dropped and the rig recalibrated
   // without it (0 = keep every pair), pixels.
   double max_pair_error_px = 2.0;
@@ -35,13 +35,13 @@ struct PairError {
 // A calibrated stereo rig.
 struct StereoCalibration {
   MonoCalibration left, right;  // Each camera on its own, over every pair.
-  StereoRig rig;                // right_from_left from cv::stereoCalibrate (x_right = R x_left + T).
-  double rms_px = 0;            // stereoCalibrate's RMS over both images of the used pairs.
+  StereoRig rig;      // right_from_left from cv::stereoCalibrate (x_right = R x_left + T).
+  double rms_px = 0;  // stereoCalibrate's RMS over both images of the used pairs.
   std::vector<PairError> pairs;  // One per input pair.
   cv::Matx33d essential, fundamental;
-  cv::Matx33d rect_left, rect_right;    // R1, R2 of cv::stereoRectify.
-  cv::Matx34d proj_left, proj_right;    // P1, P2.
-  cv::Matx44d disparity_to_depth;       // Q.
+  cv::Matx33d rect_left, rect_right;  // R1, R2 of cv::stereoRectify.
+  cv::Matx34d proj_left, proj_right;  // P1, P2.
+  cv::Matx44d disparity_to_depth;     // Q.
 
   double BaselineM() const { return rig.BaselineM(); }
   int used_pairs() const;

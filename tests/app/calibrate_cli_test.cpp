@@ -30,7 +30,8 @@ double NumberAfter(const std::string& text, const std::string& label) {
 TEST(CalibrateCli, MonoReproducesTheReferenceAndWritesACameraYaml) {
   SIGHTLINE_REQUIRE_DATA(dir, "calib_chessboard");
   const std::string out = testing::TempDir("cli_calib_mono") + "/left.yaml";
-  auto run = Cli("calibrate mono " + dir + " --images 'left*.jpg' --board 9x6 --square 0.025 --out " + out);
+  auto run = Cli("calibrate mono " + dir +
+                 " --images 'left*.jpg' --board 9x6 --square 0.025 --out " + out);
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NEAR(NumberAfter(run.out, "\nRMS "), 0.408, 0.01) << run.out;
   EXPECT_NE(run.out.find("board found in 13 of 13 images"), std::string::npos) << run.out;
@@ -61,8 +62,8 @@ TEST(CalibrateCli, HandEyeRecoversTheSimulatedArmsCameraMount) {
   auto scene = testing::MakeHandEyeScene(12, ChessboardOptions{});
   ASSERT_TRUE(scene.ok()) << scene.status().ToString();
   ASSERT_TRUE(testing::WriteHandEyeScene(*scene, dir).ok());
-  auto run = Cli("calibrate handeye " + dir + "/arm_poses.txt " + dir + "/views --method park --out " +
-                 dir + "/hand_eye.yaml");
+  auto run = Cli("calibrate handeye " + dir + "/arm_poses.txt " + dir +
+                 "/views --method park --out " + dir + "/hand_eye.yaml");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("board found in 12 of 12 views, 12 paired"), std::string::npos) << run.out;
   auto mount = ReadEndEffectorFromCamera(dir + "/hand_eye.yaml");
@@ -75,7 +76,8 @@ TEST(CalibrateCli, HandEyeRecoversTheSimulatedArmsCameraMount) {
 TEST(CalibrateCli, BadInputFailsWithOneClearLine) {
   SIGHTLINE_REQUIRE_DATA(dir, "calib_chessboard");
   const std::string out = testing::TempDir("cli_calib_bad") + "/x.yaml";
-  auto wrong_board = Cli("calibrate mono " + dir + " --images 'left0[1-3].jpg' --board 9x7 --out " + out);
+  auto wrong_board =
+      Cli("calibrate mono " + dir + " --images 'left0[1-3].jpg' --board 9x7 --out " + out);
   EXPECT_EQ(wrong_board.exit_code, 1);
   EXPECT_NE(wrong_board.out.find("no 9x7 chessboard found in any of 3 images"), std::string::npos)
       << wrong_board.out;

@@ -31,8 +31,8 @@ cv::Mat RenderBoardView(const PinholeCamera& camera, const Eigen::Isometry3d& ca
     for (int c = 0; c < 3; ++c) h_cv.at<double>(r, c) = h(r, c);
   }
   cv::Mat image;
-  cv::warpPerspective(texture, image, h_cv, cv::Size(camera.width, camera.height),
-                      cv::INTER_AREA, cv::BORDER_CONSTANT, cv::Scalar(128));
+  cv::warpPerspective(texture, image, h_cv, cv::Size(camera.width, camera.height), cv::INTER_AREA,
+                      cv::BORDER_CONSTANT, cv::Scalar(128));
   cv::GaussianBlur(image, image, cv::Size(3, 3), 0.7);
   cv::Mat noise(image.size(), CV_32F);
   cv::RNG rng(seed);

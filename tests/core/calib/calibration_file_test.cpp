@@ -35,8 +35,8 @@ void RenderViews(const StereoRig* rig, std::vector<BoardView>* left, std::vector
                  std::vector<cv::Mat>* images = nullptr) {
   const ChessboardOptions board;
   for (int i = 0; i < 12; ++i) {
-    const Eigen::Isometry3d board_from_camera =
-        BoardFromCameraLookingAt(board, 0.45 + 0.1 * (i % 3), 10 + 10 * (i % 3), 30 * i, 5 * (i % 4));
+    const Eigen::Isometry3d board_from_camera = BoardFromCameraLookingAt(
+        board, 0.45 + 0.1 * (i % 3), 10 + 10 * (i % 3), 30 * i, 5 * (i % 4));
     const Eigen::Isometry3d camera_from_board = board_from_camera.inverse();
     const PinholeCamera camera = rig ? rig->left : TrueCamera();
     cv::Mat image = RenderBoardView(camera, camera_from_board, board, 1.5, i);
@@ -45,8 +45,8 @@ void RenderViews(const StereoRig* rig, std::vector<BoardView>* left, std::vector
     left->push_back(view);
     if (images) images->push_back(image);
     if (rig) {
-      cv::Mat r = RenderBoardView(rig->right, rig->right_from_left * camera_from_board, board, 1.5,
-                                  50 + i);
+      cv::Mat r =
+          RenderBoardView(rig->right, rig->right_from_left * camera_from_board, board, 1.5, 50 + i);
       BoardView rv{"right" + std::to_string(i) + ".png", r.size(), {}};
       ASSERT_TRUE(FindChessboard(r, board, &rv.corners)) << "right " << i;
       right->push_back(rv);
@@ -96,8 +96,8 @@ TEST(CalibrationFile, StereoCalibrationOfARenderedRigLoadsBack) {
   StereoRig rig;
   rig.left = rig.right = TrueCamera();
   rig.right.cx = 318;
-  rig.right_from_left = Eigen::Translation3d(-0.12, 0.002, 0.001) *
-                        Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY());
+  rig.right_from_left =
+      Eigen::Translation3d(-0.12, 0.002, 0.001) * Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY());
   std::vector<BoardView> left, right;
   RenderViews(&rig, &left, &right);
   MonoCalibrationOptions mono;

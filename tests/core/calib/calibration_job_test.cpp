@@ -33,8 +33,9 @@ std::string WriteViews(std::string dir = "") {
     const Eigen::Isometry3d board_from_camera =
         BoardFromCameraLookingAt(ChessboardOptions{}, 0.5, 15 + 5 * (i % 3), 45 * i, 0);
     const std::string name = "frame_" + std::to_string(i) + ".png";
-    cv::imwrite(dir + "/" + name, ::sightline::testing::RenderBoardView(
-                                      camera, board_from_camera.inverse(), ChessboardOptions{}, 1, i));
+    cv::imwrite(dir + "/" + name,
+                ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(),
+                                                      ChessboardOptions{}, 1, i));
     times << 0.1 * i << " " << name << "\n";
   }
   return dir;

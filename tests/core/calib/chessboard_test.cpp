@@ -57,12 +57,14 @@ TEST(Chessboard, FindsRenderedCornersWithSubPixelAccuracy) {
   const Eigen::Isometry3d board_from_camera =
       ::sightline::testing::BoardFromCameraLookingAt(board, 0.5, 25, 40, 10);
   PinholeCamera camera = Camera();
-  cv::Mat image = ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(), board, 2, 1);
+  cv::Mat image =
+      ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(), board, 2, 1);
   auto truth = ::sightline::testing::ProjectBoard(camera, board_from_camera.inverse(), board);
   for (bool sector_based : {false, true}) {
     if (sector_based) {  // Slower: a smaller image of the same view.
       camera = camera.Scaled(320, 240);
-      image = ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(), board, 2, 1);
+      image =
+          ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(), board, 2, 1);
       truth = ::sightline::testing::ProjectBoard(camera, board_from_camera.inverse(), board);
     }
     ChessboardOptions options = board;

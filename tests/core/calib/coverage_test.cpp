@@ -40,9 +40,9 @@ TEST(Coverage, OneCentredViewCoversTheCentreOnlyAndSaysWhatIsMissing) {
 }
 
 TEST(Coverage, ViewsInTheFourCornersAndTheCentreCoverTheImage) {
-  const std::vector<BoardView> views = {
-      GridView(0, 0, 330, 250), GridView(310, 0, 639, 250), GridView(0, 230, 330, 479),
-      GridView(310, 230, 639, 479), GridView(200, 150, 440, 330)};
+  const std::vector<BoardView> views = {GridView(0, 0, 330, 250), GridView(310, 0, 639, 250),
+                                        GridView(0, 230, 330, 479), GridView(310, 230, 639, 479),
+                                        GridView(200, 150, 440, 330)};
   const Coverage c = ComputeCoverage(views, {640, 480});
   EXPECT_DOUBLE_EQ(c.cells_covered, 1.0);
   EXPECT_EQ(c.CellViews(3, 2), 5);  // Every view touches a centre cell.

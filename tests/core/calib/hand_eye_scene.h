@@ -17,11 +17,11 @@
 namespace sightline::testing {
 
 struct HandEyeScene {
-  PinholeCamera camera;                          // The simulator's mono camera.
-  Eigen::Isometry3d end_effector_from_camera;    // The simulator's mount (the truth).
-  Trajectory base_from_end_effector;             // Arm poses with the simulator's pose noise.
+  PinholeCamera camera;                              // The simulator's mono camera.
+  Eigen::Isometry3d end_effector_from_camera;        // The simulator's mount (the truth).
+  Trajectory base_from_end_effector;                 // Arm poses with the simulator's pose noise.
   std::vector<Eigen::Isometry3d> camera_from_board;  // Exact.
-  std::vector<cv::Mat> images;                   // Grey, with pixel noise.
+  std::vector<cv::Mat> images;                       // Grey, with pixel noise.
   std::vector<double> times_s;
 };
 

@@ -1,6 +1,8 @@
 // Hand-eye calibration on the simulator's arm: the panel scene's camera mount is the truth
 // (hand_eye.yaml), chessboard images rendered through its mono camera from arm poses with the
 // simulator's pose noise; corners detected, board poses by PnP, then cv::calibrateHandEye.
+#include "core/calib/hand_eye.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "core/calib/board_detection.h"
 #include "core/calib/calibration_file.h"
-#include "core/calib/hand_eye.h"
 #include "core/sim/simulate.h"
 #include "core/sim/simulator.h"
 #include "hand_eye_scene.h"
@@ -70,9 +71,10 @@ TEST_F(HandEyeOnSimulatedArm, RecoversTheSimulatorsCameraMountFromImages) {
     auto result = CalibrateHandEye(ArmPoses(), boards, options);
     ASSERT_TRUE(result.ok()) << method << ": " << result.status().ToString();
     const Eigen::Isometry3d& truth = scene_->end_effector_from_camera;
-    std::printf("  %-10s rotation error %.4f deg, translation error %.3f mm\n", method.c_str(),
-                AngleBetweenDeg(result->end_effector_from_camera, truth),
-                1000 * (result->end_effector_from_camera.translation() - truth.translation()).norm());
+    std::printf(
+        "  %-10s rotation error %.4f deg, translation error %.3f mm\n", method.c_str(),
+        AngleBetweenDeg(result->end_effector_from_camera, truth),
+        1000 * (result->end_effector_from_camera.translation() - truth.translation()).norm());
     EXPECT_LT(AngleBetweenDeg(result->end_effector_from_camera, truth), 0.5) << method;
     EXPECT_LT((result->end_effector_from_camera.translation() - truth.translation()).norm(), 0.003)
         << method;
@@ -111,8 +113,8 @@ TEST(HandEye, ReadsTheSimulatorsHandEyeFileAndRejectsItsTranslationOnlyApproach)
   auto arm = ReadTumTrajectory(dir + "/arm_poses.txt");
   ASSERT_TRUE(arm.ok()) << arm.status().ToString();
   std::vector<Eigen::Isometry3d> base_from_ee, camera_from_board;
-  const Eigen::Isometry3d world_from_board = simulator->motion().WorldFromCamera(0) *
-                                             Eigen::Translation3d(0, 0, 0.5);
+  const Eigen::Isometry3d world_from_board =
+      simulator->motion().WorldFromCamera(0) * Eigen::Translation3d(0, 0, 0.5);
   for (size_t i = 0; i < arm->size(); ++i) {
     base_from_ee.push_back(arm->poses()[i].world_from_sensor);
     camera_from_board.push_back(simulator->motion().WorldFromCamera(i).inverse() *
@@ -129,8 +131,8 @@ TEST(HandEye, WritesAFileItReadsBack) {
   HandEyeResult result;
   result.method = "park";
   result.pairs = 9;
-  result.end_effector_from_camera =
-      Eigen::Translation3d(0.06, -0.01, -0.03) * Eigen::AngleAxisd(1.2, Eigen::Vector3d(1, 2, 3).normalized());
+  result.end_effector_from_camera = Eigen::Translation3d(0.06, -0.01, -0.03) *
+                                    Eigen::AngleAxisd(1.2, Eigen::Vector3d(1, 2, 3).normalized());
   const std::string path = ::sightline::testing::TempDir("handeye_file") + "/hand_eye.yaml";
   ASSERT_TRUE(WriteHandEyeCalibration(result, path).ok());
   auto read = ReadEndEffectorFromCamera(path);
