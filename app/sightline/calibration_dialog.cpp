@@ -109,7 +109,7 @@ void CalibrationDialog::BuildUi() {
   status_label_->setWordWrap(true);
   figures_label_ = new QLabel(this);
   figures_label_->setObjectName("calibration_figures");
-  figures_label_->setWordWrap(true);
+  figures_label_->setWordWrap(false);  // Short lines; wrapping labels lose height in layouts.
   figures_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
   view_errors_ = new QStandardItemModel(0, 4, this);
