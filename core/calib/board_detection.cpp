@@ -51,18 +51,6 @@ Status CheckSize(const BoardView& view, const std::vector<BoardView>& views) {
                          "; calibrate one camera at one resolution");
 }
 
-cv::Point2f Centre(const BoardView& v) {
-  cv::Point2f sum(0, 0);
-  for (const auto& p : v.corners) sum += p;
-  return v.corners.empty() ? sum : sum * (1.f / v.corners.size());
-}
-
-double BoardSize(const BoardView& v) {
-  std::vector<cv::Point2f> hull;
-  cv::convexHull(v.corners, hull);
-  return std::sqrt(std::max(0.0, cv::contourArea(hull)));
-}
-
 }  // namespace
 
 StatusOr<std::vector<std::string>> ListCalibrationImages(const std::string& dir,
@@ -200,13 +188,14 @@ StatusOr<Detections> DetectBoardsInPairs(const StereoImageFiles& files,
 bool IsNewView(const BoardView& view, const std::vector<BoardView>& accepted, double min_change) {
   if (min_change <= 0) return true;
   const double diagonal = std::hypot(view.image_size.width, view.image_size.height);
-  const cv::Point2f centre = Centre(view);
-  const double size = BoardSize(view);
   for (const BoardView& other : accepted) {
-    const double moved = cv::norm(centre - Centre(other)) / diagonal;
-    const double other_size = BoardSize(other);
-    const double resized = other_size > 0 ? std::abs(size - other_size) / other_size : 1.0;
-    if (moved < min_change && resized < min_change) return false;
+    if (other.corners.size() != view.corners.size() || view.corners.empty()) continue;
+    // Mean corner displacement: grows with a shift, a change of size and a change of tilt.
+    double sum = 0;
+    for (size_t i = 0; i < view.corners.size(); ++i) {
+      sum += cv::norm(view.corners[i] - other.corners[i]);
+    }
+    if (sum / view.corners.size() / diagonal < min_change) return false;
   }
   return true;
 }

@@ -63,8 +63,8 @@ StatusOr<Detections> DetectBoardsInPairs(const StereoImageFiles& files,
 struct SourceDetectionOptions {
   int max_frames = 2000;  // Frames to examine at most.
   int max_views = 40;     // Stop after this many accepted views.
-  // Live cameras: accept a view only when its board moved by this fraction of the image
-  // diagonal, or changed its size by this fraction, against every accepted view (0 = all).
+  // Live cameras: accept a view only when its corners moved on average by this fraction of the
+  // image diagonal against every accepted view (shift, distance or tilt changed; 0 = all).
   double min_change = 0.0;
 };
 
@@ -73,8 +73,8 @@ StatusOr<Detections> DetectBoardsInSource(Source* source, const ChessboardOption
                                           const SourceDetectionOptions& options,
                                           const DetectionCallbacks& callbacks = {});
 
-// True when `view` differs from every view in `accepted` by at least `min_change` (centre shift
-// as a fraction of the image diagonal, or relative change of the board's size).
+// True when the corners of `view` moved on average by at least `min_change` of the image
+// diagonal against every view in `accepted`.
 bool IsNewView(const BoardView& view, const std::vector<BoardView>& accepted, double min_change);
 
 }  // namespace sightline

@@ -109,3 +109,72 @@ TEST(CalibrationJob, NewViewsMustDifferFromTheAcceptedOnes) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// A live camera as DetectBoardsInSource sees it: an endless stream in which the board stays
+// still for several frames at a time (a source of rendered frames; no device is needed).
+class StillBoardCamera : public Source {
+ public:
+  Status Open() override {
+    info_.format = "test camera";
+    info_.path = "test://camera";
+    info_.live = true;
+    info_.frame_count = -1;
+    return Status::Ok();
+  }
+  const SourceInfo& info() const override { return info_; }
+  Status Grab() override {
+    ++position_;
+    return Status::Ok();
+  }
+  StatusOr<Frame> Retrieve() override {
+    const int pose = static_cast<int>(position_ - 1) / 4;  // Four frames per pose.
+    PinholeCamera camera;
+    camera.width = 640;
+    camera.height = 480;
+    camera.fx = camera.fy = 500;
+    camera.cx = 320;
+    camera.cy = 240;
+    // Six poses on a 3 x 2 grid, 8 cm / 6 cm apart at 0.5 m (80 / 60 px), tilted 20 deg.
+    const Eigen::Isometry3d camera_from_board =
+        Eigen::Translation3d(0.08 * (pose % 3 - 1), 0.06 * (pose / 3 % 2 - 0.5), 0) *
+        BoardFromCameraLookingAt(ChessboardOptions{}, 0.5, 20, 60 * pose, 0).inverse();
+    MonoFrame frame;
+    frame.stamp.sequence_id = position_ - 1;
+    frame.stamp.sensor_time_s = 0.033 * frame.stamp.sequence_id;
+    frame.image = ::sightline::testing::RenderBoardView(camera, camera_from_board,
+                                                        ChessboardOptions{}, 1, position_);
+    return Frame(frame);
+  }
+  int64_t Position() const override { return position_; }
+
+ private:
+  SourceInfo info_;
+  int64_t position_ = 0;
+};
+
+TEST(CalibrationJob, ALiveCameraKeepsOnlyViewsThatDiffer) {
+  StillBoardCamera camera;
+  ASSERT_TRUE(camera.Open().ok());
+  SourceDetectionOptions options;
+  options.max_frames = 24;  // Six poses, four frames each.
+  options.min_change = 0.05;
+  auto detections = DetectBoardsInSource(&camera, ChessboardOptions{}, options);
+  ASSERT_TRUE(detections.ok()) << detections.status().ToString();
+  EXPECT_EQ(detections->inputs, 24);
+  EXPECT_EQ(detections->views.size(), 6u);  // One per pose.
+  EXPECT_TRUE(detections->without_board.empty());
+  EXPECT_EQ(detections->views[1].name, "frame 4");
+  options.max_views = 3;
+  StillBoardCamera again;
+  ASSERT_TRUE(again.Open().ok());
+  auto capped = DetectBoardsInSource(&again, ChessboardOptions{}, options);
+  ASSERT_TRUE(capped.ok());
+  EXPECT_EQ(capped->views.size(), 3u);
+  EXPECT_EQ(capped->inputs, 9);  // Stops at the third accepted view (frame 8).
+}
+
+}  // namespace
+}  // namespace sightline
