@@ -14,6 +14,7 @@ namespace sightline {
 using button_internal::Invalid;
 
 bool ButtonLocatorOptions::IsValid(std::string* error) const {
+  if (!(button_radii >= 0)) return Invalid(error, "button.locate.button_radii must be >= 0");
   if (!(radius_px > 0)) return Invalid(error, "button.locate.radius_px must be > 0");
   if (min_points < 3) return Invalid(error, "button.locate.min_points must be >= 3");
   if (good_points < min_points) return Invalid(error, "button.locate.good_points must be >= min_points");
@@ -32,6 +33,9 @@ bool ButtonLocatorOptions::IsValid(std::string* error) const {
 OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
   using O = ButtonLocatorOptions;
   return OptionTable<O>("button.locate")
+      .Double("button_radii", &O::button_radii, "radii", 0, 10, 0.05,
+              "Map points within this many tracked button radii (the button's face) are used "
+              "first; 0 = always use radius_px.")
       .Double("radius_px", &O::radius_px, "px", 1, 2000, 1,
               "Map points projecting within this distance of the button centre are used.")
       .Int("min_points", &O::min_points, "", 3, 1000, 1, "Fewer points: no 3D position.")
@@ -116,13 +120,28 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   if (!input.button_px.allFinite() || !input.camera_from_world.matrix().allFinite()) {
     return InvalidArgument("button locator: button pixel or camera pose not finite");
   }
-  std::vector<Eigen::Vector3d> near;  // Camera frame.
+  std::vector<Eigen::Vector3d> in_camera;
+  std::vector<double> pixel_distance;
   for (const Eigen::Vector3d& x_in_world : *input.points_in_world) {
     const Eigen::Vector3d x = input.camera_from_world * x_in_world;
     if (!(x.z() > 1e-6) || !x.allFinite()) continue;
-    if ((input.camera.Project(x) - input.button_px).norm() <= options_.radius_px) near.push_back(x);
+    in_camera.push_back(x);
+    pixel_distance.push_back((input.camera.Project(x) - input.button_px).norm());
   }
+  auto within = [&](double radius) {
+    std::vector<Eigen::Vector3d> near;
+    for (size_t i = 0; i < in_camera.size(); ++i) {
+      if (pixel_distance[i] <= radius) near.push_back(in_camera[i]);
+    }
+    return near;
+  };
   ButtonLocation out;
+  std::vector<Eigen::Vector3d> near;
+  if (options_.button_radii > 0 && input.button_radius_px > 0) {
+    near = within(options_.button_radii * input.button_radius_px);
+    out.on_button = int(near.size()) >= options_.min_points;
+  }
+  if (!out.on_button) near = within(options_.radius_px);
   out.points_near = int(near.size());
   if (out.points_near < options_.min_points) {
     return NotFound("button locator: " + std::to_string(out.points_near) +

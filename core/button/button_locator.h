@@ -17,7 +17,10 @@ namespace sightline {
 
 // Locator options. Keys "button.locate.*".
 struct ButtonLocatorOptions {
-  double radius_px = 60;             // Map points projecting within this of the centre [px].
+  double button_radii = 0.9;         // First choice: map points within this many tracked button
+                                     // radii (on the button's own face); 0 = skip.
+  double radius_px = 60;             // Fallback: points projecting within this of the centre
+                                     // (the panel around the button) [px].
   int min_points = 3;                // Fewer points near the button: no position.
   int good_points = 6;               // Points for a sound fit (fewer: plane_sound = false).
   int ransac_iterations = 200;       // Plane RANSAC hypotheses.
@@ -38,6 +41,7 @@ struct LocatorInput {
   Eigen::Isometry3d camera_from_world = Eigen::Isometry3d::Identity();
   const std::vector<Eigen::Vector3d>* points_in_world = nullptr;
   Eigen::Vector2d button_px = Eigen::Vector2d::Zero();  // Tracked button centre.
+  double button_radius_px = 0;  // Tracked apparent radius (ButtonTrack::radius_px); 0 = unknown.
   double scale_sigma_rel = 0;  // 1-sigma relative error of the metric scale (0 = exact).
 };
 
@@ -48,6 +52,7 @@ struct ButtonLocation {
                                                                  // the camera).
   Eigen::Vector3d approach_in_camera = Eigen::Vector3d::UnitZ(); // = -normal: push direction.
   int points_near = 0;       // Map points near the button.
+  bool on_button = false;    // The points came from the button's face (else the panel around).
   int inliers = 0;           // Plane inliers.
   double plane_rms_m = 0;    // RMS distance of the inliers to the plane.
   double incidence_cos = 0;  // |cos| between the viewing ray and the normal.
@@ -64,7 +69,8 @@ class ButtonLocator {
  public:
   explicit ButtonLocator(ButtonLocatorOptions options = {}) : options_(options) {}
 
-  // NotFound with the count when fewer than min_points map points lie near the button;
+  // Uses the points on the button's face when there are min_points of them, else those within
+  // radius_px. NotFound with the count when fewer than min_points map points lie near it;
   // FailedPrecondition for a degenerate plane or a ray nearly parallel to it (or hitting it
   // behind the camera); InvalidArgument for invalid input.
   StatusOr<ButtonLocation> Locate(const LocatorInput& input) const;
