@@ -30,8 +30,8 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
   if (!(max_area_fraction > 0 && max_area_fraction <= 1)) {
     return Invalid(error, "button.detect.max_area_fraction must lie in (0, 1]");
   }
-  if (!(min_solidity >= 0 && min_solidity <= 1)) {
-    return Invalid(error, "button.detect.min_solidity must lie in [0, 1]");
+  if (!(min_coverage >= 0 && min_coverage <= 1)) {
+    return Invalid(error, "button.detect.min_coverage must lie in [0, 1]");
   }
   if (!(max_aspect >= 1)) return Invalid(error, "button.detect.max_aspect must be >= 1");
   if (!(max_tap_distance_px > 0)) return Invalid(error, "button.detect.max_tap_distance_px must be > 0");
@@ -58,8 +58,9 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
       .Double("min_area_px", &O::min_area_px, "px^2", 4, 1e6, 10, "Smallest button region.")
       .Double("max_area_fraction", &O::max_area_fraction, "", 0.0001, 1, 0.005,
               "Largest button region as a fraction of the image area.")
-      .Double("min_solidity", &O::min_solidity, "", 0, 1, 0.05,
-              "Region area over convex hull area; buttons are compact.")
+      .Double("min_coverage", &O::min_coverage, "", 0, 1, 1.0 / 16,
+              "Fraction of directions around a region's centre in which its outline lies; a "
+              "button's (even broken) outline surrounds its centre.")
       .Double("max_aspect", &O::max_aspect, "", 1, 20, 0.1,
               "Longest over shortest side of the region's rotated box.")
       .Double("max_tap_distance_px", &O::max_tap_distance_px, "px", 1, 1000, 1,
@@ -89,10 +90,27 @@ struct Candidate {
   std::vector<cv::Point> contour;  // Working-image pixels.
   cv::Point2d centroid;
   double area = 0;
-  double score = 0;  // Lower is better.
 };
 
-// Compact closed regions of the edge map, in working-image pixels.
+// Fraction of 16 angular sectors around `centre` that hold a contour point at least
+// `min_dist` away: a button's outline surrounds its centre even when it is broken (a U of
+// light on a bezel); a stroke of a label or a texture speck does not.
+double AngularCoverage(const std::vector<cv::Point>& contour, cv::Point2d centre, double min_dist) {
+  constexpr int kSectors = 16;
+  bool seen[kSectors] = {};
+  for (const cv::Point& p : contour) {
+    const double dx = p.x - centre.x, dy = p.y - centre.y;
+    if (dx * dx + dy * dy < min_dist * min_dist) continue;
+    const int k = int((std::atan2(dy, dx) + M_PI) / (2 * M_PI) * kSectors) % kSectors;
+    seen[k] = true;
+  }
+  int n = 0;
+  for (bool b : seen) n += b ? 1 : 0;
+  return double(n) / kSectors;
+}
+
+// Button-like regions of the edge map, in working-image pixels: the convex hull of every
+// contour that is compact and surrounds its own centre.
 std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptions& o) {
   cv::Mat blurred = grey;
   if (o.blur_sigma_px > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), o.blur_sigma_px);
@@ -104,42 +122,67 @@ std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptio
     cv::morphologyEx(edges, edges, cv::MORPH_CLOSE, kernel);
   }
   std::vector<std::vector<cv::Point>> contours;
-  cv::findContours(edges, contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE);
+  cv::findContours(edges, contours, cv::RETR_LIST, cv::CHAIN_APPROX_NONE);
   const double max_area = o.max_area_fraction * grey.cols * grey.rows;
   std::vector<Candidate> out;
-  for (auto& contour : contours) {
-    const cv::Moments m = cv::moments(contour);
-    const double area = m.m00;
-    if (area < o.min_area_px || area > max_area) continue;
+  for (const auto& contour : contours) {
     std::vector<cv::Point> hull;
     cv::convexHull(contour, hull);
-    const double hull_area = cv::contourArea(hull);
-    if (hull_area <= 0 || area / hull_area < o.min_solidity) continue;
-    const cv::RotatedRect box = cv::minAreaRect(contour);
+    const cv::Moments m = cv::moments(hull);
+    const double area = m.m00;
+    if (area < o.min_area_px || area > max_area) continue;
+    const cv::RotatedRect box = cv::minAreaRect(hull);
     const double lo = std::min(box.size.width, box.size.height);
     const double hi = std::max(box.size.width, box.size.height);
     if (lo <= 0 || hi / lo > o.max_aspect) continue;
+    const cv::Point2d centroid(m.m10 / area, m.m01 / area);
+    const double radius = std::sqrt(area / M_PI);
+    if (AngularCoverage(contour, centroid, 0.5 * radius) < o.min_coverage) continue;
     Candidate c;
-    c.centroid = {m.m10 / area, m.m01 / area};
+    c.centroid = centroid;
     c.area = area;
-    c.contour = std::move(contour);
+    c.contour = std::move(hull);
     out.push_back(std::move(c));
   }
   return out;
 }
 
+// True when `outer` holds at least two other regions away from its centre that the tap is not
+// on: a panel plate or a group of buttons rather than one button (whose label sits near its
+// centre).
+bool IsGroup(const Candidate& outer, const std::vector<Candidate>& all, const std::vector<bool>& on_tap) {
+  const double off_centre = 0.4 * std::sqrt(outer.area / M_PI);
+  int others = 0;
+  for (size_t i = 0; i < all.size(); ++i) {
+    const Candidate& c = all[i];
+    if (&c == &outer || on_tap[i] || c.area >= outer.area || c.area < 0.01 * outer.area) continue;
+    if (cv::norm(c.centroid - outer.centroid) < off_centre) continue;
+    if (cv::pointPolygonTest(outer.contour, cv::Point2f(c.centroid), false) > 0) ++others;
+  }
+  return others >= 2;
+}
+
 // The candidate for a tap: centroid distance relative to the region's size, so a tap on a
-// button prefers the button's outline over a small label printed on it.
-const Candidate* Choose(std::vector<Candidate>& candidates, cv::Point2d tap, double max_dist) {
+// button prefers the button's outline over a small label printed on it; regions that hold
+// other buttons (plates, groups) are skipped.
+const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d tap, double max_dist) {
+  std::vector<bool> on_tap(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    on_tap[i] = cv::pointPolygonTest(candidates[i].contour, cv::Point2f(tap), false) >= 0;
+  }
   const Candidate* best = nullptr;
-  for (Candidate& c : candidates) {
+  double best_score = 0;
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
     const double dist = std::hypot(c.centroid.x - tap.x, c.centroid.y - tap.y);
-    const bool inside = cv::pointPolygonTest(c.contour, cv::Point2f(tap), false) >= 0;
-    if (!inside && dist > max_dist) continue;
+    if (!on_tap[i] && dist > max_dist) continue;
     const double radius = std::sqrt(c.area / M_PI);
-    if (inside && dist > radius) continue;  // Tap inside a ring-shaped or bent outline.
-    c.score = dist / radius;
-    if (!best || c.score < best->score) best = &c;
+    if (on_tap[i] && dist > radius) continue;  // Tap inside a bent or lopsided outline.
+    const double score = dist / radius;
+    if (best && score >= best_score) continue;
+    if (IsGroup(c, candidates, on_tap)) continue;
+    best = &c;
+    best_score = score;
   }
   return best;
 }
@@ -164,7 +207,7 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
   if (scale != 1.0) {
     cv::resize(grey, work, cv::Size(), scale, scale, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
   }
-  std::vector<Candidate> candidates = Candidates(work, options_);
+  const std::vector<Candidate> candidates = Candidates(work, options_);
   const Candidate* best = Choose(candidates, tap * scale, options_.max_tap_distance_px);
   if (!best) {
     return NotFound("no button here: no compact outline within " +

@@ -1,5 +1,6 @@
-// Button detection from a tap (the seed's plan phase): contours of the still frame, the one
-// whose centroid lies nearest the tap (within a limit), its region, and SIFT features on it.
+// Button detection from a tap (the seed's plan phase): contours of the still frame's edges,
+// each closed by its convex hull, the one whose centroid lies nearest the tap (within a limit,
+// relative to its size), its region, and SIFT features on it.
 // No contour near the tap means "no button here": the operator is asked to tap again.
 #pragma once
 
@@ -23,8 +24,9 @@ struct ButtonDetectorOptions {
   double canny_high = 90;            // Canny upper hysteresis threshold [grey levels].
   int close_px = 3;                  // Morphological closing of the edge map (0 = none) [px].
   double min_area_px = 150;          // Smallest region area [px^2].
-  double max_area_fraction = 0.04;   // Largest region area as a fraction of the image.
-  double min_solidity = 0.6;         // Region area / convex hull area; buttons are compact.
+  double max_area_fraction = 0.08;   // Largest region area as a fraction of the image.
+  double min_coverage = 0.75;        // Fraction of directions (16 sectors) around a region's
+                                     // centre in which its outline lies.
   double max_aspect = 3.0;           // Longest / shortest side of the rotated bounding box.
   double max_tap_distance_px = 35;   // Centroid farther from the tap: not this button [px].
   double sift_margin_px = 8;         // Features up to this far outside the region are kept [px]

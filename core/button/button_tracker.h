@@ -36,8 +36,8 @@ struct ButtonTrackerOptions {
   bool refresh = true;                // Add features of confidently tracked frames to the
                                       // model when the button's size has changed (keeps
                                       // tracking through a long approach).
-  double refresh_scale_step = 1.25;   // Size change since the last refresh that triggers one.
-  double refresh_radius = 1.5;        // Features within this many button radii are added.
+  double refresh_scale_step = 1.15;   // Size change since the last refresh that triggers one.
+  double refresh_radius = 5.0;        // Features within this many button radii are added.
   double refresh_min_confidence = 0.5;  // Only frames tracked at least this confidently.
   int max_model_keypoints = 2000;     // The model never grows beyond this.
 

@@ -88,7 +88,7 @@ TEST(PanelApproach, TrackedCentreStaysWithinThreePixels) {
     p.scale = a.RadiusPx(int(f), b) / a.RadiusPx(0, b);
     auto t = tracker.Track(a.frames[f].image, p);
     ASSERT_TRUE(t.ok()) << t.status().ToString();
-    if (std::getenv("VERBOSE")) std::printf("frame %zu: kp %d matches %d inliers %d conf %.2f err %.2f\n", f, t->keypoints, t->matches, t->inliers, t->confidence, cv::norm(t->center - Pt(a.Project(int(f), b))));
+    if (std::getenv("VERBOSE")) std::printf("frame %zu: kp %d matches %d inliers %d conf %.2f scale %.2f model %d err %.2f\n", f, t->keypoints, t->matches, t->inliers, t->confidence, t->scale, tracker.model_keypoints(), cv::norm(t->center - Pt(a.Project(int(f), b))));
     ASSERT_TRUE(t->found) << "frame " << f << ": " << t->reason;
     errors.push_back(cv::norm(t->center - Pt(a.Project(int(f), b))));
   }
