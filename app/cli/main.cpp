@@ -25,6 +25,8 @@ const char kUsage[] =
     "                             path-length error per subsampling factor (table + plot)\n"
     "  floor PATH --out FILE [--frames N]\n"
     "                             calibrate the floor plane for indoor mapping\n"
+    "  arm-listen HOST:PORT [--token T]\n"
+    "                             print the arm targets Sightline serves (JSON lines)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -44,5 +46,6 @@ int main(int argc, char** argv) {
   if (command == "simulate") return sightline::cli::SimulateCommand(args);
   if (command == "sweep") return sightline::cli::SweepCommand(args);
   if (command == "floor") return sightline::cli::FloorCommand(args);
+  if (command == "arm-listen") return sightline::cli::ArmListenCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }
