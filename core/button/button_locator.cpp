@@ -17,6 +17,8 @@ bool ButtonLocatorOptions::IsValid(std::string* error) const {
   if (!(button_radii >= 0)) return Invalid(error, "button.locate.button_radii must be >= 0");
   if (!(radius_px > 0)) return Invalid(error, "button.locate.radius_px must be > 0");
   if (min_points < 3) return Invalid(error, "button.locate.min_points must be >= 3");
+  if (min_face_points < 1) return Invalid(error, "button.locate.min_face_points must be >= 1");
+  if (!(max_face_offset_m > 0)) return Invalid(error, "button.locate.max_face_offset_m must be > 0");
   if (good_points < min_points) return Invalid(error, "button.locate.good_points must be >= min_points");
   if (ransac_iterations < 1) return Invalid(error, "button.locate.ransac_iterations must be >= 1");
   if (!(ransac_threshold_m > 0)) return Invalid(error, "button.locate.ransac_threshold_m must be > 0");
@@ -39,6 +41,10 @@ OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
       .Double("radius_px", &O::radius_px, "px", 1, 2000, 1,
               "Map points projecting within this distance of the button centre are used.")
       .Int("min_points", &O::min_points, "", 3, 1000, 1, "Fewer points: no 3D position.")
+      .Int("min_face_points", &O::min_face_points, "", 1, 1000, 1,
+           "Points on the button's face that move the panel plane onto the face.")
+      .Double("max_face_offset_m", &O::max_face_offset_m, "m", 0.001, 0.2, 0.001,
+              "Larger median offset of the face points from the panel plane is not applied.")
       .Int("good_points", &O::good_points, "", 3, 1000, 1,
            "Fewer points than this: the plane is not sound (no target is sent).")
       .Int("ransac_iterations", &O::ransac_iterations, "", 1, 100000, 10, "Plane RANSAC hypotheses.")
@@ -136,12 +142,14 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
     return near;
   };
   ButtonLocation out;
-  std::vector<Eigen::Vector3d> near;
+  std::vector<Eigen::Vector3d> face;  // Points on the button's own face.
   if (options_.button_radii > 0 && input.button_radius_px > 0) {
-    near = within(options_.button_radii * input.button_radius_px);
-    out.on_button = int(near.size()) >= options_.min_points;
+    face = within(options_.button_radii * input.button_radius_px);
   }
-  if (!out.on_button) near = within(options_.radius_px);
+  // Enough points on the face: its own plane. Else the panel's plane around the button,
+  // moved onto the face by the face points it has (a button stands out of its plate).
+  const bool face_alone = int(face.size()) >= options_.good_points;
+  const std::vector<Eigen::Vector3d> near = face_alone ? face : within(options_.radius_px);
   out.points_near = int(near.size());
   if (out.points_near < options_.min_points) {
     return NotFound("button locator: " + std::to_string(out.points_near) +
@@ -150,11 +158,25 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   const std::vector<int> inlier_ids = RansacPlane(near, options_);
   std::vector<Eigen::Vector3d> inliers;
   for (int i : inlier_ids) inliers.push_back(near[i]);
-  const Plane plane = FitPlane(inliers);
+  Plane plane = FitPlane(inliers);
   double sum2 = 0;
   for (const auto& x : inliers) sum2 += std::pow(plane.Distance(x), 2);
   out.inliers = int(inliers.size());
   out.plane_rms_m = std::sqrt(sum2 / out.inliers);
+  out.on_button = face_alone;
+  double face_sigma = 0;
+  if (!face_alone && int(face.size()) >= options_.min_face_points) {
+    std::vector<double> signed_distance;
+    for (const auto& x : face) signed_distance.push_back(plane.normal.dot(x) + plane.offset);
+    std::nth_element(signed_distance.begin(), signed_distance.begin() + signed_distance.size() / 2,
+                     signed_distance.end());
+    const double shift = signed_distance[signed_distance.size() / 2];
+    if (std::abs(shift) <= options_.max_face_offset_m) {
+      plane.offset -= shift;
+      out.on_button = true;
+      face_sigma = out.plane_rms_m / std::sqrt(double(face.size()));
+    }
+  }
 
   const Eigen::Vector3d ray =
       input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();
@@ -174,7 +196,8 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   out.normal_in_camera = denom < 0 ? plane.normal : -plane.normal;
   out.approach_in_camera = -out.normal_in_camera;
   // Depth error from the fit, spread along the ray by the incidence, plus the scale error.
-  const double fit_sigma = out.plane_rms_m / std::sqrt(double(out.inliers)) / out.incidence_cos;
+  const double fit_sigma =
+      std::hypot(out.plane_rms_m / std::sqrt(double(out.inliers)), face_sigma) / out.incidence_cos;
   const double scale_sigma = input.scale_sigma_rel * out.button_in_camera.norm();
   out.uncertainty_m = std::hypot(fit_sigma, scale_sigma);
   out.plane_sound = out.inliers >= options_.good_points &&

@@ -17,12 +17,16 @@ namespace sightline {
 
 // Locator options. Keys "button.locate.*".
 struct ButtonLocatorOptions {
-  double button_radii = 0.9;         // First choice: map points within this many tracked button
-                                     // radii (on the button's own face); 0 = skip.
-  double radius_px = 60;             // Fallback: points projecting within this of the centre
-                                     // (the panel around the button) [px].
+  double button_radii = 0.9;         // Map points within this many tracked button radii lie on
+                                     // the button's face; 0 = ignore the face.
+  double radius_px = 60;             // The panel around the button: points projecting within
+                                     // this of the centre [px].
   int min_points = 3;                // Fewer points near the button: no position.
-  int good_points = 6;               // Points for a sound fit (fewer: plane_sound = false).
+  int good_points = 6;               // Points for a sound fit (fewer: plane_sound = false); this
+                                     // many on the face: the face's own plane is fitted.
+  int min_face_points = 3;           // Else this many face points move the panel plane onto the
+                                     // face (median offset; buttons stand out of their plate).
+  double max_face_offset_m = 0.03;   // Larger median face offsets are not applied [m].
   int ransac_iterations = 200;       // Plane RANSAC hypotheses.
   double ransac_threshold_m = 0.004; // Plane inlier distance [m].
   double max_plane_rms_m = 0.004;    // Inlier RMS above this: plane not sound [m].
@@ -52,7 +56,8 @@ struct ButtonLocation {
                                                                  // the camera).
   Eigen::Vector3d approach_in_camera = Eigen::Vector3d::UnitZ(); // = -normal: push direction.
   int points_near = 0;       // Map points near the button.
-  bool on_button = false;    // The points came from the button's face (else the panel around).
+  bool on_button = false;    // The position is on the button's face (own plane or offset);
+                             // else on the panel plane around it.
   int inliers = 0;           // Plane inliers.
   double plane_rms_m = 0;    // RMS distance of the inliers to the plane.
   double incidence_cos = 0;  // |cos| between the viewing ray and the normal.
@@ -69,8 +74,9 @@ class ButtonLocator {
  public:
   explicit ButtonLocator(ButtonLocatorOptions options = {}) : options_(options) {}
 
-  // Uses the points on the button's face when there are min_points of them, else those within
-  // radius_px. NotFound with the count when fewer than min_points map points lie near it;
+  // Fits the button face when good_points map points lie on it, else the panel within
+  // radius_px moved onto the face by min_face_points face points. NotFound with the count
+  // when fewer than min_points map points lie near the button;
   // FailedPrecondition for a degenerate plane or a ray nearly parallel to it (or hitting it
   // behind the camera); InvalidArgument for invalid input.
   StatusOr<ButtonLocation> Locate(const LocatorInput& input) const;

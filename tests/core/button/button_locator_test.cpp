@@ -64,6 +64,30 @@ TEST(ButtonLocator, ToleratesNoiseAndOutliers) {
   EXPECT_NEAR(at->uncertainty_m, 0.006, 0.001);
 }
 
+TEST(ButtonLocator, AFewFacePointsMoveThePanelPlaneOntoTheButton) {
+  // A plate at 0.5 m and a button face 5 mm proud of it, with only 4 points on the face.
+  auto points = PlanePoints(60, 0.5, 0.05, 0.0005, 8);
+  std::erase_if(points, [](const Eigen::Vector3d& x) { return x.head<2>().norm() < 0.012; });
+  for (const Eigen::Vector2d& xy : {Eigen::Vector2d(0.003, 0.002), Eigen::Vector2d(-0.004, 0.001),
+                                    Eigen::Vector2d(0.001, -0.005), Eigen::Vector2d(-0.002, -0.003)}) {
+    points.emplace_back(xy.x(), xy.y(), 0.495);
+  }
+  LocatorInput in;
+  in.camera = Camera();
+  in.points_in_world = &points;
+  in.button_px = {319.5, 239.5};
+  in.button_radius_px = 525 * 0.012 / 0.495;  // A 12 mm button.
+  auto at = ButtonLocator().Locate(in);
+  ASSERT_TRUE(at.ok()) << at.status().ToString();
+  EXPECT_TRUE(at->on_button);
+  EXPECT_NEAR(at->button_in_camera.z(), 0.495, 0.001);
+  in.button_radius_px = 0;  // Face unknown: the plate.
+  auto plate = ButtonLocator().Locate(in);
+  ASSERT_TRUE(plate.ok());
+  EXPECT_FALSE(plate->on_button);
+  EXPECT_NEAR(plate->button_in_camera.z(), 0.5, 0.001);
+}
+
 TEST(ButtonLocator, TooFewPointsIsNotFound) {
   const auto points = PlanePoints(2, 0.5, 0.01, 0, 4);
   LocatorInput in;
