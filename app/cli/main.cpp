@@ -27,6 +27,8 @@ const char kUsage[] =
     "                             calibrate the floor plane for indoor mapping\n"
     "  calibrate mono|stereo|handeye|floor ... --out FILE\n"
     "                             chessboard calibration of a camera, a stereo rig, an arm camera\n"
+    "  arm-listen HOST:PORT [--token T]\n"
+    "                             print the arm targets Sightline serves (JSON lines)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -47,5 +49,6 @@ int main(int argc, char** argv) {
   if (command == "sweep") return sightline::cli::SweepCommand(args);
   if (command == "floor") return sightline::cli::FloorCommand(args);
   if (command == "calibrate") return sightline::cli::CalibrateCommand(args);
+  if (command == "arm-listen") return sightline::cli::ArmListenCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

@@ -1,0 +1,87 @@
+// sightline-cli arm-listen: a client of the arm-target protocol that prints what arrives, for
+// demos and tests (core/button/PROTOCOL.md).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "app/cli/cli_args.h"
+#include "app/cli/commands.h"
+#include "core/button/arm_client.h"
+
+namespace sightline::cli {
+
+namespace {
+
+const char kHelp[] =
+    "usage: sightline-cli arm-listen HOST:PORT [--token T] [--count N] [--timeout S]\n"
+    "                                [--no-heartbeats]\n"
+    "\n"
+    "Connects to Sightline's arm-target server and prints every JSON line it sends (targets,\n"
+    "heartbeats, stops), one per line, as they arrive. See core/button/PROTOCOL.md.\n"
+    "\n"
+    "  --token T         present this token first (needed when the server has one)\n"
+    "  --count N         exit after N printed messages\n"
+    "  --timeout S       exit with an error when nothing is printed for S seconds\n"
+    "  --no-heartbeats   do not print (or count) heartbeat messages\n";
+
+bool ParsePositive(const std::string& text, double* value) {
+  char* end = nullptr;
+  *value = std::strtod(text.c_str(), &end);
+  return end && *end == '\0' && *value > 0;
+}
+
+}  // namespace
+
+int ArmListenCommand(const std::vector<std::string>& argv) {
+  auto parsed = CliArgs::Parse(argv, {"--token", "--count", "--timeout"}, {"--help", "--no-heartbeats"});
+  if (!parsed.ok()) return Fail("arm-listen: " + parsed.status().message());
+  if (parsed->Has("--help")) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (parsed->positionals().size() != 1) return Fail("arm-listen: expected HOST:PORT (see --help)");
+  std::string host;
+  int port = 0;
+  const Status address = ArmClient::ParseAddress(parsed->positionals()[0], &host, &port);
+  if (!address.ok()) return Fail("arm-listen: " + address.message());
+  double count = 0, timeout_s = 0;
+  if (auto v = parsed->Value("--count"); v && !ParsePositive(*v, &count)) {
+    return Fail("arm-listen: --count must be a positive number");
+  }
+  if (auto v = parsed->Value("--timeout"); v && !ParsePositive(*v, &timeout_s)) {
+    return Fail("arm-listen: --timeout must be a positive number of seconds");
+  }
+  auto client = ArmClient::Connect(host, port, parsed->Value("--token").value_or(""));
+  if (!client.ok()) return Fail("arm-listen: " + client.status().message());
+  const bool heartbeats = !parsed->Has("--no-heartbeats");
+  using Clock = std::chrono::steady_clock;
+  auto last_printed = Clock::now();
+  long printed = 0;
+  while (count <= 0 || printed < long(count)) {
+    int wait_ms = 1000;
+    if (timeout_s > 0) {
+      const double left_s =
+          timeout_s - std::chrono::duration<double>(Clock::now() - last_printed).count();
+      if (left_s <= 0) {
+        return Fail("arm-listen: nothing arrived within " + parsed->Value("--timeout").value() + " s");
+      }
+      wait_ms = std::max(1, int(left_s * 1000));
+    }
+    StatusOr<std::string> line = client->ReadLine(wait_ms);
+    if (!line.ok()) {
+      if (line.status().code() == StatusCode::kOutOfRange) continue;  // Deadline checked above.
+      if (count > 0) return Fail("arm-listen: " + line.status().message());
+      std::fprintf(stderr, "sightline-cli: arm-listen: %s\n", line.status().message().c_str());
+      return 0;  // The server closed the stream.
+    }
+    if (!heartbeats && line->find("\"type\":\"heartbeat\"") != std::string::npos) continue;
+    std::printf("%s\n", line->c_str());
+    std::fflush(stdout);
+    ++printed;
+    last_printed = Clock::now();
+  }
+  return 0;
+}
+
+}  // namespace sightline::cli

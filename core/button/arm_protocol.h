@@ -1,0 +1,37 @@
+// The arm-target protocol (version 1): JSON lines over TCP, documented in
+// core/button/PROTOCOL.md. Serialisation of the three message types and parsing of the one
+// line a client may send (the token handshake).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace sightline {
+
+inline constexpr int kArmProtocolVersion = 1;
+
+// A button target for the arm controller.
+struct ArmTarget {
+  double stamp_s = 0;                  // Time of the image the estimate comes from [s].
+  std::string frame_id = "arm_base";   // Frame of position and approach.
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // Button centre [m].
+  Eigen::Vector3d approach = Eigen::Vector3d::UnitX();   // Unit push direction.
+  double uncertainty_m = 0;            // 1-sigma position uncertainty [m].
+  std::vector<int64_t> source_frames;  // Frame ids the estimate used.
+};
+
+// One JSON line (with the trailing '\n') per message; `seq` counts all messages of a server.
+std::string TargetLine(int64_t seq, double now_s, const ArmTarget& target);
+std::string HeartbeatLine(int64_t seq, double now_s, bool targets_enabled);
+std::string StopLine(int64_t seq, double now_s, const std::string& reason);
+
+// The token of a handshake line `{"token": "..."}`; nullopt for anything else (malformed JSON,
+// other keys only, non-string token). Accepts a flat object of string, number, bool or null
+// members.
+std::optional<std::string> ParseTokenLine(const std::string& line);
+
+}  // namespace sightline

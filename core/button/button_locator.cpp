@@ -1,0 +1,209 @@
+#include "core/button/button_locator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/button/option_check.h"
+
+namespace sightline {
+
+using button_internal::Invalid;
+
+bool ButtonLocatorOptions::IsValid(std::string* error) const {
+  if (!(button_radii >= 0)) return Invalid(error, "button.locate.button_radii must be >= 0");
+  if (!(radius_px > 0)) return Invalid(error, "button.locate.radius_px must be > 0");
+  if (min_points < 3) return Invalid(error, "button.locate.min_points must be >= 3");
+  if (min_face_points < 1) return Invalid(error, "button.locate.min_face_points must be >= 1");
+  if (!(max_face_offset_m > 0)) return Invalid(error, "button.locate.max_face_offset_m must be > 0");
+  if (good_points < min_points) return Invalid(error, "button.locate.good_points must be >= min_points");
+  if (ransac_iterations < 1) return Invalid(error, "button.locate.ransac_iterations must be >= 1");
+  if (!(ransac_threshold_m > 0)) return Invalid(error, "button.locate.ransac_threshold_m must be > 0");
+  if (!(max_plane_rms_m > 0)) return Invalid(error, "button.locate.max_plane_rms_m must be > 0");
+  if (!(min_inlier_fraction > 0 && min_inlier_fraction <= 1)) {
+    return Invalid(error, "button.locate.min_inlier_fraction must lie in (0, 1]");
+  }
+  if (!(min_incidence_cos > 0 && min_incidence_cos < 1)) {
+    return Invalid(error, "button.locate.min_incidence_cos must lie in (0, 1)");
+  }
+  return true;
+}
+
+OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
+  using O = ButtonLocatorOptions;
+  return OptionTable<O>("button.locate")
+      .Double("button_radii", &O::button_radii, "radii", 0, 10, 0.05,
+              "Map points within this many tracked button radii (the button's face) are used "
+              "first; 0 = always use radius_px.")
+      .Double("radius_px", &O::radius_px, "px", 1, 2000, 1,
+              "Map points projecting within this distance of the button centre are used.")
+      .Int("min_points", &O::min_points, "", 3, 1000, 1, "Fewer points: no 3D position.")
+      .Int("min_face_points", &O::min_face_points, "", 1, 1000, 1,
+           "Points on the button's face that move the panel plane onto the face.")
+      .Double("max_face_offset_m", &O::max_face_offset_m, "m", 0.001, 0.2, 0.001,
+              "Larger median offset of the face points from the panel plane is not applied.")
+      .Int("good_points", &O::good_points, "", 3, 1000, 1,
+           "Fewer points than this: the plane is not sound (no target is sent).")
+      .Int("ransac_iterations", &O::ransac_iterations, "", 1, 100000, 10, "Plane RANSAC hypotheses.")
+      .Double("ransac_threshold_m", &O::ransac_threshold_m, "m", 1e-5, 1, 0.0005,
+              "Plane inlier distance.")
+      .Double("max_plane_rms_m", &O::max_plane_rms_m, "m", 1e-5, 1, 0.0005,
+              "Inlier RMS above this: the plane is not sound.")
+      .Double("min_inlier_fraction", &O::min_inlier_fraction, "", 0.01, 1, 0.05,
+              "Fewer inliers than this fraction of the points: the plane is not sound.")
+      .Double("min_incidence_cos", &O::min_incidence_cos, "", 0.01, 0.99, 0.01,
+              "Viewing ray closer to parallel with the plane than this |cos|: no position.");
+}
+
+Eigen::Isometry3d BaseFromCamera(const Eigen::Isometry3d& base_from_end_effector,
+                                 const Eigen::Isometry3d& end_effector_from_camera) {
+  return base_from_end_effector * end_effector_from_camera;
+}
+
+namespace {
+
+struct Plane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // Unit.
+  double offset = 0;                                  // normal . x + offset = 0.
+  double Distance(const Eigen::Vector3d& x) const { return std::abs(normal.dot(x) + offset); }
+};
+
+// Least-squares plane: centroid and the smallest principal direction.
+Plane FitPlane(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points) mean += p;
+  mean /= double(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  Plane plane;
+  plane.normal = solver.eigenvectors().col(0).normalized();
+  plane.offset = -plane.normal.dot(mean);
+  return plane;
+}
+
+std::vector<int> Inliers(const Plane& plane, const std::vector<Eigen::Vector3d>& points, double t) {
+  std::vector<int> in;
+  for (int i = 0; i < int(points.size()); ++i) {
+    if (plane.Distance(points[i]) <= t) in.push_back(i);
+  }
+  return in;
+}
+
+// RANSAC over 3-point planes; returns the largest inlier set (all points if none better).
+std::vector<int> RansacPlane(const std::vector<Eigen::Vector3d>& points, const ButtonLocatorOptions& o) {
+  std::vector<int> best;
+  std::mt19937_64 rng(o.seed);
+  std::uniform_int_distribution<int> pick(0, int(points.size()) - 1);
+  for (int it = 0; it < o.ransac_iterations; ++it) {
+    const int a = pick(rng), b = pick(rng), c = pick(rng);
+    if (a == b || b == c || a == c) continue;
+    const Eigen::Vector3d n = (points[b] - points[a]).cross(points[c] - points[a]);
+    if (n.norm() < 1e-12) continue;
+    Plane plane;
+    plane.normal = n.normalized();
+    plane.offset = -plane.normal.dot(points[a]);
+    std::vector<int> in = Inliers(plane, points, o.ransac_threshold_m);
+    if (in.size() > best.size()) best = std::move(in);
+  }
+  if (best.size() < 3) {
+    best.resize(points.size());
+    for (int i = 0; i < int(points.size()); ++i) best[i] = i;
+  }
+  return best;
+}
+
+}  // namespace
+
+StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const {
+  std::string error;
+  if (!options_.IsValid(&error)) return InvalidArgument(error);
+  SIGHTLINE_RETURN_IF_ERROR(input.camera.Validate());
+  if (!input.points_in_world) return InvalidArgument("button locator: no map points given");
+  if (!input.button_px.allFinite() || !input.camera_from_world.matrix().allFinite()) {
+    return InvalidArgument("button locator: button pixel or camera pose not finite");
+  }
+  std::vector<Eigen::Vector3d> in_camera;
+  std::vector<double> pixel_distance;
+  for (const Eigen::Vector3d& x_in_world : *input.points_in_world) {
+    const Eigen::Vector3d x = input.camera_from_world * x_in_world;
+    if (!(x.z() > 1e-6) || !x.allFinite()) continue;
+    in_camera.push_back(x);
+    pixel_distance.push_back((input.camera.Project(x) - input.button_px).norm());
+  }
+  auto within = [&](double radius) {
+    std::vector<Eigen::Vector3d> near;
+    for (size_t i = 0; i < in_camera.size(); ++i) {
+      if (pixel_distance[i] <= radius) near.push_back(in_camera[i]);
+    }
+    return near;
+  };
+  ButtonLocation out;
+  std::vector<Eigen::Vector3d> face;  // Points on the button's own face.
+  if (options_.button_radii > 0 && input.button_radius_px > 0) {
+    face = within(options_.button_radii * input.button_radius_px);
+  }
+  // Enough points on the face: its own plane. Else the panel's plane around the button,
+  // moved onto the face by the face points it has (a button stands out of its plate).
+  const bool face_alone = int(face.size()) >= options_.good_points;
+  const std::vector<Eigen::Vector3d> near = face_alone ? face : within(options_.radius_px);
+  out.points_near = int(near.size());
+  if (out.points_near < options_.min_points) {
+    return NotFound("button locator: " + std::to_string(out.points_near) +
+                    " map points near the button (needs " + std::to_string(options_.min_points) + ")");
+  }
+  const std::vector<int> inlier_ids = RansacPlane(near, options_);
+  std::vector<Eigen::Vector3d> inliers;
+  for (int i : inlier_ids) inliers.push_back(near[i]);
+  Plane plane = FitPlane(inliers);
+  double sum2 = 0;
+  for (const auto& x : inliers) sum2 += std::pow(plane.Distance(x), 2);
+  out.inliers = int(inliers.size());
+  out.plane_rms_m = std::sqrt(sum2 / out.inliers);
+  out.on_button = face_alone;
+  double face_sigma = 0;
+  if (!face_alone && int(face.size()) >= options_.min_face_points) {
+    std::vector<double> signed_distance;
+    for (const auto& x : face) signed_distance.push_back(plane.normal.dot(x) + plane.offset);
+    std::nth_element(signed_distance.begin(), signed_distance.begin() + signed_distance.size() / 2,
+                     signed_distance.end());
+    const double shift = signed_distance[signed_distance.size() / 2];
+    if (std::abs(shift) <= options_.max_face_offset_m) {
+      plane.offset -= shift;
+      out.on_button = true;
+      face_sigma = out.plane_rms_m / std::sqrt(double(face.size()));
+    }
+  }
+
+  const Eigen::Vector3d ray =
+      input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();
+  const double denom = plane.normal.dot(ray);
+  out.incidence_cos = std::abs(denom);
+  if (out.incidence_cos < options_.min_incidence_cos) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "button locator: viewing ray nearly parallel to the panel (|cos| = %.3f < %.3f)",
+                  out.incidence_cos, options_.min_incidence_cos);
+    return FailedPrecondition(text);
+  }
+  const double t = -plane.offset / denom;
+  if (!(t > 0)) return FailedPrecondition("button locator: the panel plane lies behind the camera");
+  out.button_in_camera = t * ray;
+  // The normal pointing out of the panel faces the camera: n . ray < 0.
+  out.normal_in_camera = denom < 0 ? plane.normal : -plane.normal;
+  out.approach_in_camera = -out.normal_in_camera;
+  // Depth error from the fit, spread along the ray by the incidence, plus the scale error.
+  const double fit_sigma =
+      std::hypot(out.plane_rms_m / std::sqrt(double(out.inliers)), face_sigma) / out.incidence_cos;
+  const double scale_sigma = input.scale_sigma_rel * out.button_in_camera.norm();
+  out.uncertainty_m = std::hypot(fit_sigma, scale_sigma);
+  out.plane_sound = out.inliers >= options_.good_points &&
+                    out.inliers >= options_.min_inlier_fraction * out.points_near &&
+                    out.plane_rms_m <= options_.max_plane_rms_m;
+  return out;
+}
+
+}  // namespace sightline

@@ -1,0 +1,105 @@
+// The button picker's run logic for one button, frame by frame (Qt-free, no threads): the
+// operator's tap and answer, tracking with the window predicted from the SLAM pose, the 3D
+// position from the SLAM's map, and the safety gate. The caller publishes the targets (e.g.
+// ArmServer) and shows the state (OperatorPanel). The SLAM plugs in through SlamView.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "core/button/arm_protocol.h"
+#include "core/button/button_detector.h"
+#include "core/button/button_locator.h"
+#include "core/button/button_tracker.h"
+#include "core/button/safety_gate.h"
+
+namespace sightline {
+
+// All button options. Keys "button.*".
+struct ButtonPickerOptions {
+  ButtonDetectorOptions detect;
+  ButtonTrackerOptions track;
+  ButtonLocatorOptions locate;
+  SafetyGateOptions gate;
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<ButtonPickerOptions> Describe();
+};
+
+// What the monocular SLAM provides for one frame (plain inputs; metric once converged).
+struct SlamView {
+  bool tracking = false;  // The pose of this frame is valid.
+  PinholeCamera camera;
+  Eigen::Isometry3d camera_from_world = Eigen::Isometry3d::Identity();
+  std::shared_ptr<const std::vector<Eigen::Vector3d>> map_points_in_world;
+  bool scale_converged = false;  // The metric scale estimate has converged.
+  double scale_sigma_rel = 0;    // 1-sigma relative scale error.
+};
+
+// The picker's state, as the operator's banner shows it.
+enum class PickerState { kIdle, kConfirm, kSearching, kTracking, kLocating, kTargetSent, kLost, kStopped };
+const char* PickerStateKey(PickerState state);  // "idle", "confirm", ..., "stopped".
+
+// What happened in one frame.
+struct PickerFrame {
+  int64_t frame_id = -1;
+  double stamp_s = 0;
+  PickerState state = PickerState::kIdle;
+  ButtonTrack track;
+  double tracking_ms = 0;                       // Tracker time of this frame.
+  std::optional<ButtonLocation> location;       // Camera frame.
+  Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  GateVerdict verdict;
+  std::optional<ArmTarget> target;              // Set when the gate lets it out.
+};
+
+// One picker per button; constructible many times.
+//
+//   ButtonPicker picker(options);
+//   Status s = picker.Tap(still, {412, 230});   // NotFound: "no button here", ask again.
+//   picker.Confirm();                           // The operator said Yes.
+//   PickerFrame f = picker.Process(id, stamp, image, slam_view, base_from_camera, now_s);
+//   if (f.target) server->PublishTarget(*f.target);
+//   picker.Stop(); server->PublishStop("operator");
+class ButtonPicker {
+ public:
+  explicit ButtonPicker(ButtonPickerOptions options = {}) : options_(std::move(options)) {}
+
+  // Finds the button at the tap on the still frame; asks for confirmation. NotFound = "no
+  // button here"; InvalidArgument for bad input. Ignored (FailedPrecondition) while stopped.
+  Status Tap(const cv::Mat& still, cv::Point2d tap, int64_t frame_id = -1);
+  // The candidate shown to the operator (null before a tap).
+  std::shared_ptr<const ButtonModel> candidate() const { return candidate_; }
+  void Confirm();
+  void Cancel();
+  // STOP: no target until Start().
+  void Stop();
+  void Start();
+  PickerState state() const { return state_; }
+
+  // Tracks, locates and gates one frame. `now_s` is the time the result would be sent (same
+  // clock as stamp_s) for the age check.
+  PickerFrame Process(int64_t frame_id, double stamp_s, const cv::Mat& image, const SlamView& slam,
+                      const Eigen::Isometry3d& base_from_camera, double now_s);
+
+ private:
+  TrackPrediction Predict(const SlamView& slam) const;
+
+  ButtonPickerOptions options_;
+  PickerState state_ = PickerState::kIdle;
+  bool stopped_ = false;
+  std::shared_ptr<const ButtonModel> candidate_;
+  int64_t tap_frame_ = -1;
+  std::unique_ptr<ButtonTracker> tracker_;
+  std::optional<Eigen::Vector3d> button_in_world_;  // Last located position.
+  double last_scale_ = 1.0, last_depth_m_ = 0;       // Track scale and depth at that time.
+};
+
+}  // namespace sightline

@@ -1,0 +1,221 @@
+#include "core/button/button_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/button/button_detector.h"
+#include "core/button/option_check.h"
+
+namespace sightline {
+
+using button_internal::Invalid;
+
+bool ButtonTrackerOptions::IsValid(std::string* error) const {
+  if (!(ratio > 0 && ratio <= 1)) return Invalid(error, "button.track.ratio must lie in (0, 1]");
+  if (!(gate_px > 0)) return Invalid(error, "button.track.gate_px must be > 0");
+  if (!(gate_radius >= 0)) return Invalid(error, "button.track.gate_radius must be >= 0");
+  if (!(window_px >= 8)) return Invalid(error, "button.track.window_px must be >= 8");
+  if (!(window_radius >= 0)) return Invalid(error, "button.track.window_radius must be >= 0");
+  if (min_matches < 2) return Invalid(error, "button.track.min_matches must be >= 2");
+  if (centre != "similarity" && centre != "centroid") {
+    return Invalid(error, "button.track.centre must be similarity or centroid");
+  }
+  if (!(ransac_px > 0)) return Invalid(error, "button.track.ransac_px must be > 0");
+  if (!(sift_contrast > 0 && sift_contrast < 1)) {
+    return Invalid(error, "button.track.sift_contrast must lie in (0, 1)");
+  }
+  if (flann_trees < 1 || flann_trees > 64) return Invalid(error, "button.track.flann_trees must lie in [1, 64]");
+  if (flann_checks < 1) return Invalid(error, "button.track.flann_checks must be >= 1");
+  if (!(refresh_scale_step > 1)) return Invalid(error, "button.track.refresh_scale_step must be > 1");
+  if (!(refresh_radius > 0)) return Invalid(error, "button.track.refresh_radius must be > 0");
+  if (!(refresh_min_confidence >= 0 && refresh_min_confidence <= 1)) {
+    return Invalid(error, "button.track.refresh_min_confidence must lie in [0, 1]");
+  }
+  if (max_model_keypoints < 2) return Invalid(error, "button.track.max_model_keypoints must be >= 2");
+  return true;
+}
+
+OptionTable<ButtonTrackerOptions> ButtonTrackerOptions::Describe() {
+  using O = ButtonTrackerOptions;
+  return OptionTable<O>("button.track")
+      .Double("ratio", &O::ratio, "", 0.1, 1, 0.01,
+              "Lowe's ratio test: best over second-best descriptor distance must be below this.")
+      .Double("gate_px", &O::gate_px, "px", 1, 5000, 1,
+              "Distance gate: a match farther than this from the predicted centre is dropped.")
+      .Double("gate_radius", &O::gate_radius, "radii", 0, 100, 0.1,
+              "The gate grows to this many predicted button radii when that is larger.")
+      .Bool("use_window", &O::use_window,
+            "Compute SIFT only in a window around the predicted centre (fast).")
+      .Double("window_px", &O::window_px, "px", 8, 5000, 4, "Half size of the search window.")
+      .Double("window_radius", &O::window_radius, "radii", 0, 100, 0.1,
+              "The window grows to this many predicted button radii when that is larger.")
+      .Int("min_matches", &O::min_matches, "", 2, 1000, 1,
+           "Fewer consistent matches: the button is lost.")
+      .Choice("centre", &O::centre, {"similarity", "centroid"},
+              "New centre: the model centre through a RANSAC similarity of the matches, or the "
+              "matched keypoints' centroid (the seed's rule).")
+      .Double("ransac_px", &O::ransac_px, "px", 0.1, 50, 0.1, "Similarity RANSAC inlier distance.")
+      .Double("sift_contrast", &O::sift_contrast, "", 0.001, 0.5, 0.005, "SIFT contrast threshold.")
+      .Int("flann_trees", &O::flann_trees, "", 1, 64, 1, "FLANN randomised kd-trees.")
+      .Int("flann_checks", &O::flann_checks, "", 1, 100000, 8, "FLANN leaf checks per query.")
+      .Bool("refresh", &O::refresh,
+            "Add features of confidently tracked frames to the model when the button's apparent "
+            "size has changed.")
+      .Double("refresh_scale_step", &O::refresh_scale_step, "", 1.01, 10, 0.05,
+              "Size change since the last refresh that triggers the next.")
+      .Double("refresh_radius", &O::refresh_radius, "radii", 0.1, 20, 0.1,
+              "Features within this many button radii of the centre are added.")
+      .Double("refresh_min_confidence", &O::refresh_min_confidence, "", 0, 1, 0.05,
+              "Only frames tracked at least this confidently refresh the model.")
+      .Int("max_model_keypoints", &O::max_model_keypoints, "", 2, 100000, 100,
+           "The model never grows beyond this many keypoints.");
+}
+
+ButtonTracker::ButtonTracker(std::shared_ptr<const ButtonModel> model, ButtonTrackerOptions options)
+    : model_(std::move(model)), options_(std::move(options)) {
+  if (!model_) return;
+  for (const cv::KeyPoint& k : model_->keypoints) points_.push_back(k.pt);
+  descriptors_ = model_->descriptors.clone();
+  RebuildIndex();
+}
+
+void ButtonTracker::RebuildIndex() {
+  index_.release();
+  if (descriptors_.rows >= 2) {
+    index_ = cv::makePtr<cv::flann::Index>(descriptors_,
+                                           cv::flann::KDTreeIndexParams(options_.flann_trees));
+  }
+}
+
+void ButtonTracker::Refresh(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& descriptors,
+                            cv::Point2f offset, const ButtonTrack& track,
+                            const cv::Mat& model_to_image) {
+  cv::Mat image_to_model;
+  cv::invertAffineTransform(model_to_image, image_to_model);
+  const double reach = options_.refresh_radius * track.radius_px;
+  const cv::Matx23d m(image_to_model);
+  for (size_t i = 0; i < keypoints.size(); ++i) {
+    if (descriptors_.rows >= options_.max_model_keypoints) break;
+    const cv::Point2f at = keypoints[i].pt + offset;
+    if (std::hypot(at.x - track.center.x, at.y - track.center.y) > reach) continue;
+    points_.emplace_back(float(m(0, 0) * at.x + m(0, 1) * at.y + m(0, 2)),
+                         float(m(1, 0) * at.x + m(1, 1) * at.y + m(1, 2)));
+    descriptors_.push_back(descriptors.row(int(i)));
+  }
+  refresh_scale_ = track.scale;
+  RebuildIndex();
+}
+
+cv::Rect ButtonTracker::Window(cv::Size size, const TrackPrediction& p) const {
+  const cv::Rect whole(0, 0, size.width, size.height);
+  if (!options_.use_window || !p.valid) return whole;
+  const double half = std::max(options_.window_px, options_.window_radius * model_->RadiusPx() * p.scale);
+  const cv::Rect window(int(std::floor(p.center.x - half)), int(std::floor(p.center.y - half)),
+                        int(std::ceil(2 * half)), int(std::ceil(2 * half)));
+  return window & whole;
+}
+
+namespace {
+
+struct Match {
+  int model = 0;
+  cv::Point2f at;
+  float distance = 0;
+};
+
+}  // namespace
+
+StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image, const TrackPrediction& prediction) {
+  std::string error;
+  if (!options_.IsValid(&error)) return InvalidArgument(error);
+  if (!model_ || !index_) return FailedPrecondition("button tracker: the button model has no features");
+  if (image.empty()) return InvalidArgument("button tracker: empty image");
+  const cv::Mat grey = ToGrey(image);
+  if (grey.empty()) return InvalidArgument("button tracker: image must be 8-bit grey, BGR or BGRA");
+
+  const TrackPrediction p = prediction.valid ? prediction : last_.value_or(TrackPrediction{});
+  ButtonTrack track;
+  track.window = Window(grey.size(), p);
+  if (track.window.area() <= 0) {
+    track.reason = "predicted window lies outside the image";
+    last_.reset();
+    return track;
+  }
+  cv::Ptr<cv::SIFT> sift = cv::SIFT::create(0, 3, options_.sift_contrast);
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+  sift->detectAndCompute(grey(track.window), cv::noArray(), keypoints, descriptors);
+  track.keypoints = int(keypoints.size());
+
+  // Ratio test, distance gate, and one match per model keypoint (the closest descriptor).
+  std::vector<Match> best(points_.size(), Match{-1, {}, 0});
+  if (!keypoints.empty() && points_.size() >= 2) {
+    cv::Mat indices, dists;
+    index_->knnSearch(descriptors, indices, dists, 2, cv::flann::SearchParams(options_.flann_checks));
+    const double gate = std::max(options_.gate_px, options_.gate_radius * model_->RadiusPx() * p.scale);
+    const float ratio2 = float(options_.ratio * options_.ratio);  // Distances are squared.
+    for (int i = 0; i < indices.rows; ++i) {
+      const int m = indices.at<int>(i, 0);
+      const float d0 = dists.at<float>(i, 0), d1 = dists.at<float>(i, 1);
+      if (m < 0 || !(d0 < ratio2 * d1)) continue;
+      const cv::Point2f at = keypoints[i].pt + cv::Point2f(track.window.tl());
+      if (p.valid && std::hypot(at.x - p.center.x, at.y - p.center.y) > gate) continue;
+      if (best[m].model < 0 || d0 < best[m].distance) best[m] = Match{m, at, d0};
+    }
+  }
+  std::vector<cv::Point2f> from, to;
+  for (const Match& m : best) {
+    if (m.model < 0) continue;
+    from.push_back(points_[m.model]);
+    to.push_back(m.at);
+  }
+  track.matches = int(to.size());
+  if (track.matches < options_.min_matches) {
+    track.reason = "lost: " + std::to_string(track.matches) + " matches (needs " +
+                   std::to_string(options_.min_matches) + ")";
+    last_.reset();
+    return track;
+  }
+  cv::Mat similarity;
+  if (options_.centre == "centroid") {
+    cv::Point2d sum(0, 0);
+    for (const cv::Point2f& q : to) sum += cv::Point2d(q);
+    track.center = sum / double(to.size());
+    track.inliers = track.matches;
+    track.scale = p.valid ? p.scale : 1.0;
+  } else {
+    std::vector<uchar> inlier_mask;
+    const cv::Mat s = cv::estimateAffinePartial2D(from, to, inlier_mask, cv::RANSAC,
+                                                  options_.ransac_px, 2000, 0.995, 10);
+    track.inliers = int(std::count(inlier_mask.begin(), inlier_mask.end(), uchar(1)));
+    if (s.empty() || track.inliers < options_.min_matches) {
+      track.reason = "lost: " + std::to_string(track.inliers) + " consistent matches (needs " +
+                     std::to_string(options_.min_matches) + ")";
+      last_.reset();
+      return track;
+    }
+    similarity = s;
+    const double a = s.at<double>(0, 0), b = s.at<double>(1, 0);
+    track.scale = std::hypot(a, b);
+    const cv::Point2d c = model_->center;
+    track.center = {a * c.x - b * c.y + s.at<double>(0, 2), b * c.x + a * c.y + s.at<double>(1, 2)};
+  }
+  track.radius_px = model_->RadiusPx() * track.scale;
+  const double fraction = double(track.inliers) / std::max(1, track.matches);
+  const double support = std::min(1.0, double(track.inliers) / (2.0 * options_.min_matches));
+  track.confidence = fraction * support;
+  track.found = true;
+  last_ = TrackPrediction{true, track.center, track.scale};
+  const double change = std::max(track.scale / refresh_scale_, refresh_scale_ / track.scale);
+  if (options_.refresh && !similarity.empty() && track.confidence >= options_.refresh_min_confidence &&
+      change >= options_.refresh_scale_step) {
+    Refresh(keypoints, descriptors, cv::Point2f(track.window.tl()), track, similarity);
+  }
+  return track;
+}
+
+}  // namespace sightline

@@ -1,0 +1,107 @@
+// Button tracking in later frames (the seed's tracking phase): SIFT on a search window
+// predicted from the camera pose (or the last position), FLANN matching against the model of
+// the tapped button with Lowe's ratio test and the seed's distance gate, and the new centre
+// from the matches; lost when too few matches survive.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+#include <opencv2/flann.hpp>
+
+#include "core/button/button_model.h"
+#include "core/common/status.h"
+#include "core/options/option_table.h"
+
+namespace sightline {
+
+// Tracker options. Keys "button.track.*".
+struct ButtonTrackerOptions {
+  double ratio = 0.8;                 // Lowe's ratio: best / second-best descriptor distance.
+  double gate_px = 40;                // Distance gate: matches farther from the predicted
+                                      // centre are dropped [px] (at least; see gate_radius).
+  double gate_radius = 2.5;           // ... or this many predicted button radii, if larger.
+  bool use_window = true;             // Search only a window around the prediction.
+  double window_px = 80;              // Half size of the search window [px] (at least) ...
+  double window_radius = 4.0;         // ... or this many predicted button radii, if larger.
+  int min_matches = 4;                // Fewer consistent matches: the button is lost.
+  std::string centre = "similarity";  // similarity (model centre through a RANSAC similarity
+                                      // of the matches) or centroid (the seed's rule).
+  double ransac_px = 3.0;             // Inlier distance of the similarity RANSAC [px].
+  double sift_contrast = 0.01;        // SIFT contrast threshold.
+  int flann_trees = 4;                // FLANN randomised kd-trees.
+  int flann_checks = 64;              // FLANN leaf checks per query.
+  bool refresh = true;                // Add features of confidently tracked frames to the
+                                      // model when the button's size has changed (keeps
+                                      // tracking through a long approach).
+  double refresh_scale_step = 1.15;   // Size change since the last refresh that triggers one.
+  double refresh_radius = 5.0;        // Features within this many button radii are added.
+  double refresh_min_confidence = 0.5;  // Only frames tracked at least this confidently.
+  int max_model_keypoints = 2000;     // The model never grows beyond this.
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<ButtonTrackerOptions> Describe();
+};
+
+// Where the button should be in the next frame, e.g. the button's 3D point projected with the
+// SLAM pose; scale = expected size relative to the model (still frame).
+struct TrackPrediction {
+  bool valid = false;
+  cv::Point2d center;
+  double scale = 1.0;
+};
+
+// The tracker's answer for one frame.
+struct ButtonTrack {
+  bool found = false;         // False: lost (too few matches); `reason` says why.
+  std::string reason;
+  cv::Point2d center;         // Button centre in this frame [px].
+  double scale = 1.0;         // Size relative to the model.
+  double radius_px = 0;       // Apparent button radius [px].
+  double confidence = 0;      // 0..1: inlier count and inlier fraction.
+  int keypoints = 0;          // SIFT keypoints found in the window.
+  int matches = 0;            // After ratio test and distance gate.
+  int inliers = 0;            // Consistent with the similarity (= matches for centroid).
+  cv::Rect window;            // The searched region.
+};
+
+// Stateful (remembers the last centre and scale for the next window). One per button.
+//
+//   ButtonTracker tracker(model, options);
+//   StatusOr<ButtonTrack> t = tracker.Track(frame, prediction);  // prediction may be {}
+//   if (t.ok() && t->found) Draw(t->center);
+class ButtonTracker {
+ public:
+  ButtonTracker(std::shared_ptr<const ButtonModel> model, ButtonTrackerOptions options = {});
+
+  // Finds the button in `image`. Without a valid prediction the window follows the last
+  // found position (whole image after a loss). InvalidArgument for an empty image or invalid
+  // options; a lost button is an ok result with found = false.
+  StatusOr<ButtonTrack> Track(const cv::Mat& image, const TrackPrediction& prediction = {});
+
+  const ButtonModel& model() const { return *model_; }
+  // Keypoints in the model now (the detector's plus refreshed ones).
+  int model_keypoints() const { return int(points_.size()); }
+  // Forgets the last position: the next frame is searched whole.
+  void Reset() { last_.reset(); }
+
+ private:
+  cv::Rect Window(cv::Size size, const TrackPrediction& p) const;
+  // Adds keypoints near the tracked centre, mapped into the model frame by the inverse of the
+  // similarity model_to_image (2x3).
+  void Refresh(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& descriptors,
+               cv::Point2f offset, const ButtonTrack& track, const cv::Mat& model_to_image);
+  void RebuildIndex();
+
+  std::shared_ptr<const ButtonModel> model_;
+  ButtonTrackerOptions options_;
+  std::vector<cv::Point2f> points_;  // Model keypoints in the still frame's pixels.
+  cv::Mat descriptors_;              // One row per model keypoint.
+  cv::Ptr<cv::flann::Index> index_;  // Over descriptors_.
+  double refresh_scale_ = 1.0;       // Scale at the last refresh.
+  std::optional<TrackPrediction> last_;
+};
+
+}  // namespace sightline

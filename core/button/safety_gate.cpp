@@ -1,0 +1,102 @@
+#include "core/button/safety_gate.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/button/option_check.h"
+
+namespace sightline {
+
+using button_internal::Invalid;
+
+bool SafetyGateOptions::IsValid(std::string* error) const {
+  if (!(max_age_ms > 0)) return Invalid(error, "button.gate.max_age_ms must be > 0");
+  if (!(min_confidence >= 0 && min_confidence <= 1)) {
+    return Invalid(error, "button.gate.min_confidence must lie in [0, 1]");
+  }
+  if (!(max_uncertainty_m > 0)) return Invalid(error, "button.gate.max_uncertainty_m must be > 0");
+  if (!(workspace_min_x_m < workspace_max_x_m && workspace_min_y_m < workspace_max_y_m &&
+        workspace_min_z_m < workspace_max_z_m)) {
+    return Invalid(error, "button.gate.workspace: every min must be below its max");
+  }
+  return true;
+}
+
+OptionTable<SafetyGateOptions> SafetyGateOptions::Describe() {
+  using O = SafetyGateOptions;
+  return OptionTable<O>("button.gate")
+      .Double("max_age_ms", &O::max_age_ms, "ms", 1, 10000, 10, "Older estimates are not sent.")
+      .Double("min_confidence", &O::min_confidence, "", 0, 1, 0.05,
+              "Weaker tracking confidence: no target.")
+      .Double("max_uncertainty_m", &O::max_uncertainty_m, "m", 1e-4, 1, 0.001,
+              "Larger 1-sigma position uncertainty: no target.")
+      .Double("workspace_min_x_m", &O::workspace_min_x_m, "m", -10, 10, 0.01, "Workspace box, base x min.")
+      .Double("workspace_max_x_m", &O::workspace_max_x_m, "m", -10, 10, 0.01, "Workspace box, base x max.")
+      .Double("workspace_min_y_m", &O::workspace_min_y_m, "m", -10, 10, 0.01, "Workspace box, base y min.")
+      .Double("workspace_max_y_m", &O::workspace_max_y_m, "m", -10, 10, 0.01, "Workspace box, base y max.")
+      .Double("workspace_min_z_m", &O::workspace_min_z_m, "m", -10, 10, 0.01, "Workspace box, base z min.")
+      .Double("workspace_max_z_m", &O::workspace_max_z_m, "m", -10, 10, 0.01, "Workspace box, base z max.");
+}
+
+const char* GateReasonKey(GateReason reason) {
+  switch (reason) {
+    case GateReason::kSend: return "send";
+    case GateReason::kStopped: return "stopped";
+    case GateReason::kNotConfirmed: return "not_confirmed";
+    case GateReason::kTrackingLost: return "tracking_lost";
+    case GateReason::kTrackingPoor: return "tracking_poor";
+    case GateReason::kNoEstimate: return "no_estimate";
+    case GateReason::kStale: return "stale";
+    case GateReason::kScaleNotConverged: return "scale_not_converged";
+    case GateReason::kPlaneUnsound: return "plane_unsound";
+    case GateReason::kUncertain: return "uncertain";
+    case GateReason::kOutsideWorkspace: return "outside_workspace";
+  }
+  return "unknown";
+}
+
+namespace {
+
+GateVerdict Refuse(GateReason reason, const std::string& message) { return {false, reason, message}; }
+
+bool Inside(const Eigen::Vector3d& p, const SafetyGateOptions& o) {
+  return p.allFinite() && p.x() >= o.workspace_min_x_m && p.x() <= o.workspace_max_x_m &&
+         p.y() >= o.workspace_min_y_m && p.y() <= o.workspace_max_y_m &&
+         p.z() >= o.workspace_min_z_m && p.z() <= o.workspace_max_z_m;
+}
+
+}  // namespace
+
+GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
+  std::string error;
+  if (!o.IsValid(&error)) return Refuse(GateReason::kStopped, "invalid gate options: " + error);
+  char text[200];
+  if (s.stopped) return Refuse(GateReason::kStopped, "stopped by the operator");
+  if (!s.operator_confirmed) return Refuse(GateReason::kNotConfirmed, "waiting for the operator's confirmation");
+  if (!s.tracking) return Refuse(GateReason::kTrackingLost, "button lost");
+  if (!(s.tracking_confidence >= o.min_confidence)) {
+    std::snprintf(text, sizeof(text), "tracking confidence %.2f below %.2f", s.tracking_confidence,
+                  o.min_confidence);
+    return Refuse(GateReason::kTrackingPoor, text);
+  }
+  if (!s.has_estimate) return Refuse(GateReason::kNoEstimate, "no 3D position yet");
+  if (!(s.estimate_age_ms >= 0 && s.estimate_age_ms <= o.max_age_ms)) {
+    std::snprintf(text, sizeof(text), "estimate %.0f ms old (limit %.0f ms)", s.estimate_age_ms, o.max_age_ms);
+    return Refuse(GateReason::kStale, text);
+  }
+  if (!s.scale_converged) return Refuse(GateReason::kScaleNotConverged, "metric scale not converged");
+  if (!s.plane_sound) return Refuse(GateReason::kPlaneUnsound, "panel plane fit not sound");
+  if (!(s.uncertainty_m <= o.max_uncertainty_m)) {
+    std::snprintf(text, sizeof(text), "uncertainty %.1f mm above %.1f mm", s.uncertainty_m * 1e3,
+                  o.max_uncertainty_m * 1e3);
+    return Refuse(GateReason::kUncertain, text);
+  }
+  if (!Inside(s.target_in_base, o)) {
+    std::snprintf(text, sizeof(text), "target (%.2f, %.2f, %.2f) m outside the workspace",
+                  s.target_in_base.x(), s.target_in_base.y(), s.target_in_base.z());
+    return Refuse(GateReason::kOutsideWorkspace, text);
+  }
+  return {true, GateReason::kSend, "target sent"};
+}
+
+}  // namespace sightline

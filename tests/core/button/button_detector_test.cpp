@@ -1,0 +1,72 @@
+// The detector on drawn panels: a tap on a button selects it, a tap on blank wall gives
+// "no button here", bad input gives a clear status.
+#include "core/button/button_detector.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+namespace sightline {
+namespace {
+
+// A grey wall with a 3 x 2 grid of round textured buttons (radius 22 px, pitch 80 px) at
+// x = 200, 280 and y = 140, 220, 300.
+cv::Mat DrawnPanel() {
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(120, 120, 120));
+  cv::rectangle(image, {150, 90, 180, 260}, cv::Scalar(170, 170, 175), cv::FILLED);
+  int label = 0;
+  for (int y : {140, 220, 300}) {
+    for (int x : {200, 280}) {
+      cv::circle(image, {x, y}, 22, cv::Scalar(60, 60, 60), cv::FILLED, cv::LINE_AA);
+      cv::circle(image, {x, y}, 18, cv::Scalar(220, 220, 220), cv::FILLED, cv::LINE_AA);
+      cv::putText(image, std::to_string(label++), {x - 8, y + 8}, cv::FONT_HERSHEY_SIMPLEX, 0.8,
+                  cv::Scalar(20, 20, 20), 2, cv::LINE_AA);
+    }
+  }
+  return image;
+}
+
+TEST(ButtonDetector, TapOnAButtonSelectsIt) {
+  const cv::Mat image = DrawnPanel();
+  ButtonDetector detector;
+  for (int y : {140, 220, 300}) {
+    for (int x : {200, 280}) {
+      for (cv::Point2d offset : {cv::Point2d(0, 0), cv::Point2d(12, 5), cv::Point2d(-8, -12)}) {
+        auto model = detector.Detect(image, cv::Point2d(x, y) + offset);
+        ASSERT_TRUE(model.ok()) << model.status().ToString();
+        EXPECT_LT(cv::norm((*model)->center - cv::Point2d(x, y)), 3.0) << x << "," << y;
+        EXPECT_NEAR((*model)->RadiusPx(), 22, 4);
+        EXPECT_GE((*model)->keypoints.size(), 3u);
+        EXPECT_EQ((*model)->descriptors.rows, int((*model)->keypoints.size()));
+      }
+    }
+  }
+}
+
+TEST(ButtonDetector, TapOnBlankWallIsNoButtonHere) {
+  ButtonDetector detector;
+  auto model = detector.Detect(DrawnPanel(), {520, 400});
+  ASSERT_FALSE(model.ok());
+  EXPECT_EQ(model.status().code(), StatusCode::kNotFound);
+  EXPECT_NE(model.status().message().find("no button here"), std::string::npos);
+}
+
+TEST(ButtonDetector, BadInputIsAClearStatus) {
+  ButtonDetector detector;
+  EXPECT_EQ(detector.Detect(cv::Mat(), {1, 1}).status().code(), StatusCode::kInvalidArgument);
+  auto outside = detector.Detect(DrawnPanel(), {700, 10});
+  EXPECT_EQ(outside.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(outside.status().message().find("outside"), std::string::npos);
+  EXPECT_EQ(detector.Detect(cv::Mat(10, 10, CV_32FC1), {1, 1}).status().code(),
+            StatusCode::kInvalidArgument);
+  ButtonDetectorOptions o;
+  o.canny_high = 10;  // Below canny_low.
+  std::string error;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("canny"), std::string::npos);
+  EXPECT_EQ(ButtonDetector(o).Detect(DrawnPanel(), {200, 140}).status().code(),
+            StatusCode::kInvalidArgument);
+}
+
+}  // namespace
+}  // namespace sightline

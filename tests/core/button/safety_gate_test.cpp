@@ -1,0 +1,92 @@
+// Every rule of the safety gate on its own: a good state sends; each failing condition stops
+// it with its own reason.
+#include "core/button/safety_gate.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace sightline {
+namespace {
+
+SafetyState Good() {
+  SafetyState s;
+  s.operator_confirmed = true;
+  s.tracking = true;
+  s.tracking_confidence = 0.9;
+  s.has_estimate = true;
+  s.estimate_age_ms = 40;
+  s.scale_converged = true;
+  s.plane_sound = true;
+  s.uncertainty_m = 0.003;
+  s.target_in_base = {0.5, 0.0, 0.3};
+  return s;
+}
+
+TEST(SafetyGate, AGoodEstimateIsSent) {
+  const GateVerdict v = CheckSafety(Good(), {});
+  EXPECT_TRUE(v.send);
+  EXPECT_EQ(v.reason, GateReason::kSend);
+}
+
+TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
+  struct Case {
+    const char* name;
+    std::function<void(SafetyState&)> spoil;
+    GateReason reason;
+  };
+  const std::vector<Case> cases = {
+      {"stop", [](SafetyState& s) { s.stopped = true; }, GateReason::kStopped},
+      {"unconfirmed", [](SafetyState& s) { s.operator_confirmed = false; }, GateReason::kNotConfirmed},
+      {"lost", [](SafetyState& s) { s.tracking = false; }, GateReason::kTrackingLost},
+      {"weak", [](SafetyState& s) { s.tracking_confidence = 0.1; }, GateReason::kTrackingPoor},
+      {"none", [](SafetyState& s) { s.has_estimate = false; }, GateReason::kNoEstimate},
+      {"stale", [](SafetyState& s) { s.estimate_age_ms = 201; }, GateReason::kStale},
+      {"negative age", [](SafetyState& s) { s.estimate_age_ms = -5; }, GateReason::kStale},
+      {"scale", [](SafetyState& s) { s.scale_converged = false; }, GateReason::kScaleNotConverged},
+      {"plane", [](SafetyState& s) { s.plane_sound = false; }, GateReason::kPlaneUnsound},
+      {"uncertain", [](SafetyState& s) { s.uncertainty_m = 0.05; }, GateReason::kUncertain},
+      {"outside x", [](SafetyState& s) { s.target_in_base.x() = 2.0; }, GateReason::kOutsideWorkspace},
+      {"outside z", [](SafetyState& s) { s.target_in_base.z() = -1.0; }, GateReason::kOutsideWorkspace},
+      {"nan", [](SafetyState& s) { s.target_in_base.y() = std::nan(""); }, GateReason::kOutsideWorkspace},
+  };
+  for (const Case& c : cases) {
+    SafetyState s = Good();
+    c.spoil(s);
+    const GateVerdict v = CheckSafety(s, {});
+    EXPECT_FALSE(v.send) << c.name;
+    EXPECT_EQ(v.reason, c.reason) << c.name << ": " << v.message;
+    EXPECT_FALSE(v.message.empty()) << c.name;
+  }
+}
+
+TEST(SafetyGate, AgeLimitIsAnOption) {
+  SafetyState s = Good();
+  s.estimate_age_ms = 150;
+  SafetyGateOptions o;
+  EXPECT_TRUE(CheckSafety(s, o).send);
+  o.max_age_ms = 100;
+  const GateVerdict v = CheckSafety(s, o);
+  EXPECT_EQ(v.reason, GateReason::kStale);
+  EXPECT_NE(v.message.find("150 ms"), std::string::npos) << v.message;
+}
+
+TEST(SafetyGate, StopWinsOverEverything) {
+  SafetyState s = Good();
+  s.stopped = true;
+  s.tracking = false;
+  EXPECT_EQ(CheckSafety(s, {}).reason, GateReason::kStopped);
+}
+
+TEST(SafetyGate, InvalidOptionsNeverSend) {
+  SafetyGateOptions o;
+  o.workspace_min_x_m = 2;  // Above max.
+  std::string error;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("workspace"), std::string::npos);
+  EXPECT_FALSE(CheckSafety(Good(), o).send);
+  EXPECT_STREQ(GateReasonKey(GateReason::kStale), "stale");
+}
+
+}  // namespace
+}  // namespace sightline
