@@ -14,6 +14,7 @@ int EvalCommand(const std::vector<std::string>& args);
 int SimulateCommand(const std::vector<std::string>& args);
 int SweepCommand(const std::vector<std::string>& args);
 int FloorCommand(const std::vector<std::string>& args);
+int RecordCommand(const std::vector<std::string>& args);
 
 // Prints "sightline-cli: <message>" to stderr and returns 1.
 int Fail(const std::string& message);

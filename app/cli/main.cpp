@@ -25,6 +25,8 @@ const char kUsage[] =
     "                             path-length error per subsampling factor (table + plot)\n"
     "  floor PATH --out FILE [--frames N]\n"
     "                             calibrate the floor plane for indoor mapping\n"
+    "  record SOURCE --out DIR [--seconds S] [--frames N]\n"
+    "                             record a sensor or replayed recording (TUM, EuRoC, images)\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details.\n";
 
@@ -44,5 +46,6 @@ int main(int argc, char** argv) {
   if (command == "simulate") return sightline::cli::SimulateCommand(args);
   if (command == "sweep") return sightline::cli::SweepCommand(args);
   if (command == "floor") return sightline::cli::FloorCommand(args);
+  if (command == "record") return sightline::cli::RecordCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

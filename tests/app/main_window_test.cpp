@@ -233,7 +233,7 @@ TEST(MainWindow, SensorsMenuListsEveryDriverWithItsAvailability) {
     if (action->menu() && action->text().contains("Sensors")) sensors = action->menu();
   }
   ASSERT_NE(sensors, nullptr);
-  ASSERT_EQ(sensors->actions().size(), 3);
+  ASSERT_GE(sensors->actions().size(), 4);  // openni2, aravis, v4l2, replay (then recording).
   // No /dev/video* on the build machine: the webcam driver is greyed out and says why.
   bool webcam_checked = false;
   for (QAction* action : sensors->actions()) {
