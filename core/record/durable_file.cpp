@@ -69,17 +69,17 @@ Status AppendOnlyFile::Open(const std::string& path, const std::string& header, 
   size_ = 0;
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
   if (fd_ < 0) return FileSystemError("cannot create", path, errno);
-  return header.empty() ? Status::Ok() : WriteAll(header);
+  return header.empty() ? Status::Ok() : WriteAll(header, true);
 }
 
-Status AppendOnlyFile::AppendLine(const std::string& line) {
+Status AppendOnlyFile::AppendLine(const std::string& line, bool durable) {
   if (fd_ < 0) return FailedPrecondition(path_ + " is not open");
-  return WriteAll(line + "\n");
+  return WriteAll(line + "\n", durable);
 }
 
-Status AppendOnlyFile::WriteAll(const std::string& text) {
+Status AppendOnlyFile::WriteAll(const std::string& text, bool durable) {
   int error = WriteFully(fd_, text.data(), text.size());
-  if (error == 0 && sync_ && ::fdatasync(fd_) != 0) error = errno;
+  if (error == 0 && sync_ && durable && ::fdatasync(fd_) != 0) error = errno;
   if (error != 0) {
     // Cut a partial line back so that readers see only complete ones.
     if (::ftruncate(fd_, size_) != 0) {

@@ -38,15 +38,16 @@ class AppendOnlyFile {
 
   // Creates (truncates) the file and writes `header` (complete lines, may be empty).
   Status Open(const std::string& path, const std::string& header, bool sync = true);
-  // Appends `line` plus '\n' and, when syncing, fsyncs. On failure the file is unchanged.
-  Status AppendLine(const std::string& line);
+  // Appends `line` plus '\n' and, when syncing and `durable`, fdatasyncs. On failure the file
+  // is unchanged.
+  Status AppendLine(const std::string& line, bool durable = true);
   void Close();
 
   const std::string& path() const { return path_; }
   int64_t size() const { return size_; }
 
  private:
-  Status WriteAll(const std::string& text);
+  Status WriteAll(const std::string& text, bool durable);
 
   std::string path_;
   int fd_ = -1;
