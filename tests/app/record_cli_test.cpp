@@ -115,7 +115,8 @@ TEST(RecordCli, KilledHalfWayKeepsEveryAcknowledgedFrameReadable) {
 
 TEST(RecordCli, SigtermFinishesQueuedFramesAndReportsTheCounts) {
   const std::string out = testing::TempDir("record_cli_term") + "/rec";
-  CliChild child({"record", "replay://" + Corridor() + "?fps=100", "--out", out, "--ack"});
+  // Looping: the source never ends by itself, so only the signal can end this recording.
+  CliChild child({"record", "replay://" + Corridor() + "?fps=100&loop=1", "--out", out, "--ack"});
   ASSERT_TRUE(child.started());
   int acknowledged = 0;
   std::string line, summary;
