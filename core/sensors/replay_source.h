@@ -17,7 +17,13 @@ namespace sightline {
 struct ReplayOptions {
   double fps = 0;          // Delivery rate [Hz]; 0 = the recording's own timestamps.
   bool loop = false;       // Start again at the end (times keep increasing) instead of ending.
-  LiveSourceOptions live;  // Queueing and reconnects.
+  // Queueing; no stall detection (a starved machine reads slowly, and a reconnect would start
+  // the recording over).
+  LiveSourceOptions live = [] {
+    LiveSourceOptions o;
+    o.stall_timeout_ms = 0;
+    return o;
+  }();
 
   bool IsValid(std::string* error) const;
   static OptionTable<ReplayOptions> Describe();
