@@ -146,6 +146,9 @@ TEST(SightlineExecutable, StreamsTheAravisGigEFakeCamera) {
   if (testing::RunProcess("unshare " + flag + " true").exit_code != 0) {
     GTEST_SKIP() << "needs a private network namespace (unshare " << flag << " failed)";
   }
+  if (testing::RunProcess("command -v ip").exit_code != 0) {
+    GTEST_SKIP() << "needs the ip command (iproute2) to bring up lo in the namespace";
+  }
   const std::string bin = SIGHTLINE_BIN_DIR;
   const std::string shot = testing::TempDir("gui_aravis") + "/shot.png";
   // Waits (bounded, 60 attempts) until discovery finds the camera, then screenshots 5 frames.
