@@ -11,6 +11,7 @@ PACKAGES=(
   libopenni2-dev libaravis-dev aravis-tools
   libceres-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
+  iproute2 util-linux
 )
 
 if [ "$(id -u)" -ne 0 ]; then

@@ -139,8 +139,14 @@ void MainWindow::BuildMenus() {
                                          QString::fromStdString(driver.name))
                                    : QString::fromStdString(available.message()));
     const QString uri = QString::fromStdString(driver.scheme);
-    connect(connect_action, &QAction::triggered, this, [this, uri] { OpenPath(uri); });
+    const bool needs_folder = driver.name == "replay";  // replay://PATH plays a recording.
+    connect(connect_action, &QAction::triggered, this, [this, uri, needs_folder] {
+      if (!needs_folder) return OpenPath(uri);
+      const QString dir = QFileDialog::getExistingDirectory(this, tr("Replay recording"));
+      if (!dir.isEmpty()) OpenPath(uri + dir);
+    });
   }
+  BuildRecording(sensors);
 
   pipeline_menu_ = menuBar()->addMenu(tr("&Pipeline"));
   pipeline_actions_ = new QActionGroup(this);

@@ -21,11 +21,13 @@ namespace sightline {
 class DemoGenerator;
 class EvaluationPanel;
 class ImageView;
+class LiveStatusWidget;
 class LogPanel;
 class ParameterPanel;
 class PlaybackBar;
 class PipelinePresenter;
 class PlaybackController;
+class RecordingController;
 class SceneView;
 
 // The window a lab engineer or presenter works in. It holds views and wiring only: reading and
@@ -54,6 +56,9 @@ class MainWindow : public QMainWindow {
   SceneView* scene_view() const { return scene_view_; }
   EvaluationPanel* evaluation_panel() const { return evaluation_panel_; }
   PlaybackController* playback() const { return playback_; }
+  // Sensors > Record / Stop recording, and the status bar's live-sensor indicator.
+  RecordingController* recording() const { return recording_; }
+  LiveStatusWidget* live_status() const { return live_status_; }
   // Frames shown since the last open.
   int64_t frames_shown() const { return frames_shown_; }
 
@@ -71,6 +76,9 @@ class MainWindow : public QMainWindow {
  private:
   void BuildViews();
   void BuildMenus();
+  // Record / Stop actions (menu and toolbar), recording progress and the live status
+  // (main_window_recording.cpp).
+  void BuildRecording(QMenu* sensors);
   void ConnectPlayback();
   void ShowFrame(std::shared_ptr<const PlaybackResult> result);
   void OnOpened(const QString& path);
@@ -80,6 +88,8 @@ class MainWindow : public QMainWindow {
   void RebuildRecentMenu();
 
   PlaybackController* playback_ = nullptr;
+  RecordingController* recording_ = nullptr;
+  LiveStatusWidget* live_status_ = nullptr;
   ImageView* primary_view_ = nullptr;
   ImageView* secondary_view_ = nullptr;
   QDockWidget* primary_dock_ = nullptr;

@@ -8,6 +8,7 @@
 #include "core/common/timing.h"
 #include "core/io/dataset.h"
 #include "core/sensors/driver_registry.h"
+#include "core/sensors/live_source.h"
 #include "core/pipeline/player.h"
 
 namespace sightline {
@@ -38,11 +39,13 @@ void PlaybackController::Open(const QString& path) {
             return;
           }
           self->StopWorker();
+          self->SetFrameTap(nullptr);  // A tap belongs to the source it was set for.
           {
             std::lock_guard<std::mutex> lock(self->mutex_);
             self->info_ = std::make_shared<SourceInfo>((**opened)->info());
           }
           self->RebuildProcessor();
+          self->live_ = dynamic_cast<const LiveSource*>(opened->value().get());
           self->StartWorker(std::make_unique<Player>(std::move(**opened)));
           emit self->Opened(path);
         },
@@ -69,6 +72,16 @@ void PlaybackController::Close() {
 
 const Trajectory* PlaybackController::ground_truth() const {
   return player_ ? player_->ground_truth() : nullptr;
+}
+
+void PlaybackController::SetFrameTap(FrameTap tap) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  tap_ = std::move(tap);
+}
+
+std::optional<SensorStats> PlaybackController::live_stats() const {
+  if (live_ == nullptr) return std::nullopt;
+  return live_->stats();
 }
 
 void PlaybackController::Play() { if (player_) player_->Play(); }
@@ -164,6 +177,7 @@ void PlaybackController::StopWorker() {
   stop_ = true;
   player_->Stop();
   if (worker_.joinable()) worker_.join();
+  live_ = nullptr;
   player_.reset();
   std::lock_guard<std::mutex> lock(mutex_);
   last_frame_.reset();
@@ -200,11 +214,14 @@ void PlaybackController::WorkerLoop() {
     live_outage_ = false;
     auto shared = std::make_shared<const Frame>(std::move(*frame));
     ViewOptions options;
+    FrameTap tap;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       last_frame_ = shared;
       options = view_options_;
+      tap = tap_;
     }
+    if (tap) tap(*shared);
     auto result = std::const_pointer_cast<PlaybackResult>(Prepare(*shared, options));
     result->pipeline = RunProcessor(*shared, /*replay=*/false);
     result->prepare_ms = (HostTimeS() - start) * 1000;

@@ -8,14 +8,17 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "app/sightline/playback_result.h"
 #include "app/sightline/view_options.h"
 #include "core/io/source.h"
+#include "core/sensors/sensor_stats.h"
 
 namespace sightline {
 
+class LiveSource;
 class Player;
 
 // Owns the reading thread. All public methods are called on the GUI thread and never block on
@@ -54,6 +57,13 @@ class PlaybackController : public QObject {
   // New pipeline options: applied before the next frame, and the current frame is run again.
   void SetPipelineOptions(const OptionSet& options);
 
+  // Called on the reading thread with every frame read (the recorder); nullptr removes it, and
+  // so does opening another source.
+  using FrameTap = std::function<void(const Frame& frame)>;
+  void SetFrameTap(FrameTap tap);
+  // The open source's counters when it is a live sensor (a thread-safe snapshot), else nullopt.
+  std::optional<SensorStats> live_stats() const;
+
   bool is_open() const { return static_cast<bool>(info_); }
   // Valid after Opened().
   const SourceInfo* info() const { return info_.get(); }
@@ -83,6 +93,7 @@ class PlaybackController : public QObject {
   void Track(QFuture<void> future);
 
   std::unique_ptr<Player> player_;
+  const LiveSource* live_ = nullptr;  // The source inside player_ when it is live (GUI thread).
   std::shared_ptr<const SourceInfo> info_;
   std::thread worker_;
   std::atomic<bool> stop_{false};
@@ -104,6 +115,7 @@ class PlaybackController : public QObject {
   bool reprocess_ = false;
   std::shared_ptr<const PlaybackResult> latest_;
   bool delivery_pending_ = false;
+  FrameTap tap_;
 };
 
 }  // namespace sightline

@@ -5,6 +5,7 @@
 #include "core/io/dataset.h"
 #include "core/sensors/aravis_options.h"
 #include "core/sensors/openni2_options.h"
+#include "core/sensors/replay_source.h"
 #include "core/sensors/v4l2_source.h"
 
 #ifdef SIGHTLINE_HAVE_OPENNI2
@@ -21,6 +22,7 @@ namespace {
 constexpr char kOpenNi2Scheme[] = "openni2://";
 constexpr char kAravisScheme[] = "aravis://";
 constexpr char kV4l2Scheme[] = "v4l2://";
+constexpr char kReplayScheme[] = "replay://";
 
 bool StartsWith(const std::string& text, const std::string& prefix) {
   return text.rfind(prefix, 0) == 0;
@@ -142,9 +144,30 @@ DriverInfo V4l2Driver() {
   return d;
 }
 
+DriverInfo ReplayDriver() {
+  DriverInfo d;
+  d.name = "replay";
+  d.description = "A recording played as a live camera (replay://PATH?fps=30&loop=1)";
+  d.scheme = kReplayScheme;
+  d.declare_options = [](OptionSet* set) { return set->Declare(ReplayOptions::Describe()); };
+  d.available = [] { return ReplaySource::Available(); };
+  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
+  d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
+    StatusOr<ReplayOptions> options = ExtractChecked<ReplayOptions>(set);
+    if (!options.ok()) return options.status();
+    auto parsed = ReplaySource::ParseUri(StripScheme(uri, kReplayScheme), *options);
+    if (!parsed.ok()) return parsed.status();
+    return std::unique_ptr<Source>(
+        std::make_unique<ReplaySource>(parsed->first, parsed->second));
+  };
+  return d;
+}
+
 }  // namespace
 
-std::vector<DriverInfo> BuiltinDrivers() { return {OpenNi2Driver(), AravisDriver(), V4l2Driver()}; }
+std::vector<DriverInfo> BuiltinDrivers() {
+  return {OpenNi2Driver(), AravisDriver(), V4l2Driver(), ReplayDriver()};
+}
 
 const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::string& name) {
   for (const DriverInfo& d : drivers) {
@@ -161,7 +184,8 @@ Status DeclareSensorOptions(OptionSet* options) {
 
 bool IsSensorUri(const std::string& uri) {
   return StartsWith(uri, kOpenNi2Scheme) || StartsWith(uri, kAravisScheme) ||
-         StartsWith(uri, kV4l2Scheme) || OpenNi2IsRecording(uri);
+         StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) ||
+         OpenNi2IsRecording(uri);
 }
 
 StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const OptionSet& options) {
@@ -176,7 +200,7 @@ StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const Optio
     if (scheme_end != std::string::npos && uri.find('/') > scheme_end) {
       return InvalidArgument("unknown source scheme '" + uri.substr(0, scheme_end + 3) + "' in '" +
                              uri +
-                             "' (known: openni2://, aravis://, v4l2://, an .oni file or a "
+                             "' (known: openni2://, aravis://, v4l2://, replay://, an .oni file or a "
                              "dataset path)");
     }
     return OpenDataset(uri);

@@ -36,7 +36,7 @@ struct DriverInfo {
       create;
 };
 
-// openni2, aravis and v4l2, in that order.
+// openni2, aravis, v4l2 and replay, in that order.
 std::vector<DriverInfo> BuiltinDrivers();
 
 // The driver called `name` in `drivers`, or nullptr.
@@ -45,13 +45,14 @@ const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::
 // Declares the options of every built-in driver.
 Status DeclareSensorOptions(OptionSet* options);
 
-// True for "openni2://...", "aravis://...", "v4l2://..." and paths ending in .oni.
+// True for "openni2://...", "aravis://...", "v4l2://...", "replay://..." and paths ending in .oni.
 bool IsSensorUri(const std::string& uri);
 
 // Opens anything Sightline can read frames from and returns the open source:
 //   "openni2://" (first device), "openni2://DEVICE_URI", "openni2://file.oni" or "file.oni";
 //   "aravis://" (first camera), "aravis://DEVICE_ID", "aravis://LEFT_ID,RIGHT_ID" (stereo);
 //   "v4l2://0", "v4l2:///dev/video0";
+//   "replay://PATH?fps=30&loop=1" (a recording paced as a live camera, replay_source.h);
 //   anything else: a dataset or recording folder through OpenDataset().
 // core/io cannot open sensors itself (core/sensors sits above it); front ends call this.
 //

@@ -95,6 +95,7 @@ Status LiveSource::Open() {
       std::lock_guard<std::mutex> lock(stop_mutex_);
       stop_ = false;
     }
+    ended_ = false;
     thread_ = std::thread(&LiveSource::CaptureLoop, this);
   }
   return Status::Ok();
@@ -179,6 +180,13 @@ void LiveSource::CaptureLoop() {
       continue;
     }
     StatusOr<std::optional<CapturedFrame>> read = ReadFrame(kReadSlice);
+    if (!read.ok() && read.status().code() == StatusCode::kOutOfRange) {
+      // A live-paced recording ended: Grab() hands out what is queued, then kOutOfRange.
+      SetMessage(SensorState::kClosed, read.status().message());
+      ended_ = true;
+      queue_->Shutdown();
+      break;
+    }
     if (!read.ok() ||
         (!read->has_value() && stall.count() > 0 && Clock::now() - last_frame > stall)) {
       lost_reason = read.ok() ? "no frame for " + Ms(live_options_.stall_timeout_ms)
@@ -247,6 +255,10 @@ Status LiveSource::Grab() {
     return Status::Ok();
   }
   std::optional<CapturedFrame> item = queue_->PopFor(timeout);
+  if (!item && ended_) {
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    return OutOfRange(stats_.message);
+  }
   if (!item) {
     std::lock_guard<std::mutex> lock(stats_mutex_);
     ++stats_.timeouts;

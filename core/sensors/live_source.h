@@ -58,6 +58,8 @@ struct GrabbedFrameInfo {
 //    with a message naming the device on timeout or while the device is gone. A device that
 //    errors or delivers nothing for stall_timeout_ms is disconnected and reconnected every
 //    reconnect_interval_ms until it returns; nothing throws, and the consumer keeps calling Grab().
+//    A live source whose ReadFrame() returns kOutOfRange (a recording paced as a live camera)
+//    ends: Grab() hands out the queued frames, then returns kOutOfRange.
 //  - recordings a driver plays (info().live == false, e.g. .oni files): ReadFrame() runs inline
 //    in Grab(), nothing is dropped and kOutOfRange ends the stream.
 //
@@ -143,6 +145,7 @@ class LiveSource : public Source {
   std::mutex stop_mutex_;
   std::condition_variable stop_cv_;
   bool stop_ = false;  // Guarded by stop_mutex_.
+  std::atomic<bool> ended_{false};  // The capture thread saw kOutOfRange (a paced recording).
 
   mutable std::mutex stats_mutex_;
   SensorStats stats_;          // Guarded by stats_mutex_ (queue drops are added on read).

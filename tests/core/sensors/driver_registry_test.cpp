@@ -12,10 +12,11 @@ namespace {
 
 TEST(DriverRegistry, ListsEveryDriverWithAvailabilityAndReason) {
   const std::vector<DriverInfo> drivers = BuiltinDrivers();
-  ASSERT_EQ(drivers.size(), 3u);
+  ASSERT_EQ(drivers.size(), 4u);
   EXPECT_EQ(drivers[0].name, "openni2");
   EXPECT_EQ(drivers[1].name, "aravis");
   EXPECT_EQ(drivers[2].name, "v4l2");
+  EXPECT_EQ(drivers[3].name, "replay");
   for (const DriverInfo& d : drivers) {
     EXPECT_FALSE(d.description.empty()) << d.name;
     EXPECT_EQ(d.scheme, d.name + "://");
