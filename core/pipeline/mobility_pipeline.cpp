@@ -10,6 +10,7 @@
 
 #include "core/common/text_file.h"
 #include "core/io/dataset.h"
+#include "core/sensors/driver_registry.h"
 #include "core/mapping/floor_plane.h"
 #include "core/mobility/mobility_map.h"
 #include "core/mobility/terrain_truth.h"
@@ -97,7 +98,8 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
   const MobilityRunOptions run = context.options.Extract(MobilityRunOptions::Describe());
   std::string error;
   if (!options.IsValid(&error) || !run.IsValid(&error)) return InvalidArgument(error);
-  StatusOr<std::unique_ptr<Source>> opened = OpenDataset(context.dataset_path);
+  // Any RGB-D source: datasets, .oni recordings and sensor URIs (openni2://...).
+  StatusOr<std::unique_ptr<Source>> opened = OpenSource(context.dataset_path);
   if (!opened.ok()) return opened.status();
   Source& source = **opened;
   const SourceInfo& info = source.info();
