@@ -77,6 +77,16 @@ TEST(MobilityCli, TerrainReportsSlopeAndRoughnessAccuracy) {
   EXPECT_NEAR(*height, 1.0, 0.02);  // The simulated camera is 1.0 m above the floor.
 }
 
+TEST(MobilityCli, OniRecordingWithoutVisibleFloorSaysSoPerFrame) {
+  SIGHTLINE_REQUIRE_DATA(path, "oni_livingroom/test.oni");
+  const std::string out = testing::TempDir("mobility_oni");
+  const auto r = Cli("run mobility " + path + " --out " + out + " --set mobility.run.cloud_format=none");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string metrics = ReadFile(out + "/metrics.json");
+  EXPECT_EQ(JsonNumber(metrics, "counts", "frames_without_map").value_or(-1), 12);
+  EXPECT_NE(ReadFile(out + "/mobility_log.txt").find("no ground plane"), std::string::npos);
+}
+
 TEST(MobilityCli, BadInputSaysWhy) {
   const auto missing = Cli("run mobility /nonexistent/cloud.pcd --out " + testing::TempDir("mobility_bad"));
   EXPECT_NE(missing.exit_code, 0);
