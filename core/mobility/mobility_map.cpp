@@ -77,7 +77,8 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
                      ? cv::Mat(camera.height, camera.width, CV_8UC3, cv::Scalar(40, 40, 40))
                      : color_bgr.clone();
   if (base.channels() == 1) cv::cvtColor(base, base, cv::COLOR_GRAY2BGR);
-  cv::Mat overlay = base.clone();
+  // Dots are blended straight into the pixels (one pass, no per-dot matrix operations).
+  cv::Mat out = base;
   const int half = dot_px / 2;
   for (size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(scores[i])) continue;
@@ -85,15 +86,18 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
     if (!(p.z() > 0)) continue;
     const double u = camera.fx * (p.x() + offset_x_m) / p.z() + camera.cx;
     const double v = camera.fy * (p.y() + offset_y_m) / p.z() + camera.cy;
-    const int x0 = static_cast<int>(std::lround(u)) - half;
-    const int y0 = static_cast<int>(std::lround(v)) - half;
-    const cv::Rect dot = cv::Rect(x0, y0, dot_px, dot_px) & cv::Rect(0, 0, base.cols, base.rows);
-    if (dot.empty()) continue;
+    const int x0 = std::max(0, static_cast<int>(std::lround(u)) - half);
+    const int y0 = std::max(0, static_cast<int>(std::lround(v)) - half);
+    const int x1 = std::min(out.cols, static_cast<int>(std::lround(u)) - half + dot_px);
+    const int y1 = std::min(out.rows, static_cast<int>(std::lround(v)) - half + dot_px);
     const cv::Vec3b color = ScoreColorBgr(scores[i]);
-    overlay(dot).setTo(cv::Scalar(color[0], color[1], color[2]));
+    for (int y = y0; y < y1; ++y) {
+      cv::Vec3b* row = out.ptr<cv::Vec3b>(y);
+      for (int x = x0; x < x1; ++x) {
+        for (int c = 0; c < 3; ++c) row[x][c] = static_cast<uchar>((9 * row[x][c] + 11 * color[c]) / 20);
+      }
+    }
   }
-  cv::Mat out;
-  cv::addWeighted(base, 0.45, overlay, 0.55, 0, out);
   return out;
 }
 
