@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <limits>
 
 #include "app/sightline/mobility_views.h"
 #include "core/mobility/mobility_map.h"
@@ -15,12 +16,14 @@ namespace sightline {
 namespace {
 
 constexpr const char* kScoreLayer = "mobility/score";
+constexpr const char* kGprLayer = "mobility/score_gpr";
 constexpr const char* kSegmentLayer = "mobility/segments";
 
 // What the mobility processor hands the GUI for one frame.
 struct MobilityViewResult : PipelineFrameResult {
   std::shared_ptr<const MobilityResult> mobility;
-  std::shared_ptr<const PointCloud> by_score;    // The scored cloud in score colours.
+  std::shared_ptr<const PointCloud> by_score;    // The scored cloud in rule-score colours.
+  std::shared_ptr<const PointCloud> by_gpr;      // ... in GPR-score colours.
   std::shared_ptr<const PointCloud> by_segment;  // ... in segment colours.
 };
 
@@ -66,16 +69,23 @@ class MobilityProcessor : public FrameProcessor {
     result->stats.emplace_back("mobility/total_ms", r.TotalMs());
     result->stats.emplace_back("mobility/segments", static_cast<double>(r.segments.size()));
     auto by_score = std::make_shared<PointCloud>();
+    auto by_gpr = std::make_shared<PointCloud>();
     auto by_segment = std::make_shared<PointCloud>();
-    by_score->points = r.points;
-    by_segment->points = r.points;
-    by_score->width = by_segment->width = static_cast<int>(r.points.size());
+    for (PointCloud* cloud : {by_score.get(), by_gpr.get(), by_segment.get()}) {
+      cloud->points = r.points;
+      cloud->width = static_cast<int>(r.points.size());
+    }
+    const float nan = std::numeric_limits<float>::quiet_NaN();
     for (size_t i = 0; i < r.points.size(); ++i) {
-      const cv::Vec3b bgr = ScoreColorBgr(r.PointScore(i));
-      by_score->colors.emplace_back(bgr[2], bgr[1], bgr[0]);
-      by_segment->colors.push_back(SegmentColor(r, r.segment[i]));
+      const int s = r.segment[i];
+      const cv::Vec3b rule = ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_rule));
+      const cv::Vec3b gpr = ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_gpr));
+      by_score->colors.emplace_back(rule[2], rule[1], rule[0]);
+      by_gpr->colors.emplace_back(gpr[2], gpr[1], gpr[0]);
+      by_segment->colors.push_back(SegmentColor(r, s));
     }
     result->by_score = std::move(by_score);
+    result->by_gpr = std::move(by_gpr);
     result->by_segment = std::move(by_segment);
     return result;
   }
@@ -108,7 +118,9 @@ std::unique_ptr<FrameProcessor> MobilityPresenter::CreateProcessor(const SourceI
   return std::make_unique<MobilityProcessor>(info);
 }
 
-std::vector<std::string> MobilityPresenter::SceneLayers() { return {kScoreLayer, kSegmentLayer}; }
+std::vector<std::string> MobilityPresenter::SceneLayers() {
+  return {kScoreLayer, kGprLayer, kSegmentLayer};
+}
 
 void MobilityPresenter::Attach(QMainWindow* window) {
   if (images_dock_ == nullptr) {
@@ -141,9 +153,11 @@ void MobilityPresenter::Detach() {
 
 void MobilityPresenter::ApplyColorChoice() {
   if (scene_ == nullptr || timing_ == nullptr) return;
-  const bool by_score = timing_->color_choice()->currentIndex() == 0;
-  if (scene_->HasLayer(kScoreLayer)) scene_->SetLayerVisible(kScoreLayer, by_score);
-  if (scene_->HasLayer(kSegmentLayer)) scene_->SetLayerVisible(kSegmentLayer, !by_score);
+  const int choice = timing_->color_choice()->currentIndex();  // Rule, GPR, segment.
+  const char* layers[3] = {kScoreLayer, kGprLayer, kSegmentLayer};
+  for (int k = 0; k < 3; ++k) {
+    if (scene_->HasLayer(layers[k])) scene_->SetLayerVisible(layers[k], k == choice);
+  }
 }
 
 void MobilityPresenter::Show(const PlaybackResult& result) {
@@ -153,6 +167,7 @@ void MobilityPresenter::Show(const PlaybackResult& result) {
   timing_->Show(*view->mobility);
   if (scene_ != nullptr && view->by_score) {
     scene_->SetPointCloud(kScoreLayer, view->by_score, SceneView::ColorMode::kRgb);
+    scene_->SetPointCloud(kGprLayer, view->by_gpr, SceneView::ColorMode::kRgb);
     scene_->SetPointCloud(kSegmentLayer, view->by_segment, SceneView::ColorMode::kRgb);
     ApplyColorChoice();
   }

@@ -20,7 +20,7 @@ MobilityTimingPanel::MobilityTimingPanel(QWidget* parent) : QWidget(parent) {
   auto* row = new QHBoxLayout();
   row->addWidget(new QLabel(tr("3D colour:"), this));
   color_choice_ = new QComboBox(this);
-  color_choice_->addItems({tr("Score"), tr("Segment")});
+  color_choice_->addItems({tr("Score (rule)"), tr("Score (GPR)"), tr("Segment")});
   row->addWidget(color_choice_);
   row->addStretch(1);
   layout->addLayout(row);

@@ -24,7 +24,7 @@ class MobilityTimingPanel : public QWidget {
   // Shows one frame's stages, status and segment count.
   void Show(const MobilityResult& result);
   const QTableWidget* table() const { return table_; }
-  // "Score" or "Segment": how the 3D cloud is coloured.
+  // How the 3D cloud is coloured: by the rule's score, the GPR's score or the segment.
   QComboBox* color_choice() const { return color_choice_; }
 
  private:

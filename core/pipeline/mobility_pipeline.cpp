@@ -73,11 +73,13 @@ std::string FindRegionsFile(const std::string& dataset_path, const std::string& 
 // Accuracy figures gathered over the frames of a simulated terrain.
 struct TerrainAccuracy {
   double slope_error_max = 0;
+  std::string worst;  // Where the largest slope error was, for the log.
   int slopes = 0;
   std::vector<double> flat_roughness;
 };
 
-void AddTerrainAccuracy(const MobilityResult& r, const Eigen::Isometry3d& world_from_camera,
+void AddTerrainAccuracy(int64_t frame, const MobilityResult& r,
+                        const Eigen::Isometry3d& world_from_camera,
                         const std::vector<TrueRegion>& regions, double min_fraction,
                         TerrainAccuracy* acc) {
   for (const SegmentMatch& m : MatchSegmentsToRegions(r, world_from_camera, regions)) {
@@ -88,7 +90,13 @@ void AddTerrainAccuracy(const MobilityResult& r, const Eigen::Isometry3d& world_
     const bool planar = region.kind == "floor" || region.kind == "ramp" ||
                         region.kind == "platform" || region.kind == "step" || region.kind == "box";
     if (!planar || s.points < 200) continue;
-    acc->slope_error_max = std::max(acc->slope_error_max, std::abs(s.slope_deg - region.slope_deg));
+    const double error = std::abs(s.slope_deg - region.slope_deg);
+    if (error >= acc->slope_error_max) {
+      acc->slope_error_max = error;
+      acc->worst = "frame " + std::to_string(frame) + ", segment " + std::to_string(m.segment) +
+                   " on the " + region.kind + " (true " + std::to_string(region.slope_deg) +
+                   " deg, measured " + std::to_string(s.slope_deg) + " deg)";
+    }
     ++acc->slopes;
   }
 }
@@ -193,8 +201,8 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
     const Trajectory* gt = source.ground_truth();
     if (!regions.empty() && gt != nullptr && r->ground.found) {
       if (auto k = gt->Nearest(r->stamp.sensor_time_s, run.gt_tolerance_s)) {
-        AddTerrainAccuracy(*r, gt->poses()[*k].world_from_sensor, regions, run.min_match_fraction,
-                           &terrain);
+        AddTerrainAccuracy(index, *r, gt->poses()[*k].world_from_sensor, regions,
+                           run.min_match_fraction, &terrain);
       }
     }
     ++result.frames;
@@ -205,7 +213,10 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
   if (result.frames == 0) return OutOfRange(context.dataset_path + " holds no frames");
   result.outputs.push_back("segments.csv");
   if (!heights.empty()) result.accuracy.emplace_back("ground_height_m", Median(heights));
-  if (terrain.slopes > 0) result.accuracy.emplace_back("slope_error_deg_max", terrain.slope_error_max);
+  if (terrain.slopes > 0) {
+    result.accuracy.emplace_back("slope_error_deg_max", terrain.slope_error_max);
+    log.push_back("largest slope error: " + terrain.worst);
+  }
   if (!terrain.flat_roughness.empty()) {
     result.accuracy.emplace_back("flat_roughness", Median(terrain.flat_roughness));
   }
