@@ -118,7 +118,7 @@ Moments PointMoments(const Eigen::Vector3f& p) {
 
 }  // namespace
 
-void GridNormals(int window, WorkingCloud* cloud) {
+void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
   const int w = cloud->grid_w, h = cloud->grid_h;
   // Integral image with a zero first row and column: sums over [0, x) x [0, y).
   std::vector<Moments> integral(static_cast<size_t>(w + 1) * (h + 1), Moments{});
@@ -160,6 +160,9 @@ void GridNormals(int window, WorkingCloud* cloud) {
     cov(2, 2) = s[9] * inv - mean.z() * mean.z();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(cov);
+    const Eigen::Vector3d& eigenvalues = solver.eigenvalues();
+    const double variation = eigenvalues(0) / std::max(1e-20, eigenvalues.sum());
+    if (variation > max_curvature) continue;  // An edge or a corner.
     Eigen::Vector3f n = solver.eigenvectors().col(0).cast<float>();
     if (!n.allFinite()) continue;
     if (n.dot(cloud->points[i]) > 0) n = -n;  // Towards the viewpoint at the origin.

@@ -24,7 +24,8 @@ void GridRemoveOutliers(double alpha, WorkingCloud* cloud);
 
 // Normals by PCA of the points in a (2 window + 1)^2 cell window, from integral images of the
 // moments (constant time per point), oriented towards the viewpoint (seed eq. 4).
-void GridNormals(int window, WorkingCloud* cloud);
+// Points whose surface variation (smallest eigenvalue / sum) exceeds max_curvature get none.
+void GridNormals(int window, double max_curvature, WorkingCloud* cloud);
 
 // The 4-connected grid neighbours of point i whose depths differ by at most max_depth_jump
 // times the depth.

@@ -110,9 +110,8 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
   const int iterations = RansacIterations(options.ransac_success, options.ransac_inlier_ratio);
   if (iterations_out != nullptr) *iterations_out = iterations;
   if (cloud.size() < 3) return NotFound("no ground: fewer than 3 points");
-  // Only points whose own normal could lie on an up-facing plane may support one.
-  const double cos_pool = std::cos(
-      std::min(90.0, options.up_tolerance_deg + options.ground_normal_deg) * kDegToRad);
+  // Only points whose own normal faces up within the tolerance may support a plane.
+  const double cos_pool = std::cos(options.up_tolerance_deg * kDegToRad);
   const float cos_member = static_cast<float>(std::cos(options.ground_normal_deg * kDegToRad));
   std::vector<int> pool;
   for (size_t i = 0; i < cloud.size(); ++i) {

@@ -60,12 +60,12 @@ Status PointStages(const PointCloud& cloud, const MobilityOptions& o, WorkingClo
   }
   if (o.mode == "grid") {
     { StageClock t(result, "denoise", work->size()); GridRemoveOutliers(o.sor_alpha, work); }
-    { StageClock t(result, "normals", work->size()); GridNormals(o.normal_window, work); }
+    { StageClock t(result, "normals", work->size()); GridNormals(o.normal_window, o.max_curvature, work); }
   } else {
     { StageClock t(result, "denoise", work->size()); PclRemoveOutliers(o.sor_k, o.sor_alpha, work); }
     StageClock t(result, "normals", work->size());
     *search = std::make_unique<PclNeighborSearch>(work->points);
-    (*search)->ComputeNormals(o.normal_k, work);
+    (*search)->ComputeNormals(o.normal_k, o.max_curvature, work);
   }
   if (work->size() < 3) return OutOfRange("fewer than 3 points left after denoising");
   return Status::Ok();

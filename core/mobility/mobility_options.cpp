@@ -36,6 +36,7 @@ bool MobilityOptions::IsValid(std::string* error) const {
   if (!(sor_alpha > 0)) return Invalid(error, "sor_alpha must be positive");
   if (normal_window < 1) return Invalid(error, "normal_window must be >= 1");
   if (normal_k < 3) return Invalid(error, "normal_k must be >= 3");
+  if (!(max_curvature > 0)) return Invalid(error, "max_curvature must be positive");
   if (!(max_depth_jump > 0)) return Invalid(error, "max_depth_jump must be positive");
   if (!(up_tolerance_deg > 0 && up_tolerance_deg < 90)) {
     return Invalid(error, "up_tolerance_deg must lie in (0, 90)");
@@ -100,6 +101,9 @@ OptionTable<MobilityOptions> MobilityOptions::Describe() {
       .Int("normal_window", &O::normal_window, "cells", 1, 20, 1,
            "grid: half-width of the integral-image normal window.")
       .Int("normal_k", &O::normal_k, "", 3, 100, 1, "pcl: neighbours of the normal fit.")
+      .Double("max_curvature", &O::max_curvature, "", 0.001, 0.34, 0.001,
+              "Points whose neighbourhood bends more (surface variation, 0 = flat) get no normal "
+              "and stay unsegmented: edges between surfaces.")
       .Double("max_depth_jump", &O::max_depth_jump, "", 0.005, 1, 0.005,
               "grid: grid neighbours whose depths differ by more than this fraction are apart.")
       .Double("mount_pitch_deg", &O::mount_pitch_deg, "deg", -90, 90, 1,

@@ -37,6 +37,9 @@ struct MobilityOptions {
   // Normals (oriented towards the viewpoint).
   int normal_window = 3;              // grid: half-width of the integral-image window [cells].
   int normal_k = 16;                  // pcl: neighbours of the k-d tree normal fit.
+  double max_curvature = 0.1;        // Points whose neighbourhood bends more (smallest
+                                      // eigenvalue / sum: 0 flat, 1/3 isotropic) get no normal:
+                                      // edges between surfaces stay unsegmented.
   double max_depth_jump = 0.05;       // grid: neighbours whose depth differs by more than this
                                       // fraction of the depth are not neighbours.
 

@@ -75,7 +75,7 @@ PclNeighborSearch::PclNeighborSearch(const std::vector<Eigen::Vector3f>& points)
 
 PclNeighborSearch::~PclNeighborSearch() = default;
 
-void PclNeighborSearch::ComputeNormals(int k, WorkingCloud* cloud) const {
+void PclNeighborSearch::ComputeNormals(int k, double max_curvature, WorkingCloud* cloud) const {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   cloud->normals.assign(cloud->size(), Eigen::Vector3f(nan, nan, nan));
   if (cloud->size() < 3) return;
@@ -86,6 +86,7 @@ void PclNeighborSearch::ComputeNormals(int k, WorkingCloud* cloud) const {
   for (size_t i = 0; i < cloud->size(); ++i) {
     if (impl_->tree.nearestKSearch(impl_->cloud->points[i], k, indices, distances) < 3) continue;
     if (!pcl::computePointNormal(*impl_->cloud, indices, plane, curvature)) continue;
+    if (curvature > max_curvature) continue;  // An edge or a corner.
     Eigen::Vector3f n = plane.head<3>();
     if (!n.allFinite() || n.squaredNorm() < 1e-12f) continue;
     if (n.dot(cloud->points[i]) > 0) n = -n;

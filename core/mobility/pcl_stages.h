@@ -29,7 +29,8 @@ class PclNeighborSearch {
   PclNeighborSearch& operator=(const PclNeighborSearch&) = delete;
 
   // Normals by PCA of the k nearest neighbours (seed eqs. 2-3), oriented towards the origin.
-  void ComputeNormals(int k, WorkingCloud* cloud) const;
+  // Points whose surface variation exceeds max_curvature get none.
+  void ComputeNormals(int k, double max_curvature, WorkingCloud* cloud) const;
   // Indices of the points within radius_m of point i (i itself excluded).
   void Radius(int i, double radius_m, std::vector<int>* out) const;
 
