@@ -18,6 +18,7 @@ namespace {
 constexpr const char* kScoreLayer = "mobility/score";
 constexpr const char* kGprLayer = "mobility/score_gpr";
 constexpr const char* kSegmentLayer = "mobility/segments";
+constexpr const char* kInputLayer = "cloud";  // The main window's cloud of the frame.
 
 // What the mobility processor hands the GUI for one frame.
 struct MobilityViewResult : PipelineFrameResult {
@@ -148,6 +149,7 @@ void MobilityPresenter::Detach() {
   if (timing_dock_ != nullptr) timing_dock_->hide();
   if (scene_ != nullptr) {
     for (const std::string& layer : SceneLayers()) scene_->RemoveLayer(layer);
+    scene_->SetLayerVisible(kInputLayer, true);
   }
 }
 
@@ -170,6 +172,8 @@ void MobilityPresenter::Show(const PlaybackResult& result) {
     scene_->SetPointCloud(kGprLayer, view->by_gpr, SceneView::ColorMode::kRgb);
     scene_->SetPointCloud(kSegmentLayer, view->by_segment, SceneView::ColorMode::kRgb);
     ApplyColorChoice();
+    // The scored cloud stands in for the window's input cloud while the map runs.
+    scene_->SetLayerVisible(kInputLayer, false);
   }
 }
 
