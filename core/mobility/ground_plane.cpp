@@ -1,0 +1,196 @@
+#include "core/mobility/ground_plane.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace sightline {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// The inlier distance at a point: grows with depth squared like the sensor's noise.
+float GroundThreshold(const MobilityOptions& o, const Eigen::Vector3f& p) {
+  return static_cast<float>(o.ground_distance_m + o.ground_distance_per_m2 * p.z() * p.z());
+}
+
+struct Candidate {
+  GroundPlane plane;
+  std::vector<int> members;  // Indices into the cloud.
+};
+
+// One RANSAC search among `pool` (cloud indices); returns false when no hypothesis had an
+// up-facing normal.
+bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool,
+                 const Eigen::Vector3d& up, const MobilityOptions& options, int iterations,
+                 std::mt19937* rng, Eigen::Vector3d* normal, double* d) {
+  if (pool.size() < 3) return false;
+  std::uniform_int_distribution<size_t> pick(0, pool.size() - 1);
+  // Hypotheses are scored on an even subsample of the pool.
+  const size_t step = std::max<size_t>(1, pool.size() / options.ransac_sample_points);
+  const double cos_tolerance = std::cos(options.up_tolerance_deg * kDegToRad);
+  int best = -1;
+  for (int it = 0; it < iterations; ++it) {
+    const Eigen::Vector3f& a = cloud.points[pool[pick(*rng)]];
+    const Eigen::Vector3f& b = cloud.points[pool[pick(*rng)]];
+    const Eigen::Vector3f& c = cloud.points[pool[pick(*rng)]];
+    Eigen::Vector3f n = (b - a).cross(c - a);
+    const float norm = n.norm();
+    if (norm < 1e-9f) continue;  // Collinear or repeated.
+    n /= norm;
+    if (n.cast<double>().dot(up) < 0) n = -n;
+    if (n.cast<double>().dot(up) < cos_tolerance) continue;
+    const float offset = -n.dot(a);
+    int count = 0;
+    for (size_t k = 0; k < pool.size(); k += step) {
+      const Eigen::Vector3f& p = cloud.points[pool[k]];
+      count += std::abs(n.dot(p) + offset) < GroundThreshold(options, p);
+    }
+    if (count > best) {
+      best = count;
+      *normal = n.cast<double>();
+      *d = offset;
+    }
+  }
+  return best > 0;
+}
+
+// Median of direction . x over the members.
+double MedianLevel(const WorkingCloud& cloud, const std::vector<int>& members,
+                   const Eigen::Vector3d& direction) {
+  std::vector<double> levels;
+  levels.reserve(members.size());
+  for (int i : members) levels.push_back(direction.dot(cloud.points[i].cast<double>()));
+  std::nth_element(levels.begin(), levels.begin() + levels.size() / 2, levels.end());
+  return levels[levels.size() / 2];
+}
+
+}  // namespace
+
+int RansacIterations(double success, double inlier_ratio, int sample_size) {
+  const double all_inliers = std::pow(inlier_ratio, sample_size);
+  if (all_inliers >= 1) return 1;
+  const double k = std::log(1 - success) / std::log(1 - all_inliers);
+  return static_cast<int>(std::clamp(std::ceil(k), 1.0, 1e6));
+}
+
+Eigen::Vector3d ExpectedUpFromMount(double pitch_deg, double roll_deg) {
+  // Up in a level camera is -y; pitching the camera down turns up towards -z in its frame.
+  const Eigen::Vector3d level(0, -1, 0);
+  const Eigen::AngleAxisd pitch(pitch_deg * kDegToRad, Eigen::Vector3d::UnitX());
+  const Eigen::AngleAxisd roll(roll_deg * kDegToRad, Eigen::Vector3d::UnitZ());
+  return (roll * pitch * level).normalized();
+}
+
+bool FitPlaneLeastSquares(const std::vector<Eigen::Vector3f>& points, Eigen::Vector3d* normal,
+                          Eigen::Vector3d* centroid) {
+  if (points.size() < 3) return false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3f& p : points) mean += p.cast<double>();
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3f& p : points) {
+    const Eigen::Vector3d q = p.cast<double>() - mean;
+    cov += q * q.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  if (solver.info() != Eigen::Success || solver.eigenvalues()(1) <= 1e-12) return false;
+  *normal = solver.eigenvectors().col(0).normalized();
+  *centroid = mean;
+  return normal->allFinite();
+}
+
+StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3d& up,
+                                 const MobilityOptions& options, std::vector<uint8_t>* is_ground,
+                                 int* iterations_out) {
+  is_ground->assign(cloud.size(), 0);
+  const int iterations = RansacIterations(options.ransac_success, options.ransac_inlier_ratio);
+  if (iterations_out != nullptr) *iterations_out = iterations;
+  if (cloud.size() < 3) return NotFound("no ground: fewer than 3 points");
+  // Only points whose own normal faces up within the tolerance may support a plane.
+  const double cos_pool = std::cos(options.up_tolerance_deg * kDegToRad);
+  const float cos_member = static_cast<float>(std::cos(options.ground_normal_deg * kDegToRad));
+  std::vector<int> pool;
+  for (size_t i = 0; i < cloud.size(); ++i) {
+    const Eigen::Vector3f& n = cloud.normals[i];
+    if (n.allFinite() && n.cast<double>().dot(up) >= cos_pool) pool.push_back(static_cast<int>(i));
+  }
+  std::mt19937 rng(7);
+  const int min_points =
+      std::max(3, static_cast<int>(options.min_ground_ratio * static_cast<double>(cloud.size())));
+  std::vector<Candidate> candidates;
+  for (int c = 0; c < options.ground_candidates && static_cast<int>(pool.size()) >= min_points;
+       ++c) {
+    Eigen::Vector3d n;
+    double d = 0;
+    if (!BestUpPlane(cloud, pool, up, options, iterations, &rng, &n, &d)) break;
+    // Least-squares refit on the inliers, then the final members (distance and own normal).
+    for (int refit = 0; refit < 2; ++refit) {
+      std::vector<Eigen::Vector3f> inliers;
+      const Eigen::Vector3f nf = n.cast<float>();
+      for (int i : pool) {
+        if (std::abs(n.dot(cloud.points[i].cast<double>()) + d) <
+                GroundThreshold(options, cloud.points[i]) &&
+            cloud.normals[i].dot(nf) >= cos_member) {
+          inliers.push_back(cloud.points[i]);
+        }
+      }
+      Eigen::Vector3d centroid;
+      if (!FitPlaneLeastSquares(inliers, &n, &centroid)) break;
+      if (n.dot(up) < 0) n = -n;
+      d = -n.dot(centroid);
+    }
+    Candidate candidate;
+    candidate.plane.normal = n;
+    candidate.plane.d = d;
+    const Eigen::Vector3f nf = n.cast<float>();
+    std::vector<int> rest;
+    for (int i : pool) {
+      const bool on_plane = std::abs(candidate.plane.HeightOf(cloud.points[i])) <
+                                GroundThreshold(options, cloud.points[i]) &&
+                            cloud.normals[i].dot(nf) >= cos_member;
+      (on_plane ? candidate.members : rest).push_back(i);
+    }
+    pool.swap(rest);
+    if (static_cast<int>(candidate.members.size()) < min_points) break;
+    candidates.push_back(std::move(candidate));
+  }
+  // The lowest qualifying plane: the one whose points lie lowest along the largest candidate's
+  // normal (a ramp's plane may pass below the floor under the camera, its points do not).
+  const Candidate* largest = nullptr;
+  for (const Candidate& c : candidates) {
+    if (largest == nullptr || c.members.size() > largest->members.size()) largest = &c;
+  }
+  const Candidate* ground = nullptr;
+  double ground_level = 0;
+  for (const Candidate& c : candidates) {
+    if (c.plane.d <= 0) continue;  // The camera is below it (a ceiling, a table seen from under).
+    if (std::acos(std::clamp(c.plane.normal.dot(up), -1.0, 1.0)) >
+        options.up_tolerance_deg * kDegToRad) {
+      continue;
+    }
+    const double level = MedianLevel(cloud, c.members, largest->plane.normal);
+    if (ground == nullptr || level < ground_level) ground = &c, ground_level = level;
+  }
+  if (ground == nullptr) {
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "no ground plane: no plane within %.0f deg of the expected up direction "
+                  "(%.2f, %.2f, %.2f) holds %d of the %zu points (%.0f %%); %zu up-facing "
+                  "candidate(s) found",
+                  options.up_tolerance_deg, up.x(), up.y(), up.z(), min_points, cloud.size(),
+                  100 * options.min_ground_ratio, candidates.size());
+    return NotFound(text);
+  }
+  GroundPlane plane = ground->plane;
+  plane.found = true;
+  plane.inliers = static_cast<int>(ground->members.size());
+  plane.candidates = static_cast<int>(candidates.size());
+  for (int i : ground->members) (*is_ground)[i] = 1;
+  return plane;
+}
+
+}  // namespace sightline

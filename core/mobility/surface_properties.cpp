@@ -1,0 +1,232 @@
+#include "core/mobility/surface_properties.h"
+
+#include <algorithm>
+#include <limits>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <unordered_map>
+
+#include "core/mobility/ground_plane.h"
+
+namespace sightline {
+namespace {
+
+// A cell's running mean in plane coordinates (u, v) and height h.
+struct CellMean {
+  double u = 0, v = 0, h = 0;
+  int count = 0;
+  Eigen::Vector3d Mean() const { return Eigen::Vector3d(u / count, v / count, h / count); }
+};
+
+int64_t CellKey(int64_t a, int64_t b) { return (a << 32) ^ (b & 0xffffffff); }
+
+// Adds one triangle (plane coordinates, third component = height) to the sums.
+void AddTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                 RoughnessResult* r) {
+  const Eigen::Vector3d ab = b - a, ac = c - a;
+  r->surface_area_m2 += 0.5 * ab.cross(ac).norm();
+  r->projected_area_m2 += 0.5 * std::abs(ab.x() * ac.y() - ab.y() * ac.x());
+  ++r->triangles;
+}
+
+void TriangulateGrid(const std::unordered_map<int64_t, CellMean>& cells,
+                     const std::vector<std::pair<int, int>>& keys, RoughnessResult* r) {
+  for (const auto& [a, b] : keys) {
+    auto c00 = cells.find(CellKey(a, b));
+    auto c10 = cells.find(CellKey(a + 1, b));
+    auto c01 = cells.find(CellKey(a, b + 1));
+    auto c11 = cells.find(CellKey(a + 1, b + 1));
+    const bool has10 = c10 != cells.end(), has01 = c01 != cells.end(), has11 = c11 != cells.end();
+    if (has10 && has11) AddTriangle(c00->second.Mean(), c10->second.Mean(), c11->second.Mean(), r);
+    if (has01 && has11) AddTriangle(c00->second.Mean(), c11->second.Mean(), c01->second.Mean(), r);
+    // Squares missing their far corner still get the one triangle they hold.
+    if (!has11 && has10 && has01) {
+      AddTriangle(c00->second.Mean(), c10->second.Mean(), c01->second.Mean(), r);
+    }
+  }
+}
+
+void TriangulateDelaunay(const std::vector<Eigen::Vector3d>& means, double cell_m,
+                         double max_edge_cells, RoughnessResult* r) {
+  double u0 = 1e30, v0 = 1e30, u1 = -1e30, v1 = -1e30;
+  for (const Eigen::Vector3d& m : means) {
+    u0 = std::min(u0, m.x()); v0 = std::min(v0, m.y());
+    u1 = std::max(u1, m.x()); v1 = std::max(v1, m.y());
+  }
+  // Subdiv2D works in float pixels: scale to cell units with a margin.
+  const double scale = 1.0 / cell_m;
+  cv::Subdiv2D subdiv(cv::Rect(-2, -2, static_cast<int>((u1 - u0) * scale) + 5,
+                               static_cast<int>((v1 - v0) * scale) + 5));
+  std::vector<int> vertex_of;  // Subdiv2D vertex id -> mean index.
+  for (size_t i = 0; i < means.size(); ++i) {
+    const int id = subdiv.insert(cv::Point2f(static_cast<float>((means[i].x() - u0) * scale),
+                                             static_cast<float>((means[i].y() - v0) * scale)));
+    if (id >= static_cast<int>(vertex_of.size())) vertex_of.resize(id + 1, -1);
+    vertex_of[id] = static_cast<int>(i);
+  }
+  std::vector<cv::Vec6f> triangles;
+  subdiv.getTriangleList(triangles);
+  const double max_edge = max_edge_cells * cell_m;
+  for (const cv::Vec6f& t : triangles) {
+    Eigen::Vector3d corner[3];
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k) {
+      int edge = 0, vertex = 0;
+      const int located = subdiv.locate(cv::Point2f(t[2 * k], t[2 * k + 1]), edge, vertex);
+      ok = located == cv::Subdiv2D::PTLOC_VERTEX && vertex < static_cast<int>(vertex_of.size()) &&
+           vertex_of[vertex] >= 0;
+      if (ok) corner[k] = means[vertex_of[vertex]];
+    }
+    if (!ok) continue;  // A triangle touching the bounding box's outer vertices.
+    if ((corner[0] - corner[1]).head<2>().norm() > max_edge ||
+        (corner[1] - corner[2]).head<2>().norm() > max_edge ||
+        (corner[2] - corner[0]).head<2>().norm() > max_edge) {
+      continue;
+    }
+    AddTriangle(corner[0], corner[1], corner[2], r);
+  }
+}
+
+}  // namespace
+
+StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& points, int iterations,
+                                       double distance_m, unsigned seed) {
+  if (points.size() < 3) {
+    return InvalidArgument("a plane needs at least 3 points, the segment has " +
+                           std::to_string(points.size()));
+  }
+  SegmentPlane plane;
+  const std::vector<Eigen::Vector3f>* fit_points = &points;
+  std::vector<Eigen::Vector3f> inliers;
+  if (iterations > 0) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<size_t> pick(0, points.size() - 1);
+    const size_t step = std::max<size_t>(1, points.size() / 500);  // Score on <= ~500 points.
+    int best = -1;
+    Eigen::Vector3f best_n = Eigen::Vector3f::UnitZ();
+    float best_d = 0;
+    for (int it = 0; it < iterations; ++it) {
+      const Eigen::Vector3f& a = points[pick(rng)];
+      Eigen::Vector3f n = (points[pick(rng)] - a).cross(points[pick(rng)] - a);
+      if (n.norm() < 1e-9f) continue;
+      n.normalize();
+      const float d = -n.dot(a);
+      int count = 0;
+      for (size_t k = 0; k < points.size(); k += step) {
+        count += std::abs(n.dot(points[k]) + d) < distance_m;
+      }
+      if (count > best) best = count, best_n = n, best_d = d;
+    }
+    if (best > 0) {
+      for (const Eigen::Vector3f& p : points) {
+        if (std::abs(best_n.dot(p) + best_d) < distance_m) inliers.push_back(p);
+      }
+      if (inliers.size() >= 3) fit_points = &inliers;
+    }
+  }
+  if (!FitPlaneLeastSquares(*fit_points, &plane.normal, &plane.centroid)) {
+    return InvalidArgument("the segment's " + std::to_string(points.size()) +
+                           " points are collinear: no plane");
+  }
+  plane.inliers = static_cast<int>(fit_points->size());
+  return plane;
+}
+
+StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& points,
+                                           const SegmentPlane& plane, double cell_m,
+                                           const std::string& triangulation,
+                                           double max_edge_cells) {
+  // Plane basis: e1, e2 span the plane, n is the height axis.
+  const Eigen::Vector3d& n = plane.normal;
+  const Eigen::Vector3d e1 = n.unitOrthogonal();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  std::unordered_map<int64_t, CellMean> cells;
+  std::vector<std::pair<int, int>> keys;
+  cells.reserve(points.size());
+  for (const Eigen::Vector3f& pf : points) {
+    const Eigen::Vector3d q = pf.cast<double>() - plane.centroid;
+    const double u = q.dot(e1), v = q.dot(e2), h = q.dot(n);
+    const int a = static_cast<int>(std::floor(u / cell_m));
+    const int b = static_cast<int>(std::floor(v / cell_m));
+    CellMean& cell = cells[CellKey(a, b)];
+    if (cell.count == 0) keys.emplace_back(a, b);
+    cell.u += u, cell.v += v, cell.h += h, ++cell.count;
+  }
+  RoughnessResult r;
+  r.cells = static_cast<int>(cells.size());
+  if (triangulation == "delaunay") {
+    std::vector<Eigen::Vector3d> means;
+    means.reserve(keys.size());
+    for (const auto& [a, b] : keys) means.push_back(cells[CellKey(a, b)].Mean());
+    if (means.size() >= 3) TriangulateDelaunay(means, cell_m, max_edge_cells, &r);
+  } else {
+    TriangulateGrid(cells, keys, &r);
+  }
+  if (r.triangles == 0 || r.projected_area_m2 <= 0) {
+    return InvalidArgument("no triangle for the roughness: the segment covers " +
+                           std::to_string(r.cells) + " cell(s) of " +
+                           std::to_string(cell_m) + " m");
+  }
+  r.roughness = std::max(1.0, r.surface_area_m2 / r.projected_area_m2);
+  return r;
+}
+
+StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
+                                           const std::vector<Eigen::Vector3f>& points,
+                                           const GroundPlane& ground,
+                                           const MobilityOptions& options) {
+  const std::string name = is_ground ? "the ground" : "segment " + std::to_string(id);
+  StatusOr<SegmentPlane> plane = FitSegmentPlane(points, options.plane_ransac_iterations,
+                                                 options.plane_distance_m, 1 + id);
+  if (!plane.ok()) return plane.status().WithContext(name);
+  SegmentProperties s;
+  s.id = id;
+  s.is_ground = is_ground;
+  s.points = static_cast<int>(points.size());
+  s.normal = plane->normal;
+  s.centroid = plane->centroid;
+  if (!is_ground) {
+    s.slope_deg = std::acos(std::clamp(std::abs(plane->normal.dot(ground.normal)), 0.0, 1.0)) *
+                  180.0 / M_PI;
+  }
+  // Roughness from the near points (depth noise grows with z^2), area from all of them.
+  const float max2 = static_cast<float>(options.roughness_max_range_m * options.roughness_max_range_m);
+  std::vector<Eigen::Vector3f> near;
+  for (const Eigen::Vector3f& p : points) {
+    if (p.squaredNorm() <= max2) near.push_back(p);
+  }
+  StatusOr<RoughnessResult> rough(InvalidArgument("no near points"));
+  if (near.size() >= 3) {
+    rough = ComputeRoughness(near, *plane, options.roughness_cell_m, options.triangulation,
+                             options.max_edge_cells);
+  }
+  if (!rough.ok()) {
+    rough = ComputeRoughness(points, *plane, options.roughness_cell_m, options.triangulation,
+                             options.max_edge_cells);
+  }
+  if (!rough.ok()) return rough.status().WithContext(name);
+  s.roughness = rough->roughness;
+  s.area_m2 = rough->cells * options.roughness_cell_m * options.roughness_cell_m;
+  if (near.size() != points.size()) {
+    // Area over every point: count the occupied cells of all of them.
+    StatusOr<RoughnessResult> all = ComputeRoughness(points, *plane, options.roughness_cell_m,
+                                                     "grid", options.max_edge_cells);
+    if (all.ok()) s.area_m2 = all->cells * options.roughness_cell_m * options.roughness_cell_m;
+  }
+  // Raised height: a low quantile of the heights above the ground.
+  if (ground.found && !is_ground) {
+    std::vector<float> heights(points.size());
+    for (size_t i = 0; i < points.size(); ++i) heights[i] = static_cast<float>(ground.HeightOf(points[i]));
+    const size_t k = std::min(heights.size() - 1,
+                              static_cast<size_t>(options.height_percentile * heights.size()));
+    std::nth_element(heights.begin(), heights.begin() + k, heights.end());
+    s.height_m = heights[k];
+    const double tan_slope = std::tan(s.slope_deg * M_PI / 180.0);
+    s.foot_m = tan_slope > 1e-6 ? std::max(0.0, s.height_m) / tan_slope
+                                : std::numeric_limits<double>::infinity();
+  }
+  return s;
+}
+
+}  // namespace sightline

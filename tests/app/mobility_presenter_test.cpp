@@ -1,0 +1,76 @@
+// The mobility map in the main window under an X server: play real RGB-D frames, look at the
+// projection's pixels, the timing table and the 3D layers, and re-run a frame on an option change.
+#include <gtest/gtest.h>
+
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+
+#include "app/sightline/main_window.h"
+#include "app/sightline/mobility_presenter.h"
+#include "app/sightline/mobility_views.h"
+#include "app/sightline/playback_controller.h"
+#include "tests/support/test_data.h"
+#include "widgets/image_view.h"
+#include "widgets/parameter_panel.h"
+#include "widgets/scene_view.h"
+
+namespace sightline {
+namespace {
+
+// Pixels of the image that are clearly green (the score colour of 1).
+int GreenPixels(const QImage& image) {
+  int count = 0;
+  for (int y = 0; y < image.height(); y += 2) {
+    for (int x = 0; x < image.width(); x += 2) {
+      const QColor c = image.pixelColor(x, y);
+      count += c.green() > 120 && c.green() > c.red() + 60 && c.green() > c.blue() + 60;
+    }
+  }
+  return count;
+}
+
+TEST(MobilityPresenter, ShowsScoredCloudProjectionAndTimingWhilePlayingTum) {
+  SIGHTLINE_REQUIRE_DATA(path, "tum_fr1_desk");
+  MainWindow window;
+  auto* mobility = new MobilityPresenter();
+  window.AddPipeline(mobility);
+  ASSERT_TRUE(window.ActivatePipeline(mobility->Title()));
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(path));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  for (int i = 0; i < 3; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 20000)) << "step " << i;
+  }
+  const QImage projection = mobility->images()->projection_view()->image();
+  ASSERT_FALSE(projection.isNull());
+  EXPECT_GT(GreenPixels(projection), 2000) << "the floor in the lower right is traversable";
+  EXPECT_FALSE(mobility->images()->top_view()->image().isNull());
+  // Ten stages and the total, with times.
+  const QTableWidget* table = mobility->timing()->table();
+  ASSERT_EQ(table->rowCount(), 11);
+  EXPECT_EQ(table->item(3, 0)->text(), "normals");
+  EXPECT_GT(table->item(10, 1)->text().toDouble(), 0.0);
+  for (const std::string& layer : MobilityPresenter::SceneLayers()) {
+    EXPECT_TRUE(window.scene_view()->HasLayer(layer)) << layer;
+  }
+
+  // An option change while paused re-runs the current frame with it.
+  const int before = shown.count();
+  auto* panel = window.findChild<ParameterPanel*>();
+  ASSERT_NE(panel, nullptr);
+  OptionSet changed = panel->options();
+  ASSERT_TRUE(changed.ApplyOverride("mobility.grid_stride=8").ok());
+  panel->SetOptions(changed);
+  emit panel->OptionsChanged(changed);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() > before; }, 20000));
+  EXPECT_EQ(shown.last().at(0).value<int64_t>(), 2);  // The same frame again.
+  EXPECT_EQ(table->item(0, 2)->text(), "307200");
+  EXPECT_LT(table->item(1, 2)->text().toInt(), 640 * 480 / 64 + 1);  // 8 px stride.
+}
+
+}  // namespace
+}  // namespace sightline
