@@ -22,7 +22,7 @@ bool ScaleEstimatorOptions::IsValid(std::string* error) const {
 
 OptionTable<ScaleEstimatorOptions> ScaleEstimatorOptions::Describe() {
   using O = ScaleEstimatorOptions;
-  return OptionTable<O>("mono.scale")
+  return OptionTable<O>("scale")  // Nested under "mono" by MonoSlamOptions.
       .Double("sigma_map", &O::sigma_map, "map units", 1e-6, 10, 0.001,
               "Noise of a camera displacement measured in the map (sigma_x of the ML estimator).")
       .Double("sigma_metric_m", &O::sigma_metric_m, "m", 1e-6, 10, 0.0005,

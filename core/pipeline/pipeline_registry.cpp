@@ -5,6 +5,7 @@
 #include "core/pipeline/inspect_pipeline.h"
 #include "core/pipeline/stereo_vo_pipeline.h"
 #include "core/pipeline/mapping_pipeline.h"
+#include "core/pipeline/mono_slam_pipeline.h"
 
 namespace sightline {
 
@@ -29,6 +30,7 @@ PipelineRegistry BuiltinPipelines() {
   Status s = registry.Register(InspectPipeline());
   s = registry.Register(MappingPipeline());
   s = registry.Register(StereoVoPipeline());
+  s = registry.Register(MonoSlamPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }
