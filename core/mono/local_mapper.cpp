@@ -164,7 +164,7 @@ int LocalMapper::LocalBundle(KeyFrameStats* stats) {
     auto it = pose_index.find(k.id);
     if (it != pose_index.end()) return it->second;
     pose_index[k.id] = static_cast<int>(problem.poses.size());
-    problem.poses.push_back({k.id, k.camera_from_map, fixed || k.id <= 1});
+    problem.poses.push_back({k.id, k.camera_from_map, fixed || k.id == 0});
     return static_cast<int>(problem.poses.size()) - 1;
   };
   for (int k = first_free; k < n; ++k) {

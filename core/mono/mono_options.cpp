@@ -36,6 +36,7 @@ bool MonoInitOptions::IsValid(std::string* error) const {
   if (!(min_median_parallax_deg >= 0)) {
     return Invalid(error, "mono.init.min_median_parallax_deg must be >= 0");
   }
+  if (!(min_baseline_ratio >= 0)) return Invalid(error, "mono.init.min_baseline_ratio must be >= 0");
   if (!(ransac_threshold_px > 0)) return Invalid(error, "mono.init.ransac_threshold_px must be > 0");
   if (!(homography_ratio > 0 && homography_ratio < 1)) {
     return Invalid(error, "mono.init.homography_ratio must lie in (0, 1)");
@@ -57,6 +58,10 @@ OptionTable<MonoInitOptions> MonoInitOptions::Describe() {
            "Matches with the first frame needed before initialisation is tried.")
       .Double("min_median_parallax_deg", &O::min_median_parallax_deg, "deg", 0, 30, 0.1,
               "Median angle between the rays of a match needed before trying (move sideways).")
+      .Double("min_baseline_ratio", &O::min_baseline_ratio, "", 0, 2, 0.01,
+              "Baseline over the median depth of the first points needed to accept (0.07 is a "
+              "4 deg ray angle sideways); a short baseline gives a distorted first map and a "
+              "drifting scale.")
       .Double("ransac_threshold_px", &O::ransac_threshold_px, "px", 0.1, 20, 0.1,
               "RANSAC inlier distance of the essential matrix and the homography.")
       .Double("homography_ratio", &O::homography_ratio, "", 0.01, 0.99, 0.01,

@@ -11,7 +11,7 @@ namespace sightline {
 
 // ORB features per frame. Keys "mono.features.*".
 struct MonoFeatureOptions {
-  int max_features = 1000;      // Keypoints per frame.
+  int max_features = 1500;      // Keypoints per frame.
   double scale_factor = 1.2;    // Pyramid scale between levels.
   int levels = 8;               // Pyramid levels.
   int fast_threshold = 12;      // FAST corner threshold [grey levels].
@@ -25,8 +25,9 @@ struct MonoFeatureOptions {
 struct MonoInitOptions {
   int min_matches = 100;              // Matches with the first frame needed to try [matches].
   double min_median_parallax_deg = 1.0;  // Median ray angle needed before trying [deg].
+  double min_baseline_ratio = 0.07;   // Baseline / median depth of the first points needed.
   double ransac_threshold_px = 1.5;   // RANSAC inlier distance of E and H [px].
-  double homography_ratio = 0.45;     // H is chosen when inliers_H / (inliers_H + inliers_E) > this.
+  double homography_ratio = 0.40;     // H is chosen when inliers_H / (inliers_H + inliers_E) > this.
   double min_point_parallax_deg = 0.5;  // A triangulated point needs this ray angle [deg].
   double max_reprojection_px = 2.0;   // ... and this reprojection error in both views [px].
   int min_points = 60;                // Triangulated points needed to accept [points].
@@ -58,7 +59,7 @@ struct MonoTrackingOptions {
 // Keyframes and mapping. Keys "mono.mapping.*".
 struct MonoMappingOptions {
   int min_keyframe_gap = 3;            // Frames between keyframes at least.
-  double keyframe_distance = 0.08;     // New keyframe when this far (x mean depth) from all ...
+  double keyframe_distance = 0.04;     // New keyframe when this far (x mean depth) from all ...
   double keyframe_match_ratio = 0.7;   // ... or when tracking fewer than this x the last KF's points.
   int neighbours = 3;                  // Keyframes to triangulate new points with.
   double epipolar_px = 2.0;            // Epipolar distance of a new-point match [px].

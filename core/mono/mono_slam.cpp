@@ -172,8 +172,10 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
   keyframe_inliers_ = static_cast<int>(result->points.size());
   PublishSnapshot();
   char text[160];
-  std::snprintf(text, sizeof(text), "initialised (%s, %zu points, median parallax %.1f deg)",
-                result->model.c_str(), result->points.size(), result->median_parallax_deg);
+  std::snprintf(text, sizeof(text), "initialised (%s, %zu points, median parallax %.1f deg, baseline %.3f of depth, "
+                "inliers H %d E %d)",
+                result->model.c_str(), result->points.size(), result->median_parallax_deg,
+                result->baseline_ratio, result->homography_inliers, result->essential_inliers);
   stats->status = text;
   return true;
 }
@@ -292,7 +294,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
       }
       for (const PointMatch& m : outcome.matches) result->keypoint_state[m.keypoint] = m.inlier ? 1 : 2;
       ++frames_since_keyframe_;
-      if (quality == TrackingQuality::kGood && NeedKeyFrame(outcome)) {
+      if (NeedKeyFrame(outcome)) {
         new_keyframe = std::make_shared<KeyFrame>();
         new_keyframe->features = features;
         new_keyframe->frame_index = frame.stamp.sequence_id;

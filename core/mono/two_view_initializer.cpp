@@ -179,6 +179,14 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
   }
   std::nth_element(parallax.begin(), parallax.begin() + parallax.size() / 2, parallax.end());
   result.median_parallax_deg = parallax[parallax.size() / 2];
+  std::vector<double> depths;
+  for (const Eigen::Vector3d& x : best.points) depths.push_back(x.z());
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  result.baseline_ratio = 1.0 / depths[depths.size() / 2];  // The baseline has unit length here.
+  if (result.baseline_ratio < options_.min_baseline_ratio) {
+    return fail("baseline still short (" + std::to_string(result.baseline_ratio) +
+                " of the median depth); keep moving sideways");
+  }
   return result;
 }
 

@@ -25,6 +25,7 @@ struct TwoViewResult {
   std::string model;                         // "homography" or "essential".
   int homography_inliers = 0, essential_inliers = 0;
   double median_parallax_deg = 0;            // Of the accepted points.
+  double baseline_ratio = 0;                 // Baseline / median depth of the accepted points.
 };
 
 // Holds the first frame and tries each later one against it.

@@ -25,6 +25,9 @@ bool MonoSlamRunOptions::IsValid(std::string* error) const {
     return fail("metric_source must be auto, arm, ground_truth or none");
   }
   if (scale_interval_frames < 1) return fail("scale_interval_frames must be >= 1");
+  if (scale_pairs != "keyframes" && scale_pairs != "frames") {
+    return fail("scale_pairs must be keyframes or frames");
+  }
   if (!(gt_tolerance_s >= 0)) return fail("gt_tolerance_s must be >= 0");
   return true;
 }
@@ -40,6 +43,9 @@ OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
               "arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.")
       .String("hand_eye", &O::hand_eye,
               "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses; none = identity.")
+      .Choice("scale_pairs", &O::scale_pairs, {"keyframes", "frames"},
+              "Displacement pairs between consecutive keyframes (poses refined by bundle "
+              "adjustment) or between tracked frames scale_interval_frames apart.")
       .Int("scale_interval_frames", &O::scale_interval_frames, "frames", 1, 10000, 1,
            "Frames spanned by one displacement pair of the scale estimators.")
       .Double("gt_tolerance_s", &O::gt_tolerance_s, "s", 0, 1, 0.005,
@@ -240,18 +246,27 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
   out.relocalisations = slam.relocalisations();
   out.init_model = slam.init_model();
   std::vector<DualPose> dual;
-  for (const MonoRunFrame& f : out.frames) {
-    if (!f.tracked) continue;
-    out.estimate.Add(f.time_s, f.map_from_camera);
+  auto add_dual = [&](int64_t index, double time_s, const Eigen::Isometry3d& map_from_camera) {
     DualPose d;
-    d.frame = f.frame;
-    d.map_from_camera = f.map_from_camera;
-    if (std::optional<size_t> k = metric.Nearest(f.time_s, run.gt_tolerance_s)) {
+    d.frame = index;
+    d.map_from_camera = map_from_camera;
+    if (std::optional<size_t> k = metric.Nearest(time_s, run.gt_tolerance_s)) {
       d.metric_from_camera = metric.poses()[*k].world_from_sensor;
     }
     dual.push_back(d);
+  };
+  for (const MonoRunFrame& f : out.frames) {
+    if (!f.tracked) continue;
+    out.estimate.Add(f.time_s, f.map_from_camera);
+    if (run.scale_pairs == "frames") add_dual(f.frame, f.time_s, f.map_from_camera);
   }
-  for (const ScalePair& pair : DisplacementPairs(dual, run.scale_interval_frames)) out.scale.Add(pair);
+  if (run.scale_pairs == "keyframes") {
+    for (size_t k = 0; k < out.map->keyframes.size(); ++k) {
+      add_dual(static_cast<int64_t>(k), out.map->keyframes[k].time_s, out.map->keyframes[k].map_from_camera);
+    }
+  }
+  const int interval = run.scale_pairs == "frames" ? run.scale_interval_frames : 1;
+  for (const ScalePair& pair : DisplacementPairs(dual, interval)) out.scale.Add(pair);
   return out;
 }
 
@@ -278,8 +293,15 @@ std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& 
   }
   figures.emplace_back("path_length_m", sim3->ground_truth_length_m);
   figures.emplace_back("tracked_poses_evaluated", static_cast<double>(sim3->pairs));
-  // The alignment's scale s maps the map to metres, so the true lambda is 1 / s.
-  const double lambda_true = 1.0 / sim3->ground_truth_from_estimate.scale;
+  // The alignment's scale s maps the map to metres, so the true lambda is 1 / s; measured on
+  // the keyframes (the map as bundle adjustment left it) when there are enough.
+  double lambda_true = 1.0 / sim3->ground_truth_from_estimate.scale;
+  Trajectory keyframes;
+  for (const MapSnapshot::Frame& k : run.map->keyframes) keyframes.Add(k.time_s, k.map_from_camera);
+  if (StatusOr<TrajectoryErrors> kf = EvaluateTrajectory(keyframes, *run.ground_truth, eval); kf.ok()) {
+    lambda_true = 1.0 / kf->ground_truth_from_estimate.scale;
+    figures.emplace_back("keyframe_ate_rmse_m", kf->ate.rmse);
+  }
   figures.emplace_back("scale_true", lambda_true);
   if (run.lambda() > 0) {
     figures.emplace_back("scale_error_pct_ml", 100 * std::abs(run.lambda() - lambda_true) / lambda_true);

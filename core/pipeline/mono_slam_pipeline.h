@@ -29,7 +29,8 @@ struct MonoSlamRunOptions {
   std::string metric_source = "auto";   // auto, arm, ground_truth or none.
   std::string arm_poses;                // arm_poses.txt; "" = beside the sensor folder.
   std::string hand_eye;                 // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
-  int scale_interval_frames = 5;        // Frames per displacement pair.
+  std::string scale_pairs = "keyframes";  // Displacements between keyframes or frames.
+  int scale_interval_frames = 5;        // Frames per displacement pair (scale_pairs = frames).
   double gt_tolerance_s = 0.02;         // Time association tolerance [s].
 
   bool IsValid(std::string* error) const;
@@ -74,7 +75,8 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
 
 // accuracy.* of metrics.json: lost_frames, relocalisations, scale_ml, scale_single, and with
 // ground truth ate_rmse_m (Sim(3)), ate_rmse_pct_of_path, ate_metric_rmse_m (SE(3) only, scale
-// from the ML estimate), scale_true, scale_error_pct_ml, scale_error_pct_single.
+// from the ML estimate), scale_true (of the final map: Sim(3) alignment of the keyframes),
+// scale_error_pct_ml, scale_error_pct_single.
 std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& run,
                                                              double gt_tolerance_s,
                                                              std::vector<std::string>* notes);
