@@ -94,6 +94,9 @@ bool MonoTrackingOptions::IsValid(std::string* error) const {
   if (min_inliers < 6 || good_inliers < min_inliers) {
     return Invalid(error, "mono.tracking: min_inliers must be >= 6 and good_inliers >= min_inliers");
   }
+  if (!(min_found_fraction >= 0 && min_found_fraction < 1)) {
+    return Invalid(error, "mono.tracking.min_found_fraction must lie in [0, 1)");
+  }
   if (reloc_min_matches < 6 || reloc_min_inliers < 6) {
     return Invalid(error, "mono.tracking.reloc_min_matches and reloc_min_inliers must be >= 6");
   }
@@ -121,6 +124,9 @@ OptionTable<MonoTrackingOptions> MonoTrackingOptions::Describe() {
            "Tracking quality is good from this many inliers.")
       .Int("min_inliers", &O::min_inliers, "points", 6, 10000, 1,
            "Tracking quality is poor from this many inliers; fewer is lost.")
+      .Double("min_found_fraction", &O::min_found_fraction, "", 0, 0.99, 0.01,
+              "Tracking is lost when fewer than this share of the map points predicted in the "
+              "image are found (PTAM's test against a wrong pose after a jump).")
       .Int("reloc_min_matches", &O::reloc_min_matches, "matches", 6, 10000, 1,
            "Descriptor matches with a keyframe needed to try relocalisation.")
       .Int("reloc_min_inliers", &O::reloc_min_inliers, "points", 6, 10000, 1,

@@ -49,6 +49,7 @@ struct MonoTrackingOptions {
   double outlier_px = 4.0;            // Residual that makes a match an outlier [px].
   int good_inliers = 60;              // Quality good from this many inliers.
   int min_inliers = 20;               // Quality poor from this many; fewer = lost.
+  double min_found_fraction = 0.1;    // Lost when fewer of the predicted points are found.
   int reloc_min_matches = 15;         // Descriptor matches with a keyframe to try PnP.
   int reloc_min_inliers = 30;         // Inliers to accept a relocalisation.
 

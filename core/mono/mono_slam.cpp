@@ -256,18 +256,19 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
     result->quality = result->tracked ? TrackingQuality::kGood : TrackingQuality::kInitialising;
   } else {
     TrackOutcome outcome = tracker_->Track(features, LocalPoints(), velocity_ * camera_from_map_);
-    TrackingQuality quality = tracker_->QualityOf(outcome.inliers);
+    TrackingQuality quality = tracker_->QualityOf(outcome);
     if (quality == TrackingQuality::kLost) {
       TrackOutcome relocalised;
       if (TryRelocalise(features, &relocalised)) {
         outcome = std::move(relocalised);
-        quality = tracker_->QualityOf(outcome.inliers);
+        quality = tracker_->QualityOf(outcome);
         stats.relocalised = true;
         ++relocalisations_;
         velocity_ = Eigen::Isometry3d::Identity();
       }
     }
     stats.matches = static_cast<int>(outcome.matches.size());
+    stats.predicted = static_cast<int>(outcome.predicted.size());
     stats.inliers = outcome.inliers;
     stats.rms_px = outcome.rms_px;
     result->quality = quality;

@@ -36,6 +36,7 @@ namespace sightline {
 // Statistics of one frame.
 struct MonoFrameStats {
   int keypoints = 0;        // ORB keypoints extracted.
+  int predicted = 0;        // Map points predicted inside the image (fine pass).
   int matches = 0;          // Map points matched (fine pass).
   int inliers = 0;          // After robust pose optimisation.
   double rms_px = 0;        // Inlier reprojection RMS (level-scaled) [px].

@@ -24,7 +24,12 @@ const char* TrackingQualityName(TrackingQuality quality) {
 Tracker::Tracker(const MonoTrackingOptions& options, const PinholeCamera& camera, double scale_factor)
     : options_(options), camera_(camera), scale_factor_(scale_factor) {}
 
-TrackingQuality Tracker::QualityOf(int inliers) const {
+TrackingQuality Tracker::QualityOf(const TrackOutcome& outcome) const {
+  const int inliers = outcome.inliers;
+  if (!outcome.predicted.empty() &&
+      inliers < options_.min_found_fraction * static_cast<double>(outcome.predicted.size())) {
+    return TrackingQuality::kLost;
+  }
   if (inliers >= options_.good_inliers) return TrackingQuality::kGood;
   if (inliers >= options_.min_inliers) return TrackingQuality::kPoor;
   return TrackingQuality::kLost;
@@ -154,7 +159,8 @@ bool Tracker::Relocalise(const FrameFeatures& features, const KeyFrame& keyframe
   pose.linear() = r;
   pose.translation() = t;
   *outcome = Track(features, local_points, pose);
-  return outcome->inliers >= options_.reloc_min_inliers;
+  return outcome->inliers >= options_.reloc_min_inliers &&
+         QualityOf(*outcome) != TrackingQuality::kLost;
 }
 
 }  // namespace sightline

@@ -56,7 +56,8 @@ class Tracker {
                   const std::vector<LocalPoint>& keyframe_points,
                   const std::vector<LocalPoint>& local_points, TrackOutcome* outcome) const;
 
-  TrackingQuality QualityOf(int inliers) const;
+  // Good, poor or lost from the inliers and the share of predicted points found.
+  TrackingQuality QualityOf(const TrackOutcome& outcome) const;
 
  private:
   // Matches projected points within `radius` (scaled by the keypoint's level).

@@ -383,7 +383,7 @@ Status WriteOutputs(const MonoSlamRun& run, const std::string& dir, RunResult* r
   }
   SIGHTLINE_RETURN_IF_ERROR(WriteFile((fs::path(dir) / "scale.csv").string(), scale.str()));
   std::ostringstream frames;
-  frames << "frame,time_s,quality,tracked,keypoints,matches,inliers,rms_px,map_points,keyframes,"
+  frames << "frame,time_s,quality,tracked,keypoints,predicted,matches,inliers,rms_px,map_points,keyframes,"
             "new_keyframe,relocalised,tracking_ms,status\n";
   for (const MonoRunFrame& f : run.frames) {
     std::string status = f.stats.status;
@@ -391,7 +391,8 @@ Status WriteOutputs(const MonoSlamRun& run, const std::string& dir, RunResult* r
       if (c == '"' || c == ',') c = ';';
     }
     frames << f.frame << ',' << f.time_s << ',' << TrackingQualityName(f.quality) << ','
-           << f.tracked << ',' << f.stats.keypoints << ',' << f.stats.matches << ','
+           << f.tracked << ',' << f.stats.keypoints << ',' << f.stats.predicted << ','
+           << f.stats.matches << ','
            << f.stats.inliers << ',' << f.stats.rms_px << ',' << f.stats.map_points << ','
            << f.stats.keyframes << ',' << f.stats.new_keyframe << ',' << f.stats.relocalised << ','
            << f.stats.tracking_ms << ",\"" << status << "\"\n";
