@@ -245,6 +245,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
   result->stamp = frame.stamp;
   result->image = frame.image;
   const FrameFeatures features = extractor_->Extract(frame.image);
+  if (timing_) timing_->Add("features", (HostTimeS() - start) * 1000.0);
   MonoFrameStats& stats = result->stats;
   stats.keypoints = static_cast<int>(features.size());
   result->keypoint_state.assign(features.size(), 0);

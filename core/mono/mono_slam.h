@@ -79,7 +79,8 @@ class MonoSlam {
   MonoSlam& operator=(const MonoSlam&) = delete;
 
   // Checks options and camera. `timing` (optional, must outlive this object) receives
-  // "tracking" per frame, "mapping" and "bundle_adjustment" per keyframe.
+  // "features" and "tracking" (features included) per frame, "mapping" and
+  // "bundle_adjustment" per keyframe.
   Status Configure(const PinholeCamera& camera, TimingStats* timing = nullptr);
 
   // Processes the next frame. Errors only when not configured or the image is empty of pixels

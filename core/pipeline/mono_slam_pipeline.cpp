@@ -125,7 +125,6 @@ StatusOr<Eigen::Isometry3d> ReadHandEye(const std::string& path) {
   return pose;
 }
 
-// The measured camera poses (metres) the scale is computed from, and where they came from.
 Status LoadMetricPoses(const std::string& path, const MonoSlamRunOptions& run,
                        const std::optional<Trajectory>& ground_truth, Trajectory* metric,
                        std::string* source) {
@@ -182,6 +181,29 @@ StatusOr<OpenedMono> OpenMono(const std::string& path) {
 }
 
 }  // namespace
+
+StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
+                                           const std::optional<Trajectory>& ground_truth,
+                                           std::string* source) {
+  Trajectory metric;
+  SIGHTLINE_RETURN_IF_ERROR(LoadMetricPoses(path, run, ground_truth, &metric, source));
+  return metric;
+}
+
+std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,
+                                          double tolerance_s) {
+  std::vector<DualPose> dual;
+  for (size_t k = 0; k < map.keyframes.size(); ++k) {
+    DualPose d;
+    d.frame = static_cast<int64_t>(k);
+    d.map_from_camera = map.keyframes[k].map_from_camera;
+    if (std::optional<size_t> i = metric.Nearest(map.keyframes[k].time_s, tolerance_s)) {
+      d.metric_from_camera = metric.poses()[*i].world_from_sensor;
+    }
+    dual.push_back(d);
+  }
+  return DisplacementPairs(dual, 1);
+}
 
 StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions& options,
                                   const MonoSlamRunOptions& run, TimingStats* timing,

@@ -73,6 +73,17 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
                                   const std::function<void(int64_t, int64_t)>& progress = {},
                                   const std::atomic<bool>* cancel = nullptr);
 
+// The measured camera poses (metres) the scale comes from, per `run.metric_source`: arm poses
+// (arm_poses.txt beside `path` or its parent, times hand_eye.yaml's end_effector_from_camera)
+// or `ground_truth`. *source says which ("arm", "ground_truth", "none"; then empty).
+StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
+                                           const std::optional<Trajectory>& ground_truth,
+                                           std::string* source);
+
+// Scale pairs between consecutive keyframes of `map` and the metric poses at their times.
+std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,
+                                          double tolerance_s);
+
 // accuracy.* of metrics.json: lost_frames, relocalisations, scale_ml, scale_single, and with
 // ground truth ate_rmse_m (Sim(3)), ate_rmse_pct_of_path, ate_metric_rmse_m (SE(3) only, scale
 // from the ML estimate), scale_true (of the final map: Sim(3) alignment of the keyframes),
