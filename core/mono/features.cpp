@@ -56,14 +56,6 @@ FrameFeatures FeatureExtractor::Extract(const cv::Mat& image) const {
   return f;
 }
 
-int DescriptorDistance(const cv::Mat& a, const cv::Mat& b) {
-  const uint64_t* pa = a.ptr<uint64_t>();
-  const uint64_t* pb = b.ptr<uint64_t>();
-  int d = 0;
-  for (int i = 0; i < 4; ++i) d += __builtin_popcountll(pa[i] ^ pb[i]);
-  return d;
-}
-
 bool Triangulate(const Eigen::Isometry3d& a_from_map, const Eigen::Isometry3d& b_from_map,
                  const Eigen::Vector2d& a, const Eigen::Vector2d& b, Eigen::Vector3d* x_in_map) {
   const Eigen::Matrix<double, 3, 4> Pa = a_from_map.matrix().topRows<3>();

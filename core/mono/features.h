@@ -3,6 +3,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <cstring>
 #include <opencv2/core.hpp>
 #include <opencv2/features2d.hpp>
 
@@ -30,8 +32,20 @@ class FeatureExtractor {
   cv::Ptr<cv::ORB> orb_;
 };
 
-// Hamming distance of two 32-byte ORB descriptor rows.
-int DescriptorDistance(const cv::Mat& a, const cv::Mat& b);
+// Hamming distance of two 32-byte ORB descriptors.
+inline int DescriptorDistance(const uint8_t* a, const uint8_t* b) {
+  int d = 0;
+  for (int i = 0; i < 32; i += 8) {
+    uint64_t x, y;
+    std::memcpy(&x, a + i, 8);
+    std::memcpy(&y, b + i, 8);
+    d += __builtin_popcountll(x ^ y);
+  }
+  return d;
+}
+inline int DescriptorDistance(const cv::Mat& a, const cv::Mat& b) {
+  return DescriptorDistance(a.ptr<uint8_t>(), b.ptr<uint8_t>());
+}
 
 // Pixel of a point in the camera frame; no distortion (keypoints are undistorted).
 inline Eigen::Vector2d ProjectToPixel(const PinholeCamera& camera, const Eigen::Vector3d& x) {

@@ -70,10 +70,11 @@ int LocalMapper::FuseNeighbourPoints(KeyFrame* current, const std::vector<KeyFra
     if (x.z() <= 0) continue;
     const Eigen::Vector2d uv = ProjectToPixel(camera_, x);
     int best = options_.max_descriptor_distance + 1, best_k = -1;
+    const uint8_t* dp = p->descriptor.ptr<uint8_t>();
     for (int k : f.InWindow(uv.x(), uv.y(), 3.0 * options_.epipolar_px)) {
       if (taken[k]) continue;
       if ((f.pixels[k] - uv).norm() > options_.max_reprojection_px * Scale(scale_factor_, f.keypoints[k])) continue;
-      const int d = DescriptorDistance(p->descriptor, f.descriptors.row(k));
+      const int d = DescriptorDistance(dp, f.descriptors.ptr<uint8_t>(k));
       if (d < best) {
         best = d;
         best_k = k;
@@ -112,12 +113,12 @@ int LocalMapper::TriangulateWith(KeyFrame* current, const KeyFrame& neighbour) {
     const double norm = line.head<2>().norm();
     if (norm < 1e-12) continue;
     int best = options_.max_descriptor_distance + 1, second = 1 << 30, best_j = -1;
-    const cv::Mat da = a.descriptors.row(static_cast<int>(i));
+    const uint8_t* da = a.descriptors.ptr<uint8_t>(static_cast<int>(i));
     for (size_t j = 0; j < b.size(); ++j) {
       if (b_taken[j]) continue;
       const double distance = std::abs(line.dot(b.pixels[j].homogeneous())) / norm;
       if (distance > options_.epipolar_px * Scale(scale_factor_, b.keypoints[j])) continue;
-      const int d = DescriptorDistance(da, b.descriptors.row(static_cast<int>(j)));
+      const int d = DescriptorDistance(da, b.descriptors.ptr<uint8_t>(static_cast<int>(j)));
       if (d < best) {
         second = best;
         best = d;

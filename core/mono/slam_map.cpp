@@ -7,7 +7,13 @@ namespace sightline {
 
 std::vector<int> FrameFeatures::InWindow(double u, double v, double radius) const {
   std::vector<int> out;
-  if (grid.empty()) return out;
+  InWindow(u, v, radius, &out);
+  return out;
+}
+
+void FrameFeatures::InWindow(double u, double v, double radius, std::vector<int>* out) const {
+  out->clear();
+  if (grid.empty()) return;
   const int c0 = std::max(0, static_cast<int>(std::floor((u - radius) / cell_px)));
   const int c1 = std::min(grid_columns - 1, static_cast<int>(std::floor((u + radius) / cell_px)));
   const int r0 = std::max(0, static_cast<int>(std::floor((v - radius) / cell_px)));
@@ -17,11 +23,10 @@ std::vector<int> FrameFeatures::InWindow(double u, double v, double radius) cons
     for (int c = c0; c <= c1; ++c) {
       for (int i : grid[r * grid_columns + c]) {
         const double du = pixels[i].x() - u, dv = pixels[i].y() - v;
-        if (du * du + dv * dv <= r2) out.push_back(i);
+        if (du * du + dv * dv <= r2) out->push_back(i);
       }
     }
   }
-  return out;
 }
 
 int64_t SlamMap::AddPoint(MapPoint point) {

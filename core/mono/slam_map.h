@@ -25,6 +25,8 @@ struct FrameFeatures {
   size_t size() const { return keypoints.size(); }
   // Keypoints within `radius` px of (u, v).
   std::vector<int> InWindow(double u, double v, double radius) const;
+  // The same into *out (cleared first), so loops reuse one buffer.
+  void InWindow(double u, double v, double radius, std::vector<int>* out) const;
 };
 
 // One 3D point of the map.

@@ -43,6 +43,7 @@ std::vector<PointMatch> Tracker::SearchByProjection(const FrameFeatures& feature
   // Best match per keypoint, so that two points cannot claim one keypoint.
   std::vector<int> best_distance(features.size(), 1 << 30);
   std::vector<int> best_point(features.size(), -1);
+  std::vector<int> window;
   for (size_t p = 0; p < points.size(); ++p) {
     const Eigen::Vector3d x = camera_from_map * points[p].position;
     if (x.z() <= 1e-6) continue;
@@ -50,8 +51,10 @@ std::vector<PointMatch> Tracker::SearchByProjection(const FrameFeatures& feature
     if (uv.x() < 0 || uv.y() < 0 || uv.x() >= features.width || uv.y() >= features.height) continue;
     if (predicted) predicted->push_back(points[p].id);
     int best = 1 << 30, second = 1 << 30, best_k = -1;
-    for (int k : features.InWindow(uv.x(), uv.y(), radius)) {
-      const int d = DescriptorDistance(points[p].descriptor, features.descriptors.row(k));
+    const uint8_t* dp = points[p].descriptor.ptr<uint8_t>();
+    features.InWindow(uv.x(), uv.y(), radius, &window);
+    for (int k : window) {
+      const int d = DescriptorDistance(dp, features.descriptors.ptr<uint8_t>(k));
       if (d < best) {
         second = best;
         best = d;

@@ -18,9 +18,9 @@ std::vector<std::pair<int, int>> MatchDescriptors(const cv::Mat& a, const cv::Ma
   std::vector<int> distances;
   for (int i = 0; i < a.rows; ++i) {
     int best = 1 << 30, second = 1 << 30, best_j = -1;
-    const cv::Mat da = a.row(i);
+    const uint8_t* da = a.ptr<uint8_t>(i);
     for (int j = 0; j < b.rows; ++j) {
-      const int d = DescriptorDistance(da, b.row(j));
+      const int d = DescriptorDistance(da, b.ptr<uint8_t>(j));
       if (d < best) {
         second = best;
         best = d;
