@@ -6,6 +6,7 @@
 #include "core/pipeline/stereo_vo_pipeline.h"
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mobility_pipeline.h"
+#include "core/pipeline/mono_slam_pipeline.h"
 
 namespace sightline {
 
@@ -31,6 +32,7 @@ PipelineRegistry BuiltinPipelines() {
   s = registry.Register(MappingPipeline());
   s = registry.Register(StereoVoPipeline());
   s = registry.Register(MobilityPipeline());
+  s = registry.Register(MonoSlamPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }

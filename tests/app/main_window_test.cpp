@@ -17,6 +17,7 @@
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/mapping_presenter.h"
+#include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/stereo_vo_presenter.h"
 #include "core/io/dataset.h"
 #include "core/sim/simulate.h"
@@ -347,6 +348,31 @@ TEST(StereoVoPresenter, DrawsTracksAndATrajectoryThatFollowsKittiGroundTruth) {
   Trajectory truth;
   for (int i = 0; i < kFrames; ++i) truth.mutable_poses().push_back((*gt)->ground_truth()->poses()[i]);
   EXPECT_NEAR(vo->estimate().LengthM(), truth.LengthM(), 0.05 * truth.LengthM());
+}
+
+TEST(MonoSlamPresenter, DrawsTheMapKeyframesAndTrajectoryOnKittiLeftImages) {
+  SIGHTLINE_REQUIRE_DATA(dir, "kitti_clip1");
+  MainWindow window;
+  auto* mono = new MonoSlamPresenter();
+  window.AddPipeline(mono);
+  ASSERT_TRUE(window.ActivatePipeline(mono->Title()));
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(dir));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  QSignalSpy shown(&window, &MainWindow::FrameShown);
+  constexpr int kFrames = 8;
+  for (int i = 0; i < kFrames; ++i) {
+    window.playback()->Step();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 30000)) << "step " << i;
+  }
+  EXPECT_FALSE(mono->image_view()->image().isNull());
+  // Initialised within the first frames: the two first keyframes and their points are drawn.
+  EXPECT_GE(mono->keyframes_drawn(), 2u);
+  EXPECT_GT(mono->points_drawn(), 50u);
+  EXPECT_TRUE(window.scene_view()->HasLayer("mono/map"));
+  EXPECT_TRUE(window.scene_view()->HasLayer("mono/keyframes"));
+  EXPECT_TRUE(window.scene_view()->HasLayer("mono/trajectory"));
 }
 
 }  // namespace

@@ -1,0 +1,354 @@
+#include "app/sightline/mono_slam_presenter.h"
+
+#include <QDockWidget>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMainWindow>
+#include <QPainter>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "core/io/dataset.h"
+#include "core/mono/mono_slam.h"
+#include "core/pipeline/mono_slam_pipeline.h"
+#include "widgets/image_view.h"
+#include "widgets/scene_view.h"
+
+namespace sightline {
+
+// The convergence of both scale estimates over the pairs (ML solid, single ratio dashed).
+class ScalePlot : public QWidget {
+ public:
+  explicit ScalePlot(QWidget* parent) : QWidget(parent) { setMinimumHeight(120); }
+  void SetHistory(std::vector<ScaleSample> history) {
+    history_ = std::move(history);
+    update();
+  }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter p(this);
+    p.fillRect(rect(), QColor(30, 30, 34));
+    double lo = 1e300, hi = -1e300;
+    for (const ScaleSample& s : history_) {
+      for (double v : {s.max_likelihood, s.single_ratio}) {
+        if (v > 0) {
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+      }
+    }
+    p.setPen(QColor(200, 200, 200));
+    if (history_.size() < 2 || hi <= lo) {
+      p.drawText(rect(), Qt::AlignCenter, tr("scale: waiting for displacement pairs"));
+      return;
+    }
+    const double pad = 0.1 * (hi - lo);
+    lo -= pad;
+    hi += pad;
+    const QRectF area = QRectF(rect()).adjusted(50, 8, -8, -18);
+    auto at = [&](size_t i, double v) {
+      return QPointF(area.left() + area.width() * i / double(history_.size() - 1),
+                     area.bottom() - area.height() * (v - lo) / (hi - lo));
+    };
+    p.drawText(QRectF(0, area.top() - 6, 48, 14), Qt::AlignRight, QString::number(hi, 'g', 4));
+    p.drawText(QRectF(0, area.bottom() - 8, 48, 14), Qt::AlignRight, QString::number(lo, 'g', 4));
+    p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 14), Qt::AlignCenter,
+               tr("pairs (map units per metre)"));
+    for (int which = 0; which < 2; ++which) {
+      QPen pen(which == 0 ? QColor(90, 200, 255) : QColor(255, 170, 60), 2.0);
+      if (which == 1) pen.setStyle(Qt::DashLine);
+      p.setPen(pen);
+      QPolygonF line;
+      for (size_t i = 0; i < history_.size(); ++i) {
+        const double v = which == 0 ? history_[i].max_likelihood : history_[i].single_ratio;
+        if (v > 0) line << at(i, v);
+      }
+      p.drawPolyline(line);
+    }
+  }
+
+ private:
+  std::vector<ScaleSample> history_;
+};
+
+namespace {
+
+// What the mono processor hands the GUI for one frame.
+struct MonoViewResult : PipelineFrameResult {
+  std::shared_ptr<const MonoSlamResult> slam;
+  std::shared_ptr<const std::vector<ScaleSample>> scale_history;  // Null when unchanged.
+  double lambda = 0;          // ML map units per metre, 0 = unknown.
+  double single_ratio = 0;
+  std::string metric_source;  // "arm", "ground_truth" or "none".
+};
+
+// Runs MonoSlam (threaded mapping) on the playback worker; recomputes the scale whenever the map
+// changes, from its keyframes and the recording's arm poses or ground truth.
+class MonoSlamProcessor : public FrameProcessor {
+ public:
+  MonoSlamProcessor(SourceInfo info, PinholeCamera camera, std::shared_ptr<MonoSlamControls> controls)
+      : info_(std::move(info)), camera_(camera), controls_(std::move(controls)) {}
+
+  Status Configure(const OptionSet& options) override {
+    MonoSlamOptions parsed = options.Extract(MonoSlamOptions::Describe());
+    parsed.mapping.threaded = true;  // Live view: mapping on its own thread.
+    run_ = options.Extract(MonoSlamRunOptions::Describe());
+    scale_options_ = parsed.scale;
+    auto slam = std::make_unique<MonoSlam>(parsed);
+    SIGHTLINE_RETURN_IF_ERROR(slam->Configure(camera_));
+    slam_ = std::move(slam);
+    LoadMetric();
+    return Status::Ok();
+  }
+
+  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+    auto result = std::make_shared<MonoViewResult>();
+    result->stamp = StampOf(frame);
+    MonoFrame mono;
+    if (const auto* m = std::get_if<MonoFrame>(&frame)) {
+      mono = *m;
+    } else if (const auto* s = std::get_if<StereoFrame>(&frame)) {
+      mono = {s->stamp, s->left};
+    }
+    if (!slam_ || mono.image.empty()) {
+      result->status = FailedPrecondition("monocular SLAM needs mono images (or a stereo left)");
+      return result;
+    }
+    if (controls_->reset.exchange(false)) slam_->Reset();
+    slam_->SetMappingPaused(controls_->pause_mapping.load());
+    StatusOr<std::shared_ptr<const MonoSlamResult>> r = slam_->Process(mono);
+    if (!r.ok()) {
+      result->status = r.status();
+      return result;
+    }
+    result->slam = *r;
+    const MonoFrameStats& s = (*r)->stats;
+    result->stats = {{"mono/inliers", double(s.inliers)}, {"mono/matches", double(s.matches)},
+                     {"mono/map_points", double(s.map_points)}, {"mono/tracking_ms", s.tracking_ms}};
+    if ((*r)->map != last_map_) {
+      last_map_ = (*r)->map;
+      ScaleEstimator scale(scale_options_);
+      for (const ScalePair& pair : KeyFrameScalePairs(*last_map_, metric_, run_.gt_tolerance_s)) {
+        scale.Add(pair);
+      }
+      lambda_ = scale.max_likelihood();
+      single_ = scale.single_ratio();
+      result->scale_history = std::make_shared<const std::vector<ScaleSample>>(scale.history());
+    }
+    result->lambda = lambda_;
+    result->single_ratio = single_;
+    result->metric_source = metric_source_;
+    return result;
+  }
+
+  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
+    return Process(frame);  // SLAM state advances; a still frame simply tracks again.
+  }
+
+  void Reset() override {
+    if (slam_) slam_->Reset();
+    last_map_.reset();
+    lambda_ = single_ = 0;
+  }
+
+ private:
+  void LoadMetric() {
+    std::optional<Trajectory> ground_truth;
+    if (info_.has_ground_truth && !info_.live) {
+      StatusOr<std::unique_ptr<Source>> source = OpenDataset(info_.path);
+      if (source.ok() && (*source)->ground_truth() != nullptr) ground_truth = *(*source)->ground_truth();
+    }
+    StatusOr<Trajectory> metric = LoadMetricCameraPoses(info_.path, run_, ground_truth, &metric_source_);
+    metric_ = metric.ok() ? *metric : Trajectory();
+    if (!metric.ok()) metric_source_ = "none";
+  }
+
+  SourceInfo info_;
+  PinholeCamera camera_;
+  std::shared_ptr<MonoSlamControls> controls_;
+  MonoSlamRunOptions run_;
+  ScaleEstimatorOptions scale_options_;
+  std::unique_ptr<MonoSlam> slam_;
+  Trajectory metric_;
+  std::string metric_source_ = "none";
+  std::shared_ptr<const MapSnapshot> last_map_;
+  double lambda_ = 0, single_ = 0;
+};
+
+constexpr const char* kMapLayer = "mono/map";
+constexpr const char* kKeyFramesLayer = "mono/keyframes";
+constexpr const char* kTrajectoryLayer = "mono/trajectory";
+constexpr const char* kCameraLayer = "mono/camera";
+
+QColor QualityColor(TrackingQuality q) {
+  switch (q) {
+    case TrackingQuality::kGood: return QColor(40, 220, 40);
+    case TrackingQuality::kPoor: return QColor(240, 200, 40);
+    case TrackingQuality::kLost: return QColor(230, 40, 40);
+    case TrackingQuality::kInitialising: return QColor(120, 160, 255);
+  }
+  return Qt::white;
+}
+
+// A colour per keyframe (golden-angle hues), as map.ply uses.
+Eigen::Matrix<uint8_t, 3, 1> KeyFrameColour(int64_t keyframe) {
+  const QColor c = QColor::fromHsv(static_cast<int>(std::fmod(keyframe * 137.508, 360.0)), 200, 255);
+  return Eigen::Matrix<uint8_t, 3, 1>(c.red(), c.green(), c.blue());
+}
+
+}  // namespace
+
+MonoSlamPresenter::MonoSlamPresenter(QObject* parent) : PipelinePresenter(parent) {}
+
+QString MonoSlamPresenter::Title() const { return tr("Monocular SLAM (PTAM point cloud)"); }
+
+Status MonoSlamPresenter::DeclareOptions(OptionSet* options) const {
+  SIGHTLINE_RETURN_IF_ERROR(options->Declare(MonoSlamOptions::Describe()));
+  return options->Declare(MonoSlamRunOptions::Describe());
+}
+
+bool MonoSlamPresenter::Accepts(SourceKind kind) const {
+  return kind == SourceKind::kMono || kind == SourceKind::kStereo;
+}
+
+std::unique_ptr<FrameProcessor> MonoSlamPresenter::CreateProcessor(const SourceInfo& info) {
+  PinholeCamera camera;
+  if (info.camera) {
+    camera = *info.camera;
+  } else if (info.stereo) {
+    camera = info.stereo->left;
+  } else {
+    emit Message(2, tr("Monocular SLAM needs a camera calibration (camera.yaml)"));
+    return nullptr;
+  }
+  controls_->reset = false;
+  return std::make_unique<MonoSlamProcessor>(info, camera, controls_);
+}
+
+void MonoSlamPresenter::Attach(QMainWindow* window) {
+  if (image_dock_ == nullptr) {
+    auto* panel = new QWidget(window);
+    auto* layout = new QVBoxLayout(panel);
+    layout->setContentsMargins(0, 0, 0, 0);
+    status_label_ = new QLabel(panel);
+    status_label_->setWordWrap(true);
+    image_view_ = new ImageView(panel);
+    auto* buttons = new QHBoxLayout();
+    auto* reset = new QPushButton(tr("Reset map"), panel);
+    pause_button_ = new QPushButton(tr("Pause mapping"), panel);
+    pause_button_->setCheckable(true);
+    buttons->addWidget(reset);
+    buttons->addWidget(pause_button_);
+    layout->addWidget(status_label_);
+    layout->addWidget(image_view_, 1);
+    layout->addLayout(buttons);
+    connect(reset, &QPushButton::clicked, this, [this] {
+      controls_->reset = true;
+      trajectory_ = Trajectory();
+    });
+    connect(pause_button_, &QPushButton::toggled, this,
+            [this](bool paused) { controls_->pause_mapping = paused; });
+    image_dock_ = new QDockWidget(tr("Tracked features (inliers green, outliers red)"), window);
+    image_dock_->setObjectName("mono_image_dock");
+    image_dock_->setWidget(panel);
+
+    auto* scale_panel = new QWidget(window);
+    auto* scale_layout = new QVBoxLayout(scale_panel);
+    scale_label_ = new QLabel(scale_panel);
+    scale_label_->setWordWrap(true);
+    scale_plot_ = new ScalePlot(scale_panel);
+    scale_layout->addWidget(scale_label_);
+    scale_layout->addWidget(scale_plot_, 1);
+    scale_dock_ = new QDockWidget(tr("Metric scale (ML solid, single ratio dashed)"), window);
+    scale_dock_->setObjectName("mono_scale_dock");
+    scale_dock_->setWidget(scale_panel);
+  }
+  scene_ = window->findChild<SceneView*>();
+  window->addDockWidget(Qt::LeftDockWidgetArea, image_dock_);
+  window->addDockWidget(Qt::LeftDockWidgetArea, scale_dock_);
+  image_dock_->show();
+  scale_dock_->show();
+  trajectory_ = Trajectory();
+  last_id_ = -1;
+}
+
+void MonoSlamPresenter::Detach() {
+  if (image_dock_ != nullptr) image_dock_->hide();
+  if (scale_dock_ != nullptr) scale_dock_->hide();
+  if (scene_ != nullptr) {
+    for (const char* layer : {kMapLayer, kKeyFramesLayer, kTrajectoryLayer, kCameraLayer}) {
+      scene_->RemoveLayer(layer);
+    }
+  }
+}
+
+void MonoSlamPresenter::Show(const PlaybackResult& result) {
+  const auto* view = dynamic_cast<const MonoViewResult*>(result.pipeline.get());
+  if (view == nullptr || image_view_ == nullptr || !view->slam) return;
+  const std::shared_ptr<const MonoSlamResult> slam = view->slam;
+  if (slam->stamp.sequence_id <= last_id_) trajectory_ = Trajectory();
+  last_id_ = slam->stamp.sequence_id;
+
+  image_view_->SetImage(slam->image);
+  image_view_->SetOverlayPainter([slam](QPainter& painter, const QTransform& to_widget) {
+    for (size_t i = 0; i < slam->keypoints.size(); ++i) {
+      const uint8_t state = slam->keypoint_state[i];
+      painter.setPen(QPen(state == 1 ? QColor(40, 220, 40) : state == 2 ? QColor(230, 40, 40)
+                                                                         : QColor(150, 150, 150),
+                          state == 0 ? 1.0 : 1.5));
+      painter.drawEllipse(to_widget.map(QPointF(slam->keypoints[i].x, slam->keypoints[i].y)),
+                          state == 0 ? 1.5 : 3.0, state == 0 ? 1.5 : 3.0);
+    }
+    painter.setPen(QPen(QualityColor(slam->quality), 6));
+    painter.drawRect(to_widget.mapRect(QRectF(0, 0, slam->image.cols, slam->image.rows)));
+  });
+  const MonoFrameStats& s = slam->stats;
+  status_label_->setText(tr("%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms")
+                             .arg(QString::fromStdString(s.status))
+                             .arg(s.inliers)
+                             .arg(s.matches)
+                             .arg(s.map_points)
+                             .arg(s.keyframes)
+                             .arg(s.tracking_ms, 0, 'f', 1));
+  scale_ml_ = view->lambda;
+  const double divide = view->lambda > 0 ? view->lambda : 1.0;
+  if (view->lambda > 0) {
+    scale_label_->setText(tr("Metric scale from %1: ML %2, single ratio %3 map units per metre; "
+                             "map and trajectory in metres.")
+                              .arg(QString::fromStdString(view->metric_source))
+                              .arg(view->lambda, 0, 'g', 5)
+                              .arg(view->single_ratio, 0, 'g', 5));
+  } else {
+    scale_label_->setText(tr("Scale unknown (measured motion: %1): the map is in arbitrary units "
+                             "(first baseline = 0.1).")
+                              .arg(QString::fromStdString(view->metric_source)));
+  }
+  if (view->scale_history) scale_plot_->SetHistory(*view->scale_history);
+
+  if (slam->tracked) trajectory_.Add(slam->stamp.sensor_time_s, slam->map_from_camera);
+  if (scene_ == nullptr) return;
+  auto metric = [divide](Eigen::Isometry3d pose) {
+    pose.translation() /= divide;
+    return pose;
+  };
+  auto cloud = std::make_shared<PointCloud>();
+  for (const MapSnapshot::Point& p : slam->map->points) {
+    cloud->points.push_back((p.position / divide).cast<float>());
+    cloud->colors.push_back(KeyFrameColour(p.first_keyframe));
+  }
+  points_drawn_ = cloud->points.size();
+  scene_->SetPointCloud(kMapLayer, cloud, SceneView::ColorMode::kRgb, 3.0);
+  std::vector<Eigen::Isometry3d> keyframes;
+  for (const MapSnapshot::Frame& k : slam->map->keyframes) keyframes.push_back(metric(k.map_from_camera));
+  keyframes_drawn_ = keyframes.size();
+  const double frustum = view->lambda > 0 ? 0.03 : 0.03 * divide;
+  scene_->SetFrusta(kKeyFramesLayer, keyframes, QColor(90, 200, 255), frustum);
+  Trajectory drawn;
+  for (const TimedPose& p : trajectory_.poses()) drawn.Add(p.time_s, metric(p.world_from_sensor));
+  scene_->SetTrajectory(kTrajectoryLayer, drawn, QColor(255, 80, 80), 2.0);
+  scene_->SetFrusta(kCameraLayer, {metric(slam->map_from_camera)}, QualityColor(slam->quality),
+                    1.5 * frustum);
+}
+
+}  // namespace sightline

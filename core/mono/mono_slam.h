@@ -1,0 +1,151 @@
+// Monocular SLAM in the manner of PTAM (seed 004): two-view initialisation while the camera
+// moves sideways, tracking every frame against the map, keyframes handed to a mapper that
+// triangulates new points and runs local bundle adjustment, relocalisation when lost. The map
+// starts in arbitrary units (first baseline = mono.init.baseline); metric scale comes from
+// measured motion (scale_estimator.h, metric_motion.h).
+//
+// Two modes: synchronous (mono.mapping.threaded = false; mapping runs inline after each new
+// keyframe, deterministic; tests and the headless CLI) and threaded (mapping on its own thread,
+// fed through a bounded queue; the GUI). Both stop cleanly.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <opencv2/core.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/common/bounded_queue.h"
+#include "core/common/camera.h"
+#include "core/common/frame.h"
+#include "core/common/status.h"
+#include "core/common/timing.h"
+#include "core/mono/features.h"
+#include "core/mono/local_mapper.h"
+#include "core/mono/mono_options.h"
+#include "core/mono/slam_map.h"
+#include "core/mono/tracker.h"
+#include "core/mono/two_view_initializer.h"
+
+namespace sightline {
+
+// Statistics of one frame.
+struct MonoFrameStats {
+  int keypoints = 0;        // ORB keypoints extracted.
+  int predicted = 0;        // Map points predicted inside the image (fine pass).
+  int matches = 0;          // Map points matched (fine pass).
+  int inliers = 0;          // After robust pose optimisation.
+  double rms_px = 0;        // Inlier reprojection RMS (level-scaled) [px].
+  int map_points = 0;       // In the map after this frame.
+  int keyframes = 0;        // In the map after this frame.
+  bool new_keyframe = false;
+  bool relocalised = false;
+  std::string status;       // What happened, for people ("initialised (homography, 212 points)").
+  double tracking_ms = 0;   // Features + tracking (+ relocalisation) of this frame.
+};
+
+// The result of one frame, shared immutable with views.
+struct MonoSlamResult {
+  FrameStamp stamp;
+  TrackingQuality quality = TrackingQuality::kInitialising;
+  bool tracked = false;  // The pose below is valid for this frame.
+  Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();  // Map units.
+  MonoFrameStats stats;
+  std::vector<cv::Point2f> keypoints;    // Every keypoint (image pixels).
+  std::vector<uint8_t> keypoint_state;   // 0 unmatched, 1 inlier, 2 outlier.
+  std::shared_ptr<const MapSnapshot> map;  // The latest map (shared until it changes).
+  cv::Mat image;                           // The frame as given.
+};
+
+// The SLAM system.
+//
+//   MonoSlam slam(options);
+//   SIGHTLINE_RETURN_IF_ERROR(slam.Configure(*source.info().camera, &timing));
+//   while (...) {
+//     auto r = slam.Process(mono_frame);
+//     if (!r.ok()) return r.status();
+//     if ((*r)->tracked) trajectory.Add((*r)->stamp.sensor_time_s, (*r)->map_from_camera);
+//   }
+//   slam.Stop();  // Finishes queued mapping work (threaded mode).
+class MonoSlam {
+ public:
+  explicit MonoSlam(MonoSlamOptions options = {});
+  ~MonoSlam();
+  MonoSlam(const MonoSlam&) = delete;
+  MonoSlam& operator=(const MonoSlam&) = delete;
+
+  // Checks options and camera. `timing` (optional, must outlive this object) receives
+  // "features" and "tracking" (features included) per frame, "mapping" and
+  // "bundle_adjustment" per keyframe.
+  Status Configure(const PinholeCamera& camera, TimingStats* timing = nullptr);
+
+  // Processes the next frame. Errors only when not configured or the image is empty of pixels
+  // of the wrong size; bad images (black, textureless, a jump) are reported in the result.
+  StatusOr<std::shared_ptr<const MonoSlamResult>> Process(const MonoFrame& frame);
+
+  // Forgets the map and starts initialising again.
+  void Reset();
+  // Paused mapping adds no keyframes; tracking continues on the map as it is.
+  void SetMappingPaused(bool paused) { mapping_paused_ = paused; }
+  // Waits for queued mapping work and stops the mapping thread (threaded mode). Idempotent.
+  void Stop();
+
+  std::shared_ptr<const MapSnapshot> Snapshot() const;
+  std::vector<KeyFrameStats> KeyFrameHistory() const;
+  bool initialised() const { return initialised_; }
+  int lost_frames() const { return lost_frames_; }
+  int relocalisations() const { return relocalisations_; }
+  const std::string& init_model() const { return init_model_; }
+  const MonoSlamOptions& options() const { return options_; }
+
+ private:
+  bool TryInitialise(const FrameFeatures& features, const FrameStamp& stamp, MonoFrameStats* stats);
+  std::vector<LocalPoint> LocalPoints() const;  // Takes the map lock.
+  bool TryRelocalise(const FrameFeatures& features, TrackOutcome* outcome);
+  bool NeedKeyFrame(const TrackOutcome& outcome) const;
+  void HandOver(std::shared_ptr<KeyFrame> keyframe);
+  void MapKeyFrame(std::shared_ptr<KeyFrame> keyframe);
+  void MappingLoop();
+  void StartMappingThread();
+  void PublishSnapshot();
+
+  MonoSlamOptions options_;
+  PinholeCamera camera_;
+  bool configured_ = false;
+  TimingStats* timing_ = nullptr;
+  std::unique_ptr<FeatureExtractor> extractor_;
+  std::unique_ptr<TwoViewInitializer> initializer_;
+  std::unique_ptr<Tracker> tracker_;
+
+  mutable std::mutex map_mutex_;  // Guards map_ (see local_mapper.h for who locks when).
+  SlamMap map_;
+  std::unique_ptr<LocalMapper> mapper_;
+
+  // Threaded mode.
+  std::unique_ptr<BoundedQueue<std::shared_ptr<KeyFrame>>> keyframe_queue_;
+  std::thread mapping_thread_;
+  std::atomic<bool> mapping_busy_{false};
+  std::atomic<bool> mapping_paused_{false};
+
+  mutable std::mutex snapshot_mutex_;  // Guards snapshot_ and keyframe_history_.
+  std::shared_ptr<const MapSnapshot> snapshot_;
+  std::vector<KeyFrameStats> keyframe_history_;
+
+  // Tracking state (tracking thread only).
+  bool initialised_ = false;
+  std::string init_model_;
+  FrameStamp first_stamp_;
+  Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d velocity_ = Eigen::Isometry3d::Identity();  // current_from_previous.
+  bool lost_ = false;
+  int frames_since_keyframe_ = 0;
+  int keyframe_inliers_ = 0;
+  int lost_frames_ = 0;
+  int relocalisations_ = 0;
+};
+
+}  // namespace sightline

@@ -1,0 +1,98 @@
+// The `mono-slam` pipeline: monocular SLAM (core/mono) over a recording's mono images (or a
+// stereo recording's left images), metric scale from the arm's poses (arm_poses.txt +
+// hand_eye.yaml beside the sensor folder) or from ground-truth displacements, and the files
+// trajectory.txt (TUM, metric when the scale is known), trajectory_map.txt (map units),
+// map.ply, keyframes.txt, scale.csv, frames.csv and metrics.json.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/common/status.h"
+#include "core/common/timing.h"
+#include "core/common/trajectory.h"
+#include "core/mono/mono_slam.h"
+#include "core/mono/scale_estimator.h"
+#include "core/options/option_table.h"
+#include "core/pipeline/pipeline_registry.h"
+
+namespace sightline {
+
+// Run-level options of mono-slam. Keys "mono.run.*".
+struct MonoSlamRunOptions {
+  int max_frames = 0;                   // Frames read; 0 = all.
+  std::string metric_source = "auto";   // auto, arm, ground_truth or none.
+  std::string arm_poses;                // arm_poses.txt; "" = beside the sensor folder.
+  std::string hand_eye;                 // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
+  std::string scale_pairs = "keyframes";  // Displacements between keyframes or frames.
+  int scale_interval_frames = 5;        // Frames per displacement pair (scale_pairs = frames).
+  double gt_tolerance_s = 0.02;         // Time association tolerance [s].
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<MonoSlamRunOptions> Describe();
+};
+
+// One processed frame.
+struct MonoRunFrame {
+  int64_t frame = -1;
+  double time_s = 0;
+  TrackingQuality quality = TrackingQuality::kInitialising;
+  bool tracked = false;
+  Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();
+  MonoFrameStats stats;
+};
+
+// The outcome of one run.
+struct MonoSlamRun {
+  std::string dataset_format;
+  std::vector<MonoRunFrame> frames;
+  Trajectory estimate;                      // Tracked frames, map units.
+  std::shared_ptr<const MapSnapshot> map;   // After the last frame.
+  std::vector<KeyFrameStats> keyframes;
+  int lost_frames = 0, relocalisations = 0;
+  std::string init_model;
+  std::string metric_source;                // What the scale came from ("arm", ...), or "none".
+  ScaleEstimator scale;
+  std::optional<Trajectory> ground_truth;
+
+  // Map units per metre, ML (0 when unknown).
+  double lambda() const { return scale.max_likelihood(); }
+  // The estimate in metres when the scale is known, else in map units.
+  Trajectory MetricEstimate() const;
+};
+
+// Runs the SLAM over `path`. Errors: unreadable dataset, no camera calibration, invalid
+// options, an unreadable arm_poses.txt / hand_eye.yaml that was asked for, cancellation.
+StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions& options,
+                                  const MonoSlamRunOptions& run, TimingStats* timing = nullptr,
+                                  const std::function<void(int64_t, int64_t)>& progress = {},
+                                  const std::atomic<bool>* cancel = nullptr);
+
+// The measured camera poses (metres) the scale comes from, per `run.metric_source`: arm poses
+// (arm_poses.txt beside `path` or its parent, times hand_eye.yaml's end_effector_from_camera)
+// or `ground_truth`. *source says which ("arm", "ground_truth", "none"; then empty).
+StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
+                                           const std::optional<Trajectory>& ground_truth,
+                                           std::string* source);
+
+// Scale pairs between consecutive keyframes of `map` and the metric poses at their times.
+std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,
+                                          double tolerance_s);
+
+// accuracy.* of metrics.json: lost_frames, relocalisations, scale_ml, scale_single, and with
+// ground truth ate_rmse_m (Sim(3)), ate_rmse_pct_of_path, ate_metric_rmse_m (SE(3) only, scale
+// from the ML estimate), scale_true (of the final map: Sim(3) alignment of the keyframes),
+// scale_error_pct_ml, scale_error_pct_single.
+std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& run,
+                                                             double gt_tolerance_s,
+                                                             std::vector<std::string>* notes);
+
+// The registry entry.
+PipelineInfo MonoSlamPipeline();
+
+}  // namespace sightline
