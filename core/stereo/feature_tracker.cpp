@@ -225,35 +225,62 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
       const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
                                      cvCeil(bs / scale), cvCeil(bs / scale)) & span;
       if (cell.width < 1 || cell.height < 1) continue;
-      candidates.clear();
-      for (int y = cell.y; y < cell.y + cell.height; ++y) {
-        const int ey = y - ext.y;
-        if (ey < 1 || ey + 1 >= eig.rows) continue;
-        const float* up = eig.ptr<float>(ey - 1);
-        const float* row = eig.ptr<float>(ey);
-        const float* down = eig.ptr<float>(ey + 1);
-        for (int x = cell.x; x < cell.x + cell.width; ++x) {
-          const int ex = x - ext.x;
-          if (ex < 1 || ex + 1 >= eig.cols) continue;
-          const float v = row[ex];
-          if (v < options_.min_eigenvalue) continue;
-          if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
-              v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
-            continue;
+      // The strongest local maxima of the cell, strongest first. Only the best `limit` are
+      // kept (a min-heap), which skips most comparisons; if the distance test then leaves the
+      // cell short, it is scanned again without a limit.
+      auto collect = [&](size_t limit) {
+        candidates.clear();
+        const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
+        for (int y = cell.y; y < cell.y + cell.height; ++y) {
+          const int ey = y - ext.y;
+          if (ey < 1 || ey + 1 >= eig.rows) continue;
+          const float* up = eig.ptr<float>(ey - 1);
+          const float* row = eig.ptr<float>(ey);
+          const float* down = eig.ptr<float>(ey + 1);
+          for (int x = cell.x; x < cell.x + cell.width; ++x) {
+            const int ex = x - ext.x;
+            if (ex < 1 || ex + 1 >= eig.cols) continue;
+            const float v = row[ex];
+            if (v < options_.min_eigenvalue) continue;
+            if (limit > 0 && candidates.size() == limit && v <= candidates.front().first) continue;
+            if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
+                v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
+              continue;
+            }
+            candidates.emplace_back(v, cv::Point(x, y));
+            if (limit == 0) continue;
+            std::push_heap(candidates.begin(), candidates.end(), weaker);
+            if (candidates.size() > limit) {
+              std::pop_heap(candidates.begin(), candidates.end(), weaker);
+              candidates.pop_back();
+            }
           }
-          candidates.emplace_back(v, cv::Point(x, y));
         }
-      }
-      std::sort(candidates.begin(), candidates.end(),
-                [](const auto& a, const auto& b) { return a.first > b.first; });
-      int added = 0;
-      for (const auto& [value, pixel] : candidates) {
-        if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
-        const cv::Point2f p(pixel.x * scale, pixel.y * scale);
-        if (!far_from(p, bx, by)) continue;
-        here.push_back(p);
-        fresh.push_back(p);
-        ++added;
+        std::sort(candidates.begin(), candidates.end(), weaker);
+      };
+      auto take = [&]() {
+        int added = 0;
+        for (const auto& [value, pixel] : candidates) {
+          if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
+          const cv::Point2f p(pixel.x * scale, pixel.y * scale);
+          if (!far_from(p, bx, by)) continue;
+          here.push_back(p);
+          fresh.push_back(p);
+          ++added;
+        }
+        return added;
+      };
+      const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
+      collect(limit);
+      const size_t kept_before = here.size(), fresh_before = fresh.size();
+      const int added = take();
+      if (added < need && candidates.size() == limit &&
+          static_cast<int>(fresh.size()) < wanted) {
+        // Undo and take from the full list, so the result equals an unlimited scan.
+        here.resize(kept_before);
+        fresh.resize(fresh_before);
+        collect(0);
+        take();
       }
     }
    }
