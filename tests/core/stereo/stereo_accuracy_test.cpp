@@ -102,9 +102,9 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
   EXPECT_LT(m["kitti_t_err_pct"], 0.5);
   // The issue asks for < 0.5 deg/100 m; measured 0.83 deg/100 m on this corridor (was 1.0-1.5
-  // before turn onsets were re-tracked). Most of what is left comes from a person walking ahead
-  // in the first 77 frames whose features pass the inlier test. The bound guards against
-  // regressions; it is not the target.
+  // before turn onsets were re-tracked). Left: a person walking ahead whose features pass the
+  // inlier test, and per-frame rotation noise that adds up between segment ends (0.75 on the
+  // same corridor without people). The bound guards against regressions; it is not the target.
   EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
 }
 
