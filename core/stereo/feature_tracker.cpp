@@ -64,8 +64,9 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
       .Int("pyramid_levels", &O::pyramid_levels, "levels", 0, 6, 1,
            "KLT pyramid levels above full resolution (shared with stereo matching).")
       .Double("retrack_fraction", &O::retrack_fraction, "", 0, 1, 0.05,
-              "When fewer than this fraction of the tracks survive (poor motion prediction), "
-              "the lost ones are tracked again with retrack_pyramid_levels; 0 = never.")
+              "When fewer tracks survive than this fraction of the share that survived in the "
+              "previous frame (poor motion prediction), the lost ones are tracked again with "
+              "retrack_pyramid_levels; 0 = never.")
       .Int("retrack_pyramid_levels", &O::retrack_pyramid_levels, "levels", 0, 8, 1,
            "Pyramid levels of the second tracking attempt (reaches about 2^levels further).")
       .Int("max_iterations", &O::max_iterations, "", 1, 200, 1, "KLT iterations per level.")
