@@ -10,6 +10,7 @@
 #include "core/stereo/stereo_odometry.h"
 #include "widgets/image_view.h"
 #include "widgets/scene_view.h"
+#include "widgets/time_series_plot.h"
 
 namespace sightline {
 
@@ -137,20 +138,38 @@ void StereoVoPresenter::Attach(QMainWindow* window) {
     matches_dock_ = new QDockWidget(tr("Stereo matches (right image)"), window);
     matches_dock_->setObjectName("vo_matches_dock");
     matches_dock_->setWidget(matches_view_);
+    auto* plots = new QWidget(window);
+    auto* plots_layout = new QVBoxLayout(plots);
+    plots_layout->setContentsMargins(0, 0, 0, 0);
+    counts_plot_ = new TimeSeriesPlot(tr("per frame: counts"), plots);
+    timing_plot_ = new TimeSeriesPlot(tr("ms per stage"), plots);
+    residual_plot_ = new TimeSeriesPlot(tr("residual [px]; red: gated"), plots);
+    for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) {
+      plot->SetCapacity(300);
+      plots_layout->addWidget(plot, 1);
+    }
+    stats_dock_ = new QDockWidget(tr("Statistics over time"), window);
+    stats_dock_->setObjectName("vo_stats_dock");
+    stats_dock_->setWidget(plots);
   }
   scene_ = window->findChild<SceneView*>();
   window->addDockWidget(Qt::LeftDockWidgetArea, tracks_dock_);
   window->addDockWidget(Qt::LeftDockWidgetArea, matches_dock_);
+  window->addDockWidget(Qt::RightDockWidgetArea, stats_dock_);
   tracks_dock_->show();
   matches_dock_->show();
+  stats_dock_->show();
   estimate_ = Trajectory();
   ground_truth_drawn_ = Trajectory();
   last_id_ = -1;
+  for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) plot->Clear();
+  fitted_box_.setEmpty();
 }
 
 void StereoVoPresenter::Detach() {
   if (tracks_dock_ != nullptr) tracks_dock_->hide();
   if (matches_dock_ != nullptr) matches_dock_->hide();
+  if (stats_dock_ != nullptr) stats_dock_->hide();
   if (scene_ != nullptr) {
     for (const char* layer : {kEstimateLayer, kGroundTruthLayer, kCameraLayer}) {
       scene_->RemoveLayer(layer);
@@ -166,6 +185,8 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
   if (odometry->stamp.sequence_id <= last_id_) {
     estimate_ = Trajectory();
     ground_truth_drawn_ = Trajectory();
+    for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) plot->Clear();
+    fitted_box_.setEmpty();
   }
   last_id_ = odometry->stamp.sequence_id;
 
@@ -207,7 +228,48 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
       scene_->SetTrajectory(kGroundTruthLayer, ground_truth_drawn_, QColor(80, 160, 255), 2.0);
     }
     scene_->SetFrusta(kCameraLayer, {odometry->world_from_camera}, QColor(255, 80, 80), 1.0);
+    FitViewIfGrown();
   }
+  PlotStatistics(odometry->stamp.sequence_id, s);
+}
+
+void StereoVoPresenter::PlotStatistics(int64_t frame, const FrameStats& s) {
+  const double x = static_cast<double>(frame);
+  counts_plot_->Append(tr("tracks"), x, s.tracked, QColor(60, 120, 255));
+  counts_plot_->Append(tr("stereo"), x, s.stereo_matches, QColor(255, 200, 0));
+  counts_plot_->Append(tr("inliers"), x, s.inliers, QColor(40, 220, 40));
+  counts_plot_->Append(tr("RANSAC it."), x, s.ransac_iterations, QColor(230, 120, 230));
+  const std::pair<QString, double> stages[] = {
+      {tr("rectify"), s.rectify_ms},     {tr("pyramid"), s.pyramid_ms},
+      {tr("tracking"), s.tracking_ms},   {tr("detection"), s.detection_ms},
+      {tr("matching"), s.matching_ms},   {tr("RANSAC"), s.ransac_ms},
+      {tr("refine"), s.refine_ms},       {tr("total"), s.total_ms}};
+  const QColor colors[] = {QColor(150, 150, 150), QColor(0, 200, 200), QColor(60, 120, 255),
+                           QColor(255, 140, 0),   QColor(255, 200, 0), QColor(230, 120, 230),
+                           QColor(40, 220, 40),   QColor(240, 240, 240)};
+  for (size_t i = 0; i < std::size(stages); ++i) {
+    timing_plot_->Append(stages[i].first, x, stages[i].second, colors[i]);
+  }
+  residual_plot_->Append(tr("residual"), x, s.residual_px, QColor(255, 200, 0));
+  if (s.gated) {
+    counts_plot_->AddMarker(x);
+    residual_plot_->AddMarker(x);
+  }
+}
+
+void StereoVoPresenter::FitViewIfGrown() {
+  Eigen::AlignedBox3d box;
+  for (const Trajectory* t : {&estimate_, &ground_truth_drawn_}) {
+    for (const TimedPose& p : t->poses()) box.extend(p.world_from_sensor.translation());
+  }
+  if (box.isEmpty() || fitted_box_.contains(box)) return;
+  // Fit with a margin of a quarter of the extent (at least 2 m) so that a growing trajectory
+  // re-fits every few metres rather than every frame.
+  const Eigen::Vector3d margin =
+      (0.25 * (box.max() - box.min())).cwiseMax(Eigen::Vector3d::Constant(2.0));
+  fitted_box_ = Eigen::AlignedBox3d(box.min() - margin, box.max() + margin);
+  scene_->ResetView();
+  ++view_fits_;
 }
 
 }  // namespace sightline

@@ -3,6 +3,7 @@
 // beside the ground truth.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <QString>
 #include <cstdint>
 #include <memory>
@@ -17,6 +18,8 @@ namespace sightline {
 
 class ImageView;
 class SceneView;
+class TimeSeriesPlot;
+struct FrameStats;
 
 // Presenter of the "stereo-vo" pipeline (seed 003). Needs stereo frames.
 class StereoVoPresenter : public PipelinePresenter {
@@ -36,9 +39,29 @@ class StereoVoPresenter : public PipelinePresenter {
   // For tests: the views, and the estimated trajectory drawn so far.
   const ImageView* tracks_view() const { return tracks_view_; }
   const Trajectory& estimate() const { return estimate_; }
+  // Per-frame statistics over time: counts (tracks, stereo matches, inliers, RANSAC
+  // iterations), milliseconds per stage, and the residual with gated frames as markers.
+  const TimeSeriesPlot* counts_plot() const { return counts_plot_; }
+  const TimeSeriesPlot* timing_plot() const { return timing_plot_; }
+  const TimeSeriesPlot* residual_plot() const { return residual_plot_; }
+  // The 3D view is re-fitted whenever the trajectories leave the box it was last fitted to;
+  // that box (min and max corner, world frame) and how often it happened.
+  const Eigen::AlignedBox3d& fitted_box() const { return fitted_box_; }
+  int view_fits() const { return view_fits_; }
 
  private:
+  // Appends one frame's statistics to the plots.
+  void PlotStatistics(int64_t frame, const FrameStats& stats);
+  // Re-fits the 3D view when the drawn trajectories leave the last fitted box.
+  void FitViewIfGrown();
+
   QDockWidget* tracks_dock_ = nullptr;
+  QDockWidget* stats_dock_ = nullptr;
+  TimeSeriesPlot* counts_plot_ = nullptr;
+  TimeSeriesPlot* timing_plot_ = nullptr;
+  TimeSeriesPlot* residual_plot_ = nullptr;
+  Eigen::AlignedBox3d fitted_box_;
+  int view_fits_ = 0;
   QDockWidget* matches_dock_ = nullptr;
   ImageView* tracks_view_ = nullptr;
   ImageView* matches_view_ = nullptr;

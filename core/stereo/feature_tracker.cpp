@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "core/stereo/corner_response.h"
 #include "core/stereo/option_check.h"
 
 namespace sightline {
@@ -31,6 +32,12 @@ bool FeatureTrackerOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.tracking.max_forward_backward_px must be >= 0");
   }
   if (border_px < 0) return Invalid(error, "stereo.tracking.border_px must be >= 0");
+  if (!(retrack_fraction >= 0 && retrack_fraction <= 1)) {
+    return Invalid(error, "stereo.tracking.retrack_fraction must lie in [0, 1]");
+  }
+  if (retrack_pyramid_levels < 0 || retrack_pyramid_levels > 8) {
+    return Invalid(error, "stereo.tracking.retrack_pyramid_levels must lie in [0, 8]");
+  }
   if (refine_window_px < 0) return Invalid(error, "stereo.tracking.refine_window_px must be >= 0");
   if (!(refill_fraction > 0 && refill_fraction <= 1)) {
     return Invalid(error, "stereo.tracking.refill_fraction must lie in (0, 1]");
@@ -56,6 +63,12 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
       .Int("window_px", &O::window_px, "px", 5, 61, 2, "KLT window side (odd).")
       .Int("pyramid_levels", &O::pyramid_levels, "levels", 0, 6, 1,
            "KLT pyramid levels above full resolution (shared with stereo matching).")
+      .Double("retrack_fraction", &O::retrack_fraction, "", 0, 1, 0.05,
+              "When fewer tracks survive than this fraction of the share that survived in the "
+              "previous frame (poor motion prediction), the lost ones are tracked again with "
+              "retrack_pyramid_levels; 0 = never.")
+      .Int("retrack_pyramid_levels", &O::retrack_pyramid_levels, "levels", 0, 8, 1,
+           "Pyramid levels of the second tracking attempt (reaches about 2^levels further).")
       .Int("max_iterations", &O::max_iterations, "", 1, 200, 1, "KLT iterations per level.")
       .Double("epsilon_px", &O::epsilon_px, "px", 1e-4, 1, 0.001,
               "KLT stops when its update is smaller than this.")
@@ -72,40 +85,75 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
            "reduced level; 0 = none.");
 }
 
-void FeatureTracker::Track(const ImagePyramid& previous, const ImagePyramid& current,
+bool FeatureTracker::Track(const ImagePyramid& previous, const ImagePyramid& current,
                            const std::vector<cv::Point2f>& points,
                            const std::vector<cv::Point2f>& predicted,
-                           std::vector<cv::Point2f>* tracked,
-                           std::vector<unsigned char>* ok) const {
-  const bool use_prediction = predicted.size() == points.size();
-  *tracked = use_prediction ? predicted : points;
+                           std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* ok,
+                           double usual_fraction) const {
+  const std::vector<cv::Point2f>& start = predicted.size() == points.size() ? predicted : points;
+  *tracked = start;
   ok->assign(points.size(), 0);
-  if (points.empty() || previous.empty() || current.empty()) return;
+  if (points.empty() || previous.empty() || current.empty()) return false;
+  std::vector<size_t> index(points.size());
+  for (size_t i = 0; i < index.size(); ++i) index[i] = i;
+  const int max_level = std::min(previous.max_level, current.max_level);
+  const int levels = std::min(options_.pyramid_levels, max_level);
+  TrackPass(previous, current, points, start, index, levels, tracked, ok);
+  const int retrack_levels = std::min(options_.retrack_pyramid_levels, max_level);
+  const size_t good = static_cast<size_t>(std::count(ok->begin(), ok->end(), 1));
+  if (retrack_levels <= levels ||
+      !(static_cast<double>(good) <
+        options_.retrack_fraction * usual_fraction * static_cast<double>(points.size()))) {
+    return false;
+  }
+  index.clear();
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!(*ok)[i]) index.push_back(i);
+  }
+  TrackPass(previous, current, points, start, index, retrack_levels, tracked, ok);
+  return true;
+}
+
+void FeatureTracker::TrackPass(const ImagePyramid& previous, const ImagePyramid& current,
+                               const std::vector<cv::Point2f>& points,
+                               const std::vector<cv::Point2f>& start,
+                               const std::vector<size_t>& index, int levels,
+                               std::vector<cv::Point2f>* tracked,
+                               std::vector<unsigned char>* ok) const {
+  if (index.empty()) return;
+  std::vector<cv::Point2f> from, to;
+  from.reserve(index.size());
+  to.reserve(index.size());
+  for (size_t i : index) {
+    from.push_back(points[i]);
+    to.push_back(start[i]);
+  }
   const cv::Size window(options_.window_px, options_.window_px);
-  const int levels = std::min({options_.pyramid_levels, previous.max_level, current.max_level});
   const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
                                   options_.max_iterations, options_.epsilon_px);
   std::vector<float> error;
   std::vector<unsigned char> status;
-  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, points, *tracked, status, error, window,
+  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, error, window,
                            levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   std::vector<unsigned char> back_status;
   std::vector<cv::Point2f> back;
   if (options_.max_forward_backward_px > 0) {
-    back = points;
-    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, *tracked, back, back_status, error,
+    back = from;
+    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, to, back, back_status, error,
                              window, 1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   }
   const float border = static_cast<float>(options_.border_px);
   const float max_x = current.image.cols - 1 - border, max_y = current.image.rows - 1 - border;
   const double max_fb2 = options_.max_forward_backward_px * options_.max_forward_backward_px;
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (!status[i]) continue;
-    const cv::Point2f& p = (*tracked)[i];
+  for (size_t k = 0; k < index.size(); ++k) {
+    const size_t i = index[k];
+    (*tracked)[i] = to[k];
+    if (!status[k]) continue;
+    const cv::Point2f& p = to[k];
     if (!(p.x >= border && p.y >= border && p.x <= max_x && p.y <= max_y)) continue;
     if (!back.empty()) {
-      if (!back_status[i]) continue;
-      const cv::Point2f d = back[i] - points[i];
+      if (!back_status[k]) continue;
+      const cv::Point2f d = back[k] - from[k];
       if (d.x * d.x + d.y * d.y > max_fb2) continue;
     }
     (*ok)[i] = 1;
@@ -170,7 +218,7 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
     if (span.width < 3 || span.height < 3) continue;
     const cv::Rect ext = cv::Rect(span.x - margin, span.y - margin, span.width + 2 * margin,
                                   span.height + 2 * margin) & cv::Rect(0, 0, image.cols, image.rows);
-    cv::cornerMinEigenVal(image(ext), eig, options_.block_size, 3);
+    MinEigenResponse(pyramid.Derivatives(level), ext, options_.block_size, &eig);
     for (int bx = first; bx <= last && static_cast<int>(fresh.size()) < wanted; ++bx) {
       std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
       const int need = per_bucket - static_cast<int>(here.size());
@@ -178,35 +226,62 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
       const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
                                      cvCeil(bs / scale), cvCeil(bs / scale)) & span;
       if (cell.width < 1 || cell.height < 1) continue;
-      candidates.clear();
-      for (int y = cell.y; y < cell.y + cell.height; ++y) {
-        const int ey = y - ext.y;
-        if (ey < 1 || ey + 1 >= eig.rows) continue;
-        const float* up = eig.ptr<float>(ey - 1);
-        const float* row = eig.ptr<float>(ey);
-        const float* down = eig.ptr<float>(ey + 1);
-        for (int x = cell.x; x < cell.x + cell.width; ++x) {
-          const int ex = x - ext.x;
-          if (ex < 1 || ex + 1 >= eig.cols) continue;
-          const float v = row[ex];
-          if (v < options_.min_eigenvalue) continue;
-          if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
-              v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
-            continue;
+      // The strongest local maxima of the cell, strongest first. Only the best `limit` are
+      // kept (a min-heap), which skips most comparisons; if the distance test then leaves the
+      // cell short, it is scanned again without a limit.
+      auto collect = [&](size_t limit) {
+        candidates.clear();
+        const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
+        for (int y = cell.y; y < cell.y + cell.height; ++y) {
+          const int ey = y - ext.y;
+          if (ey < 1 || ey + 1 >= eig.rows) continue;
+          const float* up = eig.ptr<float>(ey - 1);
+          const float* row = eig.ptr<float>(ey);
+          const float* down = eig.ptr<float>(ey + 1);
+          for (int x = cell.x; x < cell.x + cell.width; ++x) {
+            const int ex = x - ext.x;
+            if (ex < 1 || ex + 1 >= eig.cols) continue;
+            const float v = row[ex];
+            if (v < options_.min_eigenvalue) continue;
+            if (limit > 0 && candidates.size() == limit && v <= candidates.front().first) continue;
+            if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
+                v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
+              continue;
+            }
+            candidates.emplace_back(v, cv::Point(x, y));
+            if (limit == 0) continue;
+            std::push_heap(candidates.begin(), candidates.end(), weaker);
+            if (candidates.size() > limit) {
+              std::pop_heap(candidates.begin(), candidates.end(), weaker);
+              candidates.pop_back();
+            }
           }
-          candidates.emplace_back(v, cv::Point(x, y));
         }
-      }
-      std::sort(candidates.begin(), candidates.end(),
-                [](const auto& a, const auto& b) { return a.first > b.first; });
-      int added = 0;
-      for (const auto& [value, pixel] : candidates) {
-        if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
-        const cv::Point2f p(pixel.x * scale, pixel.y * scale);
-        if (!far_from(p, bx, by)) continue;
-        here.push_back(p);
-        fresh.push_back(p);
-        ++added;
+        std::sort(candidates.begin(), candidates.end(), weaker);
+      };
+      auto take = [&]() {
+        int added = 0;
+        for (const auto& [value, pixel] : candidates) {
+          if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
+          const cv::Point2f p(pixel.x * scale, pixel.y * scale);
+          if (!far_from(p, bx, by)) continue;
+          here.push_back(p);
+          fresh.push_back(p);
+          ++added;
+        }
+        return added;
+      };
+      const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
+      collect(limit);
+      const size_t kept_before = here.size(), fresh_before = fresh.size();
+      const int added = take();
+      if (added < need && candidates.size() == limit &&
+          static_cast<int>(fresh.size()) < wanted) {
+        // Undo and take from the full list, so the result equals an unlimited scan.
+        here.resize(kept_before);
+        fresh.resize(fresh_before);
+        collect(0);
+        take();
       }
     }
    }

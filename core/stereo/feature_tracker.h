@@ -15,15 +15,21 @@ namespace sightline {
 // Tracking and detection options. Keys "stereo.tracking.*".
 struct FeatureTrackerOptions {
   int max_features = 1000;        // Features kept per frame (tracked + new).
-  int bucket_size_px = 48;
+  int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
   double refill_fraction = 1.0;   // A bucket is refilled when it holds fewer than this fraction
-                                  // of its share of max_features (1 = whenever not full).        // Side of the square buckets of the detection grid [px].
+                                  // of its share of max_features (1 = whenever not full).
   double min_eigenvalue = 5e-4;   // Shi-Tomasi: smallest accepted minimum eigenvalue of the
                                   // gradient covariance (cv::cornerMinEigenVal units).
   double min_distance_px = 7;     // Shi-Tomasi: minimum distance between corners [px].
   int block_size = 3;             // Shi-Tomasi: window of the gradient covariance [px].
   int window_px = 9;              // KLT window side [px] (odd).
   int pyramid_levels = 3;         // KLT pyramid levels above full resolution.
+  // When fewer than this fraction of the points track, relative to the fraction that tracked
+  // in the previous frame (the motion prediction was poor: a turn begins, the first frames),
+  // the lost ones are tracked again with retrack_pyramid_levels, which reaches about
+  // 2^levels times further; 0 = never.
+  double retrack_fraction = 0.6;
+  int retrack_pyramid_levels = 5;  // Pyramid levels of that second attempt.
   int max_iterations = 20;        // KLT iterations per level.
   double epsilon_px = 0.01;       // KLT stops when the update is smaller [px].
   double max_forward_backward_px = 0.5;  // Tracked back to the start within this [px]; 0 = no check.
@@ -49,10 +55,14 @@ class FeatureTracker {
 
   // Tracks `points` from `previous` into `current`, starting from `predicted` (same size; empty
   // = no prediction, start where the points were); ok[i] is 0 where a point was lost (KLT
-  // failure, forward-backward disagreement, or too close to the border).
-  void Track(const ImagePyramid& previous, const ImagePyramid& current,
+  // failure, forward-backward disagreement, or too close to the border). Returns whether the
+  // lost points were tracked a second time with more pyramid levels: when fewer than
+  // retrack_fraction * usual_fraction of the points tracked at first (usual_fraction: the
+  // fraction that usually tracks, e.g. in the previous frame).
+  bool Track(const ImagePyramid& previous, const ImagePyramid& current,
              const std::vector<cv::Point2f>& points, const std::vector<cv::Point2f>& predicted,
-             std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* ok) const;
+             std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* ok,
+             double usual_fraction = 1.0) const;
 
   // New Shi-Tomasi corners (local maxima of the minimum eigenvalue), strongest first within each
   // bucket that holds fewer than its share of max_features, at least min_distance_px away from
@@ -62,6 +72,13 @@ class FeatureTracker {
                                   const std::vector<cv::Point2f>& existing) const;
 
  private:
+  // One KLT pass over points[index] with `levels` pyramid levels: forward from `start`, the
+  // backward check, the border; sets (*tracked)[i] and (*ok)[i] for those points.
+  void TrackPass(const ImagePyramid& previous, const ImagePyramid& current,
+                 const std::vector<cv::Point2f>& points, const std::vector<cv::Point2f>& start,
+                 const std::vector<size_t>& index, int levels, std::vector<cv::Point2f>* tracked,
+                 std::vector<unsigned char>* ok) const;
+
   FeatureTrackerOptions options_;
 };
 

@@ -23,6 +23,10 @@ bool MotionEstimatorOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.ransac.stop_inlier_fraction must lie in (0, 1]");
   }
   if (max_iterations < 1) return Invalid(error, "stereo.ransac.max_iterations must be >= 1");
+  if (!(confidence > 0 && confidence <= 1)) {
+    return Invalid(error, "stereo.ransac.confidence must lie in (0, 1]");
+  }
+  if (min_iterations < 1) return Invalid(error, "stereo.ransac.min_iterations must be >= 1");
   if (min_inliers < 3) return Invalid(error, "stereo.ransac.min_inliers must be >= 3");
   if (sample_refine_iterations < 0) {
     return Invalid(error, "stereo.ransac.sample_refine_iterations must be >= 0");
@@ -48,6 +52,11 @@ OptionTable<MotionEstimatorOptions> MotionEstimatorOptions::Describe() {
               "UMBRAL4: stop sampling once this fraction of the points is inlier.")
       .Int("max_iterations", &O::max_iterations, "samples", 1, 100000, 10,
            "UMBRAL5: rigid samples tried before the best inlier set is taken.")
+      .Double("confidence", &O::confidence, "", 0.5, 1, 0.001,
+              "Adaptive termination: stop when an outlier-free sample was drawn with this "
+              "probability given the best inlier fraction; 1 = always max_iterations.")
+      .Int("min_iterations", &O::min_iterations, "samples", 1, 100000, 1,
+           "Rigid samples tried at least before adaptive termination may stop.")
       .Int("min_inliers", &O::min_inliers, "points", 3, 10000, 1,
            "Fewer inliers than this means the motion could not be estimated.")
       .Int("sample_refine_iterations", &O::sample_refine_iterations, "", 0, 20, 1,
@@ -97,6 +106,15 @@ std::vector<int> MotionEstimator::Inliers(const RectifiedStereoCamera& camera,
   return inliers;
 }
 
+int MotionEstimator::AdaptiveIterations(double inlier_fraction) const {
+  if (options_.confidence >= 1) return options_.max_iterations;
+  const double clean = std::pow(std::clamp(inlier_fraction, 0.0, 1.0), 3);
+  if (clean >= 1) return 0;
+  if (clean <= 0) return options_.max_iterations;
+  const double k = std::log(1 - options_.confidence) / std::log(1 - clean);
+  return static_cast<int>(std::min<double>(options_.max_iterations, std::ceil(k)));
+}
+
 MotionHypothesis MotionEstimator::Estimate(
     const RectifiedStereoCamera& camera,
     const std::vector<StereoCorrespondence>& correspondences) const {
@@ -115,7 +133,9 @@ MotionHypothesis MotionEstimator::Estimate(
   sample_refine.huber_px = 1e9;
   const MotionRefiner refiner(sample_refine);
   const size_t stop_count = static_cast<size_t>(std::ceil(options_.stop_inlier_fraction * n));
-  while (best.iterations < options_.max_iterations) {
+  int needed = options_.max_iterations;  // Adaptive sample count for the best set so far.
+  while (best.iterations < std::min(options_.max_iterations,
+                                    std::max(options_.min_iterations, needed))) {
     const int a = pick(rng), b = pick(rng), c = pick(rng);
     if (a == b || a == c || b == c) continue;
     const StereoCorrespondence &ca = correspondences[static_cast<size_t>(a)],
@@ -144,6 +164,7 @@ MotionHypothesis MotionEstimator::Estimate(
       best.inliers = std::move(inliers);
       best.current_from_previous = motion;
       if (best.inliers.size() >= stop_count) break;
+      needed = AdaptiveIterations(static_cast<double>(best.inliers.size()) / n);
     }
   }
   if (best.iterations == 0) {

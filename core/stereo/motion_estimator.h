@@ -2,8 +2,9 @@
 // samples that pass the rigidity test (pairwise distances preserved, UMBRAL1, with a tolerance
 // that grows with depth uncertainty), motion of a sample by absolute orientation (Umeyama,
 // rotation without reflection) polished by a few Gauss-Newton steps on its reprojection error,
-// inliers by reprojection error in both images (UMBRAL3); stops at UMBRAL4 inliers or UMBRAL5
-// iterations, fails after UMBRAL2 rigidity failures without a usable sample.
+// inliers by reprojection error in both images (UMBRAL3); stops at UMBRAL4 inliers, UMBRAL5
+// iterations or when the adaptive count for the requested confidence is reached, fails after
+// UMBRAL2 rigidity failures without a usable sample.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -26,6 +27,11 @@ struct MotionEstimatorOptions {
   double inlier_threshold_px = 1.0;     // UMBRAL3: reprojection error of an inlier [px].
   double stop_inlier_fraction = 0.95;   // UMBRAL4: stop once this fraction is inlier.
   int max_iterations = 200;             // UMBRAL5: samples that pass the rigidity test.
+  // Adaptive termination: stop once a sample free of outliers has been drawn with this
+  // probability, given the best inlier fraction w so far: log(1 - p) / log(1 - w^3)
+  // samples. 1 = always run max_iterations (or until UMBRAL4).
+  double confidence = 0.999;
+  int min_iterations = 10;              // Rigid samples tried at least, whatever the estimate.
   int min_inliers = 12;                 // Fewer inliers means the estimate failed.
   int sample_refine_iterations = 3;     // Gauss-Newton steps on each sample's 3 points.
   int seed = 42;                        // Random generator seed (runs are deterministic).
@@ -68,6 +74,9 @@ class MotionEstimator {
              const StereoCorrespondence& b) const;
 
  private:
+  // Samples needed to draw an outlier-free one with the configured confidence.
+  int AdaptiveIterations(double inlier_fraction) const;
+
   MotionEstimatorOptions options_;
 };
 

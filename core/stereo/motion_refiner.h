@@ -17,9 +17,11 @@ namespace sightline {
 
 // Refinement options. Keys "stereo.refine.*".
 struct MotionRefinerOptions {
-  int max_iterations = 10;      // Gauss-Newton iterations.
-  double huber_px = 1.0;        // Residuals beyond this get weight huber / |r| [px].
-  double min_step = 1e-8;       // Stop when the update (rad or m) is smaller.
+  int max_iterations = 5;       // Gauss-Newton iterations (per refinement round).
+  double huber_px = 0.3;        // Residuals beyond this get weight huber / |r| [px]; about
+                                // twice the typical residual, so that points on slowly moving
+                                // objects, which pass the 1 px inlier test, count less.
+  double min_step = 1e-6;       // Stop when the update (rad or m) is smaller.
   bool symmetric = true;        // Also project the current points into the previous images.
   // Estimate the 3D points together with the motion (two-frame bundle adjustment, Schur
   // complement): removes the depth bias of triangulated points (E[1/d] > 1/E[d]) that makes

@@ -96,45 +96,52 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
   if (n == 0 || left.empty() || right.empty()) return;
   const int coarse = std::min({options_.coarse_level, left.max_level, right.max_level});
   const int scale = 1 << coarse;
-  std::vector<unsigned char> has_guess(n, 0);
+  // Only features with a disparity (guessed or found by the row search) go to KLT.
+  std::vector<size_t> index;
+  std::vector<cv::Point2f> from, to;
+  index.reserve(n);
+  from.reserve(n);
+  to.reserve(n);
   for (size_t i = 0; i < n; ++i) {
     float d = i < disparity_guess.size() ? disparity_guess[i] : std::numeric_limits<float>::quiet_NaN();
     if (!std::isfinite(d)) d = CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
     if (!std::isfinite(d)) continue;
-    has_guess[i] = 1;
-    (*right_points)[i] = cv::Point2f(left_points[i].x - d, left_points[i].y);
+    index.push_back(i);
+    from.push_back(left_points[i]);
+    to.emplace_back(left_points[i].x - d, left_points[i].y);
   }
+  if (index.empty()) return;
   const cv::Size window(options_.window_px, options_.window_px);
   const int levels = std::min({options_.klt_levels, left.max_level, right.max_level});
   const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
                                   options_.max_iterations, 0.01);
   std::vector<unsigned char> status;
   std::vector<float> error;
-  cv::calcOpticalFlowPyrLK(left.levels, right.levels, left_points, *right_points, status, error,
-                           window, levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+  cv::calcOpticalFlowPyrLK(left.levels, right.levels, from, to, status, error, window, levels,
+                           criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   std::vector<unsigned char> back_status;
   std::vector<cv::Point2f> back;
   if (options_.max_left_right_px > 0) {
-    back = left_points;
-    cv::calcOpticalFlowPyrLK(right.levels, left.levels, *right_points, back, back_status, error,
-                             window, 0, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+    back = from;
+    cv::calcOpticalFlowPyrLK(right.levels, left.levels, to, back, back_status, error, window, 0,
+                             criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   }
   const double max_lr2 = options_.max_left_right_px * options_.max_left_right_px;
-  for (size_t i = 0; i < n; ++i) {
-    if (!has_guess[i] || !status[i]) continue;
-    cv::Point2f& r = (*right_points)[i];
-    const cv::Point2f& l = left_points[i];
+  for (size_t k = 0; k < index.size(); ++k) {
+    if (!status[k]) continue;
+    const cv::Point2f& r = to[k];
+    const cv::Point2f& l = from[k];
     const double disparity = l.x - r.x;
     if (!(disparity >= options_.min_disparity_px && disparity <= options_.max_disparity_px)) continue;
     if (!(std::abs(r.y - l.y) <= options_.max_row_error_px)) continue;
     if (r.x < 0 || r.x > right.image.cols - 1) continue;
     if (!back.empty()) {
-      if (!back_status[i]) continue;
-      const cv::Point2f d = back[i] - l;
+      if (!back_status[k]) continue;
+      const cv::Point2f d = back[k] - l;
       if (d.x * d.x + d.y * d.y > max_lr2) continue;
     }
-    r.y = l.y;
-    (*ok)[i] = 1;
+    (*right_points)[index[k]] = cv::Point2f(r.x, l.y);
+    (*ok)[index[k]] = 1;
   }
 }
 

@@ -70,7 +70,10 @@ Status StereoOdometry::Configure(const StereoRig& rig) {
   configured_ = false;
   SIGHTLINE_RETURN_IF_ERROR(rectifier_.Configure(rig));
   pyramid_levels_ = std::max({options_.tracking.pyramid_levels, options_.matching.klt_levels,
-                              options_.matching.coarse_level});
+                              options_.matching.coarse_level,
+                              options_.tracking.retrack_fraction > 0
+                                  ? options_.tracking.retrack_pyramid_levels
+                                  : 0});
   pyramid_window_ = std::max(options_.tracking.window_px, options_.matching.window_px);
   Reset();
   configured_ = true;
@@ -80,6 +83,7 @@ Status StereoOdometry::Configure(const StereoRig& rig) {
 void StereoOdometry::Reset() {
   previous_left_ = ImagePyramid();
   features_.clear();
+  tracked_fraction_ = 1.0;
   has_previous_ = false;
   previous_time_s_ = 0;
   last_motion_ = Eigen::Isometry3d::Identity();
@@ -159,7 +163,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     }
   }
   if (has_previous_) {
-    tracker_.Track(previous_left_, left_pyramid, previous_points, predicted, &tracked, &tracked_ok);
+    stats.retracked = tracker_.Track(previous_left_, left_pyramid, previous_points, predicted,
+                                     &tracked, &tracked_ok, tracked_fraction_);
   }
   std::vector<cv::Point2f> points;
   std::vector<float> guesses;
@@ -172,6 +177,9 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     source.push_back(static_cast<int>(i));
   }
   stats.tracked = static_cast<int>(points.size());
+  if (!previous_points.empty()) {
+    tracked_fraction_ = static_cast<double>(points.size()) / previous_points.size();
+  }
   Record(timing, "tracking", clock.Lap(), &stats.tracking_ms);
 
   // New corners where tracks are missing.

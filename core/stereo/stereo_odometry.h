@@ -61,6 +61,7 @@ struct TrackedFeature {
 // Statistics of one frame (also written as a row of frames.csv).
 struct FrameStats {
   int tracked = 0;             // Features tracked from the previous left image.
+  bool retracked = false;      // Lost tracks were tracked again with more pyramid levels.
   int new_features = 0;        // Detected this frame (and matched in the right image).
   int stereo_matches = 0;      // Features matched in the right image (tracked + new).
   int correspondences = 0;     // Features with stereo at both times (RANSAC input).
@@ -137,6 +138,7 @@ class StereoOdometry {
 
   ImagePyramid previous_left_;
   std::vector<Feature> features_;
+  double tracked_fraction_ = 1.0;  // Fraction of the features tracked into the last frame.
   double previous_time_s_ = 0;
   Eigen::Isometry3d last_motion_ = Eigen::Isometry3d::Identity();  // Last applied motion ...
   double last_motion_dt_s_ = 0;                                     // ... and its time span.

@@ -19,6 +19,7 @@
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/stereo_vo_presenter.h"
+#include "widgets/time_series_plot.h"
 #include "core/io/dataset.h"
 #include "core/sim/simulate.h"
 #include "widgets/parameter_panel.h"
@@ -348,6 +349,32 @@ TEST(StereoVoPresenter, DrawsTracksAndATrajectoryThatFollowsKittiGroundTruth) {
   Trajectory truth;
   for (int i = 0; i < kFrames; ++i) truth.mutable_poses().push_back((*gt)->ground_truth()->poses()[i]);
   EXPECT_NEAR(vo->estimate().LengthM(), truth.LengthM(), 0.05 * truth.LengthM());
+  // The 3D view follows the growing trajectory: re-fitted as it left the fitted box (the car
+  // covers about 6 m, more than the first fit's margin), and the last fit holds every pose.
+  EXPECT_GE(vo->view_fits(), 2);
+  for (const TimedPose& p : vo->estimate().poses()) {
+    EXPECT_TRUE(vo->fitted_box().contains(p.world_from_sensor.translation()));
+  }
+  // Per-frame statistics plotted over time, one sample per frame shown.
+  const TimeSeriesPlot* counts = vo->counts_plot();
+  ASSERT_NE(counts, nullptr);
+  for (const QString& name : {"tracks", "stereo", "inliers", "RANSAC it."}) {
+    EXPECT_EQ(counts->Samples(name).size(), static_cast<size_t>(kFrames)) << name.toStdString();
+  }
+  // Frame 0 has no tracks; later frames track hundreds of features with most of them inliers.
+  const std::vector<QPointF> tracks = counts->Samples("tracks");
+  const std::vector<QPointF> inliers = counts->Samples("inliers");
+  EXPECT_EQ(tracks.front().y(), 0);
+  for (int i = 1; i < kFrames; ++i) {
+    EXPECT_GT(tracks[i].y(), 100) << "frame " << i;
+    EXPECT_GT(inliers[i].y(), 0.5 * tracks[i].y()) << "frame " << i;
+  }
+  for (const QString& stage : {"tracking", "matching", "RANSAC", "refine", "total"}) {
+    EXPECT_EQ(vo->timing_plot()->Samples(stage).size(), static_cast<size_t>(kFrames));
+  }
+  EXPECT_GT(vo->timing_plot()->Samples("total").back().y(), 0);
+  EXPECT_EQ(vo->residual_plot()->Samples("residual").size(), static_cast<size_t>(kFrames));
+  EXPECT_TRUE(vo->residual_plot()->Markers().empty());  // No frame of the clip is gated.
 }
 
 TEST(MonoSlamPresenter, DrawsTheMapKeyframesAndTrajectoryOnKittiLeftImages) {

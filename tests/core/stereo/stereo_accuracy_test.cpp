@@ -59,8 +59,9 @@ TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
   StatusOr<std::vector<SubsampleRow>> table = EvaluateSubsampleSweep(estimates, *gt, 0.02);
   ASSERT_TRUE(table.ok()) << table.status().ToString();
   std::cout << FormatSubsampleTable(*table);
-  // The issue asks for < 1.5 % at every k = 1..5; k = 5 (6 m between frames, most tracks lost)
-  // measures 1.7 %, so it is held to a regression bound of 2 % until tracking improves.
+  // The issue asks for < 1.5 % at every k = 1..5; k = 5 (6 m between frames, about a quarter
+  // of the tracks survive the scale change) measures 1.9 %, so it is held to a regression bound
+  // of 2 % until tracking improves.
   for (const SubsampleRow& row : *table) {
     EXPECT_LT(row.length_error_pct, row.factor < 5 ? 1.5 : 2.0) << "k = " << row.factor;
   }
@@ -100,9 +101,11 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   std::map<std::string, double> m;
   for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
   EXPECT_LT(m["kitti_t_err_pct"], 0.5);
-  // The issue asks for < 0.5 deg/100 m; measured 1.0-1.5 deg/100 m on this corridor (the error
-  // accumulates in the ~95 deg/s turns). The bound guards against regressions, not the target.
-  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 2.0);
+  // The issue asks for < 0.5 deg/100 m; measured 0.83 deg/100 m on this corridor (was 1.0-1.5
+  // before turn onsets were re-tracked). Left: a person walking ahead whose features pass the
+  // inlier test, and per-frame rotation noise that adds up between segment ends (0.75 on the
+  // same corridor without people). The bound guards against regressions; it is not the target.
+  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
 }
 
 }  // namespace
