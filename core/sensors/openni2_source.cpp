@@ -20,6 +20,8 @@ namespace {
 
 // Pairing key offset per playback loop, larger than any recording's duration [s].
 constexpr double kLoopKeyOffsetS = 1e7;
+// How long a file that delivered no frame waits for its player thread before closing [ms].
+constexpr int kPlayerStartTimeoutMs = 2000;
 
 // One converted stream image waiting for its partner.
 struct StreamImage {
@@ -393,6 +395,22 @@ StatusOr<std::optional<CapturedFrame>> OpenNi2Source::ReadFrame(std::chrono::mil
   }
 }
 
+// OniFile's player thread marks itself running only once it is scheduled. A file closed before
+// that (a quick `info` under load) leaves the thread looping, OpenNI cancels it after 3 s, and the
+// cancellation crashes the process. A delivered frame proves the thread runs, so a file that has
+// delivered none waits (bounded) for its first one before its streams stop.
+void OpenNi2Source::WaitForPlayerThread(Impl& m) {
+  if (m.last_frame_index[0] >= 0 || m.last_frame_index[1] >= 0) return;
+  openni::VideoStream* list[2];
+  int n = 0;
+  for (int s = 0; s < 2; ++s) {
+    if (m.active[s]) list[n++] = &m.streams[s];
+  }
+  if (n == 0) return;
+  int ready = -1;
+  (void)openni::OpenNI::waitForAnyStream(list, n, &ready, kPlayerStartTimeoutMs);
+}
+
 void OpenNi2Source::Disconnect(bool /*device_lost*/) {
   Impl& m = *impl_;
   {
@@ -406,6 +424,7 @@ void OpenNi2Source::Disconnect(bool /*device_lost*/) {
       openni::OpenNI::removeDeviceDisconnectedListener(m.watcher.get());
       openni::OpenNI::removeDeviceStateChangedListener(m.watcher.get());
     }
+    if (is_file_ && m.device_open) WaitForPlayerThread(m);
     for (int s = 0; s < 2; ++s) {
       if (m.active[s]) m.streams[s].stop();
     }

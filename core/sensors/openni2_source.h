@@ -63,6 +63,7 @@ class OpenNi2Source : public LiveSource {
 
  private:
   struct Impl;
+  static void WaitForPlayerThread(Impl& m);
   const std::string uri_;
   const OpenNi2Options options_;
   const bool is_file_;
