@@ -43,6 +43,32 @@ TEST(StereoAccuracy, KittiClipBeatsLibviso2) {
   for (const auto& [k, v] : m) std::cout << "kitti_clip1 " << k << " = " << v << "\n";
 }
 
+// Motion against keyframes (stereo.keyframe.enabled, off by default: it does not improve every
+// figure) keeps the kitti_clip1 bounds and shows no false motion on EuRoC's static sequence.
+TEST(StereoAccuracy, KeyframeModeKeepsKittiBoundsAndStaticStill) {
+  SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
+  SIGHTLINE_REQUIRE_DATA(euroc, "euroc_v1_01_static");
+  StereoOdometryOptions options;
+  options.keyframe.enabled = true;
+  StatusOr<StereoVoRun> run = RunStereoOdometry(kitti, options, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  ASSERT_EQ(run->frames.size(), 51u);
+  EXPECT_EQ(GatedFrames(*run), 0);
+  std::map<std::string, double> m = Figures(*run);
+  EXPECT_LE(m["length_error_pct"], 0.5);
+  EXPECT_LE(m["endpoint_error_pct"], 0.8);
+  EXPECT_LE(m["ate_rmse_m"], 0.10);
+  EXPECT_LE(m["rpe_trans_pct"], 0.9);
+  for (const auto& [k, v] : m) std::cout << "kitti_clip1 keyframes " << k << " = " << v << "\n";
+
+  run = RunStereoOdometry(euroc, options, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  m = Figures(*run);
+  ASSERT_TRUE(m.count("static_translation_m"));
+  EXPECT_LT(m["static_translation_m"], 0.005);
+  EXPECT_LT(m["static_rotation_deg"], 0.2);
+}
+
 TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
   SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
   std::vector<SubsampleEstimate> estimates;
