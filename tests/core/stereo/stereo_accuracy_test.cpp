@@ -130,7 +130,9 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   // The issue asks for < 0.5 deg/100 m; measured 0.83 deg/100 m on this corridor (was 1.0-1.5
   // before turn onsets were re-tracked). Left: a person walking ahead whose features pass the
   // inlier test, and per-frame rotation noise that adds up between segment ends (0.75 on the
-  // same corridor without people). The bound guards against regressions; it is not the target.
+  // same corridor without people). Motion against a keyframe (stereo.keyframe.enabled) gave
+  // only 0.73 on the 400-frame corridor. The bound guards against regressions; it is not the
+  // target.
   EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
 }
 
