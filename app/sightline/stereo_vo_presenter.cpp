@@ -31,7 +31,11 @@ class StereoVoProcessor : public FrameProcessor {
 
   Status Configure(const OptionSet& options) override {
     StereoOdometryOptions parsed = options.Extract(StereoOdometryOptions::Describe());
-    if (!info_.stereo) return FailedPrecondition(info_.path + ": no stereo calibration");
+    if (!info_.stereo) {
+      return FailedPrecondition(info_.path +
+                                ": no stereo calibration; open a live pair with one, "
+                                "aravis://LEFT,RIGHT?calibration_file=FILE");
+    }
     auto odometry = std::make_unique<StereoOdometry>(parsed);
     SIGHTLINE_RETURN_IF_ERROR(odometry->Configure(*info_.stereo));
     odometry_ = std::move(odometry);

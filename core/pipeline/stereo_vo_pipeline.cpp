@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/calib/calibration_file.h"
 #include "core/eval/evaluation.h"
 #include "core/io/dataset.h"
+#include "core/sensors/driver_registry.h"
 
 namespace sightline {
 
@@ -46,22 +48,52 @@ OptionTable<StereoVoRunOptions> StereoVoRunOptions::Describe() {
       .Int("max_frames", &O::max_frames, "frames", 0, 1e9, 1,
            "Frames read before subsampling; 0 = all.")
       .Double("gt_tolerance_s", &O::gt_tolerance_s, "s", 0, 1, 0.005,
-              "A ground-truth pose belongs to a frame when this close in time.");
+              "A ground-truth pose belongs to a frame when this close in time.")
+      .String("calibration_file", &O::calibration_file,
+              "Stereo calibration (OpenCV stereo YAML as `sightline-cli calibrate stereo` "
+              "writes) used instead of the source's; needed for live pairs (aravis://L,R) "
+              "opened without one.");
 }
 
 StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
                                         const StereoOdometryOptions& options,
                                         const StereoVoRunOptions& run, TimingStats* timing,
                                         const std::function<void(int64_t, int64_t)>& progress,
-                                        const std::atomic<bool>* cancel) {
+                                        const std::atomic<bool>* cancel,
+                                        const OptionSet* sensor_options) {
   std::string error;
   if (!run.IsValid(&error) || !options.IsValid(&error)) return InvalidArgument(error);
-  StatusOr<std::unique_ptr<Source>> opened = OpenDataset(path, SourceKind::kStereo);
+  StatusOr<std::unique_ptr<Source>> opened =
+      IsSensorUri(path) ? OpenSource(path, sensor_options ? *sensor_options : OptionSet())
+                        : OpenDataset(path, SourceKind::kStereo);
   if (!opened.ok()) return opened.status();
   Source& source = **opened;
-  if (!source.info().stereo) return FailedPrecondition(path + ": the source has no stereo calibration");
+  if (source.info().kind != SourceKind::kStereo) {
+    return InvalidArgument(path + " is a " + SourceKindName(source.info().kind) +
+                           " source; stereo-vo needs stereo pairs");
+  }
+  std::optional<StereoRig> rig = source.info().stereo;
+  if (!run.calibration_file.empty()) {
+    StatusOr<StereoRig> read = ReadStereoCalibration(run.calibration_file);
+    if (!read.ok()) return read.status().WithContext("stereo.calibration_file");
+    if (read->left.width != source.info().width || read->left.height != source.info().height) {
+      return InvalidArgument("stereo.calibration_file " + run.calibration_file + " is for " +
+                             std::to_string(read->left.width) + "x" +
+                             std::to_string(read->left.height) + " images but " + path +
+                             " gives " + std::to_string(source.info().width) + "x" +
+                             std::to_string(source.info().height));
+    }
+    rig = *read;
+  }
+  if (!rig) {
+    return FailedPrecondition(
+        path + ": the source has no stereo calibration; give one with "
+               "stereo.calibration_file=FILE (--set; an OpenCV stereo YAML as `sightline-cli "
+               "calibrate stereo` writes), or for an Aravis pair "
+               "aravis://LEFT,RIGHT?calibration_file=FILE");
+  }
   StereoOdometry odometry(options);
-  SIGHTLINE_RETURN_IF_ERROR(odometry.Configure(*source.info().stereo).WithContext(path));
+  SIGHTLINE_RETURN_IF_ERROR(odometry.Configure(*rig).WithContext(path));
 
   StereoVoRun out;
   out.dataset_format = source.info().format;
@@ -168,7 +200,7 @@ StatusOr<RunResult> RunStereoVo(const RunContext& context) {
   const StereoVoRunOptions run = context.options.Extract(StereoVoRunOptions::Describe());
   StatusOr<StereoVoRun> estimated = RunStereoOdometry(context.dataset_path, options, run,
                                                       context.timing, context.progress,
-                                                      context.cancel);
+                                                      context.cancel, &context.options);
   if (!estimated.ok()) return estimated.status();
   RunResult result;
   result.dataset_format = estimated->dataset_format;
@@ -212,7 +244,8 @@ PipelineInfo StereoVoPipeline() {
   info.summary = "stereo visual odometry (KLT tracks, rigidity RANSAC, reprojection refinement)";
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(StereoOdometryOptions::Describe()));
-    return set->Declare(StereoVoRunOptions::Describe());
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(StereoVoRunOptions::Describe()));
+    return DeclareSensorOptions(set);  // Live sources: sensors.aravis.stereo.* and the others.
   };
   info.run = RunStereoVo;
   return info;

@@ -88,7 +88,11 @@ OptionTable<AravisStereoOptions> AravisStereoOptions::Describe() {
               "without a partner are dropped and counted.")
       .Choice("pair_clock", &AravisStereoOptions::pair_clock, {"device", "host"},
               "device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a "
-              "shared trigger); host: pair by arrival time at the host.");
+              "shared trigger); host: pair by arrival time at the host.")
+      .String("calibration_file", &AravisStereoOptions::calibration_file,
+              "Stereo calibration of the pair (OpenCV stereo YAML: M1 D1 M2 D2 R T, "
+              "image_width/height, as `sightline-cli calibrate stereo` writes); the stereo "
+              "odometry needs it. Also as aravis://LEFT,RIGHT?calibration_file=FILE.");
 }
 
 }  // namespace sightline

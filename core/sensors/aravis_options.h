@@ -35,6 +35,9 @@ struct AravisStereoOptions {
   double pair_tolerance_ms = 5;  // Largest timestamp difference of a left/right pair [ms].
   std::string pair_clock =
       "device";  // "device" timestamps (synchronised cameras) or "host" arrival.
+  // OpenCV stereo YAML (as `sightline-cli calibrate stereo` writes) that the source attaches to
+  // its SourceInfo, so stereo pipelines can rectify; "" = none. Also aravis://L,R?calibration_file=F.
+  std::string calibration_file;
 
   bool IsValid(std::string* error) const;
   static OptionTable<AravisStereoOptions> Describe();

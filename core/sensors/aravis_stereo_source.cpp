@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/calib/calibration_file.h"
 #include "core/sensors/aravis_source.h"
 
 namespace sightline {
@@ -47,6 +48,14 @@ Status AravisStereoSource::Connect(SourceInfo* info) {
   if (left_id_.empty() || right_id_.empty() || left_id_ == right_id_) {
     return InvalidArgument(DeviceLabel() + ": a stereo pair needs two different camera ids");
   }
+  std::optional<StereoRig> rig;
+  if (!stereo_options_.calibration_file.empty()) {
+    StatusOr<StereoRig> read = ReadStereoCalibration(stereo_options_.calibration_file);
+    if (!read.ok()) {
+      return read.status().WithContext(DeviceLabel() + ", sensors.aravis.stereo.calibration_file");
+    }
+    rig = *read;
+  }
   const std::string ids[2] = {left_id_, right_id_};
   for (int side = 0; side < 2; ++side) {
     cameras_[side] = std::make_unique<AravisCamera>();
@@ -60,6 +69,13 @@ Status AravisStereoSource::Connect(SourceInfo* info) {
                            std::to_string(l.height) + " " + l.pixel_format + " but right " +
                            std::to_string(r.width) + "x" + std::to_string(r.height) + " " +
                            r.pixel_format + "; a stereo pair needs equal sizes and formats");
+  }
+  if (rig && (rig->left.width != static_cast<int>(l.width) ||
+              rig->left.height != static_cast<int>(l.height))) {
+    return InvalidArgument(DeviceLabel() + ": the calibration " + stereo_options_.calibration_file +
+                           " is for " + std::to_string(rig->left.width) + "x" +
+                           std::to_string(rig->left.height) + " images but the cameras stream " +
+                           std::to_string(l.width) + "x" + std::to_string(l.height));
   }
   {
     std::lock_guard<std::mutex> lock(settings_mutex_);
@@ -80,6 +96,14 @@ Status AravisStereoSource::Connect(SourceInfo* info) {
                         r.device_id);
   info->notes.push_back("pairs within " + std::to_string(stereo_options_.pair_tolerance_ms) +
                         " ms by " + stereo_options_.pair_clock + " clock");
+  if (rig) {
+    info->stereo = rig;
+    info->notes.push_back("stereo calibration from " + stereo_options_.calibration_file);
+  } else {
+    info->notes.push_back(
+        "no stereo calibration: set sensors.aravis.stereo.calibration_file=FILE or "
+        "aravis://LEFT,RIGHT?calibration_file=FILE");
+  }
   return Status::Ok();
 }
 

@@ -102,13 +102,29 @@ DriverInfo AravisDriver() {
   d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
     StatusOr<AravisOptions> options = ExtractChecked<AravisOptions>(set);
     if (!options.ok()) return options.status();
-    const std::string ids = StripScheme(uri, kAravisScheme);
+    std::string ids = StripScheme(uri, kAravisScheme);
+    const size_t question = ids.find('?');
+    const std::string query = question == std::string::npos ? "" : ids.substr(question + 1);
+    ids = ids.substr(0, question);
     const size_t comma = ids.find(',');
     if (comma == std::string::npos) {
+      if (!query.empty()) {
+        return InvalidArgument("'" + uri + "': only a stereo pair takes URI options "
+                               "(aravis://LEFT,RIGHT?calibration_file=FILE)");
+      }
       return std::unique_ptr<Source>(std::make_unique<AravisSource>(ids, *options));
     }
     StatusOr<AravisStereoOptions> stereo = ExtractChecked<AravisStereoOptions>(set);
     if (!stereo.ok()) return stereo.status();
+    if (!query.empty()) {
+      const size_t eq = query.find('=');
+      if (query.substr(0, eq) != "calibration_file" || eq == std::string::npos ||
+          eq + 1 == query.size()) {
+        return InvalidArgument("'" + uri + "': unknown URI option '" + query +
+                               "' (known: calibration_file=FILE)");
+      }
+      stereo->calibration_file = query.substr(eq + 1);
+    }
     const std::string left = ids.substr(0, comma), right = ids.substr(comma + 1);
     if (left.empty() || right.empty() || right.find(',') != std::string::npos) {
       return InvalidArgument(

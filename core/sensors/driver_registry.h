@@ -50,7 +50,8 @@ bool IsSensorUri(const std::string& uri);
 
 // Opens anything Sightline can read frames from and returns the open source:
 //   "openni2://" (first device), "openni2://DEVICE_URI", "openni2://file.oni" or "file.oni";
-//   "aravis://" (first camera), "aravis://DEVICE_ID", "aravis://LEFT_ID,RIGHT_ID" (stereo);
+//   "aravis://" (first camera), "aravis://DEVICE_ID", "aravis://LEFT_ID,RIGHT_ID" (stereo;
+//   "aravis://LEFT_ID,RIGHT_ID?calibration_file=FILE" attaches a stereo calibration);
 //   "v4l2://0", "v4l2:///dev/video0";
 //   "replay://PATH?fps=30&loop=1" (a recording paced as a live camera, replay_source.h);
 //   anything else: a dataset or recording folder through OpenDataset().

@@ -15,7 +15,8 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.refine_rounds must lie in [1, 10]");
   }
   return rectify.IsValid(error) && tracking.IsValid(error) && matching.IsValid(error) &&
-         ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error);
+         ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
+         keyframe.IsValid(error);
 }
 
 OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
@@ -27,6 +28,7 @@ OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
       .Nested(&O::ransac, MotionEstimatorOptions::Describe())
       .Nested(&O::refine, MotionRefinerOptions::Describe())
       .Nested(&O::gate, MotionGateOptions::Describe())
+      .Nested(&O::keyframe, KeyframeOptions::Describe())
       .Int("stereo.refine_rounds", &O::refine_rounds, "", 1, 10, 1,
            "Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.");
 }
@@ -89,6 +91,9 @@ void StereoOdometry::Reset() {
   last_motion_ = Eigen::Isometry3d::Identity();
   last_motion_dt_s_ = 0;
   world_from_camera_ = Eigen::Isometry3d::Identity();
+  has_keyframe_ = false;
+  world_from_keyframe_ = Eigen::Isometry3d::Identity();
+  keyframe_tracks_ = 0;
   gate_.Reset();
 }
 
@@ -210,6 +215,9 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     f.age = s >= 0 ? features_[static_cast<size_t>(s)].age + 1 : 0;
     if (s >= 0) {
       const Feature& p = features_[static_cast<size_t>(s)];
+      f.has_keyframe = p.has_keyframe;
+      f.keyframe_left = p.keyframe_left;
+      f.keyframe_right = p.keyframe_right;
       StereoCorrespondence c;
       c.previous = {p.left.x, p.left.y, p.right.x};
       c.current = {f.left.x, f.left.y, f.right.x};
@@ -277,9 +285,35 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       if (timing) timing->Add("total", stats.total_ms);
       return std::shared_ptr<const StereoOdometryResult>(result);
     }
-    world_from_camera_ = world_from_camera_ * decision.current_from_previous.inverse();
-    last_motion_ = decision.current_from_previous;
+    Eigen::Isometry3d world_from_current =
+        world_from_camera_ * decision.current_from_previous.inverse();
+    bool new_keyframe = true;
+    if (options_.keyframe.enabled && has_keyframe_ && !stats.gated) {
+      // Re-estimate against the keyframe's observations of the surviving tracks.
+      std::vector<StereoCorrespondence> from_keyframe;
+      for (const Feature& f : kept) {
+        if (!f.has_keyframe) continue;
+        StereoCorrespondence c;
+        c.previous = {f.keyframe_left.x, f.keyframe_left.y, f.keyframe_right.x};
+        c.current = {f.left.x, f.left.y, f.right.x};
+        Triangulate(cam, &c);
+        from_keyframe.push_back(c);
+      }
+      Eigen::Isometry3d current_from_keyframe = world_from_current.inverse() * world_from_keyframe_;
+      const int agree = RefineAgainstKeyframe(
+          cam, refiner_, from_keyframe, options_.ransac.inlier_threshold_px,
+          options_.refine_rounds, options_.keyframe.min_inliers, &current_from_keyframe);
+      if (agree >= options_.keyframe.min_inliers) {
+        world_from_current = world_from_keyframe_ * current_from_keyframe.inverse();
+        result->current_from_previous = world_from_current.inverse() * world_from_camera_;
+        new_keyframe = static_cast<double>(from_keyframe.size()) <
+                       options_.keyframe.min_track_fraction * static_cast<double>(keyframe_tracks_);
+      }
+    }
+    world_from_camera_ = world_from_current;
+    last_motion_ = result->current_from_previous;
     last_motion_dt_s_ = dt;
+    if (options_.keyframe.enabled && new_keyframe) has_keyframe_ = false;  // Set below.
   }
   result->world_from_camera = world_from_camera_;
   stats.translation_m = result->current_from_previous.translation().norm();
@@ -305,6 +339,17 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   }
 
   features_ = std::move(kept);
+  if (options_.keyframe.enabled && !has_keyframe_) {
+    // This frame becomes the keyframe: its stereo observations are what later frames refer to.
+    for (Feature& f : features_) {
+      f.has_keyframe = true;
+      f.keyframe_left = f.left;
+      f.keyframe_right = f.right;
+    }
+    world_from_keyframe_ = world_from_camera_;
+    keyframe_tracks_ = features_.size();
+    has_keyframe_ = true;
+  }
   previous_left_ = left_pyramid;
   previous_time_s_ = frame.stamp.sensor_time_s;
   has_previous_ = true;

@@ -19,6 +19,7 @@
 #include "core/options/option_table.h"
 #include "core/stereo/feature_tracker.h"
 #include "core/stereo/image_pyramid.h"
+#include "core/stereo/keyframe.h"
 #include "core/stereo/motion_estimator.h"
 #include "core/stereo/motion_gate.h"
 #include "core/stereo/motion_refiner.h"
@@ -35,6 +36,7 @@ struct StereoOdometryOptions {
   MotionEstimatorOptions ransac;
   MotionRefinerOptions refine;
   MotionGateOptions gate;
+  KeyframeOptions keyframe;
   int refine_rounds = 2;  // Refine, re-select inliers by UMBRAL3, refine again (rounds in total).
 
   bool IsValid(std::string* error) const;
@@ -123,6 +125,8 @@ class StereoOdometry {
     int64_t id;
     cv::Point2f left, right;
     int age;
+    bool has_keyframe = false;           // Seen at the current keyframe ...
+    cv::Point2f keyframe_left, keyframe_right;  // ... there.
   };
 
   StereoOdometryOptions options_;
@@ -145,6 +149,9 @@ class StereoOdometry {
   bool has_previous_ = false;
   int64_t next_id_ = 0;
   Eigen::Isometry3d world_from_camera_ = Eigen::Isometry3d::Identity();
+  bool has_keyframe_ = false;
+  Eigen::Isometry3d world_from_keyframe_ = Eigen::Isometry3d::Identity();
+  size_t keyframe_tracks_ = 0;  // Features with a stereo match at the keyframe.
 };
 
 }  // namespace sightline

@@ -83,6 +83,14 @@ TEST(DriverRegistry, OpenSourceChecksOptionsBeforeTouchingDevices) {
   StatusOr<std::unique_ptr<Source>> three = OpenSource("aravis://a,b,c");
   ASSERT_FALSE(three.ok());
   EXPECT_NE(three.status().message().find("LEFT_ID,RIGHT_ID"), std::string::npos);
+  // URI options: only calibration_file, only on a pair.
+  StatusOr<std::unique_ptr<Source>> unknown = OpenSource("aravis://a,b?fps=3");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(unknown.status().message().find("calibration_file=FILE"), std::string::npos);
+  StatusOr<std::unique_ptr<Source>> mono = OpenSource("aravis://a?calibration_file=rig.yaml");
+  ASSERT_FALSE(mono.ok());
+  EXPECT_NE(mono.status().message().find("only a stereo pair"), std::string::npos);
 #endif
 }
 

@@ -43,6 +43,32 @@ TEST(StereoAccuracy, KittiClipBeatsLibviso2) {
   for (const auto& [k, v] : m) std::cout << "kitti_clip1 " << k << " = " << v << "\n";
 }
 
+// Motion against keyframes (stereo.keyframe.enabled, off by default: it does not improve every
+// figure) keeps the kitti_clip1 bounds and shows no false motion on EuRoC's static sequence.
+TEST(StereoAccuracy, KeyframeModeKeepsKittiBoundsAndStaticStill) {
+  SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
+  SIGHTLINE_REQUIRE_DATA(euroc, "euroc_v1_01_static");
+  StereoOdometryOptions options;
+  options.keyframe.enabled = true;
+  StatusOr<StereoVoRun> run = RunStereoOdometry(kitti, options, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  ASSERT_EQ(run->frames.size(), 51u);
+  EXPECT_EQ(GatedFrames(*run), 0);
+  std::map<std::string, double> m = Figures(*run);
+  EXPECT_LE(m["length_error_pct"], 0.5);
+  EXPECT_LE(m["endpoint_error_pct"], 0.8);
+  EXPECT_LE(m["ate_rmse_m"], 0.10);
+  EXPECT_LE(m["rpe_trans_pct"], 0.9);
+  for (const auto& [k, v] : m) std::cout << "kitti_clip1 keyframes " << k << " = " << v << "\n";
+
+  run = RunStereoOdometry(euroc, options, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  m = Figures(*run);
+  ASSERT_TRUE(m.count("static_translation_m"));
+  EXPECT_LT(m["static_translation_m"], 0.005);
+  EXPECT_LT(m["static_rotation_deg"], 0.2);
+}
+
 TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
   SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
   std::vector<SubsampleEstimate> estimates;
@@ -104,7 +130,9 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   // The issue asks for < 0.5 deg/100 m; measured 0.83 deg/100 m on this corridor (was 1.0-1.5
   // before turn onsets were re-tracked). Left: a person walking ahead whose features pass the
   // inlier test, and per-frame rotation noise that adds up between segment ends (0.75 on the
-  // same corridor without people). The bound guards against regressions; it is not the target.
+  // same corridor without people). Motion against a keyframe (stereo.keyframe.enabled) gave
+  // only 0.73 on the 400-frame corridor. The bound guards against regressions; it is not the
+  // target.
   EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
 }
 
