@@ -518,6 +518,30 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     </message>
 </context>
 <context>
+    <name>sightline::ButtonPickerPresenter</name>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="132"/>
+        <source>Button picker (monocular SLAM)</source>
+        <translation>Knopfwahl (monokulares SLAM)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="156"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="188"/>
+        <source>Operator panel</source>
+        <translation>Bedienfeld</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
+        <source>Operator panel full screen</source>
+        <translation>Bedienfeld im Vollbild</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="190"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+</context>
+<context>
     <name>sightline::OperatorPanel</name>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="180"/>
