@@ -517,4 +517,101 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
 </context>
+<context>
+    <name>sightline::ButtonPickerPresenter</name>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="132"/>
+        <source>Button picker (monocular SLAM)</source>
+        <translation>Knopfwahl (monokulares SLAM)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="156"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="188"/>
+        <source>Operator panel</source>
+        <translation>Bedienfeld</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
+        <source>Operator panel full screen</source>
+        <translation>Bedienfeld im Vollbild</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="190"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::OperatorPanel</name>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="180"/>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="185"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="159"/>
+        <source>Locating</source>
+        <translation>Lokalisiere</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="161"/>
+        <source>Lost - hold still</source>
+        <translation>Verloren - still halten</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="156"/>
+        <source>No button here - tap again</source>
+        <translation>Kein Knopf hier - erneut tippen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="155"/>
+        <source>Press this button?</source>
+        <translation>Diesen Knopf drücken?</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="186"/>
+        <source>STOP</source>
+        <translation>STOPP</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="157"/>
+        <source>Searching</source>
+        <translation>Suche</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="187"/>
+        <source>Start again</source>
+        <translation>Neu starten</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="162"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="154"/>
+        <source>Tap a button</source>
+        <translation>Knopf antippen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="160"/>
+        <source>Target sent</source>
+        <translation>Ziel gesendet</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="158"/>
+        <source>Tracking</source>
+        <translation>Verfolge</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="184"/>
+        <source>Yes</source>
+        <translation>Ja</translation>
+    </message>
+</context>
 </TS>

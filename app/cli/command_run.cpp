@@ -26,11 +26,13 @@ int RunCommand(const std::vector<std::string>& args) {
       "--set overrides one option (see 'sightline-cli options PIPELINE'). Ctrl-C stops the run.\n"
       "stereo-vo: --subsample K (= --set stereo.subsample=K) processes every K-th frame;\n"
       "--format kitti (= --set stereo.output_format=kitti) writes trajectory.txt as KITTI poses.\n"
+      "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
+      "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol).\n"
       "\nPipelines:\n";
   for (const PipelineInfo& p : registry.pipelines()) help += "  " + p.name + "  " + p.summary + "\n";
 
   StatusOr<CliArgs> parsed =
-      CliArgs::Parse(args, {"--out", "--profile", "--set", "--subsample", "--format"},
+      CliArgs::Parse(args, {"--out", "--profile", "--set", "--subsample", "--format", "--tap", "--serve"},
                      {"--help", "--quiet"});
   if (!parsed.ok()) return Fail("run: " + parsed.status().message());
   if (parsed->Has("--help")) {
@@ -49,6 +51,15 @@ int RunCommand(const std::vector<std::string>& args) {
   // Aliases of stereo-vo options.
   if (auto k = parsed->Value("--subsample")) request.overrides.push_back("stereo.subsample=" + *k);
   if (auto f = parsed->Value("--format")) request.overrides.push_back("stereo.output_format=" + *f);
+  // Aliases of button options.
+  if (auto t = parsed->Value("--tap")) request.overrides.push_back("button.run.tap=" + *t);
+  if (auto a = parsed->Value("--serve")) {
+    const size_t colon = a->rfind(':');
+    if (colon == std::string::npos || colon == 0) return Fail("run: --serve expects HOST:PORT, got '" + *a + "'");
+    request.overrides.push_back("button.run.serve=true");
+    request.overrides.push_back("button.arm.bind_address=" + a->substr(0, colon));
+    request.overrides.push_back("button.arm.port=" + a->substr(colon + 1));
+  }
   ProgressLine progress(request.pipeline);
   request.progress = [&progress](int64_t done, int64_t total) { progress.Update(done, total); };
   request.cancel = &g_interrupted;

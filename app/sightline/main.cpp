@@ -11,6 +11,7 @@
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/mobility_presenter.h"
 #include "app/sightline/stereo_vo_presenter.h"
+#include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   window.AddPipeline(new sightline::StereoVoPresenter());
   window.AddPipeline(new sightline::MobilityPresenter());
   window.AddPipeline(new sightline::MonoSlamPresenter());
+  window.AddPipeline(new sightline::ButtonPickerPresenter());
   window.show();
   if (parser.isSet(pipeline_option) &&
       !window.ActivatePipelineByWord(parser.value(pipeline_option))) {

@@ -74,15 +74,6 @@ class ScalePlot : public QWidget {
 
 namespace {
 
-// What the mono processor hands the GUI for one frame.
-struct MonoViewResult : PipelineFrameResult {
-  std::shared_ptr<const MonoSlamResult> slam;
-  std::shared_ptr<const std::vector<ScaleSample>> scale_history;  // Null when unchanged.
-  double lambda = 0;          // ML map units per metre, 0 = unknown.
-  double single_ratio = 0;
-  std::string metric_source;  // "arm", "ground_truth" or "none".
-};
-
 // Runs MonoSlam (threaded mapping) on the playback worker; recomputes the scale whenever the map
 // changes, from its keyframes and the recording's arm poses or ground truth.
 class MonoSlamProcessor : public FrameProcessor {

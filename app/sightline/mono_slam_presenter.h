@@ -12,6 +12,8 @@
 
 #include "app/sightline/pipeline_presenter.h"
 #include "core/common/trajectory.h"
+#include "core/mono/mono_slam.h"
+#include "core/mono/scale_estimator.h"
 
 class QDockWidget;
 class QLabel;
@@ -27,6 +29,15 @@ class ScalePlot;
 struct MonoSlamControls {
   std::atomic<bool> reset{false};          // Forget the map at the next frame.
   std::atomic<bool> pause_mapping{false};  // No new keyframes while set.
+};
+
+// What the mono processor hands the GUI for one frame.
+struct MonoViewResult : PipelineFrameResult {
+  std::shared_ptr<const MonoSlamResult> slam;
+  std::shared_ptr<const std::vector<ScaleSample>> scale_history;  // Null when unchanged.
+  double lambda = 0;          // ML map units per metre, 0 = unknown.
+  double single_ratio = 0;
+  std::string metric_source;  // "arm", "ground_truth" or "none".
 };
 
 // Presenter of the "mono-slam" pipeline (seed 004). Needs mono frames or a stereo pair's left.

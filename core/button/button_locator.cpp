@@ -94,7 +94,11 @@ std::vector<int> Inliers(const Plane& plane, const std::vector<Eigen::Vector3d>&
 }
 
 // RANSAC over 3-point planes; returns the largest inlier set (all points if none better).
-std::vector<int> RansacPlane(const std::vector<Eigen::Vector3d>& points, const ButtonLocatorOptions& o) {
+// Hypotheses the viewing ray `ray` meets at a grazing angle (|cos| < min_incidence_cos) are not
+// the panel the button is seen on: map points from a forward approach spread along the rays
+// more than across, and such planes would otherwise win.
+std::vector<int> RansacPlane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& ray,
+                             const ButtonLocatorOptions& o) {
   std::vector<int> best;
   std::mt19937_64 rng(o.seed);
   std::uniform_int_distribution<int> pick(0, int(points.size()) - 1);
@@ -105,6 +109,7 @@ std::vector<int> RansacPlane(const std::vector<Eigen::Vector3d>& points, const B
     if (n.norm() < 1e-12) continue;
     Plane plane;
     plane.normal = n.normalized();
+    if (std::abs(plane.normal.dot(ray)) < o.min_incidence_cos) continue;
     plane.offset = -plane.normal.dot(points[a]);
     std::vector<int> in = Inliers(plane, points, o.ransac_threshold_m);
     if (in.size() > best.size()) best = std::move(in);
@@ -155,7 +160,9 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
     return NotFound("button locator: " + std::to_string(out.points_near) +
                     " map points near the button (needs " + std::to_string(options_.min_points) + ")");
   }
-  const std::vector<int> inlier_ids = RansacPlane(near, options_);
+  const Eigen::Vector3d ray =
+      input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();
+  const std::vector<int> inlier_ids = RansacPlane(near, ray, options_);
   std::vector<Eigen::Vector3d> inliers;
   for (int i : inlier_ids) inliers.push_back(near[i]);
   Plane plane = FitPlane(inliers);
@@ -178,8 +185,6 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
     }
   }
 
-  const Eigen::Vector3d ray =
-      input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();
   const double denom = plane.normal.dot(ray);
   out.incidence_cos = std::abs(denom);
   if (out.incidence_cos < options_.min_incidence_cos) {

@@ -1,21 +1,56 @@
 #include "core/button/button_picker.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+
+#include "core/button/option_check.h"
 
 namespace sightline {
 
+namespace {
+
+// Per-axis median of the last `window` vectors (all when 0).
+Eigen::Vector3d Median(const std::vector<Eigen::Vector3d>& values, int window) {
+  const size_t n = window > 0 ? std::min(values.size(), size_t(window)) : values.size();
+  Eigen::Vector3d out;
+  std::vector<double> axis(n);
+  for (int k = 0; k < 3; ++k) {
+    for (size_t i = 0; i < n; ++i) axis[i] = values[values.size() - n + i][k];
+    std::nth_element(axis.begin(), axis.begin() + n / 2, axis.end());
+    out[k] = axis[n / 2];
+  }
+  return out;
+}
+
+}  // namespace
+
+bool ButtonFuseOptions::IsValid(std::string* error) const {
+  if (window < 0) return button_internal::Invalid(error, "button.fuse.window must be >= 0");
+  return true;
+}
+
+OptionTable<ButtonFuseOptions> ButtonFuseOptions::Describe() {
+  using O = ButtonFuseOptions;
+  return OptionTable<O>("button.fuse")
+      .Int("window", &O::window, "estimates", 0, 100000, 1,
+           "The target is the per-axis median of this many recent base-frame positions (sound "
+           "plane, converged scale); 0 = every one since the tap, 1 = no fusion.");
+}
+
 bool ButtonPickerOptions::IsValid(std::string* error) const {
-  return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) && gate.IsValid(error);
+  return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) && gate.IsValid(error) &&
+         fuse.IsValid(error);
 }
 
 OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
   using O = ButtonPickerOptions;
-  return OptionTable<O>("button")
+  return OptionTable<O>("")  // The nested tables carry "button.detect" etc.
       .Nested(&O::detect, ButtonDetectorOptions::Describe())
       .Nested(&O::track, ButtonTrackerOptions::Describe())
       .Nested(&O::locate, ButtonLocatorOptions::Describe())
-      .Nested(&O::gate, SafetyGateOptions::Describe());
+      .Nested(&O::gate, SafetyGateOptions::Describe())
+      .Nested(&O::fuse, ButtonFuseOptions::Describe());
 }
 
 const char* PickerStateKey(PickerState state) {
@@ -44,6 +79,8 @@ Status ButtonPicker::Tap(const cv::Mat& still, cv::Point2d tap, int64_t frame_id
   tap_frame_ = frame_id;
   tracker_.reset();
   button_in_world_.reset();
+  fused_positions_.clear();
+  fused_approaches_.clear();
   state_ = PickerState::kConfirm;
   return Status::Ok();
 }
@@ -58,6 +95,8 @@ void ButtonPicker::Cancel() {
   candidate_.reset();
   tracker_.reset();
   button_in_world_.reset();
+  fused_positions_.clear();
+  fused_approaches_.clear();
   if (!stopped_) state_ = PickerState::kIdle;
 }
 
@@ -119,6 +158,16 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
       last_depth_m_ = at->button_in_camera.z();
       out.button_in_base = base_from_camera * at->button_in_camera;
       out.approach_in_base = base_from_camera.linear() * at->approach_in_camera;
+      out.fused_estimates = 1;
+      if (at->plane_sound && slam.scale_converged && options_.fuse.window != 1) {
+        fused_positions_.push_back(out.button_in_base);
+        fused_approaches_.push_back(out.approach_in_base);
+        out.button_in_base = Median(fused_positions_, options_.fuse.window);
+        out.approach_in_base = Median(fused_approaches_, options_.fuse.window).normalized();
+        out.fused_estimates = options_.fuse.window > 0
+                                  ? std::min(int(fused_positions_.size()), options_.fuse.window)
+                                  : int(fused_positions_.size());
+      }
       safety.has_estimate = true;
       safety.plane_sound = at->plane_sound;
       safety.uncertainty_m = at->uncertainty_m;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <cmath>
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
@@ -21,12 +22,24 @@
 
 namespace sightline {
 
+// Fusion of the per-frame positions in the arm's base frame. Keys "button.fuse.*". The button
+// and the arm's base stay put during one approach, so the positions located frame by frame
+// (each from a noisy plane fit on the SLAM's map) estimate one point: the target is their
+// per-axis median over the sound estimates made with a converged scale since the tap.
+struct ButtonFuseOptions {
+  int window = 0;  // Recent estimates in the median; 0 = every one since the tap, 1 = no fusion.
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<ButtonFuseOptions> Describe();
+};
+
 // All button options. Keys "button.*".
 struct ButtonPickerOptions {
   ButtonDetectorOptions detect;
   ButtonTrackerOptions track;
   ButtonLocatorOptions locate;
   SafetyGateOptions gate;
+  ButtonFuseOptions fuse;
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonPickerOptions> Describe();
@@ -54,7 +67,8 @@ struct PickerFrame {
   ButtonTrack track;
   double tracking_ms = 0;                       // Tracker time of this frame.
   std::optional<ButtonLocation> location;       // Camera frame.
-  Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));  // Fused.
+  int fused_estimates = 0;                      // Estimates in button_in_base.
   Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
   GateVerdict verdict;
   std::optional<ArmTarget> target;              // Set when the gate lets it out.
@@ -100,6 +114,7 @@ class ButtonPicker {
   std::unique_ptr<ButtonTracker> tracker_;
   std::optional<Eigen::Vector3d> button_in_world_;  // Last located position.
   double last_scale_ = 1.0, last_depth_m_ = 0;       // Track scale and depth at that time.
+  std::vector<Eigen::Vector3d> fused_positions_, fused_approaches_;  // Base frame, since the tap.
 };
 
 }  // namespace sightline

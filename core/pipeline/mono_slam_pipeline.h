@@ -19,23 +19,10 @@
 #include "core/mono/mono_slam.h"
 #include "core/mono/scale_estimator.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/mono_inputs.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline {
-
-// Run-level options of mono-slam. Keys "mono.run.*".
-struct MonoSlamRunOptions {
-  int max_frames = 0;                   // Frames read; 0 = all.
-  std::string metric_source = "auto";   // auto, arm, ground_truth or none.
-  std::string arm_poses;                // arm_poses.txt; "" = beside the sensor folder.
-  std::string hand_eye;                 // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
-  std::string scale_pairs = "keyframes";  // Displacements between keyframes or frames.
-  int scale_interval_frames = 5;        // Frames per displacement pair (scale_pairs = frames).
-  double gt_tolerance_s = 0.02;         // Time association tolerance [s].
-
-  bool IsValid(std::string* error) const;
-  static OptionTable<MonoSlamRunOptions> Describe();
-};
 
 // One processed frame.
 struct MonoRunFrame {
@@ -73,17 +60,6 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
                                   const std::function<void(int64_t, int64_t)>& progress = {},
                                   const std::atomic<bool>* cancel = nullptr);
 
-// The measured camera poses (metres) the scale comes from, per `run.metric_source`: arm poses
-// (arm_poses.txt beside `path` or its parent, times hand_eye.yaml's end_effector_from_camera)
-// or `ground_truth`. *source says which ("arm", "ground_truth", "none"; then empty).
-StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
-                                           const std::optional<Trajectory>& ground_truth,
-                                           std::string* source);
-
-// Scale pairs between consecutive keyframes of `map` and the metric poses at their times.
-std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,
-                                          double tolerance_s);
-
 // accuracy.* of metrics.json: lost_frames, relocalisations, scale_ml, scale_single, and with
 // ground truth ate_rmse_m (Sim(3)), ate_rmse_pct_of_path, ate_metric_rmse_m (SE(3) only, scale
 // from the ML estimate), scale_true (of the final map: Sim(3) alignment of the keyframes),
@@ -91,6 +67,10 @@ std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajecto
 std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& run,
                                                              double gt_tolerance_s,
                                                              std::vector<std::string>* notes);
+
+// Writes trajectory.txt, trajectory_map.txt, map.ply, keyframes.txt, scale.csv and frames.csv
+// into `dir` and lists them in result->outputs.
+Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunResult* result);
 
 // The registry entry.
 PipelineInfo MonoSlamPipeline();

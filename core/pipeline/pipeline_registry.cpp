@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/inspect_pipeline.h"
 #include "core/pipeline/stereo_vo_pipeline.h"
 #include "core/pipeline/mapping_pipeline.h"
@@ -33,6 +34,7 @@ PipelineRegistry BuiltinPipelines() {
   s = registry.Register(StereoVoPipeline());
   s = registry.Register(MobilityPipeline());
   s = registry.Register(MonoSlamPipeline());
+  s = registry.Register(ButtonPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }

@@ -1,0 +1,149 @@
+#include "core/pipeline/mono_inputs.h"
+
+#include <filesystem>
+
+#include "core/button/hand_eye.h"
+#include "core/mono/metric_motion.h"
+
+namespace sightline {
+
+namespace fs = std::filesystem;
+
+bool MonoSlamRunOptions::IsValid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error) *error = "mono.run." + m;
+    return false;
+  };
+  if (max_frames < 0) return fail("max_frames must be >= 0");
+  if (metric_source != "auto" && metric_source != "arm" && metric_source != "ground_truth" &&
+      metric_source != "none") {
+    return fail("metric_source must be auto, arm, ground_truth or none");
+  }
+  if (scale_interval_frames < 1) return fail("scale_interval_frames must be >= 1");
+  if (scale_pairs != "keyframes" && scale_pairs != "frames") {
+    return fail("scale_pairs must be keyframes or frames");
+  }
+  if (!(gt_tolerance_s >= 0)) return fail("gt_tolerance_s must be >= 0");
+  return true;
+}
+
+OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
+  using O = MonoSlamRunOptions;
+  return OptionTable<O>("mono.run")
+      .Int("max_frames", &O::max_frames, "frames", 0, 1e9, 1, "Frames read; 0 = all.")
+      .Choice("metric_source", &O::metric_source, {"auto", "arm", "ground_truth", "none"},
+              "Measured motion for the metric scale: the arm's poses (arm_poses.txt), "
+              "ground-truth displacements, or none; auto prefers the arm.")
+      .String("arm_poses", &O::arm_poses,
+              "arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.")
+      .String("hand_eye", &O::hand_eye,
+              "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses; none = identity.")
+      .Choice("scale_pairs", &O::scale_pairs, {"keyframes", "frames"},
+              "Displacement pairs between consecutive keyframes (poses refined by bundle "
+              "adjustment) or between tracked frames scale_interval_frames apart.")
+      .Int("scale_interval_frames", &O::scale_interval_frames, "frames", 1, 10000, 1,
+           "Frames spanned by one displacement pair of the scale estimators.")
+      .Double("gt_tolerance_s", &O::gt_tolerance_s, "s", 0, 1, 0.005,
+              "A pose belongs to a frame when this close in time.");
+}
+
+std::string FindBeside(const std::string& path, const std::string& name) {
+  for (fs::path dir : {fs::path(path), fs::path(path).parent_path()}) {
+    if (fs::exists(dir / name)) return (dir / name).string();
+  }
+  return "";
+}
+
+StatusOr<OpenedMono> OpenMono(const std::string& path) {
+  StatusOr<std::unique_ptr<Source>> opened = OpenDataset(path, SourceKind::kMono);
+  if (!opened.ok()) opened = OpenDataset(path, SourceKind::kStereo);
+  if (!opened.ok()) return opened.status();
+  OpenedMono out;
+  out.source = std::move(*opened);
+  const SourceInfo& info = out.source->info();
+  if (info.camera) {
+    out.camera = *info.camera;
+  } else if (info.stereo) {
+    out.camera = info.stereo->left;
+  } else {
+    return FailedPrecondition(path + ": the source has no camera calibration (camera.yaml)");
+  }
+  if (const Trajectory* gt = out.source->ground_truth(); gt != nullptr && !gt->empty()) {
+    out.ground_truth = *gt;
+  } else if (const std::string file = (fs::path(info.path) / "groundtruth.txt").string();
+             fs::exists(file)) {
+    // Image folders (the simulator's mono/) keep their camera's ground truth beside the images.
+    StatusOr<Trajectory> gt = ReadTumTrajectory(file);
+    if (!gt.ok()) return gt.status();
+    out.ground_truth = *gt;
+  }
+  return out;
+}
+
+StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::string& path) {
+  const Status grabbed = source.Grab();
+  if (grabbed.code() == StatusCode::kOutOfRange) return std::optional<MonoFrame>();
+  if (!grabbed.ok()) return grabbed;
+  StatusOr<Frame> frame = source.Retrieve();
+  if (!frame.ok()) return frame.status();
+  MonoFrame mono;
+  if (const MonoFrame* m = std::get_if<MonoFrame>(&*frame)) {
+    mono = *m;
+  } else if (const StereoFrame* s = std::get_if<StereoFrame>(&*frame)) {
+    mono.stamp = s->stamp;
+    mono.image = s->left;
+  } else {
+    return InvalidArgument(path + " gives neither mono nor stereo frames");
+  }
+  return std::optional<MonoFrame>(std::move(mono));
+}
+
+StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
+                                           const std::optional<Trajectory>& ground_truth,
+                                           std::string* source) {
+  *source = "none";
+  Trajectory metric;
+  if (run.metric_source == "none") return metric;
+  const std::string arm_path = run.arm_poses.empty() ? FindBeside(path, "arm_poses.txt") : run.arm_poses;
+  const bool use_arm = run.metric_source == "arm" || (run.metric_source == "auto" && !arm_path.empty());
+  if (use_arm) {
+    if (arm_path.empty()) return NotFound(path + ": no arm_poses.txt beside the images (mono.run.arm_poses)");
+    StatusOr<Trajectory> arm = ReadTumTrajectory(arm_path);
+    if (!arm.ok()) return arm.status();
+    Eigen::Isometry3d ee_from_camera = Eigen::Isometry3d::Identity();
+    if (run.hand_eye != "none") {
+      std::string hand_eye = run.hand_eye;
+      if (hand_eye.empty()) hand_eye = (fs::path(arm_path).parent_path() / "hand_eye.yaml").string();
+      StatusOr<HandEye> read = ReadHandEyeFile(hand_eye);
+      if (!read.ok()) return read.status();
+      ee_from_camera = read->end_effector_from_camera;
+    }
+    for (const TimedPose& p : arm->poses()) metric.Add(p.time_s, p.world_from_sensor * ee_from_camera);
+    *source = "arm";
+    return metric;
+  }
+  if (ground_truth) {
+    metric = *ground_truth;
+    *source = "ground_truth";
+  } else if (run.metric_source == "ground_truth") {
+    return NotFound(path + ": mono.run.metric_source = ground_truth but the dataset has none");
+  }
+  return metric;
+}
+
+std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,
+                                          double tolerance_s) {
+  std::vector<DualPose> dual;
+  for (size_t k = 0; k < map.keyframes.size(); ++k) {
+    DualPose d;
+    d.frame = static_cast<int64_t>(k);
+    d.map_from_camera = map.keyframes[k].map_from_camera;
+    if (std::optional<size_t> i = metric.Nearest(map.keyframes[k].time_s, tolerance_s)) {
+      d.metric_from_camera = metric.poses()[*i].world_from_sensor;
+    }
+    dual.push_back(d);
+  }
+  return DisplacementPairs(dual, 1);
+}
+
+}  // namespace sightline

@@ -1,0 +1,160 @@
+// `sightline-cli run button` as a user runs it on the simulated panel approach (camera in the
+// arm's hand, 12 cm sideways first, as the mono SLAM's accuracy test): the whole chain headless,
+// its accuracy against the true button centres, a listening arm client receiving the targets,
+// and a tap on the blank wall.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#include "core/button/arm_client.h"
+#include "core/button/arm_server.h"
+#include "core/pipeline/button_pipeline.h"
+#include "core/sim/simulate.h"
+#include "tests/app/process.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The number after "key": inside the JSON object that follows "section": (flat search).
+std::optional<double> JsonNumber(const std::string& json, const std::string& section, const std::string& key) {
+  const size_t start = json.find("\"" + section + "\":");
+  if (start == std::string::npos) return std::nullopt;
+  const size_t end = json.find('}', json.find('{', start));
+  const size_t at = json.find("\"" + key + "\":", start);
+  if (at == std::string::npos || at > end) return std::nullopt;
+  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
+}
+
+class ButtonCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(testing::TempDir("button_cli_panel"));
+    sim::SimulationOptions options = sim::SimulationOptions::ForScene("panel");
+    options.arm.sideways_m = 0.12;
+    ASSERT_TRUE(sim::Simulate(options, *dir_).ok());
+  }
+  static void TearDownTestSuite() { delete dir_; }
+
+  // "--tap U,V@0" a few pixels off the true centre of the approached button (id 5) at frame 0.
+  static std::string TapOnTarget() {
+    StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(*dir_ + "/buttons.csv");
+    EXPECT_TRUE(buttons.ok()) << buttons.status().ToString();
+    for (const TrueButton& b : *buttons) {
+      if (b.id != 5) continue;
+      EXPECT_TRUE(b.visible.at(0));
+      char tap[64];
+      std::snprintf(tap, sizeof(tap), "%.1f,%.1f@0", b.pixel[0].x() + 2, b.pixel[0].y() - 2);
+      return tap;
+    }
+    ADD_FAILURE() << "button 5 not in buttons.csv";
+    return "0,0";
+  }
+
+  static std::string* dir_;
+};
+std::string* ButtonCli::dir_ = nullptr;
+
+TEST_F(ButtonCli, SimulatedApproachIsWithinThreeMillimetresWithTheMlScale) {
+  const std::string out = testing::TempDir("button_cli_run");
+  const testing::ProcessResult r =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  std::printf("%s", r.out.c_str());
+  const std::string metrics = Read(out + "/metrics.json");
+  const auto final_mm = JsonNumber(metrics, "accuracy", "final_error_mm");
+  const auto single_mm = JsonNumber(metrics, "accuracy", "final_error_mm_single_ratio");
+  const auto track_px = JsonNumber(metrics, "accuracy", "track_error_px_median");
+  const auto track_max_px = JsonNumber(metrics, "accuracy", "track_error_px_max");
+  const auto targets = JsonNumber(metrics, "accuracy", "targets_sent");
+  ASSERT_TRUE(final_mm && single_mm && track_px && track_max_px && targets) << metrics;
+  EXPECT_LT(*final_mm, 3.0);
+  EXPECT_GE(*single_mm, 0.0);  // Reported beside it.
+  EXPECT_LT(*track_px, 3.0);
+  EXPECT_LT(*track_max_px, 3.0);  // Within 3 px over the whole approach.
+  EXPECT_GT(*targets, 0);
+  EXPECT_TRUE(JsonNumber(metrics, "tracking", "median").has_value()) << metrics;
+  EXPECT_TRUE(JsonNumber(metrics, "counts", "tap_to_first_target_frames").has_value()) << metrics;
+  EXPECT_EQ(JsonNumber(metrics, "counts", "true_button").value_or(-1), 5);
+  const std::string csv = Read(out + "/button.csv");
+  EXPECT_EQ(csv.rfind("frame,time_s,state,gate,u_px,v_px", 0), 0u) << csv.substr(0, 200);
+  EXPECT_NE(csv.find(",target_sent,send,"), std::string::npos);
+}
+
+TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
+  int port = 0;
+  {  // A free port on loopback.
+    ArmServerOptions probe;
+    probe.port = 0;
+    auto server = ArmServer::Start(probe);
+    ASSERT_TRUE(server.ok()) << server.status().ToString();
+    port = (*server)->port();
+  }
+  const std::string address = "127.0.0.1:" + std::to_string(port);
+  const std::string out = testing::TempDir("button_cli_serve");
+  testing::ProcessResult run;
+  std::thread runner([&] {
+    run = testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " + out +
+                              " --serve " + address + " --set button.run.wait_clients=2");
+  });
+  // An in-process client first (it also tells when the server is up) ...
+  std::optional<ArmClient> client;
+  for (int attempt = 0; attempt < 600 && !client; ++attempt) {
+    auto c = ArmClient::Connect("127.0.0.1", port, "", 1000);
+    if (c.ok()) {
+      client.emplace(std::move(*c));
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  ASSERT_TRUE(client.has_value()) << "the button run never served " << address;
+  // ... then sightline-cli arm-listen, the second client the run waits for.
+  const testing::ProcessResult listen =
+      testing::RunProcess(kCli + " arm-listen " + address + " --count 1 --timeout 120 --no-heartbeats");
+  bool target = false;
+  for (int i = 0; i < 10000 && !target; ++i) {
+    StatusOr<std::string> line = client->ReadLine(60000);
+    if (!line.ok()) break;
+    target = line->find("\"type\":\"target\"") != std::string::npos;
+  }
+  runner.join();
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  ASSERT_EQ(listen.exit_code, 0) << listen.out;
+  EXPECT_NE(listen.out.find("\"type\":\"target\""), std::string::npos) << listen.out;
+  EXPECT_NE(listen.out.find("\"frame_id\":\"arm_base\""), std::string::npos) << listen.out;
+  EXPECT_TRUE(target);
+  const std::string metrics = Read(out + "/metrics.json");
+  EXPECT_GT(JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0);
+  EXPECT_EQ(JsonNumber(metrics, "counts", "arm_clients_at_start").value_or(0), 2);
+}
+
+TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {
+  const std::string out = testing::TempDir("button_cli_wall");
+  const testing::ProcessResult r =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --tap 8,8@0 --out " + out);
+  EXPECT_NE(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("no button here"), std::string::npos) << r.out;
+  const testing::ProcessResult bad = testing::RunProcess(kCli + " run button " + *dir_ + " --tap 1x2 --out " + out);
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.out.find("button.run.tap"), std::string::npos) << bad.out;
+  const testing::ProcessResult none = testing::RunProcess(kCli + " run button " + *dir_ + " --out " + out);
+  EXPECT_NE(none.exit_code, 0);
+  EXPECT_NE(none.out.find("--tap"), std::string::npos) << none.out;
+}
+
+}  // namespace
+}  // namespace sightline
