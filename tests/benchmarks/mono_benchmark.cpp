@@ -2,9 +2,14 @@
 // rendered in memory once) and kitti_clip1's left images (1226x370, real; skipped with a
 // message when absent). Counters: medians of features and tracking per frame, mapping and local
 // bundle adjustment per keyframe. Synchronous mode (mapping inline, timed apart from tracking)
-// and threaded mode (mapping on its own thread; pin the process to two cores to give it one).
-// Run: build/bin/bench_mono --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// and threaded mode (mapping on its own thread). tracking_ms is wall clock per frame,
+// tracking_cpu_ms the tracking thread's own CPU time (the difference is time the tracker was
+// not running: another thread or process had the core); cpus is the cores the run may use.
+// The setting, tracking on one core and mapping on the other:
+//   taskset -c 0,1 build/bin/bench_mono --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
+
+#include <sched.h>
 
 #include <cstdlib>
 #include <opencv2/core/utility.hpp>
@@ -86,6 +91,8 @@ void RunClip(benchmark::State& state, const Clip* clip, bool threaded) {
     slam.Stop();
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(clip->frames.size()));
+  cpu_set_t cpus;
+  if (sched_getaffinity(0, sizeof(cpus), &cpus) == 0) state.counters["cpus"] = CPU_COUNT(&cpus);
   for (const std::string& stage : timing.Stages()) {
     state.counters[stage + "_ms"] = timing.Summary(stage).median_ms;
   }
