@@ -3,7 +3,8 @@
 // adjustment and culls bad points.
 //
 // Locking: only the mapper changes the map's structure and poses, so it reads the map without
-// the lock and takes it for every write; the tracker reads under the lock.
+// the lock and takes it for every write; the tracker reads the copies MonoSlam publishes after
+// each keyframe and takes the lock only to count points seen (try-lock) and to relocalise.
 #pragma once
 
 #include <memory>
