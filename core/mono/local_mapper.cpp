@@ -221,6 +221,43 @@ int LocalMapper::Cull(int64_t current_keyframe) {
 }
 
 BundleSummary LocalMapper::GlobalBundle(double baseline) {
+  return SolveGlobal(std::max(options_.ba_iterations, 20), baseline, false);
+}
+
+BundleSummary LocalMapper::FinalBundle(int iterations) {
+  if (iterations <= 0 || map_->keyframes().size() < 3) return {};
+  // Points made late in the run are observed only by the keyframes near them; finding them in
+  // every keyframe first links the whole run, so the adjustment can take out the scale drift.
+  BundleSummary summary;
+  for (int round = 0; round < 2; ++round) {
+    std::vector<KeyFrame*> all;
+    for (const auto& k : map_->keyframes()) all.push_back(k.get());
+    for (KeyFrame* k : all) {
+      std::vector<KeyFrame*> others;
+      for (KeyFrame* o : all) {
+        if (o != k) others.push_back(o);
+      }
+      FuseNeighbourPoints(k, others);
+    }
+    summary = SolveGlobal(iterations, 0, true);
+  }
+  return summary;
+}
+
+namespace {
+
+double PathLength(const std::vector<BundleProblem::Pose>& poses) {
+  double length = 0;
+  for (size_t k = 1; k < poses.size(); ++k) {
+    length += (poses[k].camera_from_map.inverse().translation() -
+               poses[k - 1].camera_from_map.inverse().translation()).norm();
+  }
+  return length;
+}
+
+}  // namespace
+
+BundleSummary LocalMapper::SolveGlobal(int iterations, double baseline, bool keep_path_length) {
   BundleProblem problem;
   std::unordered_map<int64_t, int> point_index;
   for (const auto& k : map_->keyframes()) problem.poses.push_back({k->id, k->camera_from_map, k->id == 0});
@@ -233,12 +270,18 @@ BundleSummary LocalMapper::GlobalBundle(double baseline) {
                                       Scale(scale_factor_, k.features.keypoints[index])});
     }
   }
-  BundleSummary summary = SolveBundle(camera_, &problem, std::max(options_.ba_iterations, 20),
-                                      options_.ba_huber_px);
+  const double length_before = PathLength(problem.poses);
+  BundleSummary summary = SolveBundle(camera_, &problem, iterations, options_.ba_huber_px);
   if (!summary.usable || problem.poses.size() < 2) return summary;
-  const double length = (problem.poses[1].camera_from_map.inverse().translation() -
-                         problem.poses[0].camera_from_map.inverse().translation()).norm();
-  const double s = length > 0 ? baseline / length : 1.0;
+  double s = 1.0;
+  if (keep_path_length) {
+    const double length_after = PathLength(problem.poses);
+    if (length_after > 0) s = length_before / length_after;
+  } else {
+    const double length = (problem.poses[1].camera_from_map.inverse().translation() -
+                           problem.poses[0].camera_from_map.inverse().translation()).norm();
+    if (length > 0) s = baseline / length;
+  }
   std::lock_guard<std::mutex> lock(*mutex_);
   for (const auto& pose : problem.poses) {
     Eigen::Isometry3d c = pose.camera_from_map;

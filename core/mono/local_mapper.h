@@ -3,7 +3,8 @@
 // adjustment and culls bad points.
 //
 // Locking: only the mapper changes the map's structure and poses, so it reads the map without
-// the lock and takes it for every write; the tracker reads under the lock.
+// the lock and takes it for every write; the tracker reads the copies MonoSlam publishes after
+// each keyframe and takes the lock only to count points seen (try-lock) and to relocalise.
 #pragma once
 
 #include <memory>
@@ -41,12 +42,20 @@ class LocalMapper {
   // initialisation), then rescaled so the first two keyframes are `baseline` apart.
   BundleSummary GlobalBundle(double baseline);
 
+  // Bundle adjustment of every keyframe and point with the first keyframe fixed (PTAM's global
+  // adjustment, run when the run stops), rescaled so the keyframes' path length is unchanged:
+  // the map keeps its units and the tracked poses stay comparable.
+  BundleSummary FinalBundle(int iterations);
+
  private:
   int TriangulateWith(KeyFrame* current, const KeyFrame& neighbour);
   int FuseNeighbourPoints(KeyFrame* current, const std::vector<KeyFrame*>& neighbours);
   // Local BA over the window; returns the observations removed as outliers.
   int LocalBundle(KeyFrameStats* stats);
   int Cull(int64_t current_keyframe);
+  // Global bundle adjustment written back to the map, rescaled so the first two keyframes are
+  // `baseline` apart or, with keep_path_length, so the keyframes' path length is unchanged.
+  BundleSummary SolveGlobal(int iterations, double baseline, bool keep_path_length);
 
   MonoMappingOptions options_;
   PinholeCamera camera_;

@@ -150,6 +150,10 @@ bool MonoMappingOptions::IsValid(std::string* error) const {
   }
   if (local_window < 2) return Invalid(error, "mono.mapping.local_window must be >= 2");
   if (ba_iterations < 0) return Invalid(error, "mono.mapping.ba_iterations must be >= 0");
+  if (thread_nice < 0 || thread_nice > 19) {
+    return Invalid(error, "mono.mapping.thread_nice must lie in [0, 19]");
+  }
+  if (final_ba_iterations < 0) return Invalid(error, "mono.mapping.final_ba_iterations must be >= 0");
   if (!(ba_huber_px > 0)) return Invalid(error, "mono.mapping.ba_huber_px must be > 0");
   if (!(min_found_ratio >= 0 && min_found_ratio < 1)) {
     return Invalid(error, "mono.mapping.min_found_ratio must lie in [0, 1)");
@@ -185,7 +189,12 @@ OptionTable<MonoMappingOptions> MonoMappingOptions::Describe() {
       .Double("min_found_ratio", &O::min_found_ratio, "", 0, 0.99, 0.05,
               "Points found in fewer of the frames that should see them are culled.")
       .Bool("threaded", &O::threaded,
-            "Run mapping on its own thread (live); off = inline after each keyframe, deterministic.");
+            "Run mapping on its own thread (live); off = inline after each keyframe, deterministic.")
+      .Int("thread_nice", &O::thread_nice, "", 0, 19, 1,
+           "Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core "
+           "it shares with mapping, but starves mapping on a loaded machine.")
+      .Int("final_ba_iterations", &O::final_ba_iterations, "iterations", 0, 1000, 5,
+           "Global bundle adjustment of every keyframe and point when the run stops (0 = none).");
 }
 
 bool MonoSlamOptions::IsValid(std::string* error) const {

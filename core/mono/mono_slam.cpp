@@ -1,19 +1,37 @@
 #include "core/mono/mono_slam.h"
 
 #include <cmath>
+#include <ctime>
 #include <set>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 namespace sightline {
 
 MonoSlam::MonoSlam(MonoSlamOptions options) : options_(std::move(options)) {}
 
-MonoSlam::~MonoSlam() { Stop(); }
+MonoSlam::~MonoSlam() { StopThread(); }
+
+namespace {
+
+// CPU time of the calling thread [ms]: what tracking itself costs, whoever else shares the core.
+double ThreadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+}  // namespace
 
 Status MonoSlam::Configure(const PinholeCamera& camera, TimingStats* timing) {
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   SIGHTLINE_RETURN_IF_ERROR(camera.Validate());
-  Stop();
+  StopThread();
   camera_ = camera;
   timing_ = timing;
   const double factor = options_.features.scale_factor;
@@ -33,13 +51,48 @@ void MonoSlam::StartMappingThread() {
   mapping_thread_ = std::thread([this] { MappingLoop(); });
 }
 
-void MonoSlam::Stop() {
+void MonoSlam::StopThread() {
   if (keyframe_queue_) keyframe_queue_->Shutdown();
   if (mapping_thread_.joinable()) mapping_thread_.join();
   keyframe_queue_.reset();
 }
 
+void MonoSlam::Stop() {
+  StopThread();
+  if (!configured_ || !initialised_ || final_bundle_done_ || options_.mapping.final_ba_iterations <= 0) {
+    return;
+  }
+  final_bundle_done_ = true;
+  FlushPointCounts(true);
+  const double start = HostTimeS();
+  mapper_->FinalBundle(options_.mapping.final_ba_iterations);
+  if (timing_) timing_->Add("final_bundle_adjustment", (HostTimeS() - start) * 1000.0);
+  PublishSnapshot();
+}
+
+void MonoSlam::FlushPointCounts(bool wait) {
+  if (pending_visible_.empty() && pending_found_.empty()) return;
+  std::unique_lock<std::mutex> lock(map_mutex_, std::defer_lock);
+  if (wait) {
+    lock.lock();
+  } else if (!lock.try_lock()) {
+    return;
+  }
+  for (int64_t id : pending_visible_) {
+    if (MapPoint* p = map_.FindPoint(id)) ++p->visible;
+  }
+  for (int64_t id : pending_found_) {
+    if (MapPoint* p = map_.FindPoint(id)) ++p->found;
+  }
+  pending_visible_.clear();
+  pending_found_.clear();
+}
+
 void MonoSlam::MappingLoop() {
+#ifdef __linux__
+  // Tracking must keep the frame rate; mapping takes what the core has left.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), options_.mapping.thread_nice);
+#endif
   while (std::optional<std::shared_ptr<KeyFrame>> keyframe = keyframe_queue_->Pop()) {
     MapKeyFrame(std::move(*keyframe));
     mapping_busy_ = false;
@@ -47,7 +100,7 @@ void MonoSlam::MappingLoop() {
 }
 
 void MonoSlam::Reset() {
-  Stop();
+  StopThread();
   {
     std::lock_guard<std::mutex> lock(map_mutex_);
     map_.Clear();
@@ -55,11 +108,15 @@ void MonoSlam::Reset() {
   {
     std::lock_guard<std::mutex> lock(snapshot_mutex_);
     snapshot_ = std::make_shared<MapSnapshot>();
+    local_points_ = std::make_shared<std::vector<LocalPoint>>();
     keyframe_history_.clear();
   }
   if (initializer_) initializer_ = std::make_unique<TwoViewInitializer>(
       options_.init, camera_, options_.features.scale_factor);
   initialised_ = false;
+  final_bundle_done_ = false;
+  pending_visible_.clear();
+  pending_found_.clear();
   init_model_.clear();
   camera_from_map_ = velocity_ = Eigen::Isometry3d::Identity();
   lost_ = false;
@@ -80,19 +137,26 @@ std::vector<KeyFrameStats> MonoSlam::KeyFrameHistory() const {
 
 void MonoSlam::PublishSnapshot() {
   std::shared_ptr<const MapSnapshot> snapshot;
+  std::shared_ptr<const std::vector<LocalPoint>> local;
   {
     std::lock_guard<std::mutex> lock(map_mutex_);
     snapshot = SnapshotOf(map_);
+    local = std::make_shared<const std::vector<LocalPoint>>(LocalPointsOf());
   }
   std::lock_guard<std::mutex> lock(snapshot_mutex_);
   snapshot_ = std::move(snapshot);
+  local_points_ = std::move(local);
 }
 
-std::vector<LocalPoint> MonoSlam::LocalPoints() const {
+std::shared_ptr<const std::vector<LocalPoint>> MonoSlam::LocalPoints() const {
+  std::lock_guard<std::mutex> lock(snapshot_mutex_);
+  return local_points_;
+}
+
+std::vector<LocalPoint> MonoSlam::LocalPointsOf() const {
   // The points seen by the most recent keyframes (PTAM projects the whole map; recent
   // keyframes' points are what the camera can see and keep tracking cost bounded).
   constexpr int kLocalKeyFrames = 12;
-  std::lock_guard<std::mutex> lock(map_mutex_);
   std::set<int64_t> ids;
   const auto& keyframes = map_.keyframes();
   for (int k = static_cast<int>(keyframes.size()) - 1;
@@ -186,7 +250,7 @@ bool MonoSlam::TryRelocalise(const FrameFeatures& features, TrackOutcome* outcom
     std::lock_guard<std::mutex> lock(map_mutex_);
     keyframes = map_.keyframes();
   }
-  const std::vector<LocalPoint> all = LocalPoints();
+  const std::shared_ptr<const std::vector<LocalPoint>> all = LocalPoints();
   for (auto it = keyframes.rbegin(); it != keyframes.rend(); ++it) {
     std::vector<LocalPoint> seen;
     {
@@ -196,7 +260,7 @@ bool MonoSlam::TryRelocalise(const FrameFeatures& features, TrackOutcome* outcom
         if (p != nullptr) seen.push_back({id, p->position, p->descriptor});
       }
     }
-    if (tracker_->Relocalise(features, **it, seen, all, outcome)) return true;
+    if (tracker_->Relocalise(features, **it, seen, *all, outcome)) return true;
   }
   return false;
 }
@@ -207,8 +271,10 @@ bool MonoSlam::NeedKeyFrame(const TrackOutcome& outcome) const {
   if (outcome.inliers < options_.mapping.keyframe_match_ratio * keyframe_inliers_) return true;
   const Eigen::Vector3d centre = camera_from_map_.inverse().translation();
   double nearest = 1e300;
-  std::lock_guard<std::mutex> lock(map_mutex_);
-  for (const auto& k : map_.keyframes()) nearest = std::min(nearest, (k->CentreInMap() - centre).norm());
+  // The published keyframes: the one in the mapper's hands is excluded by mapping_busy_ above.
+  for (const MapSnapshot::Frame& k : Snapshot()->keyframes) {
+    nearest = std::min(nearest, (k.map_from_camera.translation() - centre).norm());
+  }
   return nearest > options_.mapping.keyframe_distance * outcome.mean_depth;
 }
 
@@ -241,6 +307,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
                            std::to_string(camera_.height));
   }
   const double start = HostTimeS();
+  const double start_cpu = ThreadCpuMs();
   auto result = std::make_shared<MonoSlamResult>();
   result->stamp = frame.stamp;
   result->image = frame.image;
@@ -256,7 +323,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
     result->tracked = TryInitialise(features, frame.stamp, &stats);
     result->quality = result->tracked ? TrackingQuality::kGood : TrackingQuality::kInitialising;
   } else {
-    TrackOutcome outcome = tracker_->Track(features, LocalPoints(), velocity_ * camera_from_map_);
+    TrackOutcome outcome = tracker_->Track(features, *LocalPoints(), velocity_ * camera_from_map_);
     TrackingQuality quality = tracker_->QualityOf(outcome);
     if (quality == TrackingQuality::kLost) {
       TrackOutcome relocalised;
@@ -284,16 +351,11 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
       camera_from_map_ = outcome.camera_from_map;
       result->tracked = true;
       stats.status = stats.relocalised ? "relocalised" : TrackingQualityName(quality);
-      {
-        std::lock_guard<std::mutex> lock(map_mutex_);
-        for (int64_t id : outcome.predicted) {
-          if (MapPoint* p = map_.FindPoint(id)) ++p->visible;
-        }
-        for (const PointMatch& m : outcome.matches) {
-          if (!m.inlier) continue;
-          if (MapPoint* p = map_.FindPoint(m.point)) ++p->found;
-        }
+      pending_visible_.insert(pending_visible_.end(), outcome.predicted.begin(), outcome.predicted.end());
+      for (const PointMatch& m : outcome.matches) {
+        if (m.inlier) pending_found_.push_back(m.point);
       }
+      FlushPointCounts(false);
       for (const PointMatch& m : outcome.matches) result->keypoint_state[m.keypoint] = m.inlier ? 1 : 2;
       ++frames_since_keyframe_;
       if (NeedKeyFrame(outcome)) {
@@ -313,7 +375,10 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
     }
   }
   stats.tracking_ms = (HostTimeS() - start) * 1000.0;
-  if (timing_) timing_->Add("tracking", stats.tracking_ms);
+  if (timing_) {
+    timing_->Add("tracking", stats.tracking_ms);
+    timing_->Add("tracking_cpu", ThreadCpuMs() - start_cpu);
+  }
   if (new_keyframe) HandOver(std::move(new_keyframe));
   result->map_from_camera = camera_from_map_.inverse();
   result->map = Snapshot();

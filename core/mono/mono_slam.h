@@ -91,7 +91,8 @@ class MonoSlam {
   void Reset();
   // Paused mapping adds no keyframes; tracking continues on the map as it is.
   void SetMappingPaused(bool paused) { mapping_paused_ = paused; }
-  // Waits for queued mapping work and stops the mapping thread (threaded mode). Idempotent.
+  // Waits for queued mapping work and stops the mapping thread (threaded mode), then runs the
+  // global bundle adjustment of mono.mapping.final_ba_iterations once per map. Idempotent.
   void Stop();
 
   std::shared_ptr<const MapSnapshot> Snapshot() const;
@@ -104,7 +105,13 @@ class MonoSlam {
 
  private:
   bool TryInitialise(const FrameFeatures& features, const FrameStamp& stamp, MonoFrameStats* stats);
-  std::vector<LocalPoint> LocalPoints() const;  // Takes the map lock.
+  // The points seen by the most recent keyframes (call with the map lock held).
+  std::vector<LocalPoint> LocalPointsOf() const;
+  std::shared_ptr<const std::vector<LocalPoint>> LocalPoints() const;  // The published copy.
+  void StopThread();
+  // Applies the visible / found counts of tracked frames if the map lock is free (it always is
+  // in synchronous mode); otherwise they wait for the next frame.
+  void FlushPointCounts(bool wait);
   bool TryRelocalise(const FrameFeatures& features, TrackOutcome* outcome);
   bool NeedKeyFrame(const TrackOutcome& outcome) const;
   void HandOver(std::shared_ptr<KeyFrame> keyframe);
@@ -131,12 +138,17 @@ class MonoSlam {
   std::atomic<bool> mapping_busy_{false};
   std::atomic<bool> mapping_paused_{false};
 
-  mutable std::mutex snapshot_mutex_;  // Guards snapshot_ and keyframe_history_.
+  // Guards snapshot_, local_points_ and keyframe_history_. The mapper publishes them after
+  // each keyframe, so the tracker never waits for the map lock while bundle adjustment runs.
+  mutable std::mutex snapshot_mutex_;
   std::shared_ptr<const MapSnapshot> snapshot_;
+  std::shared_ptr<const std::vector<LocalPoint>> local_points_;
   std::vector<KeyFrameStats> keyframe_history_;
 
   // Tracking state (tracking thread only).
   bool initialised_ = false;
+  bool final_bundle_done_ = false;
+  std::vector<int64_t> pending_visible_, pending_found_;  // Point ids to count (see FlushPointCounts).
   std::string init_model_;
   FrameStamp first_stamp_;
   Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();

@@ -17,6 +17,9 @@ bool ScaleEstimatorOptions::IsValid(std::string* error) const {
   }
   if (!(outlier_factor > 1)) return Invalid(error, "mono.scale.outlier_factor must be > 1");
   if (min_pairs < 1) return Invalid(error, "mono.scale.min_pairs must be >= 1");
+  if (!(length_exponent >= 0 && length_exponent <= 4)) {
+    return Invalid(error, "mono.scale.length_exponent must lie in [0, 4]");
+  }
   return true;
 }
 
@@ -32,7 +35,10 @@ OptionTable<ScaleEstimatorOptions> ScaleEstimatorOptions::Describe() {
       .Double("outlier_factor", &O::outlier_factor, "", 1.01, 100, 0.5,
               "Pairs whose own ratio lies outside a factor of this from the estimate are dropped.")
       .Int("min_pairs", &O::min_pairs, "pairs", 1, 10000, 1,
-           "The maximum-likelihood estimate is reported from this many pairs on.");
+           "The maximum-likelihood estimate is reported from this many pairs on.")
+      .Double("length_exponent", &O::length_exponent, "", 0, 4, 0.5,
+              "Pairs weigh |measured displacement|^-e in the ML estimate: 1 = the map's error "
+              "grows with the distance travelled, 0 = every pair equally noisy.");
 }
 
 StatusOr<double> SingleRatioScale(const ScalePair& pair) {
@@ -45,16 +51,18 @@ StatusOr<double> SingleRatioScale(const ScalePair& pair) {
 }
 
 StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double sigma_map,
-                                    double sigma_metric_m) {
+                                    double sigma_metric_m, double length_exponent) {
   if (pairs.empty()) return InvalidArgument("maximum-likelihood scale: no pairs");
   if (!(sigma_map > 0) || !(sigma_metric_m > 0)) {
     return InvalidArgument("maximum-likelihood scale: the sigmas must be > 0");
   }
   double xx = 0, yy = 0, xy = 0;
   for (const ScalePair& p : pairs) {
-    xx += p.map_displacement.squaredNorm();
-    yy += p.metric_displacement.squaredNorm();
-    xy += p.map_displacement.dot(p.metric_displacement);
+    const double length = p.metric_displacement.norm();
+    const double w = length_exponent == 0 ? 1.0 : length > 0 ? std::pow(length, -length_exponent) : 0.0;
+    xx += w * p.map_displacement.squaredNorm();
+    yy += w * p.metric_displacement.squaredNorm();
+    xy += w * p.map_displacement.dot(p.metric_displacement);
   }
   const double sx = sigma_map, sy = sigma_metric_m;
   const double s_xx = sy * sy * xx;
@@ -118,7 +126,8 @@ void ScaleEstimator::Update() {
         kept.push_back(pairs_[i]);
       }
     }
-    StatusOr<double> ml = MaxLikelihoodScale(kept, options_.sigma_map, options_.sigma_metric_m);
+    StatusOr<double> ml = MaxLikelihoodScale(kept, options_.sigma_map, options_.sigma_metric_m,
+                                             options_.length_exponent);
     if (!ml.ok()) return;
     reference = *ml;
   }

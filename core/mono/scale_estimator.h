@@ -9,6 +9,10 @@
 //   x_i ~ N(lambda mu_i, sigma_x^2 I) and y_i ~ N(mu_i, sigma_y^2 I):
 //     s_xx = sigma_y^2 sum x.x,  s_yy = sigma_x^2 sum y.y,  s_xy = sigma_y sigma_x sum x.y
 //     lambda = (s_xx - s_yy + sign(s_xy) sqrt((s_xx - s_yy)^2 + 4 s_xy^2)) / (2 sigma_y s_xy / sigma_x)
+//   Pair i may carry a weight w_i in all three sums (its sigmas scaled by 1 / sqrt(w_i)). With
+//   length_exponent e, w_i = |y_i|^-e: e = 1 models a map whose displacement error grows like a
+//   random walk with the distance travelled (the drift of monocular SLAM), so one long pair no
+//   longer outweighs the many short ones (e = 0: the plain estimator, every pair's noise equal).
 #pragma once
 
 #include <Eigen/Core>
@@ -33,6 +37,7 @@ struct ScaleEstimatorOptions {
   double min_metric_length_m = 0.01; // Shorter measured displacements are dropped [m].
   double outlier_factor = 5.0;       // Pairs whose own ratio is outside [l/f, l*f] are dropped.
   int min_pairs = 3;                 // The ML estimate is reported from this many pairs on.
+  double length_exponent = 1.0;      // Pair weight |y|^-e (variance grows with the interval).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ScaleEstimatorOptions> Describe();
@@ -44,8 +49,9 @@ StatusOr<double> SingleRatioScale(const ScalePair& pair);
 // The closed-form ML estimate over `pairs` (all used, no filtering). InvalidArgument when there
 // are no pairs, a sigma is not positive, or s_xy <= 0 (the displacements disagree in direction
 // on the whole, so no positive scale explains them).
+// `length_exponent` weights each pair by |y|^-length_exponent (0 = unweighted).
 StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double sigma_map,
-                                    double sigma_metric_m);
+                                    double sigma_metric_m, double length_exponent = 0);
 
 // The state after one added pair (a row of scale.csv).
 struct ScaleSample {

@@ -44,6 +44,26 @@ TEST(MonoAccuracy, SimulatedArmApproachIsMillimetreAccurateWithMetricScaleFromTh
   EXPECT_GT(run->map->keyframes.size(), 5u);
 }
 
+TEST(MonoAccuracy, DefaultApproachScaleIsWellWithinOnePercent) {
+  // The simulator's default approach (8 cm sideways move), two simulator seeds, so the map
+  // initialises on different frames; the global bundle adjustment at the end keeps the
+  // keyframes' scale consistent over the approach.
+  for (int seed : {1, 2}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::string dir = testing::TempDir("mono_panel_default_" + std::to_string(seed));
+    sim::SimulationOptions options = sim::SimulationOptions::ForScene("panel");
+    options.seed = seed;
+    ASSERT_TRUE(sim::Simulate(options, dir).ok());
+    StatusOr<MonoSlamRun> run = RunMonoSlam(dir, {}, {});
+    ASSERT_TRUE(run.ok()) << run.status().ToString();
+    std::map<std::string, double> m = Figures(*run);
+    EXPECT_EQ(m["lost_frames"], 0);
+    ASSERT_TRUE(m.count("scale_error_pct_ml"));
+    EXPECT_LT(m["scale_error_pct_ml"], 0.5);
+    EXPECT_LT(m["ate_rmse_m"], 0.01);
+  }
+}
+
 TEST(MonoAccuracy, KittiClipTracksThroughWithinOnePointFivePercent) {
   SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
   MonoSlamRunOptions run_options;

@@ -102,6 +102,30 @@ TEST_F(MonoSlamOnPanel, BlackFrameIsLostWithoutCorruptingTheMap) {
   EXPECT_TRUE(tracked_again);
 }
 
+TEST_F(MonoSlamOnPanel, TexturelessWallWhileTrackingIsLostWithoutCorruptingTheMap) {
+  // The camera sees a blank wall for three frames after the map is built, then the panel again.
+  Render(78);
+  for (int i = 0; i < 70; ++i) Process(panel_.frames[i]);
+  ASSERT_TRUE(slam_.initialised());
+  const std::shared_ptr<const MapSnapshot> before = slam_.Snapshot();
+  const int lost_before = slam_.lost_frames();
+  for (int i = 70; i < 73; ++i) {
+    auto blank = Process(Frame(i, cv::Mat(480, 640, CV_8UC3, cv::Scalar(128, 128, 128))));
+    ASSERT_TRUE(blank);
+    EXPECT_EQ(blank->quality, TrackingQuality::kLost);
+    EXPECT_FALSE(blank->tracked);
+    EXPECT_EQ(blank->stats.keypoints, 0);
+    EXPECT_EQ(slam_.Snapshot(), before);  // No keyframe, no point moved or removed.
+  }
+  EXPECT_EQ(slam_.lost_frames(), lost_before + 3);
+  // The panel again, where the camera has moved on meanwhile: relocalised or tracked again.
+  std::shared_ptr<const MonoSlamResult> back;
+  for (int i = 73; i < 78 && !(back && back->tracked); ++i) back = Process(panel_.frames[i]);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(back->tracked) << back->stats.status;
+  EXPECT_GE(slam_.Snapshot()->keyframes.size(), before->keyframes.size());
+}
+
 TEST_F(MonoSlamOnPanel, SuddenJumpIsLostThenRelocalisedAtTheRightPlace) {
   Render(110);
   Eigen::Vector3d centre_at_20 = Eigen::Vector3d::Zero();
@@ -117,9 +141,11 @@ TEST_F(MonoSlamOnPanel, SuddenJumpIsLostThenRelocalisedAtTheRightPlace) {
   // Jump back to the start of the approach (about 0.5 m further from the wall).
   MonoFrame jumped = panel_.frames[20];
   jumped.stamp.sequence_id = 110;
+  const std::shared_ptr<const MapSnapshot> before = slam_.Snapshot();
   auto r = Process(jumped);
   ASSERT_TRUE(r);
   EXPECT_GE(slam_.relocalisations() + slam_.lost_frames(), 1);
+  EXPECT_EQ(slam_.Snapshot(), before);  // The jump itself makes no keyframe and moves no point.
   if (!r->tracked) r = Process(jumped);
   ASSERT_TRUE(r->tracked) << r->stats.status;
   const double span = (centre_at_109 - centre_at_20).norm();
@@ -164,7 +190,7 @@ TEST(MonoSlam, OptionsDescribeEveryStage) {
     scale += s.key.rfind("mono.scale.", 0) == 0;
     init += s.key.rfind("mono.init.", 0) == 0;
   }
-  EXPECT_EQ(scale, 5);
+  EXPECT_EQ(scale, 6);
   EXPECT_GE(init, 9);
   std::string error;
   EXPECT_TRUE(MonoSlamOptions{}.IsValid(&error)) << error;

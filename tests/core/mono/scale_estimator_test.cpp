@@ -34,6 +34,9 @@ TEST(ScaleEstimator, RecoversTheScaleExactlyFromNoiselessPairs) {
     StatusOr<double> ml = MaxLikelihoodScale(pairs, 0.01, 0.002);
     ASSERT_TRUE(ml.ok()) << ml.status().message();
     EXPECT_NEAR(*ml, lambda, 1e-9 * lambda);
+    StatusOr<double> weighted = MaxLikelihoodScale(pairs, 0.01, 0.002, 1.0);  // By length.
+    ASSERT_TRUE(weighted.ok());
+    EXPECT_NEAR(*weighted, lambda, 1e-9 * lambda);
     StatusOr<double> single = SingleRatioScale(pairs[0]);
     ASSERT_TRUE(single.ok());
     EXPECT_NEAR(*single, lambda, 1e-9 * lambda);
@@ -86,7 +89,8 @@ TEST(ScaleEstimator, DoesNotDependOnTheOrderOfPairs) {
   for (const ScalePair& p : pairs) backward.Add(p);
   ASSERT_TRUE(forward.has_estimate());
   EXPECT_NEAR(forward.max_likelihood(), backward.max_likelihood(), 1e-12);
-  EXPECT_NEAR(*MaxLikelihoodScale(pairs, 0.02, 0.01), forward.max_likelihood(), 1e-12);
+  EXPECT_NEAR(*MaxLikelihoodScale(pairs, 0.02, 0.01, options.length_exponent),
+              forward.max_likelihood(), 1e-12);
 }
 
 TEST(ScaleEstimator, DropsShortPairsAndOutliersAndKeepsItsHistory) {
@@ -120,7 +124,11 @@ TEST(ScaleEstimator, OptionsAreChecked) {
   o.sigma_map = 0;
   EXPECT_FALSE(o.IsValid(&error));
   EXPECT_NE(error.find("mono.scale.sigma_map"), std::string::npos);
-  EXPECT_EQ(ScaleEstimatorOptions::Describe().Specs().size(), 5u);
+  o = {};
+  o.length_exponent = -1;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("mono.scale.length_exponent"), std::string::npos);
+  EXPECT_EQ(ScaleEstimatorOptions::Describe().Specs().size(), 6u);
 }
 
 }  // namespace
