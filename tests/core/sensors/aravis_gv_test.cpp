@@ -13,7 +13,7 @@
 #include "core/sensors/aravis_stereo_source.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/core/sensors/child_process.h"
-#include "tests/core/sensors/network_namespace.h"
+#include "tests/core/sensors/fake_gige_camera.h"
 
 namespace sightline {
 namespace {
@@ -24,46 +24,12 @@ using Clock = std::chrono::steady_clock;
 constexpr char kLeftAddress[] = "127.0.0.1";
 constexpr char kRightAddress[] = "127.0.0.2";  // An alias of lo inside the namespace.
 
-Status& NamespaceStatus() {
-  static Status status = FailedPrecondition("the test environment did not run");
-  return status;
-}
+::testing::Environment* const kEnvironment = ::testing::AddGlobalTestEnvironment(
+    ::sightline::testing::NewPrivateNetworkEnvironment({kRightAddress}));
 
-// Enters the namespace while the process is still single-threaded.
-class PrivateNetworkEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override {
-    NamespaceStatus() = ::sightline::testing::EnterPrivateNetworkNamespace({kRightAddress});
-  }
-};
-::testing::Environment* const kEnvironment =
-    ::testing::AddGlobalTestEnvironment(new PrivateNetworkEnvironment);
-
-#define SIGHTLINE_REQUIRE_PRIVATE_NETWORK()                                               \
-  if (!NamespaceStatus().ok()) {                                                          \
-    GTEST_SKIP() << "needs a private network namespace: " << NamespaceStatus().message(); \
-  }
-
-// Aravis names a fake GigE camera after its serial.
-std::string DeviceId(const std::string& serial) { return "Aravis-Fake-" + serial; }
-
-std::unique_ptr<ChildProcess> StartCamera(const std::string& address, const std::string& serial) {
-  StatusOr<std::unique_ptr<ChildProcess>> camera =
-      ChildProcess::Start({SIGHTLINE_ARV_FAKE_GV_CAMERA, "-i", address, "-s", serial});
-  EXPECT_TRUE(camera.ok()) << camera.status().ToString();
-  return camera.ok() ? std::move(*camera) : nullptr;
-}
-
-// Waits (bounded) until discovery finds the camera.
-bool WaitDiscoverable(const std::string& serial, std::chrono::seconds limit) {
-  const Clock::time_point deadline = Clock::now() + limit;
-  while (Clock::now() < deadline) {
-    for (const DeviceInfo& d : AravisSource::Enumerate(false)) {
-      if (d.uri == "aravis://" + DeviceId(serial)) return true;
-    }
-  }
-  return false;
-}
+using ::sightline::testing::FakeCameraDeviceId;
+using ::sightline::testing::StartFakeCamera;
+using ::sightline::testing::WaitFakeCameraDiscoverable;
 
 // Grabs until `accept(status)` holds or `limit` passes; returns the last status.
 template <typename Accept>
@@ -88,11 +54,11 @@ AravisOptions GigEOptions() {
 
 TEST(AravisGigE, StreamsMonoFramesThroughTheNetworkPath) {
   SIGHTLINE_REQUIRE_PRIVATE_NETWORK();
-  std::unique_ptr<ChildProcess> camera = StartCamera(kLeftAddress, "GV01");
+  std::unique_ptr<ChildProcess> camera = StartFakeCamera(kLeftAddress, "GV01");
   ASSERT_TRUE(camera);
-  ASSERT_TRUE(WaitDiscoverable("GV01", std::chrono::seconds(15)));
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GV01", std::chrono::seconds(15)));
 
-  AravisSource source(DeviceId("GV01"), GigEOptions());
+  AravisSource source(FakeCameraDeviceId("GV01"), GigEOptions());
   const Status opened = source.Open();
   ASSERT_TRUE(opened.ok()) << opened.ToString();
   const AravisCameraSettings settings = source.settings();
@@ -131,12 +97,12 @@ TEST(AravisGigE, StreamsMonoFramesThroughTheNetworkPath) {
 
 TEST(AravisGigE, EnumeratesCamerasWithSerialAndAddress) {
   SIGHTLINE_REQUIRE_PRIVATE_NETWORK();
-  std::unique_ptr<ChildProcess> camera = StartCamera(kLeftAddress, "GV07");
+  std::unique_ptr<ChildProcess> camera = StartFakeCamera(kLeftAddress, "GV07");
   ASSERT_TRUE(camera);
-  ASSERT_TRUE(WaitDiscoverable("GV07", std::chrono::seconds(15)));
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GV07", std::chrono::seconds(15)));
   bool found = false;
   for (const DeviceInfo& d : FindDriver(BuiltinDrivers(), "aravis")->enumerate(OptionSet())) {
-    if (d.uri != "aravis://" + DeviceId("GV07")) continue;
+    if (d.uri != "aravis://" + FakeCameraDeviceId("GV07")) continue;
     found = true;
     EXPECT_EQ(d.driver, "aravis");
     EXPECT_EQ(d.serial, "GV07");
@@ -148,11 +114,11 @@ TEST(AravisGigE, EnumeratesCamerasWithSerialAndAddress) {
 
 TEST(AravisGigE, StereoPairOfTwoCamerasIsPairedByTimestamp) {
   SIGHTLINE_REQUIRE_PRIVATE_NETWORK();
-  std::unique_ptr<ChildProcess> left = StartCamera(kLeftAddress, "GVL");
-  std::unique_ptr<ChildProcess> right = StartCamera(kRightAddress, "GVR");
+  std::unique_ptr<ChildProcess> left = StartFakeCamera(kLeftAddress, "GVL");
+  std::unique_ptr<ChildProcess> right = StartFakeCamera(kRightAddress, "GVR");
   ASSERT_TRUE(left && right);
-  ASSERT_TRUE(WaitDiscoverable("GVL", std::chrono::seconds(15)));
-  ASSERT_TRUE(WaitDiscoverable("GVR", std::chrono::seconds(15)));
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GVL", std::chrono::seconds(15)));
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GVR", std::chrono::seconds(15)));
 
   for (const char* trigger : {"free", "software"}) {
     SCOPED_TRACE(trigger);
@@ -165,7 +131,7 @@ TEST(AravisGigE, StereoPairOfTwoCamerasIsPairedByTimestamp) {
     // tolerance under half the 100 ms period is unambiguous.
     AravisStereoOptions stereo;
     stereo.pair_tolerance_ms = std::string(trigger) == "free" ? 15 : 45;
-    AravisStereoSource rig(DeviceId("GVL"), DeviceId("GVR"), options, stereo);
+    AravisStereoSource rig(FakeCameraDeviceId("GVL"), FakeCameraDeviceId("GVR"), options, stereo);
     const Status opened = rig.Open();
     ASSERT_TRUE(opened.ok()) << opened.ToString();
     EXPECT_EQ(rig.info().kind, SourceKind::kStereo);
@@ -195,17 +161,17 @@ TEST(AravisGigE, StereoPairOfTwoCamerasIsPairedByTimestamp) {
   }
 
   StatusOr<std::unique_ptr<Source>> by_uri =
-      OpenSource("aravis://" + DeviceId("GVL") + "," + DeviceId("GVR"));
+      OpenSource("aravis://" + FakeCameraDeviceId("GVL") + "," + FakeCameraDeviceId("GVR"));
   ASSERT_TRUE(by_uri.ok()) << by_uri.status().ToString();
   EXPECT_EQ((*by_uri)->info().format, "Aravis stereo pair");
 }
 
 TEST(AravisGigE, CameraKilledMidStreamIsReportedAndReconnects) {
   SIGHTLINE_REQUIRE_PRIVATE_NETWORK();
-  std::unique_ptr<ChildProcess> camera = StartCamera(kLeftAddress, "GV02");
+  std::unique_ptr<ChildProcess> camera = StartFakeCamera(kLeftAddress, "GV02");
   ASSERT_TRUE(camera);
-  ASSERT_TRUE(WaitDiscoverable("GV02", std::chrono::seconds(15)));
-  AravisSource source(DeviceId("GV02"), GigEOptions());
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GV02", std::chrono::seconds(15)));
+  AravisSource source(FakeCameraDeviceId("GV02"), GigEOptions());
   ASSERT_TRUE(source.Open().ok());
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(source.Grab().ok());
   const int64_t sequence_before = std::get<MonoFrame>(*source.Retrieve()).stamp.sequence_id;
@@ -222,7 +188,7 @@ TEST(AravisGigE, CameraKilledMidStreamIsReportedAndReconnects) {
   EXPECT_EQ(source.stats().state, SensorState::kDisconnected);
   EXPECT_GE(source.stats().disconnects, 1u);
 
-  camera = StartCamera(kLeftAddress, "GV02");
+  camera = StartFakeCamera(kLeftAddress, "GV02");
   ASSERT_TRUE(camera);
   const Status back =
       GrabUntil(&source, std::chrono::seconds(60), [](const Status& s) { return s.ok(); });
@@ -241,12 +207,13 @@ TEST(AravisGigE, CameraKilledMidStreamIsReportedAndReconnects) {
 
 TEST(AravisGigE, StereoNamesTheLostCameraAndReconnects) {
   SIGHTLINE_REQUIRE_PRIVATE_NETWORK();
-  std::unique_ptr<ChildProcess> left = StartCamera(kLeftAddress, "GVA");
-  std::unique_ptr<ChildProcess> right = StartCamera(kRightAddress, "GVB");
+  std::unique_ptr<ChildProcess> left = StartFakeCamera(kLeftAddress, "GVA");
+  std::unique_ptr<ChildProcess> right = StartFakeCamera(kRightAddress, "GVB");
   ASSERT_TRUE(left && right);
-  ASSERT_TRUE(WaitDiscoverable("GVA", std::chrono::seconds(15)));
-  ASSERT_TRUE(WaitDiscoverable("GVB", std::chrono::seconds(15)));
-  AravisStereoSource rig(DeviceId("GVA"), DeviceId("GVB"), GigEOptions(), AravisStereoOptions());
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GVA", std::chrono::seconds(15)));
+  ASSERT_TRUE(WaitFakeCameraDiscoverable("GVB", std::chrono::seconds(15)));
+  AravisStereoSource rig(FakeCameraDeviceId("GVA"), FakeCameraDeviceId("GVB"), GigEOptions(),
+                         AravisStereoOptions());
   ASSERT_TRUE(rig.Open().ok());
   for (int i = 0; i < 2; ++i) ASSERT_TRUE(rig.Grab().ok());
 
@@ -258,7 +225,7 @@ TEST(AravisGigE, StereoNamesTheLostCameraAndReconnects) {
   EXPECT_NE(lost.message().find("right camera 'Aravis-Fake-GVB'"), std::string::npos)
       << lost.message();
 
-  right = StartCamera(kRightAddress, "GVB");
+  right = StartFakeCamera(kRightAddress, "GVB");
   ASSERT_TRUE(right);
   const Status back =
       GrabUntil(&rig, std::chrono::seconds(60), [](const Status& s) { return s.ok(); });

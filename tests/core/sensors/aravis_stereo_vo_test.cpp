@@ -17,7 +17,7 @@
 #include "core/sensors/aravis_source.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/core/sensors/child_process.h"
-#include "tests/core/sensors/network_namespace.h"
+#include "tests/core/sensors/fake_gige_camera.h"
 
 namespace sightline {
 namespace {
@@ -29,44 +29,12 @@ constexpr char kLeftAddress[] = "127.0.0.1";
 constexpr char kRightAddress[] = "127.0.0.2";  // An alias of lo inside the namespace.
 constexpr int kFrames = 20;
 
-Status& NamespaceStatus() {
-  static Status status = FailedPrecondition("the test environment did not run");
-  return status;
-}
+::testing::Environment* const kEnvironment = ::testing::AddGlobalTestEnvironment(
+    ::sightline::testing::NewPrivateNetworkEnvironment({kRightAddress}));
 
-// Enters the namespace while the process is still single-threaded.
-class PrivateNetworkEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override {
-    NamespaceStatus() = ::sightline::testing::EnterPrivateNetworkNamespace({kRightAddress});
-  }
-};
-::testing::Environment* const kEnvironment =
-    ::testing::AddGlobalTestEnvironment(new PrivateNetworkEnvironment);
-
-#define SIGHTLINE_REQUIRE_PRIVATE_NETWORK()                                               \
-  if (!NamespaceStatus().ok()) {                                                          \
-    GTEST_SKIP() << "needs a private network namespace: " << NamespaceStatus().message(); \
-  }
-
-std::string DeviceId(const std::string& serial) { return "Aravis-Fake-" + serial; }
-
-std::unique_ptr<ChildProcess> StartCamera(const std::string& address, const std::string& serial) {
-  StatusOr<std::unique_ptr<ChildProcess>> camera =
-      ChildProcess::Start({SIGHTLINE_ARV_FAKE_GV_CAMERA, "-i", address, "-s", serial});
-  EXPECT_TRUE(camera.ok()) << camera.status().ToString();
-  return camera.ok() ? std::move(*camera) : nullptr;
-}
-
-bool WaitDiscoverable(const std::string& serial, std::chrono::seconds limit) {
-  const Clock::time_point deadline = Clock::now() + limit;
-  while (Clock::now() < deadline) {
-    for (const DeviceInfo& d : AravisSource::Enumerate(false)) {
-      if (d.uri == "aravis://" + DeviceId(serial)) return true;
-    }
-  }
-  return false;
-}
+using ::sightline::testing::FakeCameraDeviceId;
+using ::sightline::testing::StartFakeCamera;
+using ::sightline::testing::WaitFakeCameraDiscoverable;
 
 // An OpenCV stereo YAML (the layout `sightline-cli calibrate stereo` writes) for two ideal
 // width x height cameras 0.12 m apart.
@@ -104,15 +72,15 @@ OptionSet SensorOptions() {
 class AravisStereoVo : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!NamespaceStatus().ok()) return;
-    left_ = StartCamera(kLeftAddress, "VOL");
-    right_ = StartCamera(kRightAddress, "VOR");
+    if (!::sightline::testing::PrivateNetworkStatus().ok()) return;
+    left_ = StartFakeCamera(kLeftAddress, "VOL");
+    right_ = StartFakeCamera(kRightAddress, "VOR");
     ASSERT_TRUE(left_ && right_);
-    ASSERT_TRUE(WaitDiscoverable("VOL", std::chrono::seconds(15)));
-    ASSERT_TRUE(WaitDiscoverable("VOR", std::chrono::seconds(15)));
+    ASSERT_TRUE(WaitFakeCameraDiscoverable("VOL", std::chrono::seconds(15)));
+    ASSERT_TRUE(WaitFakeCameraDiscoverable("VOR", std::chrono::seconds(15)));
   }
 
-  const std::string pair_ = "aravis://" + DeviceId("VOL") + "," + DeviceId("VOR");
+  const std::string pair_ = "aravis://" + FakeCameraDeviceId("VOL") + "," + FakeCameraDeviceId("VOR");
   std::unique_ptr<ChildProcess> left_, right_;
 };
 
