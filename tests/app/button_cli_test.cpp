@@ -23,23 +23,6 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-std::string Read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The number after "key": inside the JSON object that follows "section": (flat search).
-std::optional<double> JsonNumber(const std::string& json, const std::string& section, const std::string& key) {
-  const size_t start = json.find("\"" + section + "\":");
-  if (start == std::string::npos) return std::nullopt;
-  const size_t end = json.find('}', json.find('{', start));
-  const size_t at = json.find("\"" + key + "\":", start);
-  if (at == std::string::npos || at > end) return std::nullopt;
-  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
-
 class ButtonCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -75,22 +58,22 @@ TEST_F(ButtonCli, SimulatedApproachIsWithinThreeMillimetresWithTheMlScale) {
       testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   std::printf("%s", r.out.c_str());
-  const std::string metrics = Read(out + "/metrics.json");
-  const auto final_mm = JsonNumber(metrics, "accuracy", "final_error_mm");
-  const auto single_mm = JsonNumber(metrics, "accuracy", "final_error_mm_single_ratio");
-  const auto track_px = JsonNumber(metrics, "accuracy", "track_error_px_median");
-  const auto track_max_px = JsonNumber(metrics, "accuracy", "track_error_px_max");
-  const auto targets = JsonNumber(metrics, "accuracy", "targets_sent");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  const auto final_mm = testing::JsonNumber(metrics, "accuracy", "final_error_mm");
+  const auto single_mm = testing::JsonNumber(metrics, "accuracy", "final_error_mm_single_ratio");
+  const auto track_px = testing::JsonNumber(metrics, "accuracy", "track_error_px_median");
+  const auto track_max_px = testing::JsonNumber(metrics, "accuracy", "track_error_px_max");
+  const auto targets = testing::JsonNumber(metrics, "accuracy", "targets_sent");
   ASSERT_TRUE(final_mm && single_mm && track_px && track_max_px && targets) << metrics;
   EXPECT_LT(*final_mm, 3.0);
   EXPECT_GE(*single_mm, 0.0);  // Reported beside it.
   EXPECT_LT(*track_px, 3.0);
   EXPECT_LT(*track_max_px, 3.0);  // Within 3 px over the whole approach.
   EXPECT_GT(*targets, 0);
-  EXPECT_TRUE(JsonNumber(metrics, "tracking", "median").has_value()) << metrics;
-  EXPECT_TRUE(JsonNumber(metrics, "counts", "tap_to_first_target_frames").has_value()) << metrics;
-  EXPECT_EQ(JsonNumber(metrics, "counts", "true_button").value_or(-1), 5);
-  const std::string csv = Read(out + "/button.csv");
+  EXPECT_TRUE(testing::JsonNumber(metrics, "tracking", "median").has_value()) << metrics;
+  EXPECT_TRUE(testing::JsonNumber(metrics, "counts", "tap_to_first_target_frames").has_value()) << metrics;
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "true_button").value_or(-1), 5);
+  const std::string csv = testing::ReadTextFile(out + "/button.csv");
   EXPECT_EQ(csv.rfind("frame,time_s,state,gate,u_px,v_px", 0), 0u) << csv.substr(0, 200);
   EXPECT_NE(csv.find(",target_sent,send,"), std::string::npos);
 }
@@ -137,9 +120,9 @@ TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
   EXPECT_NE(listen.out.find("\"type\":\"target\""), std::string::npos) << listen.out;
   EXPECT_NE(listen.out.find("\"frame_id\":\"arm_base\""), std::string::npos) << listen.out;
   EXPECT_TRUE(target);
-  const std::string metrics = Read(out + "/metrics.json");
-  EXPECT_GT(JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0);
-  EXPECT_EQ(JsonNumber(metrics, "counts", "arm_clients_at_start").value_or(0), 2);
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_GT(testing::JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0);
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "arm_clients_at_start").value_or(0), 2);
 }
 
 TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {

@@ -22,25 +22,6 @@ bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The number after "key": inside the JSON object that follows "section": (a flat search, enough
-// for metrics.json's fixed shape).
-std::optional<double> JsonNumber(const std::string& json, const std::string& section,
-                                 const std::string& key) {
-  const size_t start = json.find("\"" + section + "\":");
-  if (start == std::string::npos) return std::nullopt;
-  const size_t end = json.find('}', json.find('{', start));
-  const size_t at = json.find("\"" + key + "\":", start);
-  if (at == std::string::npos || at > end) return std::nullopt;
-  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
-
 // A 100-frame corridor drive (20 m at 1 m/s, 5 Hz, the first left turn included) at 320x240
 // with wheel odometry drifting 2 deg/m, simulated once for all tests.
 class MappingCli : public ::testing::Test {
@@ -72,17 +53,17 @@ TEST_F(MappingCli, RunWritesTrajectoryLinesMapAndMetrics) {
                            "floor.yaml", "mapping_log.txt", "metrics.json"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
   }
-  const std::string metrics = ReadFile(out + "/metrics.json");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   EXPECT_TRUE(Contains(metrics, "\"pipeline\": \"mapping\"")) << metrics;
   EXPECT_TRUE(Contains(metrics, "\"frames\": 100")) << metrics;
   for (const char* stage : {"occupancy", "scan", "lines", "rotation", "stitch", "total"}) {
-    const auto median = JsonNumber(metrics, stage, "median");
-    const auto p95 = JsonNumber(metrics, stage, "p95");
+    const auto median = testing::JsonNumber(metrics, stage, "median");
+    const auto p95 = testing::JsonNumber(metrics, stage, "p95");
     ASSERT_TRUE(median && p95) << stage;
     EXPECT_GE(*median, 0) << stage;
     EXPECT_GE(*p95, *median) << stage;
   }
-  const auto value = [&](const char* key) { return JsonNumber(metrics, "accuracy", key); };
+  const auto value = [&](const char* key) { return testing::JsonNumber(metrics, "accuracy", key); };
   ASSERT_TRUE(value("heading_error_deg_mean") && value("heading_error_deg_max") &&
               value("wall_angle_error_deg_median") && value("ate_rmse_m") && value("map_iou"))
       << metrics;
@@ -93,7 +74,7 @@ TEST_F(MappingCli, RunWritesTrajectoryLinesMapAndMetrics) {
   EXPECT_LT(*value("ate_rmse_m"), 0.3);  // The simulator's odometry is 1 % long.
   EXPECT_GT(*value("map_iou"), 0.5);
   EXPECT_LE(*value("map_iou"), 1.0);
-  EXPECT_EQ(JsonNumber(metrics, "counts", "resets").value_or(-1), 0);
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "resets").value_or(-1), 0);
 
   // lines.csv: header, then frame, time, line id, end points, angle, inliers, ...
   std::ifstream lines(out + "/lines.csv");
@@ -103,7 +84,7 @@ TEST_F(MappingCli, RunWritesTrajectoryLinesMapAndMetrics) {
   EXPECT_TRUE(Contains(header, "frame,time_s,line,x1_m,y1_m,x2_m,y2_m,angle_deg,inliers")) << header;
   EXPECT_EQ(std::count(first.begin(), first.end(), ','), 10) << first;
   // map.yaml in the ROS map_server convention.
-  const std::string yaml = ReadFile(out + "/map.yaml");
+  const std::string yaml = testing::ReadTextFile(out + "/map.yaml");
   EXPECT_TRUE(Contains(yaml, "image: map.pgm")) << yaml;
   EXPECT_TRUE(Contains(yaml, "resolution: 0.05")) << yaml;
   // trajectory.txt: one TUM pose per frame.
@@ -118,8 +99,8 @@ TEST_F(MappingCli, WithoutManhattanCorrectionTheHeadingDrifts) {
   const auto r = Cli("run mapping " + *dir_ + " --out " + out +
                      " --set mapping.rotation.enabled=false --set mapping.run.max_frames=60");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const std::string metrics = ReadFile(out + "/metrics.json");
-  const auto max = JsonNumber(metrics, "accuracy", "heading_error_deg_max");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  const auto max = testing::JsonNumber(metrics, "accuracy", "heading_error_deg_max");
   ASSERT_TRUE(max);
   EXPECT_GT(*max, 10.0);  // 12 m at 2 deg/m.
 }
@@ -129,13 +110,13 @@ TEST_F(MappingCli, FloorCalibrationFileIsWrittenAndUsed) {
   const auto floor = Cli("floor " + *dir_ + " --out " + out + "/floor.yaml --frames 3");
   ASSERT_EQ(floor.exit_code, 0) << floor.out;
   EXPECT_TRUE(Contains(floor.out, "camera 0.80")) << floor.out;  // The robot's Kinect at 0.8 m.
-  const std::string yaml = ReadFile(out + "/floor.yaml");
+  const std::string yaml = testing::ReadTextFile(out + "/floor.yaml");
   EXPECT_TRUE(Contains(yaml, "camera_height_m: 0.80")) << yaml;
   EXPECT_TRUE(Contains(yaml, "pitch_down_deg: 10.0")) << yaml;  // Tilted 10 deg down.
   const auto run = Cli("run mapping " + *dir_ + " --out " + out + "/run --set mapping.run.max_frames=10"
                        " --set mapping.run.floor_file=" + out + "/floor.yaml");
   ASSERT_EQ(run.exit_code, 0) << run.out;
-  EXPECT_TRUE(Contains(ReadFile(out + "/run/mapping_log.txt"), "floor: " + out + "/floor.yaml"));
+  EXPECT_TRUE(Contains(testing::ReadTextFile(out + "/run/mapping_log.txt"), "floor: " + out + "/floor.yaml"));
 }
 
 TEST(MappingCliErrors, ClearMessages) {

@@ -18,24 +18,6 @@ const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
 testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The number after "key": inside the JSON object that follows "section": (flat search).
-std::optional<double> JsonNumber(const std::string& json, const std::string& section,
-                                 const std::string& key) {
-  const size_t start = json.find("\"" + section + "\":");
-  if (start == std::string::npos) return std::nullopt;
-  const size_t end = json.find('}', json.find('{', start));
-  const size_t at = json.find("\"" + key + "\":", start);
-  if (at == std::string::npos || at > end) return std::nullopt;
-  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
-
 TEST(MobilityCli, Office1WritesScoredCloudSegmentsAndTiming) {
   SIGHTLINE_REQUIRE_DATA(path, "pcl_clouds/office1.pcd");
   const std::string out = testing::TempDir("mobility_office1");
@@ -45,18 +27,18 @@ TEST(MobilityCli, Office1WritesScoredCloudSegmentsAndTiming) {
                            "segments.csv", "metrics.json", "mobility_log.txt"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
   }
-  const std::string csv = ReadFile(out + "/segments.csv");
+  const std::string csv = testing::ReadTextFile(out + "/segments.csv");
   EXPECT_EQ(csv.rfind("frame,segment,is_ground,points,slope_deg,roughness,area_m2,height_m,"
                       "score_rule,score_gpr\n", 0), 0u);
   EXPECT_NE(csv.find("\n0,0,1,"), std::string::npos) << "the ground is row 0";
-  const std::string metrics = ReadFile(out + "/metrics.json");
-  const auto height = JsonNumber(metrics, "accuracy", "ground_height_m");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  const auto height = testing::JsonNumber(metrics, "accuracy", "ground_height_m");
   ASSERT_TRUE(height.has_value());
   EXPECT_NEAR(*height, 1.32, 0.05);
   for (const char* stage : {"downsample", "range_cut", "denoise", "normals", "rgbn", "ground",
                             "segmentation", "surface", "mobility", "maps"}) {
-    EXPECT_TRUE(JsonNumber(metrics, stage, "median").has_value()) << stage;
-    EXPECT_TRUE(JsonNumber(metrics, "counts", std::string("points_") + stage).has_value()) << stage;
+    EXPECT_TRUE(testing::JsonNumber(metrics, stage, "median").has_value()) << stage;
+    EXPECT_TRUE(testing::JsonNumber(metrics, "counts", std::string("points_") + stage).has_value()) << stage;
   }
 }
 
@@ -67,10 +49,10 @@ TEST(MobilityCli, TerrainReportsSlopeAndRoughnessAccuracy) {
   const auto r = Cli("run mobility " + dir + " --out " + out + " --set mobility.run.cloud_format=ply");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(std::filesystem::exists(out + "/000002_cloud.ply"));
-  const std::string metrics = ReadFile(out + "/metrics.json");
-  const auto slope = JsonNumber(metrics, "accuracy", "slope_error_deg_max");
-  const auto rough = JsonNumber(metrics, "accuracy", "flat_roughness");
-  const auto height = JsonNumber(metrics, "accuracy", "ground_height_m");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  const auto slope = testing::JsonNumber(metrics, "accuracy", "slope_error_deg_max");
+  const auto rough = testing::JsonNumber(metrics, "accuracy", "flat_roughness");
+  const auto height = testing::JsonNumber(metrics, "accuracy", "ground_height_m");
   ASSERT_TRUE(slope && rough && height) << metrics;
   EXPECT_LT(*slope, 1.0);
   EXPECT_NEAR(*rough, 1.0, 0.02);
@@ -82,9 +64,9 @@ TEST(MobilityCli, OniRecordingWithoutVisibleFloorSaysSoPerFrame) {
   const std::string out = testing::TempDir("mobility_oni");
   const auto r = Cli("run mobility " + path + " --out " + out + " --set mobility.run.cloud_format=none");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const std::string metrics = ReadFile(out + "/metrics.json");
-  EXPECT_EQ(JsonNumber(metrics, "counts", "frames_without_map").value_or(-1), 12);
-  EXPECT_NE(ReadFile(out + "/mobility_log.txt").find("no ground plane"), std::string::npos);
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "frames_without_map").value_or(-1), 12);
+  EXPECT_NE(testing::ReadTextFile(out + "/mobility_log.txt").find("no ground plane"), std::string::npos);
 }
 
 TEST(MobilityCli, BadInputSaysWhy) {

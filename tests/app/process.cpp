@@ -4,6 +4,9 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 namespace sightline::testing {
 
@@ -17,6 +20,23 @@ ProcessResult RunProcess(const std::string& command) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+std::string ReadTextFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::optional<double> JsonNumber(const std::string& json, const std::string& section,
+                                 const std::string& key) {
+  const size_t start = json.find("\"" + section + "\":");
+  if (start == std::string::npos) return std::nullopt;
+  const size_t end = json.find('}', json.find('{', start));
+  const size_t at = json.find("\"" + key + "\":", start);
+  if (at == std::string::npos || at > end) return std::nullopt;
+  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
 }
 
 }  // namespace sightline::testing

@@ -18,28 +18,21 @@ testing::ProcessResult Cli(const std::string& args) {
   return testing::RunProcess(kCli + " " + args);
 }
 
-std::string Read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
   SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
   const std::string out = testing::TempDir("stereo_vo_cli_run");
   const testing::ProcessResult r = Cli("run stereo-vo " + kitti + " --out " + out + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const std::string metrics = Read(out + "/metrics.json");
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   for (const char* key : {"\"length_error_pct\"", "\"endpoint_error_pct\"", "\"ate_rmse_m\"",
                           "\"rpe_trans_pct\"", "\"rpe_rot_deg_per_m\"", "\"kitti_t_err_pct\"",
                           "\"kitti_r_err_deg_per_100m\"", "\"tracking\"", "\"matching\"",
                           "\"ransac\"", "\"refine\""}) {
     EXPECT_NE(metrics.find(key), std::string::npos) << key;
   }
-  const std::string frames = Read(out + "/frames.csv");
+  const std::string frames = testing::ReadTextFile(out + "/frames.csv");
   EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 52);  // Header + 51 frames.
-  std::istringstream trajectory(Read(out + "/trajectory.txt"));
+  std::istringstream trajectory(testing::ReadTextFile(out + "/trajectory.txt"));
   std::string line;
   while (std::getline(trajectory, line) && (line.empty() || line[0] == '#')) {
   }
@@ -55,13 +48,13 @@ TEST(StereoVoCli, SubsampleAndKittiFormatFlags) {
   const testing::ProcessResult r =
       Cli("run stereo-vo " + kitti + " --out " + out + " --subsample 5 --format kitti --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const std::string trajectory = Read(out + "/trajectory.txt");
+  const std::string trajectory = testing::ReadTextFile(out + "/trajectory.txt");
   EXPECT_EQ(std::count(trajectory.begin(), trajectory.end(), '\n'), 11);  // Frames 0, 5, ..., 50.
   std::istringstream values(trajectory.substr(0, trajectory.find('\n')));
   int fields = 0;
   for (double v; values >> v;) ++fields;
   EXPECT_EQ(fields, 12);  // KITTI: 3x4 matrix.
-  EXPECT_NE(Read(out + "/metrics.json").find("\"stereo.subsample\": 5"), std::string::npos);
+  EXPECT_NE(testing::ReadTextFile(out + "/metrics.json").find("\"stereo.subsample\": 5"), std::string::npos);
 }
 
 TEST(StereoVoCli, SweepPrintsTheTableAndWritesAPlot) {
@@ -71,7 +64,7 @@ TEST(StereoVoCli, SweepPrintsTheTableAndWritesAPlot) {
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("factor"), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(out + "/sweep.png"));
-  const std::string csv = Read(out + "/sweep.csv");
+  const std::string csv = testing::ReadTextFile(out + "/sweep.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // Header + k = 1, 2, 3.
 }
 
