@@ -8,15 +8,10 @@
 #include <random>
 
 #include "tests/core/button/panel_sim_util.h"
+#include "tests/support/test_camera.h"
 
 namespace sightline {
 namespace {
-
-PinholeCamera Camera() {
-  PinholeCamera c;
-  c.width = 640, c.height = 480, c.fx = c.fy = 525, c.cx = 319.5, c.cy = 239.5;
-  return c;
-}
 
 // Points on the plane z = depth (camera frame = world frame) in a square of half side `half`.
 std::vector<Eigen::Vector3d> PlanePoints(int n, double depth, double half, double noise,
@@ -32,7 +27,7 @@ std::vector<Eigen::Vector3d> PlanePoints(int n, double depth, double half, doubl
 TEST(ButtonLocator, IntersectsTheRayWithAFrontoParallelPlane) {
   const auto points = PlanePoints(40, 0.5, 0.05, 0, 1);
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {330, 250};
   auto at = ButtonLocator().Locate(in);
@@ -51,7 +46,7 @@ TEST(ButtonLocator, ToleratesNoiseAndOutliers) {
   std::uniform_real_distribution<double> u(-0.05, 0.05), d(0.3, 1.0);
   for (int i = 0; i < 20; ++i) points.emplace_back(u(rng), u(rng), d(rng));  // 25 % outliers.
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {319.5, 239.5};
   in.scale_sigma_rel = 0.01;
@@ -73,7 +68,7 @@ TEST(ButtonLocator, AFewFacePointsMoveThePanelPlaneOntoTheButton) {
     points.emplace_back(xy.x(), xy.y(), 0.495);
   }
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {319.5, 239.5};
   in.button_radius_px = 525 * 0.012 / 0.495;  // A 12 mm button.
@@ -91,7 +86,7 @@ TEST(ButtonLocator, AFewFacePointsMoveThePanelPlaneOntoTheButton) {
 TEST(ButtonLocator, TooFewPointsIsNotFound) {
   const auto points = PlanePoints(2, 0.5, 0.01, 0, 4);
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {319.5, 239.5};
   auto at = ButtonLocator().Locate(in);
@@ -104,7 +99,7 @@ TEST(ButtonLocator, GuardsNearParallelRays) {
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < 30; ++i) points.emplace_back(0.001, 0.01 * (i % 5) - 0.02, 0.4 + 0.02 * (i / 5));
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {320.8, 239.5};
   auto at = ButtonLocator().Locate(in);
@@ -116,7 +111,7 @@ TEST(ButtonLocator, GuardsNearParallelRays) {
 TEST(ButtonLocator, FewPointsMakeAnUnsoundPlane) {
   const auto points = PlanePoints(4, 0.5, 0.02, 0, 5);
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   in.points_in_world = &points;
   in.button_px = {319.5, 239.5};
   auto at = ButtonLocator().Locate(in);
@@ -126,7 +121,7 @@ TEST(ButtonLocator, FewPointsMakeAnUnsoundPlane) {
 
 TEST(ButtonLocator, RejectsInvalidInput) {
   LocatorInput in;
-  in.camera = Camera();
+  in.camera = testing::VgaCamera();
   EXPECT_EQ(ButtonLocator().Locate(in).status().code(), StatusCode::kInvalidArgument);  // No points.
   ButtonLocatorOptions bad;
   bad.min_points = 2;

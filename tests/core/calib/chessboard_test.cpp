@@ -6,19 +6,10 @@
 
 #include "board_renderer.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_camera.h"
 
 namespace sightline {
 namespace {
-
-PinholeCamera Camera() {
-  PinholeCamera c;
-  c.width = 640;
-  c.height = 480;
-  c.fx = c.fy = 525;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
-}
 
 TEST(Chessboard, ParsesBoardSizes) {
   ChessboardOptions board;
@@ -56,7 +47,7 @@ TEST(Chessboard, FindsRenderedCornersWithSubPixelAccuracy) {
   const ChessboardOptions board;
   const Eigen::Isometry3d board_from_camera =
       ::sightline::testing::BoardFromCameraLookingAt(board, 0.5, 25, 40, 10);
-  PinholeCamera camera = Camera();
+  PinholeCamera camera = testing::VgaCamera();
   cv::Mat image =
       ::sightline::testing::RenderBoardView(camera, board_from_camera.inverse(), board, 2, 1);
   auto truth = ::sightline::testing::ProjectBoard(camera, board_from_camera.inverse(), board);

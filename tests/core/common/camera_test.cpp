@@ -1,22 +1,13 @@
 #include "core/common/camera.h"
+#include "tests/support/test_camera.h"
 
 #include <gtest/gtest.h>
 
 namespace sightline {
 namespace {
 
-PinholeCamera Kinect() {
-  PinholeCamera c;
-  c.width = 640;
-  c.height = 480;
-  c.fx = c.fy = 525;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
-}
-
 TEST(PinholeCamera, ProjectInvertsUnproject) {
-  const PinholeCamera c = Kinect();
+  const PinholeCamera c = testing::VgaCamera();
   const Eigen::Vector3d x = c.Unproject(100.25, 400.5, 2.5);
   const Eigen::Vector2d uv = c.Project(x);
   EXPECT_NEAR(uv.x(), 100.25, 1e-9);
@@ -25,13 +16,13 @@ TEST(PinholeCamera, ProjectInvertsUnproject) {
 }
 
 TEST(PinholeCamera, HalfResolutionHalvesFocalLength) {
-  const PinholeCamera half = Kinect().Scaled(320, 240);
+  const PinholeCamera half = testing::VgaCamera().Scaled(320, 240);
   EXPECT_DOUBLE_EQ(half.fx, 262.5);
   EXPECT_DOUBLE_EQ(half.cx, 159.5);
 }
 
 TEST(PinholeCamera, ValidateNamesTheBadField) {
-  PinholeCamera c = Kinect();
+  PinholeCamera c = testing::VgaCamera();
   c.fx = -1;
   Status s = c.Validate();
   EXPECT_FALSE(s.ok());
@@ -40,7 +31,7 @@ TEST(PinholeCamera, ValidateNamesTheBadField) {
 
 TEST(StereoRig, ZeroBaselineIsInvalid) {
   StereoRig rig;
-  rig.left = rig.right = Kinect();
+  rig.left = rig.right = testing::VgaCamera();
   EXPECT_FALSE(rig.Validate().ok());
   rig.right_from_left.translation() = Eigen::Vector3d(-0.54, 0, 0);
   EXPECT_TRUE(rig.Validate().ok());

@@ -8,19 +8,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "tests/core/mono/mono_test_util.h"
+#include "tests/support/test_camera.h"
 
 namespace sightline {
 namespace {
-
-PinholeCamera Camera640() {
-  PinholeCamera c;
-  c.width = 640;
-  c.height = 480;
-  c.fx = c.fy = 525;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
-}
 
 MonoFrame Frame(int64_t id, const cv::Mat& image) {
   MonoFrame f;
@@ -32,7 +23,7 @@ MonoFrame Frame(int64_t id, const cv::Mat& image) {
 
 TEST(MonoSlam, TexturelessWallNeverInitialisesAndSaysWhy) {
   MonoSlam slam;
-  ASSERT_TRUE(slam.Configure(Camera640()).ok());
+  ASSERT_TRUE(slam.Configure(testing::VgaCamera()).ok());
   for (int i = 0; i < 10; ++i) {
     auto r = slam.Process(Frame(i, cv::Mat(480, 640, CV_8UC3, cv::Scalar(128, 128, 128))));
     ASSERT_TRUE(r.ok());
@@ -168,7 +159,7 @@ TEST(MonoSlam, MisuseIsAnErrorNotACrash) {
   EXPECT_EQ(unconfigured.Process(Frame(0, cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)))).status().code(),
             StatusCode::kFailedPrecondition);
   MonoSlam slam;
-  ASSERT_TRUE(slam.Configure(Camera640()).ok());
+  ASSERT_TRUE(slam.Configure(testing::VgaCamera()).ok());
   auto wrong = slam.Process(Frame(0, cv::Mat(240, 320, CV_8UC1, cv::Scalar(0))));
   EXPECT_EQ(wrong.status().code(), StatusCode::kInvalidArgument);
   EXPECT_NE(wrong.status().message().find("320x240"), std::string::npos);
@@ -178,7 +169,7 @@ TEST(MonoSlam, MisuseIsAnErrorNotACrash) {
   MonoSlamOptions bad;
   bad.tracking.min_inliers = 2;
   MonoSlam invalid(bad);
-  Status s = invalid.Configure(Camera640());
+  Status s = invalid.Configure(testing::VgaCamera());
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message().find("mono.tracking"), std::string::npos);
 }

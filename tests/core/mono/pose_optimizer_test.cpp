@@ -1,4 +1,5 @@
 #include "core/mono/pose_optimizer.h"
+#include "tests/support/test_camera.h"
 
 #include <gtest/gtest.h>
 
@@ -7,18 +8,8 @@
 namespace sightline {
 namespace {
 
-PinholeCamera Camera() {
-  PinholeCamera c;
-  c.width = 640;
-  c.height = 480;
-  c.fx = c.fy = 525;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
-}
-
 TEST(PoseOptimizer, RecoversThePoseDespiteThirtyPercentOutliers) {
-  const PinholeCamera camera = Camera();
+  const PinholeCamera camera = testing::VgaCamera();
   Eigen::Isometry3d truth = Eigen::Isometry3d::Identity();
   truth.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d(0.3, 1, 0.2).normalized()).toRotationMatrix();
   truth.translation() = Eigen::Vector3d(0.05, -0.02, 0.1);
@@ -53,7 +44,7 @@ TEST(PoseOptimizer, RecoversThePoseDespiteThirtyPercentOutliers) {
 
 TEST(PoseOptimizer, TooFewObservationsLeaveThePoseAlone) {
   const Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
-  const PoseEstimate estimate = OptimizePose(Camera(), start, {PoseObservation{}}, 2.5, 4.0);
+  const PoseEstimate estimate = OptimizePose(testing::VgaCamera(), start, {PoseObservation{}}, 2.5, 4.0);
   EXPECT_EQ(estimate.inlier_count, 0);
   EXPECT_TRUE(estimate.camera_from_map.isApprox(start));
 }
