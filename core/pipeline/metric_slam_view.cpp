@@ -62,6 +62,26 @@ void MetricSlamView::Rescale(const MapSnapshot& map) {
   }
 }
 
+namespace {
+
+// Map points divided by `lambda` (map units per metre): the metric map.
+std::shared_ptr<const std::vector<Eigen::Vector3d>> MetricPoints(const MapSnapshot& map,
+                                                                 double lambda) {
+  auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
+  points->reserve(map.points.size());
+  for (const MapSnapshot::Point& p : map.points) points->push_back(p.position / lambda);
+  return points;
+}
+
+// The camera's metric pose, as the button picker takes it.
+Eigen::Isometry3d MetricCameraFromWorld(const Eigen::Isometry3d& map_from_camera, double lambda) {
+  Eigen::Isometry3d world_from_camera = map_from_camera;
+  world_from_camera.translation() /= lambda;
+  return world_from_camera.inverse();
+}
+
+}  // namespace
+
 SlamView MetricSlamView::MakeView(const PinholeCamera& camera, bool tracked,
                                   const Eigen::Isometry3d& map_from_camera, const MapSnapshot& map,
                                   double lambda) {
@@ -69,13 +89,8 @@ SlamView MetricSlamView::MakeView(const PinholeCamera& camera, bool tracked,
   view.camera = camera;
   view.tracking = tracked && lambda > 0;
   if (lambda <= 0) return view;
-  Eigen::Isometry3d world_from_camera = map_from_camera;
-  world_from_camera.translation() /= lambda;
-  view.camera_from_world = world_from_camera.inverse();
-  auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
-  points->reserve(map.points.size());
-  for (const MapSnapshot::Point& p : map.points) points->push_back(p.position / lambda);
-  view.map_points_in_world = std::move(points);
+  view.camera_from_world = MetricCameraFromWorld(map_from_camera, lambda);
+  view.map_points_in_world = MetricPoints(map, lambda);
   return view;
 }
 
@@ -83,13 +98,7 @@ SlamView MetricSlamView::Update(const MonoSlamResult& result, const PinholeCamer
   if (result.map && result.map != map_) {
     map_ = result.map;
     Rescale(*map_);
-    points_.reset();
-    if (lambda_ml_ > 0) {
-      auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
-      points->reserve(map_->points.size());
-      for (const MapSnapshot::Point& p : map_->points) points->push_back(p.position / lambda_ml_);
-      points_ = std::move(points);
-    }
+    points_ = lambda_ml_ > 0 ? MetricPoints(*map_, lambda_ml_) : nullptr;
   }
   SlamView view;
   view.camera = camera;
@@ -97,9 +106,7 @@ SlamView MetricSlamView::Update(const MonoSlamResult& result, const PinholeCamer
   view.scale_converged = converged();
   view.scale_sigma_rel = sigma_rel_;
   if (lambda_ml_ <= 0) return view;
-  Eigen::Isometry3d world_from_camera = result.map_from_camera;
-  world_from_camera.translation() /= lambda_ml_;
-  view.camera_from_world = world_from_camera.inverse();
+  view.camera_from_world = MetricCameraFromWorld(result.map_from_camera, lambda_ml_);
   view.map_points_in_world = points_;
   return view;
 }
