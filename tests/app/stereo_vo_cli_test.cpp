@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "tests/app/process.h"
 #include "tests/support/test_data.h"
@@ -16,6 +18,37 @@ const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
 testing::ProcessResult Cli(const std::string& args) {
   return testing::RunProcess(kCli + " " + args);
+}
+
+// The fields of one frames.csv line; the last field (status) is quoted and may hold commas.
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields;
+  const size_t quote = line.find('"');
+  std::istringstream head(line.substr(0, quote));
+  for (std::string field; std::getline(head, field, ',');) fields.push_back(field);
+  if (quote != std::string::npos) fields.push_back(line.substr(quote));
+  return fields;
+}
+
+// frames.csv has the `retracked` column right after `tracked`, and every row a 0 or 1 there.
+void ExpectRetrackedColumn(const std::string& frames) {
+  std::istringstream lines(frames);
+  std::string line;
+  ASSERT_TRUE(std::getline(lines, line));
+  const std::vector<std::string> header = CsvFields(line);
+  const auto tracked = std::find(header.begin(), header.end(), "tracked");
+  ASSERT_NE(tracked, header.end()) << line;
+  ASSERT_NE(tracked + 1, header.end()) << line;
+  EXPECT_EQ(*(tracked + 1), "retracked") << line;
+  const size_t column = static_cast<size_t>(tracked - header.begin()) + 1;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    const std::vector<std::string> row = CsvFields(line);
+    ASSERT_EQ(row.size(), header.size()) << line;
+    EXPECT_TRUE(row[column] == "0" || row[column] == "1") << line;
+    ++rows;
+  }
+  EXPECT_GT(rows, 0);
 }
 
 TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
@@ -32,6 +65,7 @@ TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
   }
   const std::string frames = testing::ReadTextFile(out + "/frames.csv");
   EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 52);  // Header + 51 frames.
+  ExpectRetrackedColumn(frames);
   std::istringstream trajectory(testing::ReadTextFile(out + "/trajectory.txt"));
   std::string line;
   while (std::getline(trajectory, line) && (line.empty() || line[0] == '#')) {
