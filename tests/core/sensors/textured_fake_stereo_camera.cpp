@@ -20,6 +20,9 @@
 //   DIR/served_groundtruth.txt  TUM "t tx ty tz qx qy qz qw": the true pose of the left camera
 //                               (map frame) at the timestamp of every left frame served.
 //
+// --calibration FILE writes the served rig as an OpenCV stereo YAML
+// (aravis://L,R?calibration_file=).
+//
 // Runs until SIGINT or SIGTERM. The images are rendered before the cameras start; the cameras
 // are discoverable once "serving" is printed.
 #include <arv.h>
@@ -41,6 +44,7 @@
 #include <vector>
 
 #include "core/sim/recording_writer.h"
+#include "core/sim/sensor_options.h"
 #include "core/sim/simulator.h"
 
 namespace sightline {
@@ -60,14 +64,15 @@ struct Settings {
   double baseline_m = 0.11;
   double speed_mps = 0.5;
   int seed = 3;
-  std::string log_dir;  // "" = no logs.
+  std::string log_dir;      // "" = no logs.
+  std::string calibration;  // "" = none; else the rig as an OpenCV stereo YAML.
 };
 
 const char kUsage[] =
     "usage: textured_fake_stereo_camera [--left-address IP] [--right-address IP]\n"
     "  [--left-serial S] [--right-serial S] [--motion robot|static] [--frames N] [--rate HZ]\n"
     "  [--width PX] [--height PX] [--focal PX] [--baseline M] [--speed MPS] [--seed N]\n"
-    "  [--log DIR]\n";
+    "  [--log DIR] [--calibration FILE]\n";
 
 bool ParseArguments(int argc, char** argv, Settings* s, std::string* error) {
   const std::map<std::string, std::string*> texts = {{"left-address", &s->left_address},
@@ -75,7 +80,8 @@ bool ParseArguments(int argc, char** argv, Settings* s, std::string* error) {
                                                      {"left-serial", &s->left_serial},
                                                      {"right-serial", &s->right_serial},
                                                      {"motion", &s->motion},
-                                                     {"log", &s->log_dir}};
+                                                     {"log", &s->log_dir},
+                                                     {"calibration", &s->calibration}};
   const std::map<std::string, int*> integers = {
       {"frames", &s->frames}, {"width", &s->width}, {"height", &s->height}, {"seed", &s->seed}};
   const std::map<std::string, double*> numbers = {{"rate", &s->rate_hz},
@@ -266,6 +272,22 @@ StatusOr<std::vector<SceneFrame>> RenderFrames(const Settings& s) {
   return frames;
 }
 
+// Writes the served rig as the OpenCV stereo YAML `sightline-cli calibrate stereo` writes (the
+// part the stereo sources read: image size, M1 D1 M2 D2 R T), for live runs by hand.
+bool WriteCalibration(const StereoRig& rig, const std::string& path) {
+  cv::FileStorage fs(path, cv::FileStorage::WRITE);
+  if (!fs.isOpened()) return false;
+  auto k = [](const PinholeCamera& c) -> cv::Mat {
+    return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+  };
+  const Eigen::Vector3d t = rig.right_from_left.translation();
+  fs << "image_width" << rig.left.width << "image_height" << rig.left.height;
+  fs << "M1" << k(rig.left) << "D1" << cv::Mat::zeros(1, 5, CV_64F);
+  fs << "M2" << k(rig.right) << "D2" << cv::Mat::zeros(1, 5, CV_64F);
+  fs << "R" << cv::Mat::eye(3, 3, CV_64F) << "T" << (cv::Mat_<double>(3, 1) << t.x(), t.y(), t.z());
+  return true;
+}
+
 // Sizes the camera's image registers to the rendered frames and its frame period to the rate.
 void ConfigureRegisters(ArvFakeCamera* camera, const Settings& s) {
   arv_fake_camera_write_register(camera, ARV_FAKE_CAMERA_REGISTER_WIDTH, s.width);
@@ -292,6 +314,17 @@ int Main(int argc, char** argv) {
   if (!settings.log_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(settings.log_dir, ec);
+  }
+  if (!settings.calibration.empty()) {
+    sim::StereoSensorOptions rig;
+    rig.width = settings.width;
+    rig.height = settings.height;
+    rig.focal_px = settings.focal_px;
+    rig.baseline_m = settings.baseline_m;
+    if (!WriteCalibration(rig.Rig(), settings.calibration)) {
+      std::cerr << "textured_fake_stereo_camera: cannot write " << settings.calibration << "\n";
+      return 1;
+    }
   }
   const auto start = std::chrono::steady_clock::now();
   StatusOr<std::vector<SceneFrame>> frames = RenderFrames(settings);
