@@ -4,25 +4,75 @@
 <context>
     <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="132"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="118"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <source>Waiting for Yes</source>
+        <translation>Warte auf Ja</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="120"/>
+        <source>Button lost</source>
+        <translation>Knopf verloren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <source>Button unclear</source>
+        <translation>Knopf unklar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <source>Measuring the button</source>
+        <translation>Knopf wird vermessen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <source>Measuring again</source>
+        <translation>Neue Messung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="124"/>
+        <source>Measuring the distance</source>
+        <translation>Abstand wird gemessen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="125"/>
+        <source>Panel unclear</source>
+        <translation>Tastenfeld unklar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
+        <source>Position not sure yet</source>
+        <translation>Position noch unsicher</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <source>Button out of reach</source>
+        <translation>Knopf außer Reichweite</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="152"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="156"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="188"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="209"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="198"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="190"/>
-        <source>View</source>
-        <translation>Ansicht</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="252"/>
+        <source>No button at the tap: %1</source>
+        <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
 </context>
 <context>
@@ -45,12 +95,12 @@
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="93"/>
         <source>Board</source>
-        <translation>Brett</translation>
+        <translation>Kalibriermuster</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="224"/>
         <source>Board found in %1 of %2 %3.</source>
-        <translation>Brett in %1 von %2 %3 gefunden.</translation>
+        <translation>Muster in %1 von %2 %3 gefunden.</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="60"/>
@@ -75,7 +125,7 @@
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="108"/>
         <source>Choose a source and the board, then press Calibrate.</source>
-        <translation>Quelle und Brett wählen, dann Kalibrieren drücken.</translation>
+        <translation>Quelle und Muster wählen, dann Kalibrieren drücken.</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="175"/>
@@ -100,7 +150,7 @@
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="181"/>
         <source>Detecting the board...</source>
-        <translation>Suche das Brett...</translation>
+        <translation>Muster wird gesucht...</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
@@ -239,12 +289,12 @@
     <message>
         <location filename="../app/sightline/demo_generator.cpp" line="46"/>
         <source>cannot create the demo folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Demo-Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message>
         <location filename="../app/sightline/demo_generator.cpp" line="84"/>
         <source>cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden</translation>
     </message>
 </context>
 <context>
@@ -252,107 +302,107 @@
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="73"/>
         <source>estimated trajectory (TUM or KITTI file)</source>
-        <translation type="unfinished"></translation>
+        <translation>geschätzte Trajektorie (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="75"/>
         <source>ground truth (TUM or KITTI file)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ground Truth (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="79"/>
         <source>Browse...</source>
-        <translation type="unfinished">Durchsuchen...</translation>
+        <translation>Durchsuchen...</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="88"/>
         <source>SE(3): rotation and translation</source>
-        <translation type="unfinished"></translation>
+        <translation>SE(3): Rotation und Translation</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="89"/>
         <source>Sim(3): also scale (monocular)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sim(3): auch Maßstab (monokular)</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
         <source>None</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
         <source>Evaluate</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswerten</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
         <source>Estimate</source>
-        <translation type="unfinished"></translation>
+        <translation>Schätzung</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
         <source>Estimated trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschätzte Trajektorie</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
         <source>Ground truth</source>
-        <translation type="unfinished"></translation>
+        <translation>Ground Truth</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
         <source>Alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausrichtung</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="102"/>
         <source>Choose two trajectory files and press Evaluate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
         <source>Figure</source>
-        <translation type="unfinished"></translation>
+        <translation>Kennzahl</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Wert</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="115"/>
         <source>Figures</source>
-        <translation type="unfinished"></translation>
+        <translation>Kennzahlen</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="116"/>
         <source>Top view</source>
-        <translation type="unfinished"></translation>
+        <translation>Draufsicht</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
         <source>Error over time</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler im Zeitverlauf</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="130"/>
         <source>Trajectories (*.txt *.csv);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Trajektorien (*.txt *.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="138"/>
         <source>Evaluating...</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswertung läuft...</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="162"/>
         <source>Evaluation failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswertung fehlgeschlagen: %1</translation>
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="172"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
     </message>
 </context>
 <context>
@@ -362,20 +412,35 @@
         <location filename="../widgets/image_view.cpp" line="78"/>
         <location filename="../widgets/image_view.cpp" line="131"/>
         <source>No image</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Bild</translation>
     </message>
     <message>
         <location filename="../widgets/image_view.cpp" line="81"/>
         <source>Unsupported image type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht unterstützter Bildtyp %1</translation>
     </message>
 </context>
 <context>
     <name>sightline::LiveStatusWidget</name>
     <message>
-        <location filename="../app/sightline/live_status_widget.cpp" line="23"/>
+        <location filename="../app/sightline/live_status_widget.cpp" line="24"/>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="25"/>
+        <source>streaming</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="26"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="37"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;dropped %4 &amp;nbsp;latency %5 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;verworfen %4 &amp;nbsp;Latenz %5 ms</translation>
     </message>
 </context>
 <context>
@@ -383,7 +448,7 @@
     <message>
         <location filename="../widgets/log_panel.cpp" line="36"/>
         <source>Clear messages</source>
-        <translation type="unfinished"></translation>
+        <translation>Meldungen löschen</translation>
     </message>
 </context>
 <context>
@@ -391,17 +456,17 @@
     <message>
         <location filename="../app/sightline/main_window.cpp" line="43"/>
         <source>Sightline</source>
-        <translation type="unfinished"></translation>
+        <translation>Sightline</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="73"/>
-        <location filename="../app/sightline/main_window.cpp" line="337"/>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="74"/>
-        <location filename="../app/sightline/main_window.cpp" line="338"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
@@ -418,7 +483,7 @@
     <message>
         <location filename="../app/sightline/main_window.cpp" line="82"/>
         <source>Evaluation</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswertung</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="91"/>
@@ -448,12 +513,12 @@
     <message>
         <location filename="../app/sightline/main_window.cpp" line="108"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="111"/>
         <source>Recordings (*.pcd *.oni)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahmen (*.pcd *.oni)</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="114"/>
@@ -471,255 +536,256 @@
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="122"/>
+        <location filename="../app/sightline/main_window.cpp" line="123"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="129"/>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
         <source>&amp;Sensors</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="134"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source> (unavailable)</source>
-        <translation type="unfinished"></translation>
+        <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="138"/>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
         <source>Connect to the first %1 device</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="145"/>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
         <source>Replay recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="151"/>
+        <location filename="../app/sightline/main_window.cpp" line="152"/>
         <source>&amp;Pipeline</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="153"/>
-        <location filename="../app/sightline/main_window.cpp" line="278"/>
+        <location filename="../app/sightline/main_window.cpp" line="154"/>
+        <location filename="../app/sightline/main_window.cpp" line="279"/>
         <source>None (show frames only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="160"/>
-        <source>&amp;Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="161"/>
-        <source>&amp;Evaluate trajectory...</source>
-        <translation type="unfinished"></translation>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="171"/>
+        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <source>&amp;Evaluate trajectory...</source>
+        <translation>Trajektorie &amp;auswerten...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="172"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="172"/>
+        <location filename="../app/sightline/main_window.cpp" line="173"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <location filename="../app/sightline/main_window.cpp" line="174"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="186"/>
-        <source>Could not open %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
+Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="187"/>
-        <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
+        <source>Could not open %1: %2</source>
+        <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="195"/>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <source>Could not open %1</source>
+        <translation>%1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="219"/>
+        <location filename="../app/sightline/main_window.cpp" line="220"/>
         <source>Demo %p%</source>
-        <translation type="unfinished"></translation>
+        <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="226"/>
+        <location filename="../app/sightline/main_window.cpp" line="227"/>
         <source>Generating the demo recordings (only the first time)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="235"/>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="241"/>
+        <location filename="../app/sightline/main_window.cpp" line="242"/>
         <source>The demo could not be made: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="296"/>
+        <location filename="../app/sightline/main_window.cpp" line="297"/>
         <source>No pipeline: showing frames only.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="307"/>
+        <location filename="../app/sightline/main_window.cpp" line="308"/>
         <source>Pipeline: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="311"/>
+        <location filename="../app/sightline/main_window.cpp" line="312"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="325"/>
-        <location filename="../app/sightline/main_window.cpp" line="326"/>
+        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="330"/>
         <source>Opening %1 ...</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="337"/>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="337"/>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="338"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="344"/>
+        <location filename="../app/sightline/main_window.cpp" line="348"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="349"/>
+        <location filename="../app/sightline/main_window.cpp" line="353"/>
         <source>, ground truth</source>
-        <translation type="unfinished"></translation>
+        <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="351"/>
+        <location filename="../app/sightline/main_window.cpp" line="355"/>
         <source>Opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="356"/>
+        <location filename="../app/sightline/main_window.cpp" line="360"/>
         <source>Sightline - %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="391"/>
+        <location filename="../app/sightline/main_window.cpp" line="395"/>
         <source>frame %1, read in %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="413"/>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="415"/>
+        <location filename="../app/sightline/main_window.cpp" line="419"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="166"/>
+        <location filename="../app/sightline/main_window.cpp" line="167"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window_recording.cpp" line="19"/>
         <source>Recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window_recording.cpp" line="37"/>
         <source>Recording: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme: %1</translation>
     </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>Indoor mapping (Manhattan walls)</source>
-        <translation type="unfinished"></translation>
+        <translation>Innenraumkartierung (Manhattan-Wände)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="213"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Occupancy, scan and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Belegung, Scan und Wände</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="219"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="221"/>
         <source>Calibrate floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Boden kalibrieren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="220"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="222"/>
         <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Bodenebene aus den nächsten Bildern neu schätzen (der Roboter sollte freien Boden sehen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="225"/>
         <source>Save floor...</source>
-        <translation type="unfinished"></translation>
+        <translation>Boden speichern...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="224"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="226"/>
         <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die verwendete Bodenkalibrierung speichern, für mapping.run.floor_file oder `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="229"/>
         <source>Save floor calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>Bodenkalibrierung speichern</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="230"/>
         <source>YAML (*.yaml)</source>
-        <translation type="unfinished"></translation>
+        <translation>YAML (*.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="237"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="239"/>
         <source>Stitched map</source>
-        <translation type="unfinished"></translation>
+        <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="295"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="297"/>
         <source>Manhattan reference reset: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="311"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="313"/>
         <source>Calibrating the floor again from the next frames.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="323"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="325"/>
         <source>Saved the floor calibration to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
 </context>
 <context>
@@ -727,17 +793,17 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="65"/>
         <source>Projection</source>
-        <translation type="unfinished"></translation>
+        <translation>Projektion</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="66"/>
         <source>Top view</source>
-        <translation type="unfinished"></translation>
+        <translation>Draufsicht</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="67"/>
         <source>GPR surface</source>
-        <translation type="unfinished"></translation>
+        <translation>GPR-Fläche</translation>
     </message>
 </context>
 <context>
@@ -745,17 +811,17 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/mobility_presenter.cpp" line="108"/>
         <source>Mobility map</source>
-        <translation type="unfinished"></translation>
+        <translation>Befahrbarkeitskarte</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_presenter.cpp" line="130"/>
         <source>Mobility map (red 0, green 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Befahrbarkeitskarte (rot 0, grün 1)</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_presenter.cpp" line="134"/>
         <source>Mobility stages (Table II)</source>
-        <translation type="unfinished"></translation>
+        <translation>Befahrbarkeitskarte: Stufen (Tabelle II)</translation>
     </message>
 </context>
 <context>
@@ -763,100 +829,115 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="21"/>
         <source>3D colour:</source>
-        <translation type="unfinished"></translation>
+        <translation>3D-Farbe:</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="23"/>
         <source>Score (rule)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewertung (Regel)</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="23"/>
         <source>Score (GPR)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewertung (GPR)</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="23"/>
         <source>Segment</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="31"/>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufe</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="31"/>
         <source>Time (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (ms)</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="31"/>
         <source>Points</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="47"/>
         <source>Total</source>
-        <translation type="unfinished"></translation>
+        <translation>Gesamt</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="50"/>
         <source>%1 mode, %2 segments</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus %1, %2 Segmente</translation>
     </message>
     <message>
         <location filename="../app/sightline/mobility_views.cpp" line="52"/>
         <source>, camera %1 m above the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>, Kamera %1 m über dem Boden</translation>
     </message>
 </context>
 <context>
     <name>sightline::MonoSlamPresenter</name>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="179"/>
+        <source>the arm&apos;s poses</source>
+        <translation>Armposen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="180"/>
+        <source>the ground truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="181"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="206"/>
         <source>Monocular SLAM (PTAM point cloud)</source>
-        <translation type="unfinished"></translation>
+        <translation>Monokulares SLAM (PTAM-Punktwolke)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="213"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="225"/>
         <source>Monocular SLAM needs a camera calibration (camera.yaml)</source>
-        <translation type="unfinished"></translation>
+        <translation>Monokulares SLAM braucht eine Kamerakalibrierung (camera.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="229"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="241"/>
         <source>Reset map</source>
-        <translation type="unfinished"></translation>
+        <translation>Karte zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="230"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="242"/>
         <source>Pause mapping</source>
-        <translation type="unfinished"></translation>
+        <translation>Kartierung anhalten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="243"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="255"/>
         <source>Tracked features (inliers green, outliers red)</source>
-        <translation type="unfinished"></translation>
+        <translation>Verfolgte Merkmale (Inlier grün, Outlier rot)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="254"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="266"/>
         <source>Metric scale (ML solid, single ratio dashed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="298"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="310"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="308"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="320"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
-        <translation type="unfinished"></translation>
+        <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="314"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="326"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
     </message>
 </context>
 <context>
@@ -874,7 +955,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="159"/>
         <source>Locating</source>
-        <translation>Lokalisiere</translation>
+        <translation>Position wird gemessen</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="161"/>
@@ -884,7 +965,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="156"/>
         <source>No button here - tap again</source>
-        <translation>Kein Knopf hier - erneut tippen</translation>
+        <translation>Kein Knopf hier - nochmal tippen</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="155"/>
@@ -899,7 +980,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="157"/>
         <source>Searching</source>
-        <translation>Suche</translation>
+        <translation>Suche läuft</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="187"/>
@@ -924,7 +1005,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="158"/>
         <source>Tracking</source>
-        <translation>Verfolge</translation>
+        <translation>Knopf im Blick</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="184"/>
@@ -935,9 +1016,24 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
 <context>
     <name>sightline::OptionEditor</name>
     <message>
-        <location filename="../widgets/option_editor.cpp" line="68"/>
+        <location filename="../widgets/option_editor.cpp" line="47"/>
+        <source>Range: %1 … %2%3</source>
+        <translation>Bereich: %1 … %2%3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="52"/>
+        <source>Choices: %1</source>
+        <translation>Auswahl: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="55"/>
+        <source>Default: %1%2</source>
+        <translation>Standard: %1%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="71"/>
         <source>Reset to default (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf Standard zurücksetzen (%1)</translation>
     </message>
 </context>
 <context>
@@ -945,57 +1041,57 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="45"/>
         <source>Filter options</source>
-        <translation type="unfinished"></translation>
+        <translation>Optionen filtern</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="49"/>
         <source>Load profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil laden…</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="52"/>
         <source>Save profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil speichern…</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="55"/>
         <source>Reset all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle zurücksetzen</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="154"/>
         <source>All options reset to their defaults.</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="165"/>
         <source>Loaded profile %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil %1 geladen</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="175"/>
         <source>Saved profile %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="182"/>
         <source>Load profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil laden</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="182"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="189"/>
         <source>Save profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil speichern</translation>
     </message>
     <message>
         <location filename="../widgets/parameter_panel.cpp" line="190"/>
         <source>YAML profiles (*.yaml *.yml)</source>
-        <translation type="unfinished"></translation>
+        <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>
 </context>
 <context>
@@ -1003,32 +1099,32 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/playback_bar.cpp" line="35"/>
         <source>Step one frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Bild weiter</translation>
     </message>
     <message>
         <location filename="../widgets/playback_bar.cpp" line="54"/>
         <source>Playback speed relative to the recording&apos;s timestamps</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiedergabegeschwindigkeit relativ zu den Zeitstempeln der Aufnahme</translation>
     </message>
     <message>
         <location filename="../widgets/playback_bar.cpp" line="58"/>
         <source>max</source>
-        <translation type="unfinished"></translation>
+        <translation>max</translation>
     </message>
     <message>
         <location filename="../widgets/playback_bar.cpp" line="64"/>
         <source>Loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Schleife</translation>
     </message>
     <message>
         <location filename="../widgets/playback_bar.cpp" line="111"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <location filename="../widgets/playback_bar.cpp" line="111"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
 </context>
 <context>
@@ -1036,50 +1132,50 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="15"/>
         <source>&amp;Record...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aufnehmen...</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="19"/>
         <source>Record what is playing (live sensor or recording) into a folder, in the formats Sightline reads</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Laufende (Live-Sensor oder Aufnahme) in einen Ordner aufnehmen, in den Formaten, die Sightline liest</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="21"/>
         <source>&amp;Stop recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme &amp;beenden</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="40"/>
         <source>Record into folder</source>
-        <translation type="unfinished"></translation>
+        <translation>In Ordner aufnehmen</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="47"/>
         <source>Nothing to record: open a sensor or a recording first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nichts aufzunehmen: zuerst einen Sensor oder eine Aufnahme öffnen.</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="90"/>
         <source>Recorded %1 frames into %2 (%3 dropped by the recorder), %4 MB at %5 MB/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Bilder in %2 aufgenommen (%3 vom Rekorder verworfen), %4 MB mit %5 MB/s</translation>
     </message>
     <message>
         <location filename="../app/sightline/recording_controller.cpp" line="110"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
-        <translation type="unfinished"></translation>
+        <translation>REC %1 geschrieben, %2 verworfen, %3 MB/s</translation>
     </message>
 </context>
 <context>
     <name>sightline::ScalePlot</name>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="43"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="45"/>
         <source>scale: waiting for displacement pairs</source>
-        <translation type="unfinished"></translation>
+        <translation>Maßstab: warte auf Verschiebungspaare</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="57"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="59"/>
         <source>pairs (map units per metre)</source>
-        <translation type="unfinished"></translation>
+        <translation>Paare (Karteneinheiten pro Meter)</translation>
     </message>
 </context>
 <context>
@@ -1087,112 +1183,112 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="109"/>
         <source>Stereo visual odometry</source>
-        <translation type="unfinished"></translation>
+        <translation>Visuelle Stereo-Odometrie</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="138"/>
         <source>Tracks (inliers green, outliers red, new blue)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracks (Inlier grün, Outlier rot, neu blau)</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="142"/>
         <source>Stereo matches (right image)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stereo-Zuordnungen (rechtes Bild)</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="148"/>
         <source>per frame: counts</source>
-        <translation type="unfinished"></translation>
+        <translation>pro Bild: Anzahlen</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="149"/>
         <source>ms per stage</source>
-        <translation type="unfinished"></translation>
+        <translation>ms pro Stufe</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="150"/>
         <source>residual [px]; red: gated</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuum [px]; rot: gesperrt</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="155"/>
         <source>Statistics over time</source>
-        <translation type="unfinished"></translation>
+        <translation>Statistik im Zeitverlauf</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 px, %7 ms%8</source>
-        <translation type="unfinished"></translation>
+        <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 px, %7 ms%8</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
         <source>, GATED: pose held</source>
-        <translation type="unfinished"></translation>
+        <translation>, GESPERRT: Pose gehalten</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="242"/>
         <source>tracks</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracks</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="243"/>
         <source>stereo</source>
-        <translation type="unfinished"></translation>
+        <translation>Stereo</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="244"/>
         <source>inliers</source>
-        <translation type="unfinished"></translation>
+        <translation>Inlier</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="245"/>
         <source>RANSAC it.</source>
-        <translation type="unfinished"></translation>
+        <translation>RANSAC-It.</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
         <source>rectify</source>
-        <translation type="unfinished"></translation>
+        <translation>Rektifizierung</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
         <source>pyramid</source>
-        <translation type="unfinished"></translation>
+        <translation>Pyramide</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
         <source>tracking</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracking</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
         <source>detection</source>
-        <translation type="unfinished"></translation>
+        <translation>Detektion</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
         <source>matching</source>
-        <translation type="unfinished"></translation>
+        <translation>Matching</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
         <source>RANSAC</source>
-        <translation type="unfinished"></translation>
+        <translation>RANSAC</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
         <source>refine</source>
-        <translation type="unfinished"></translation>
+        <translation>Verfeinerung</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="257"/>
         <source>residual</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuum</translation>
     </message>
 </context>
 </TS>
