@@ -4,73 +4,73 @@
 <context>
     <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="118"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="120"/>
         <source>Waiting for Yes</source>
         <translation>Warte auf Ja</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="120"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
         <source>Button lost</source>
         <translation>Knopf verloren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
         <source>Button unclear</source>
         <translation>Knopf unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
         <source>Measuring the button</source>
         <translation>Knopf wird vermessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="124"/>
         <source>Measuring again</source>
         <translation>Neue Messung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="124"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="125"/>
         <source>Measuring the distance</source>
         <translation>Abstand wird gemessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="125"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
         <source>Panel unclear</source>
         <translation>Tastenfeld unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
         <source>Position not sure yet</source>
         <translation>Position noch unsicher</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="128"/>
         <source>Button out of reach</source>
         <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="152"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="153"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="209"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="178"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="210"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="198"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="199"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="252"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
