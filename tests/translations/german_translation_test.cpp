@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QLabel>
+#include <QLibraryInfo>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSet>
@@ -170,6 +171,12 @@ TEST(GermanGui, NewerWidgetsSpeakGermanOnceTheTranslationIsInstalled) {
   OptionSet options;
   ASSERT_TRUE(options.Declare(ViewOptions::Describe()).ok());
   EXPECT_TRUE(OptionTooltip(options.specs().front()).contains("Standard: "));
+
+  // Qt's own buttons and dialogs, from qt6-translations-l10n (packaging/install-deps.sh).
+  if (!QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath) + "/qtbase_de.qm")) {
+    GTEST_SKIP() << "qtbase_de.qm not installed (qt6-translations-l10n): Qt's dialogs stay English";
+  }
+  EXPECT_EQ(QCoreApplication::translate("QPlatformTheme", "Cancel"), "Abbrechen");
 }
 
 }  // namespace
