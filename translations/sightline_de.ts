@@ -2,302 +2,77 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
-    <name>ImageView</name>
+    <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../widgets/image_view.cpp" line="47"/>
-        <location filename="../widgets/image_view.cpp" line="78"/>
-        <location filename="../widgets/image_view.cpp" line="131"/>
-        <source>No image</source>
-        <translation type="unfinished"></translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../widgets/image_view.cpp" line="81"/>
-        <source>Unsupported image type %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>LogPanel</name>
-    <message>
-        <location filename="../widgets/log_panel.cpp" line="36"/>
-        <source>Clear messages</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>MainWindow</name>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="34"/>
-        <source>Sightline</source>
-        <translation type="unfinished"></translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="120"/>
+        <source>Waiting for Yes</source>
+        <translation>Warte auf Ja</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="64"/>
-        <location filename="../app/sightline/main_window.cpp" line="169"/>
-        <source>Colour</source>
-        <translation>Farbe</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <source>Button lost</source>
+        <translation>Knopf verloren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="65"/>
-        <location filename="../app/sightline/main_window.cpp" line="170"/>
-        <source>Depth</source>
-        <translation>Tiefe</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <source>Button unclear</source>
+        <translation>Knopf unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="69"/>
-        <source>Parameters</source>
-        <translation>Parameter</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <source>Measuring the button</source>
+        <translation>Knopf wird vermessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="71"/>
-        <source>Log</source>
-        <translation>Protokoll</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="124"/>
+        <source>Measuring again</source>
+        <translation>Neue Messung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="74"/>
-        <source>Playback</source>
-        <translation>Wiedergabe</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="125"/>
+        <source>Measuring the distance</source>
+        <translation>Abstand wird gemessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="84"/>
-        <source>&amp;File</source>
-        <translation>&amp;Datei</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
+        <source>Panel unclear</source>
+        <translation>Tastenfeld unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="85"/>
-        <source>&amp;Open dataset folder...</source>
-        <translation>Datensatz-Ordner &amp;öffnen...</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <source>Position not sure yet</source>
+        <translation>Position noch unsicher</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="88"/>
-        <source>Open dataset folder</source>
-        <translation>Datensatz-Ordner öffnen</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="128"/>
+        <source>Button out of reach</source>
+        <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="91"/>
-        <source>Open point cloud &amp;file...</source>
-        <translation>Punktwolken-&amp;Datei öffnen...</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="153"/>
+        <source>Button picker (monocular SLAM)</source>
+        <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="93"/>
-        <source>Open point cloud</source>
-        <translation>Punktwolke öffnen</translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="178"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="210"/>
+        <source>Operator panel</source>
+        <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="94"/>
-        <source>Point clouds (*.pcd)</source>
-        <translation type="unfinished"></translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="199"/>
+        <source>Operator panel full screen</source>
+        <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="97"/>
-        <source>Open &amp;recent</source>
-        <translation>&amp;Zuletzt geöffnet</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="100"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="104"/>
-        <source>&amp;View</source>
-        <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="105"/>
-        <source>&amp;Reset 3D view</source>
-        <translation>3D-Ansicht &amp;zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="112"/>
-        <source>&amp;About Sightline</source>
-        <translation>Ü&amp;ber Sightline</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="113"/>
-        <source>About Sightline</source>
-        <translation>Über Sightline</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
-        <source>Sightline: robot perception for assistive and mobile robotics.
-Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="126"/>
-        <source>Could not open %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="127"/>
-        <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
-        <source>End of recording.</source>
-        <translation>Ende der Aufnahme.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="157"/>
-        <location filename="../app/sightline/main_window.cpp" line="158"/>
-        <source>Opening %1 ...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="169"/>
-        <source>Left</source>
-        <translation>Links</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="169"/>
-        <source>Image</source>
-        <translation>Bild</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="170"/>
-        <source>Right</source>
-        <translation>Rechts</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="176"/>
-        <source>%1: %2, %3 frames, %4x%5%6</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="181"/>
-        <source>, ground truth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="183"/>
-        <source>Opened %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="188"/>
-        <source>Sightline - %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="216"/>
-        <source>frame %1, read in %2 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="237"/>
-        <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/main_window.cpp" line="239"/>
-        <source>No dataset open</source>
-        <translation>Kein Datensatz geöffnet</translation>
-    </message>
-</context>
-<context>
-    <name>OptionEditor</name>
-    <message>
-        <location filename="../widgets/option_editor.cpp" line="68"/>
-        <source>Reset to default (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>ParameterPanel</name>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="45"/>
-        <source>Filter options</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="49"/>
-        <source>Load profile…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="52"/>
-        <source>Save profile…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="55"/>
-        <source>Reset all</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="154"/>
-        <source>All options reset to their defaults.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="165"/>
-        <source>Loaded profile %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="175"/>
-        <source>Saved profile %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="182"/>
-        <source>Load profile</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="182"/>
-        <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="189"/>
-        <source>Save profile</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
-        <source>YAML profiles (*.yaml *.yml)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>PlaybackBar</name>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="35"/>
-        <source>Step one frame</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="54"/>
-        <source>Playback speed relative to the recording&apos;s timestamps</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="58"/>
-        <source>max</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="64"/>
-        <source>Loop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
-        <source>Pause</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
-        <source>Play</source>
-        <translation type="unfinished"></translation>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
+        <source>No button at the tap: %1</source>
+        <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
 </context>
 <context>
@@ -320,12 +95,12 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="93"/>
         <source>Board</source>
-        <translation>Brett</translation>
+        <translation>Kalibriermuster</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="214"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="224"/>
         <source>Board found in %1 of %2 %3.</source>
-        <translation>Brett in %1 von %2 %3 gefunden.</translation>
+        <translation>Muster in %1 von %2 %3 gefunden.</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="60"/>
@@ -338,7 +113,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Kamera kalibrieren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="208"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="218"/>
         <source>Calibration failed: %1</source>
         <translation>Kalibrierung fehlgeschlagen: %1</translation>
     </message>
@@ -350,10 +125,10 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="108"/>
         <source>Choose a source and the board, then press Calibrate.</source>
-        <translation>Quelle und Brett wählen, dann Kalibrieren drücken.</translation>
+        <translation>Quelle und Muster wählen, dann Kalibrieren drücken.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="171"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="175"/>
         <source>Choose a source first.</source>
         <translation>Zuerst eine Quelle wählen.</translation>
     </message>
@@ -368,14 +143,14 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Gefundene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="305"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="317"/>
         <source>Detected corners: %1 (%2 px)</source>
         <translation>Gefundene Ecken: %1 (%2 px)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="177"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="181"/>
         <source>Detecting the board...</source>
-        <translation>Suche das Brett...</translation>
+        <translation>Muster wird gesucht...</translation>
     </message>
     <message>
         <location filename="../app/sightline/calibration_dialog.cpp" line="117"/>
@@ -388,7 +163,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Dateinamenmuster im Mono-Bildordner, z. B. left*.jpg</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="253"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="264"/>
         <source>Hint: %1</source>
         <translation>Hinweis: %1</translation>
     </message>
@@ -413,22 +188,22 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Mono (eine Kamera)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="336"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="348"/>
         <source>Nothing to save: calibrate first.</source>
         <translation>Nichts zu speichern: zuerst kalibrieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="350"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="362"/>
         <source>OpenCV YAML (*.yaml *.yml)</source>
         <translation>OpenCV-YAML (*.yaml *.yml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="241"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="251"/>
         <source>RMS %1 px; %2 views used, %3 rejected.</source>
         <translation>RMS %1 px; %2 Ansichten verwendet, %3 verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="233"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="243"/>
         <source>RMS left %1 px, right %2 px, stereo %3 px; baseline %4 mm; %5 of %6 pairs used.</source>
         <translation>RMS links %1 px, rechts %2 px, Stereo %3 px; Basislinie %4 mm; %5 von %6 Paaren verwendet.</translation>
     </message>
@@ -438,17 +213,17 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Fehler rechts (px)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="349"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="361"/>
         <source>Save calibration</source>
         <translation>Kalibrierung speichern</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="344"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="356"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="353"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="365"/>
         <source>Saving failed: %1</source>
         <translation>Speichern fehlgeschlagen: %1</translation>
     </message>
@@ -473,12 +248,12 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="247"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="257"/>
         <source>fx %1 fy %2 cx %3 cy %4; coverage: %5</source>
         <translation>fx %1 fy %2 cx %3 cy %4; Abdeckung: %5</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="217"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="227"/>
         <source>images</source>
         <translation>Bildern</translation>
     </message>
@@ -488,18 +263,18 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
         <translation>innere Ecken, Felder von</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="217"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="227"/>
         <source>pairs</source>
         <translation>Paaren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="278"/>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="292"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="289"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="303"/>
         <source>rejected</source>
         <translation>verworfen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/calibration_dialog.cpp" line="278"/>
+        <location filename="../app/sightline/calibration_dialog.cpp" line="289"/>
         <source>used</source>
         <translation>verwendet</translation>
     </message>
@@ -510,35 +285,659 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     </message>
 </context>
 <context>
-    <name>sightline::MainWindow</name>
+    <name>sightline::DemoGenerator</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="160"/>
-        <source>&amp;Calibrate camera...</source>
-        <translation>Kamera &amp;kalibrieren...</translation>
+        <location filename="../app/sightline/demo_generator.cpp" line="46"/>
+        <source>cannot create the demo folder %1</source>
+        <translation>Demo-Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/demo_generator.cpp" line="84"/>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
     </message>
 </context>
 <context>
-    <name>sightline::ButtonPickerPresenter</name>
+    <name>sightline::EvaluationPanel</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="132"/>
-        <source>Button picker (monocular SLAM)</source>
-        <translation>Knopfwahl (monokulares SLAM)</translation>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="73"/>
+        <source>estimated trajectory (TUM or KITTI file)</source>
+        <translation>geschätzte Trajektorie (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="156"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="188"/>
-        <source>Operator panel</source>
-        <translation>Bedienfeld</translation>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="75"/>
+        <source>ground truth (TUM or KITTI file)</source>
+        <translation>Ground Truth (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="177"/>
-        <source>Operator panel full screen</source>
-        <translation>Bedienfeld im Vollbild</translation>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="79"/>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="190"/>
-        <source>View</source>
-        <translation>Ansicht</translation>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="88"/>
+        <source>SE(3): rotation and translation</source>
+        <translation>SE(3): Rotation und Translation</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="89"/>
+        <source>Sim(3): also scale (monocular)</source>
+        <translation>Sim(3): auch Maßstab (monokular)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
+        <source>Evaluate</source>
+        <translation>Auswerten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
+        <source>Estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
+        <source>Estimated trajectory</source>
+        <translation>Geschätzte Trajektorie</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
+        <source>Ground truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
+        <source>Alignment</source>
+        <translation>Ausrichtung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="102"/>
+        <source>Choose two trajectory files and press Evaluate.</source>
+        <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
+        <source>Figure</source>
+        <translation>Kennzahl</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="115"/>
+        <source>Figures</source>
+        <translation>Kennzahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="116"/>
+        <source>Top view</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
+        <source>Error over time</source>
+        <translation>Fehler im Zeitverlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="130"/>
+        <source>Trajectories (*.txt *.csv);;All files (*)</source>
+        <translation>Trajektorien (*.txt *.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="138"/>
+        <source>Evaluating...</source>
+        <translation>Auswertung läuft...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="162"/>
+        <source>Evaluation failed: %1</source>
+        <translation>Auswertung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="172"/>
+        <source>%1 associated poses, ground-truth path %2 m.</source>
+        <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::ImageView</name>
+    <message>
+        <location filename="../widgets/image_view.cpp" line="47"/>
+        <location filename="../widgets/image_view.cpp" line="78"/>
+        <location filename="../widgets/image_view.cpp" line="131"/>
+        <source>No image</source>
+        <translation>Kein Bild</translation>
+    </message>
+    <message>
+        <location filename="../widgets/image_view.cpp" line="81"/>
+        <source>Unsupported image type %1</source>
+        <translation>Nicht unterstützter Bildtyp %1</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::LiveStatusWidget</name>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="24"/>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="25"/>
+        <source>streaming</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="26"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/live_status_widget.cpp" line="37"/>
+        <source>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;dropped %4 &amp;nbsp;latency %5 ms</source>
+        <translation>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;verworfen %4 &amp;nbsp;Latenz %5 ms</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::LogPanel</name>
+    <message>
+        <location filename="../widgets/log_panel.cpp" line="36"/>
+        <source>Clear messages</source>
+        <translation>Meldungen löschen</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MainWindow</name>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="43"/>
+        <source>Sightline</source>
+        <translation>Sightline</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="73"/>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="74"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="78"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="80"/>
+        <source>Log</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <source>Evaluation</source>
+        <translation>Auswertung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="91"/>
+        <source>Playback</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="101"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="102"/>
+        <source>&amp;Open dataset folder...</source>
+        <translation>Datensatz-Ordner &amp;öffnen...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="105"/>
+        <source>Open dataset folder</source>
+        <translation>Datensatz-Ordner öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <source>Open point cloud</source>
+        <translation>Punktwolke öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="108"/>
+        <source>Open recording &amp;file (PCD, ONI)...</source>
+        <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <source>Recordings (*.pcd *.oni)</source>
+        <translation>Aufnahmen (*.pcd *.oni)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <source>&amp;Reset 3D view</source>
+        <translation>3D-Ansicht &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
+        <source>&amp;Sensors</source>
+        <translation>&amp;Sensoren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <source> (unavailable)</source>
+        <translation> (nicht verfügbar)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
+        <source>Connect to the first %1 device</source>
+        <translation>Mit dem ersten %1-Gerät verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <source>Replay recording</source>
+        <translation>Aufnahme abspielen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="152"/>
+        <source>&amp;Pipeline</source>
+        <translation>&amp;Pipeline</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="154"/>
+        <location filename="../app/sightline/main_window.cpp" line="279"/>
+        <source>None (show frames only)</source>
+        <translation>Keine (nur Bilder zeigen)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="161"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <source>&amp;Evaluate trajectory...</source>
+        <translation>Trajektorie &amp;auswerten...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="172"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <source>&amp;About Sightline</source>
+        <translation>Ü&amp;ber Sightline</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <source>About Sightline</source>
+        <translation>Über Sightline</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <source>Sightline: robot perception for assistive and mobile robotics.
+Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
+        <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
+Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="187"/>
+        <source>Could not open %1: %2</source>
+        <translation>%1 konnte nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <source>Could not open %1</source>
+        <translation>%1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <source>End of recording.</source>
+        <translation>Ende der Aufnahme.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="220"/>
+        <source>Demo %p%</source>
+        <translation>Demo %p%</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="227"/>
+        <source>Generating the demo recordings (only the first time)...</source>
+        <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
+        <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
+        <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="242"/>
+        <source>The demo could not be made: %1</source>
+        <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="297"/>
+        <source>No pipeline: showing frames only.</source>
+        <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="308"/>
+        <source>Pipeline: %1</source>
+        <translation>Pipeline: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="312"/>
+        <source>%1 cannot run on %2 frames; open another dataset.</source>
+        <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="330"/>
+        <source>Opening %1 ...</source>
+        <translation>Öffne %1 ...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <source>Image</source>
+        <translation>Bild</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="348"/>
+        <source>%1: %2, %3 frames, %4x%5%6</source>
+        <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="353"/>
+        <source>, ground truth</source>
+        <translation>, Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="355"/>
+        <source>Opened %1</source>
+        <translation>Geöffnet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="360"/>
+        <source>Sightline - %1</source>
+        <translation>Sightline - %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="395"/>
+        <source>frame %1, read in %2 ms</source>
+        <translation>Bild %1, gelesen in %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
+        <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
+        <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="419"/>
+        <source>No dataset open</source>
+        <translation>Kein Datensatz geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <source>&amp;Calibrate camera...</source>
+        <translation>Kamera &amp;kalibrieren...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_recording.cpp" line="19"/>
+        <source>Recording</source>
+        <translation>Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_recording.cpp" line="37"/>
+        <source>Recording: %1</source>
+        <translation>Aufnahme: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MappingPresenter</name>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <source>Indoor mapping (Manhattan walls)</source>
+        <translation>Innenraumkartierung (Manhattan-Wände)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <source>Occupancy, scan and walls</source>
+        <translation>Belegung, Scan und Wände</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="221"/>
+        <source>Calibrate floor</source>
+        <translation>Boden kalibrieren</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="222"/>
+        <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
+        <translation>Die Bodenebene aus den nächsten Bildern neu schätzen (der Roboter sollte freien Boden sehen).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="225"/>
+        <source>Save floor...</source>
+        <translation>Boden speichern...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="226"/>
+        <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
+        <translation>Die verwendete Bodenkalibrierung speichern, für mapping.run.floor_file oder `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="229"/>
+        <source>Save floor calibration</source>
+        <translation>Bodenkalibrierung speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="230"/>
+        <source>YAML (*.yaml)</source>
+        <translation>YAML (*.yaml)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="239"/>
+        <source>Stitched map</source>
+        <translation>Zusammengesetzte Karte</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="297"/>
+        <source>Manhattan reference reset: %1</source>
+        <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="313"/>
+        <source>Calibrating the floor again from the next frames.</source>
+        <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="325"/>
+        <source>Saved the floor calibration to %1</source>
+        <translation>Bodenkalibrierung in %1 gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MobilityImagePanel</name>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="65"/>
+        <source>Projection</source>
+        <translation>Projektion</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="66"/>
+        <source>Top view</source>
+        <translation>Draufsicht</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="67"/>
+        <source>GPR surface</source>
+        <translation>GPR-Fläche</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MobilityPresenter</name>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="108"/>
+        <source>Mobility map</source>
+        <translation>Befahrbarkeitskarte</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="130"/>
+        <source>Mobility map (red 0, green 1)</source>
+        <translation>Befahrbarkeitskarte (rot 0, grün 1)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="134"/>
+        <source>Mobility stages (Table II)</source>
+        <translation>Befahrbarkeitskarte: Stufen (Tabelle II)</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MobilityTimingPanel</name>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="21"/>
+        <source>3D colour:</source>
+        <translation>3D-Farbe:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <source>Score (rule)</source>
+        <translation>Bewertung (Regel)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <source>Score (GPR)</source>
+        <translation>Bewertung (GPR)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <source>Stage</source>
+        <translation>Stufe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <source>Time (ms)</source>
+        <translation>Zeit (ms)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="47"/>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="50"/>
+        <source>%1 mode, %2 segments</source>
+        <translation>Modus %1, %2 Segmente</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <source>, camera %1 m above the ground</source>
+        <translation>, Kamera %1 m über dem Boden</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::MonoSlamPresenter</name>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="179"/>
+        <source>the arm&apos;s poses</source>
+        <translation>Armposen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="180"/>
+        <source>the ground truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="181"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="206"/>
+        <source>Monocular SLAM (PTAM point cloud)</source>
+        <translation>Monokulares SLAM (PTAM-Punktwolke)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="225"/>
+        <source>Monocular SLAM needs a camera calibration (camera.yaml)</source>
+        <translation>Monokulares SLAM braucht eine Kamerakalibrierung (camera.yaml)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="241"/>
+        <source>Reset map</source>
+        <translation>Karte zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="242"/>
+        <source>Pause mapping</source>
+        <translation>Kartierung anhalten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="255"/>
+        <source>Tracked features (inliers green, outliers red)</source>
+        <translation>Verfolgte Merkmale (Inlier grün, Outlier rot)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="266"/>
+        <source>Metric scale (ML solid, single ratio dashed)</source>
+        <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="310"/>
+        <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
+        <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="320"/>
+        <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
+        <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="326"/>
+        <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
+        <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
     </message>
 </context>
 <context>
@@ -556,7 +955,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="159"/>
         <source>Locating</source>
-        <translation>Lokalisiere</translation>
+        <translation>Position wird gemessen</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="161"/>
@@ -566,7 +965,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="156"/>
         <source>No button here - tap again</source>
-        <translation>Kein Knopf hier - erneut tippen</translation>
+        <translation>Kein Knopf hier - nochmal tippen</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="155"/>
@@ -581,7 +980,7 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="157"/>
         <source>Searching</source>
-        <translation>Suche</translation>
+        <translation>Suche läuft</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="187"/>
@@ -606,12 +1005,290 @@ Indoor mapping, mobility maps, stereo odometry and monocular button localisation
     <message>
         <location filename="../widgets/operator_panel.cpp" line="158"/>
         <source>Tracking</source>
-        <translation>Verfolge</translation>
+        <translation>Knopf im Blick</translation>
     </message>
     <message>
         <location filename="../widgets/operator_panel.cpp" line="184"/>
         <source>Yes</source>
         <translation>Ja</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::OptionEditor</name>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="47"/>
+        <source>Range: %1 … %2%3</source>
+        <translation>Bereich: %1 … %2%3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="52"/>
+        <source>Choices: %1</source>
+        <translation>Auswahl: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="55"/>
+        <source>Default: %1%2</source>
+        <translation>Standard: %1%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/option_editor.cpp" line="71"/>
+        <source>Reset to default (%1)</source>
+        <translation>Auf Standard zurücksetzen (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::ParameterPanel</name>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="45"/>
+        <source>Filter options</source>
+        <translation>Optionen filtern</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="49"/>
+        <source>Load profile…</source>
+        <translation>Profil laden…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="52"/>
+        <source>Save profile…</source>
+        <translation>Profil speichern…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="55"/>
+        <source>Reset all</source>
+        <translation>Alle zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="154"/>
+        <source>All options reset to their defaults.</source>
+        <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="165"/>
+        <source>Loaded profile %1</source>
+        <translation>Profil %1 geladen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="175"/>
+        <source>Saved profile %1</source>
+        <translation>Profil %1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="182"/>
+        <source>Load profile</source>
+        <translation>Profil laden</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="182"/>
+        <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
+        <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="189"/>
+        <source>Save profile</source>
+        <translation>Profil speichern</translation>
+    </message>
+    <message>
+        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <source>YAML profiles (*.yaml *.yml)</source>
+        <translation>YAML-Profile (*.yaml *.yml)</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::PlaybackBar</name>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="35"/>
+        <source>Step one frame</source>
+        <translation>Ein Bild weiter</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="54"/>
+        <source>Playback speed relative to the recording&apos;s timestamps</source>
+        <translation>Wiedergabegeschwindigkeit relativ zu den Zeitstempeln der Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="58"/>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="64"/>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RecordingController</name>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="15"/>
+        <source>&amp;Record...</source>
+        <translation>&amp;Aufnehmen...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="19"/>
+        <source>Record what is playing (live sensor or recording) into a folder, in the formats Sightline reads</source>
+        <translation>Das Laufende (Live-Sensor oder Aufnahme) in einen Ordner aufnehmen, in den Formaten, die Sightline liest</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="21"/>
+        <source>&amp;Stop recording</source>
+        <translation>Aufnahme &amp;beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="40"/>
+        <source>Record into folder</source>
+        <translation>In Ordner aufnehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="47"/>
+        <source>Nothing to record: open a sensor or a recording first.</source>
+        <translation>Nichts aufzunehmen: zuerst einen Sensor oder eine Aufnahme öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="90"/>
+        <source>Recorded %1 frames into %2 (%3 dropped by the recorder), %4 MB at %5 MB/s</source>
+        <translation>%1 Bilder in %2 aufgenommen (%3 vom Rekorder verworfen), %4 MB mit %5 MB/s</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/recording_controller.cpp" line="110"/>
+        <source>REC %1 written, %2 dropped, %3 MB/s</source>
+        <translation>REC %1 geschrieben, %2 verworfen, %3 MB/s</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::ScalePlot</name>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="45"/>
+        <source>scale: waiting for displacement pairs</source>
+        <translation>Maßstab: warte auf Verschiebungspaare</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="59"/>
+        <source>pairs (map units per metre)</source>
+        <translation>Paare (Karteneinheiten pro Meter)</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::StereoVoPresenter</name>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="109"/>
+        <source>Stereo visual odometry</source>
+        <translation>Visuelle Stereo-Odometrie</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="138"/>
+        <source>Tracks (inliers green, outliers red, new blue)</source>
+        <translation>Tracks (Inlier grün, Outlier rot, neu blau)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="142"/>
+        <source>Stereo matches (right image)</source>
+        <translation>Stereo-Zuordnungen (rechtes Bild)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="148"/>
+        <source>per frame: counts</source>
+        <translation>pro Bild: Anzahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="149"/>
+        <source>ms per stage</source>
+        <translation>ms pro Stufe</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="150"/>
+        <source>residual [px]; red: gated</source>
+        <translation>Residuum [px]; rot: gesperrt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="155"/>
+        <source>Statistics over time</source>
+        <translation>Statistik im Zeitverlauf</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
+        <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 px, %7 ms%8</source>
+        <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 px, %7 ms%8</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
+        <source>, GATED: pose held</source>
+        <translation>, GESPERRT: Pose gehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="242"/>
+        <source>tracks</source>
+        <translation>Tracks</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="243"/>
+        <source>stereo</source>
+        <translation>Stereo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="244"/>
+        <source>inliers</source>
+        <translation>Inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="245"/>
+        <source>RANSAC it.</source>
+        <translation>RANSAC-It.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
+        <source>rectify</source>
+        <translation>Rektifizierung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
+        <source>pyramid</source>
+        <translation>Pyramide</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <source>tracking</source>
+        <translation>Tracking</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <source>detection</source>
+        <translation>Detektion</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <source>matching</source>
+        <translation>Matching</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <source>RANSAC</source>
+        <translation>RANSAC</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <source>refine</source>
+        <translation>Verfeinerung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="257"/>
+        <source>residual</source>
+        <translation>Residuum</translation>
     </message>
 </context>
 </TS>

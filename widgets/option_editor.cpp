@@ -43,14 +43,17 @@ QString OptionTooltip(const OptionSpec& spec) {
   QString tip = QString::fromStdString(spec.description);
   const QString unit = UnitSuffix(spec);
   if (spec.type == OptionType::kInt || spec.type == OptionType::kDouble) {
-    tip += QStringLiteral("\nRange: %1 … %2%3").arg(spec.min).arg(spec.max).arg(unit);
+    tip += QLatin1Char('\n') +
+           OptionEditor::tr("Range: %1 … %2%3").arg(spec.min).arg(spec.max).arg(unit);
   } else if (spec.type == OptionType::kChoice) {
     QStringList choices;
     for (const std::string& c : spec.choices) choices << QString::fromStdString(c);
-    tip += QStringLiteral("\nChoices: ") + choices.join(QStringLiteral(", "));
+    tip += QLatin1Char('\n') +
+           OptionEditor::tr("Choices: %1").arg(choices.join(QStringLiteral(", ")));
   }
-  tip += QStringLiteral("\nDefault: ") +
-         QString::fromStdString(FormatOptionValue(spec.default_value)) + unit;
+  tip += QLatin1Char('\n') +
+         OptionEditor::tr("Default: %1%2")
+             .arg(QString::fromStdString(FormatOptionValue(spec.default_value)), unit);
   return tip.trimmed();
 }
 

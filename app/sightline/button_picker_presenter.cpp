@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
@@ -110,6 +111,25 @@ class ButtonPickerProcessor : public FrameProcessor {
   std::unique_ptr<MetricSlamView> metric_;
 };
 
+// Why no target went out, in plain words for the operator panel. The gate's own message, with its
+// figures and in English, is the line's tooltip for the engineer beside the chair.
+QString OperatorReasonText(GateReason reason) {
+  switch (reason) {
+    case GateReason::kSend: return {};
+    case GateReason::kStopped: return ButtonPickerPresenter::tr("Stopped");
+    case GateReason::kNotConfirmed: return ButtonPickerPresenter::tr("Waiting for Yes");
+    case GateReason::kTrackingLost: return ButtonPickerPresenter::tr("Button lost");
+    case GateReason::kTrackingPoor: return ButtonPickerPresenter::tr("Button unclear");
+    case GateReason::kNoEstimate: return ButtonPickerPresenter::tr("Measuring the button");
+    case GateReason::kStale: return ButtonPickerPresenter::tr("Measuring again");
+    case GateReason::kScaleNotConverged: return ButtonPickerPresenter::tr("Measuring the distance");
+    case GateReason::kPlaneUnsound: return ButtonPickerPresenter::tr("Panel unclear");
+    case GateReason::kUncertain: return ButtonPickerPresenter::tr("Position not sure yet");
+    case GateReason::kOutsideWorkspace: return ButtonPickerPresenter::tr("Button out of reach");
+  }
+  return {};
+}
+
 OperatorState PanelState(PickerState s) {
   switch (s) {
     case PickerState::kIdle: return OperatorState::kIdle;
@@ -129,7 +149,9 @@ OperatorState PanelState(PickerState s) {
 ButtonPickerPresenter::ButtonPickerPresenter(ArmServerOptions server_defaults, bool serve, QObject* parent)
     : MonoSlamPresenter(parent), server_defaults_(std::move(server_defaults)), serve_(serve) {}
 
-QString ButtonPickerPresenter::Title() const { return tr("Button picker (monocular SLAM)"); }
+const char* ButtonPickerPresenter::TitleSource() const {
+  return QT_TR_NOOP("Button picker (monocular SLAM)");
+}
 
 Status ButtonPickerPresenter::DeclareOptions(OptionSet* options) const {
   SIGHTLINE_RETURN_IF_ERROR(MonoSlamPresenter::DeclareOptions(options));
@@ -186,11 +208,10 @@ void ButtonPickerPresenter::Attach(QMainWindow* window) {
   window->addAction(full_screen_action_);
   panel_action_ = panel_dock_->toggleViewAction();
   panel_action_->setText(tr("Operator panel"));
-  for (QAction* menu : window->menuBar()->actions()) {
-    if (menu->menu() != nullptr && menu->text().remove('&') == tr("View")) {
-      menu->menu()->addAction(panel_action_);
-      menu->menu()->addAction(full_screen_action_);
-    }
+  // By name, not by title: a translated title need not match this class's translation of it.
+  if (auto* view_menu = window->findChild<QMenu*>("view_menu")) {
+    view_menu->addAction(panel_action_);
+    view_menu->addAction(full_screen_action_);
   }
   panel_dock_->show();
 }
@@ -227,14 +248,20 @@ void ButtonPickerPresenter::Show(const PlaybackResult& result) {
       for (const cv::Point& p : view->candidate_outline) outline << QPointF(p.x, p.y);
       panel_->ShowCandidate(outline);
     } else {
-      panel_->SetState(OperatorState::kNoButton, QString::fromStdString(view->tap_status.message()));
+      // The banner says it plainly; the detector's reason is for the log.
+      panel_->SetState(OperatorState::kNoButton);
+      emit Message(0, tr("No button at the tap: %1")
+                          .arg(QString::fromStdString(view->tap_status.message())));
     }
   }
   const PickerFrame& f = view->picker;
   last_state_ = f.state;
   scale_converged_ = view->scale_converged;
   if (f.state != PickerState::kIdle && f.state != PickerState::kConfirm) {
-    panel_->SetState(PanelState(f.state), f.verdict.send ? QString() : QString::fromStdString(f.verdict.message));
+    panel_->SetState(PanelState(f.state),
+                     f.verdict.send ? QString() : OperatorReasonText(f.verdict.reason));
+    panel_->detail_label()->setToolTip(f.verdict.send ? QString()
+                                                      : QString::fromStdString(f.verdict.message));
   }
   panel_->SetDistance(f.location ? f.location->button_in_camera.norm() : std::nan(""));
 }

@@ -50,7 +50,7 @@ class ButtonPickerPresenter : public MonoSlamPresenter {
   explicit ButtonPickerPresenter(ArmServerOptions server_defaults = {}, bool serve = false,
                                  QObject* parent = nullptr);
 
-  QString Title() const override;
+  const char* TitleSource() const override;
   Status DeclareOptions(OptionSet* options) const override;
   bool Accepts(SourceKind kind) const override;
   std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) override;

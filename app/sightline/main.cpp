@@ -2,7 +2,6 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QLocale>
-#include <QTranslator>
 #include <QTimer>
 #include <cstdio>
 
@@ -15,6 +14,7 @@
 #include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
+#include "app/sightline/translation.h"
 #include "widgets/vtk_gl_widget.h"
 
 int main(int argc, char** argv) {
@@ -25,8 +25,7 @@ int main(int argc, char** argv) {
   QApplication::setApplicationName("Sightline");
   QApplication::setApplicationVersion(SIGHTLINE_VERSION);
 
-  QTranslator translator;
-  if (translator.load(QLocale(), "sightline", "_", ":/i18n")) QApplication::installTranslator(&translator);
+  sightline::InstallTranslation(QLocale(), &app);
 
   QCommandLineParser parser;
   parser.setApplicationDescription(

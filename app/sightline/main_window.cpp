@@ -119,6 +119,7 @@ void MainWindow::BuildMenus() {
   connect(quit, &QAction::triggered, this, &QWidget::close);
 
   view_menu_ = menuBar()->addMenu(tr("&View"));
+  view_menu_->setObjectName("view_menu");  // Pipelines add their views here, whatever the language.
   QAction* reset = view_menu_->addAction(tr("&Reset 3D view"));
   reset->setShortcut(Qt::Key_R | Qt::CTRL);
   connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
@@ -316,7 +317,10 @@ bool MainWindow::ActivatePipeline(const QString& title) {
 
 bool MainWindow::ActivatePipelineByWord(const QString& word) {
   for (PipelinePresenter* p : pipelines_) {
-    if (p->Title().contains(word, Qt::CaseInsensitive)) return ActivatePipeline(p->Title());
+    if (p->Title().contains(word, Qt::CaseInsensitive) ||
+        QString::fromUtf8(p->TitleSource()).contains(word, Qt::CaseInsensitive)) {
+      return ActivatePipeline(p->Title());
+    }
   }
   return false;
 }

@@ -49,7 +49,8 @@ class MainWindow : public QMainWindow {
   void AddPipeline(PipelinePresenter* presenter);
   // Makes a pipeline (by menu title) the one that runs on every frame; "" for none.
   bool ActivatePipeline(const QString& title);
-  // Activates the first pipeline whose title contains `word` (any case), e.g. "stereo".
+  // Activates the first pipeline whose title, translated or English, contains `word` (any
+  // case), e.g. "stereo".
   bool ActivatePipelineByWord(const QString& word);
   PipelinePresenter* active_pipeline() const { return active_pipeline_; }
 

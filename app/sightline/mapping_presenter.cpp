@@ -190,7 +190,9 @@ constexpr const char* kFloorLayer = "mapping/floor";
 
 MappingPresenter::MappingPresenter(QObject* parent) : PipelinePresenter(parent) {}
 
-QString MappingPresenter::Title() const { return tr("Indoor mapping (Manhattan walls)"); }
+const char* MappingPresenter::TitleSource() const {
+  return QT_TR_NOOP("Indoor mapping (Manhattan walls)");
+}
 
 Status MappingPresenter::DeclareOptions(OptionSet* options) const {
   // Headless runs never render the map per frame; the GUI shows it growing.

@@ -105,7 +105,7 @@ class MobilityProcessor : public FrameProcessor {
 
 MobilityPresenter::MobilityPresenter(QObject* parent) : PipelinePresenter(parent) {}
 
-QString MobilityPresenter::Title() const { return tr("Mobility map"); }
+const char* MobilityPresenter::TitleSource() const { return QT_TR_NOOP("Mobility map"); }
 
 Status MobilityPresenter::DeclareOptions(OptionSet* options) const {
   return options->Declare(MobilityOptions::Describe());

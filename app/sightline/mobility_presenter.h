@@ -24,7 +24,7 @@ class MobilityPresenter : public PipelinePresenter {
  public:
   explicit MobilityPresenter(QObject* parent = nullptr);
 
-  QString Title() const override;
+  const char* TitleSource() const override;
   Status DeclareOptions(OptionSet* options) const override;
   bool Accepts(SourceKind kind) const override;
   std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) override;

@@ -18,6 +18,8 @@ namespace sightline {
 
 // The convergence of both scale estimates over the pairs (ML solid, single ratio dashed).
 class ScalePlot : public QWidget {
+  Q_OBJECT  // For tr(): without it the texts are looked up under QWidget and never translated.
+
  public:
   explicit ScalePlot(QWidget* parent) : QWidget(parent) { setMinimumHeight(120); }
   void SetHistory(std::vector<ScaleSample> history) {
@@ -172,6 +174,14 @@ constexpr const char* kKeyFramesLayer = "mono/keyframes";
 constexpr const char* kTrajectoryLayer = "mono/trajectory";
 constexpr const char* kCameraLayer = "mono/camera";
 
+// The source of the metric motion, in words (MonoViewResult::metric_source is a key).
+QString MetricSourceText(const std::string& source) {
+  if (source == "arm") return MonoSlamPresenter::tr("the arm's poses");
+  if (source == "ground_truth") return MonoSlamPresenter::tr("the ground truth");
+  if (source == "none") return MonoSlamPresenter::tr("none");
+  return QString::fromStdString(source);
+}
+
 QColor QualityColor(TrackingQuality q) {
   switch (q) {
     case TrackingQuality::kGood: return QColor(40, 220, 40);
@@ -192,7 +202,9 @@ Eigen::Matrix<uint8_t, 3, 1> KeyFrameColour(int64_t keyframe) {
 
 MonoSlamPresenter::MonoSlamPresenter(QObject* parent) : PipelinePresenter(parent) {}
 
-QString MonoSlamPresenter::Title() const { return tr("Monocular SLAM (PTAM point cloud)"); }
+const char* MonoSlamPresenter::TitleSource() const {
+  return QT_TR_NOOP("Monocular SLAM (PTAM point cloud)");
+}
 
 Status MonoSlamPresenter::DeclareOptions(OptionSet* options) const {
   SIGHTLINE_RETURN_IF_ERROR(options->Declare(MonoSlamOptions::Describe()));
@@ -307,13 +319,13 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   if (view->lambda > 0) {
     scale_label_->setText(tr("Metric scale from %1: ML %2, single ratio %3 map units per metre; "
                              "map and trajectory in metres.")
-                              .arg(QString::fromStdString(view->metric_source))
+                              .arg(MetricSourceText(view->metric_source))
                               .arg(view->lambda, 0, 'g', 5)
                               .arg(view->single_ratio, 0, 'g', 5));
   } else {
     scale_label_->setText(tr("Scale unknown (measured motion: %1): the map is in arbitrary units "
                              "(first baseline = 0.1).")
-                              .arg(QString::fromStdString(view->metric_source)));
+                              .arg(MetricSourceText(view->metric_source)));
   }
   if (view->scale_history) scale_plot_->SetHistory(*view->scale_history);
 
@@ -343,3 +355,5 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
 }
 
 }  // namespace sightline
+
+#include "mono_slam_presenter.moc"

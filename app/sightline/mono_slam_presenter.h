@@ -47,7 +47,7 @@ class MonoSlamPresenter : public PipelinePresenter {
  public:
   explicit MonoSlamPresenter(QObject* parent = nullptr);
 
-  QString Title() const override;
+  const char* TitleSource() const override;
   Status DeclareOptions(OptionSet* options) const override;
   bool Accepts(SourceKind kind) const override;
   std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) override;

@@ -2,6 +2,7 @@
 // its results. The main window lists presenters in its Pipeline menu; one is active at a time.
 #pragma once
 
+#include <QCoreApplication>
 #include <QObject>
 #include <QString>
 #include <memory>
@@ -23,8 +24,13 @@ class PipelinePresenter : public QObject {
   using QObject::QObject;
   ~PipelinePresenter() override = default;
 
-  // Menu title, e.g. "Indoor mapping".
-  virtual QString Title() const = 0;
+  // Menu title in English, marked with QT_TR_NOOP so lupdate files it under the presenter's
+  // class, e.g. "Indoor mapping". `sightline --pipeline WORD` matches it in any language.
+  virtual const char* TitleSource() const = 0;
+  // Menu title in the user's language.
+  QString Title() const {
+    return QCoreApplication::translate(metaObject()->className(), TitleSource());
+  }
   // Declares the pipeline's options (its Describe() tables) into the window's option set.
   virtual Status DeclareOptions(OptionSet* options) const = 0;
   // Whether the pipeline can run on frames of this kind.

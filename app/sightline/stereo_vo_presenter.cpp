@@ -106,7 +106,7 @@ constexpr const char* kCameraLayer = "vo/camera";
 
 StereoVoPresenter::StereoVoPresenter(QObject* parent) : PipelinePresenter(parent) {}
 
-QString StereoVoPresenter::Title() const { return tr("Stereo visual odometry"); }
+const char* StereoVoPresenter::TitleSource() const { return QT_TR_NOOP("Stereo visual odometry"); }
 
 Status StereoVoPresenter::DeclareOptions(OptionSet* options) const {
   return options->Declare(StereoOdometryOptions::Describe());

@@ -28,7 +28,7 @@ class StereoVoPresenter : public PipelinePresenter {
  public:
   explicit StereoVoPresenter(QObject* parent = nullptr);
 
-  QString Title() const override;
+  const char* TitleSource() const override;
   Status DeclareOptions(OptionSet* options) const override;
   bool Accepts(SourceKind kind) const override;
   std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) override;
