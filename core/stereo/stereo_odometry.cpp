@@ -16,7 +16,7 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
   }
   return rectify.IsValid(error) && tracking.IsValid(error) && matching.IsValid(error) &&
          ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
-         keyframe.IsValid(error);
+         keyframe.IsValid(error) && window.IsValid(error);
 }
 
 OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
@@ -29,6 +29,7 @@ OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
       .Nested(&O::refine, MotionRefinerOptions::Describe())
       .Nested(&O::gate, MotionGateOptions::Describe())
       .Nested(&O::keyframe, KeyframeOptions::Describe())
+      .Nested(&O::window, WindowBundleOptions::Describe())
       .Int("stereo.refine_rounds", &O::refine_rounds, "", 1, 10, 1,
            "Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.");
 }
@@ -55,6 +56,20 @@ void Record(TimingStats* timing, const char* stage, double ms, double* field) {
   if (timing) timing->Add(stage, ms);
 }
 
+// Stereo observations for the window: the features marked in `use`, and every new one.
+template <typename Feature>
+std::vector<TrackObservation> Observations(const std::vector<Feature>& kept,
+                                            const std::vector<int>& kept_source,
+                                            const std::vector<unsigned char>& use) {
+  std::vector<TrackObservation> out;
+  out.reserve(kept.size());
+  for (size_t k = 0; k < kept.size(); ++k) {
+    if (!use[k] && kept_source[k] >= 0) continue;
+    out.push_back({kept[k].id, kept[k].left.x, kept[k].left.y, kept[k].right.x});
+  }
+  return out;
+}
+
 }  // namespace
 
 StereoOdometry::StereoOdometry(StereoOdometryOptions options)
@@ -64,7 +79,8 @@ StereoOdometry::StereoOdometry(StereoOdometryOptions options)
       matcher_(options.matching),
       estimator_(options.ransac),
       refiner_(options.refine),
-      gate_(options.gate) {}
+      gate_(options.gate),
+      window_(options.window) {}
 
 Status StereoOdometry::Configure(const StereoRig& rig) {
   std::string error;
@@ -95,6 +111,7 @@ void StereoOdometry::Reset() {
   world_from_keyframe_ = Eigen::Isometry3d::Identity();
   keyframe_tracks_ = 0;
   gate_.Reset();
+  window_.Reset();
 }
 
 StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
@@ -238,6 +255,11 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   std::vector<int> inliers;
   if (!has_previous_) {
     stats.status = "first frame";
+    if (options_.window.enabled) {
+      window_.Reset();
+      window_.Add(cam, world_from_camera_,
+                  Observations(kept, kept_source, std::vector<unsigned char>(kept.size(), 1)));
+    }
   } else {
     MotionCandidate candidate;
     const MotionHypothesis h = estimator_.Estimate(cam, correspondences);
@@ -309,6 +331,25 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
         new_keyframe = static_cast<double>(from_keyframe.size()) <
                        options_.keyframe.min_track_fraction * static_cast<double>(keyframe_tracks_);
       }
+    }
+    if (options_.window.enabled) {
+      // Sliding-window adjustment over the frame's consistent tracks (inliers) and its new
+      // features (seen again later); a frame whose motion was not measured restarts the window.
+      if (stats.gated) window_.Reset();
+      std::vector<unsigned char> use(kept.size(), stats.gated ? 1 : 0);
+      if (!stats.gated) {
+        for (int i : inliers) use[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
+      }
+      WindowBundleSummary summary;
+      const Eigen::Isometry3d adjusted =
+          window_.Add(cam, world_from_current, Observations(kept, kept_source, use), &summary);
+      if (summary.adjusted) {
+        world_from_current = adjusted;
+        result->current_from_previous = world_from_current.inverse() * world_from_camera_;
+      }
+      stats.window_points = summary.points;
+      stats.window_rms_px = summary.final_rms_px;
+      Record(timing, "window", clock.Lap(), &stats.window_ms);
     }
     world_from_camera_ = world_from_current;
     last_motion_ = result->current_from_previous;

@@ -25,6 +25,7 @@
 #include "core/stereo/motion_refiner.h"
 #include "core/stereo/rectifier.h"
 #include "core/stereo/stereo_matcher.h"
+#include "core/stereo/window_bundle_adjuster.h"
 
 namespace sightline {
 
@@ -37,6 +38,7 @@ struct StereoOdometryOptions {
   MotionRefinerOptions refine;
   MotionGateOptions gate;
   KeyframeOptions keyframe;
+  WindowBundleOptions window;
   int refine_rounds = 2;  // Refine, re-select inliers by UMBRAL3, refine again (rounds in total).
 
   bool IsValid(std::string* error) const;
@@ -71,13 +73,15 @@ struct FrameStats {
   int ransac_iterations = 0;   // Rigid samples tried.
   int rigidity_failures = 0;   // Samples rejected by the rigidity test.
   double residual_px = 0;      // Refined RMS reprojection error over the inliers [px].
+  int window_points = 0;       // Points of the sliding-window bundle adjustment.
+  double window_rms_px = 0;    // Its RMS reprojection error after adjustment [px].
   double translation_m = 0;    // Length of the applied motion [m].
   double rotation_deg = 0;     // Angle of the applied motion [deg].
   bool gated = false;          // The estimate was rejected (or failed) and a fallback applied.
   std::string status = "ok";   // "ok", "first frame", or why the estimate was rejected.
   // Per-stage wall time [ms].
   double rectify_ms = 0, pyramid_ms = 0, tracking_ms = 0, matching_ms = 0, detection_ms = 0,
-         ransac_ms = 0, refine_ms = 0, total_ms = 0;
+         ransac_ms = 0, refine_ms = 0, window_ms = 0, total_ms = 0;
 };
 
 // The result of one frame, shared immutable with views.
@@ -114,7 +118,7 @@ class StereoOdometry {
 
   // Processes the next frame. Errors only when not configured; `timing` (optional) receives
   // every stage's duration under "rectify", "pyramid", "tracking", "matching", "detection",
-  // "ransac", "refine".
+  // "ransac", "refine", "window".
   StatusOr<std::shared_ptr<const StereoOdometryResult>> Process(const StereoFrame& frame,
                                                                 TimingStats* timing = nullptr);
   // Forgets features, motion history and pose (back to identity).
@@ -136,6 +140,7 @@ class StereoOdometry {
   MotionEstimator estimator_;
   MotionRefiner refiner_;
   MotionGate gate_;
+  WindowBundleAdjuster window_;
   bool configured_ = false;
   int pyramid_levels_ = 3;
   int pyramid_window_ = 15;

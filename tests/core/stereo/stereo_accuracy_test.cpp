@@ -127,13 +127,11 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   std::map<std::string, double> m;
   for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
   EXPECT_LT(m["kitti_t_err_pct"], 0.5);
-  // The issue asks for < 0.5 deg/100 m; measured 0.83 deg/100 m on this corridor (was 1.0-1.5
-  // before turn onsets were re-tracked). Left: a person walking ahead whose features pass the
-  // inlier test, and per-frame rotation noise that adds up between segment ends (0.75 on the
-  // same corridor without people). Motion against a keyframe (stereo.keyframe.enabled) gave
-  // only 0.73 on the 400-frame corridor. The bound guards against regressions; it is not the
-  // target.
-  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
+  // The issue asks for < 0.5 deg/100 m. Measured 0.63 deg/100 m with the sliding-window bundle
+  // adjustment (stereo.window.*), 0.83 without it; over seeds 1-3 of this corridor the mean is
+  // 0.76 (0.96 without). Most of it is on the 5 m segments (0.04 deg of rotation error over 50
+  // frames). The bound fails when the window adjustment stops working; it is not the target.
+  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 0.75);
 }
 
 }  // namespace

@@ -1,0 +1,83 @@
+// Sliding-window bundle adjustment of the stereo odometry: the last few frames' poses and the
+// points their tracks see are refined together on the stereo reprojection error (left u, v and
+// right u of every observation), with the oldest frame of the window held fixed. A track seen in
+// several frames ties their poses to one 3D point, so the per-frame motion errors of
+// frame-to-frame estimation do not simply add up.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "core/options/option_table.h"
+#include "core/stereo/stereo_geometry.h"
+
+namespace sightline {
+
+// Keys "stereo.window.*".
+struct WindowBundleOptions {
+  bool enabled = true;         // Refine each accepted pose in the window.
+  int frames = 6;              // Frames in the window (the oldest is held fixed).
+  int spacing = 1;             // Every spacing-th frame stays in the window; others are replaced.
+  int max_iterations = 6;      // Levenberg-Marquardt iterations per frame.
+  double huber_px = 0.5;       // Huber threshold of the robust weight [px].
+  double max_error_px = 2.0;   // Observations reprojecting worse after refinement are dropped.
+  double min_disparity_px = 0.5;  // Observations with less disparity (no depth) are not used.
+  bool center_weighting = true;   // Weight by 1 / (|u - cx| / cx + 0.05), as the refinement.
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<WindowBundleOptions> Describe();
+};
+
+// One stereo observation of a track in a rectified frame.
+struct TrackObservation {
+  int64_t track_id = -1;
+  float left_u = 0, v = 0, right_u = 0;
+};
+
+// What one adjustment did.
+struct WindowBundleSummary {
+  int frames = 0;            // Frames in the window.
+  int points = 0;            // Tracks seen in at least two of them (the adjusted points).
+  int observations = 0;      // Their observations.
+  int dropped = 0;           // Observations dropped as outliers.
+  int iterations = 0;        // Iterations run.
+  double initial_rms_px = 0; // RMS reprojection error before ...
+  double final_rms_px = 0;   // ... and after.
+  bool adjusted = false;     // False when the window held too little to adjust.
+};
+
+// The window. Add() each accepted frame with its pose estimate and observations; it returns the
+// refined pose of that frame. Reset() after a frame whose motion could not be measured.
+class WindowBundleAdjuster {
+ public:
+  explicit WindowBundleAdjuster(WindowBundleOptions options = {}) : options_(options) {}
+
+  // Appends the frame (dropping the oldest beyond options.frames), adjusts the window and returns
+  // the refined world_from_camera of the appended frame (its input when nothing could be adjusted).
+  Eigen::Isometry3d Add(const RectifiedStereoCamera& camera,
+                        const Eigen::Isometry3d& world_from_camera,
+                        std::vector<TrackObservation> observations,
+                        WindowBundleSummary* summary = nullptr);
+  void Reset() {
+    frames_.clear();
+    added_ = 0;
+  }
+  size_t size() const { return frames_.size(); }
+
+ private:
+  struct Frame {
+    Eigen::Isometry3d camera_from_world;
+    std::vector<TrackObservation> observations;
+    std::vector<unsigned char> usable;  // Per observation: not (yet) dropped as an outlier.
+    bool keep = true;  // Stays when the next frame arrives (else the next frame replaces it).
+  };
+
+  WindowBundleOptions options_;
+  std::deque<Frame> frames_;
+  int64_t added_ = 0;  // Frames added since the last Reset().
+};
+
+}  // namespace sightline
