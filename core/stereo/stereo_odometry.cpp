@@ -16,7 +16,7 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
   }
   return rectify.IsValid(error) && tracking.IsValid(error) && matching.IsValid(error) &&
          ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
-         keyframe.IsValid(error);
+         keyframe.IsValid(error) && disparity_offset.IsValid(error);
 }
 
 OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
@@ -29,6 +29,7 @@ OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
       .Nested(&O::refine, MotionRefinerOptions::Describe())
       .Nested(&O::gate, MotionGateOptions::Describe())
       .Nested(&O::keyframe, KeyframeOptions::Describe())
+      .Nested(&O::disparity_offset, DisparityOffsetOptions::Describe())
       .Int("stereo.refine_rounds", &O::refine_rounds, "", 1, 10, 1,
            "Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.");
 }
@@ -64,7 +65,8 @@ StereoOdometry::StereoOdometry(StereoOdometryOptions options)
       matcher_(options.matching),
       estimator_(options.ransac),
       refiner_(options.refine),
-      gate_(options.gate) {}
+      gate_(options.gate),
+      disparity_offset_(options.disparity_offset) {}
 
 Status StereoOdometry::Configure(const StereoRig& rig) {
   std::string error;
@@ -95,6 +97,7 @@ void StereoOdometry::Reset() {
   world_from_keyframe_ = Eigen::Isometry3d::Identity();
   keyframe_tracks_ = 0;
   gate_.Reset();
+  disparity_offset_.Reset();
 }
 
 StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
@@ -221,6 +224,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       StereoCorrespondence c;
       c.previous = {p.left.x, p.left.y, p.right.x};
       c.current = {f.left.x, f.left.y, f.right.x};
+      disparity_offset_.Apply(&c);
       Triangulate(cam, &c);
       correspondences.push_back(c);
       correspondence_feature.push_back(static_cast<int>(kept.size()));
@@ -232,6 +236,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   }
   stats.stereo_matches = static_cast<int>(kept.size());
   stats.correspondences = static_cast<int>(correspondences.size());
+  stats.disparity_offset_px = disparity_offset_.offset_px();
   Record(timing, "matching", clock.Lap(), &stats.matching_ms);
 
   // Motion: RANSAC, refinement, gate.
@@ -240,6 +245,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     stats.status = "first frame";
   } else {
     MotionCandidate candidate;
+    DisparityOffsetMeasurement offset_seen;
     const MotionHypothesis h = estimator_.Estimate(cam, correspondences);
     stats.ransac_iterations = h.iterations;
     stats.rigidity_failures = h.rigidity_failures;
@@ -263,6 +269,10 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       candidate.inliers = static_cast<int>(inliers.size());
       stats.residual_px = summary.final_rms_px;
       stats.inliers = candidate.inliers;
+      if (options_.disparity_offset.enabled) {
+        offset_seen = MeasureDisparityOffset(cam, correspondences, inliers, motion,
+                                             options_.disparity_offset);
+      }
     } else {
       candidate.failure = stats.stereo_matches == 0
                               ? "no stereo matches (no texture, lens cap, or identical left and "
@@ -272,6 +282,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     Record(timing, "refine", clock.Lap(), &stats.refine_ms);
     const GateDecision decision = gate_.Check(candidate, dt);
     stats.gated = !decision.accepted;
+    if (decision.accepted) disparity_offset_.Update(offset_seen);
     if (!decision.accepted) stats.status = decision.reason;
     result->current_from_previous = decision.current_from_previous;
     if (stats.gated && stats.stereo_matches < options_.gate.min_inliers) {
@@ -296,6 +307,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
         StereoCorrespondence c;
         c.previous = {f.keyframe_left.x, f.keyframe_left.y, f.keyframe_right.x};
         c.current = {f.left.x, f.left.y, f.right.x};
+        disparity_offset_.Apply(&c);
         Triangulate(cam, &c);
         from_keyframe.push_back(c);
       }

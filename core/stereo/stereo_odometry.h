@@ -17,6 +17,7 @@
 #include "core/common/timing.h"
 #include "core/common/trajectory.h"
 #include "core/options/option_table.h"
+#include "core/stereo/disparity_offset.h"
 #include "core/stereo/feature_tracker.h"
 #include "core/stereo/image_pyramid.h"
 #include "core/stereo/keyframe.h"
@@ -37,6 +38,7 @@ struct StereoOdometryOptions {
   MotionRefinerOptions refine;
   MotionGateOptions gate;
   KeyframeOptions keyframe;
+  DisparityOffsetOptions disparity_offset;
   int refine_rounds = 2;  // Refine, re-select inliers by UMBRAL3, refine again (rounds in total).
 
   bool IsValid(std::string* error) const;
@@ -71,6 +73,7 @@ struct FrameStats {
   int ransac_iterations = 0;   // Rigid samples tried.
   int rigidity_failures = 0;   // Samples rejected by the rigidity test.
   double residual_px = 0;      // Refined RMS reprojection error over the inliers [px].
+  double disparity_offset_px = 0;  // Disparity offset applied to this frame's matches [px].
   double translation_m = 0;    // Length of the applied motion [m].
   double rotation_deg = 0;     // Angle of the applied motion [deg].
   bool gated = false;          // The estimate was rejected (or failed) and a fallback applied.
@@ -136,6 +139,7 @@ class StereoOdometry {
   MotionEstimator estimator_;
   MotionRefiner refiner_;
   MotionGate gate_;
+  DisparityOffsetEstimator disparity_offset_;
   bool configured_ = false;
   int pyramid_levels_ = 3;
   int pyramid_window_ = 15;

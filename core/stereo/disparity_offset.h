@@ -1,0 +1,80 @@
+// Online estimate of a constant disparity offset of the stereo rig: measured disparities that are
+// all too small (or too large) by the same fraction of a pixel, as a principal-point difference
+// left in the rectification or a matcher bias common to every feature gives. Such an offset moves
+// far points much further than near ones (depth error ~ Z^2 offset / (f b)), so the translation
+// comes out too long or too short, and more so when only far points survive (fast motion,
+// subsampled input). The offset is observable from motion: under a forward or turning motion the
+// image expansion of a point must agree with the change of its disparity. Each accepted frame pair
+// gives a measurement of the offset (with the motion and the points marginalised); the estimate is
+// their information-weighted mean, with a prior at zero, and is applied to the right columns of
+// all later correspondences. Without motion the measurement carries no information and the
+// estimate stays where it is.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "core/options/option_table.h"
+#include "core/stereo/stereo_correspondence.h"
+#include "core/stereo/stereo_geometry.h"
+
+namespace sightline {
+
+// Keys "stereo.disparity_offset.*".
+struct DisparityOffsetOptions {
+  bool enabled = true;         // Estimate and apply the offset.
+  double prior_sigma_px = 0.1;  // Prior standard deviation of the offset around zero [px].
+  double max_offset_px = 1.0;  // The estimate is clamped to +-this [px].
+  double huber_px = 0.5;       // Huber threshold of the measurement's robust weights [px].
+  double min_noise_px = 0.1;   // Floor of the residual RMS that scales a measurement [px].
+  double min_parallax = 0.1;   // Pairs whose translation is less than this fraction of the
+                               // inliers' median depth are not measured.
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<DisparityOffsetOptions> Describe();
+};
+
+// The offset seen in one frame pair, relative to the offset already applied to it.
+struct DisparityOffsetMeasurement {
+  bool valid = false;
+  double gradient = 0;     // Of the cost in the offset, motion and points marginalised [1/px].
+  double information = 0;  // Its curvature [1/px^2], already divided by the residual variance.
+  int points = 0;          // Correspondences used.
+  double parallax = 0;     // Translation / median depth of the points used.
+};
+
+// Measures the disparity offset in one frame pair: the correspondences' observations (with the
+// current offset applied), the refined motion and its inliers. One Gauss-Newton step of the
+// two-frame bundle adjustment with the offset as a seventh unknown, with the points and then the
+// motion marginalised. Pairs with less parallax than options.min_parallax are not measured
+// (valid = false).
+DisparityOffsetMeasurement MeasureDisparityOffset(
+    const RectifiedStereoCamera& camera, const std::vector<StereoCorrespondence>& correspondences,
+    const std::vector<int>& inliers, const Eigen::Isometry3d& current_from_previous,
+    const DisparityOffsetOptions& options);
+
+class DisparityOffsetEstimator {
+ public:
+  explicit DisparityOffsetEstimator(DisparityOffsetOptions options = {}) : options_(options) {
+    Reset();
+  }
+
+  // Back to the prior: no offset.
+  void Reset();
+  // Disparity to add to every measured disparity [px] (0 when disabled).
+  double offset_px() const { return options_.enabled ? offset_px_ : 0.0; }
+  // Corrects both observations of a correspondence (moves the right columns); call before
+  // Triangulate.
+  void Apply(StereoCorrespondence* c) const;
+  // Folds in the measurement of an accepted frame pair.
+  void Update(const DisparityOffsetMeasurement& m);
+  const DisparityOffsetOptions& options() const { return options_; }
+
+ private:
+  DisparityOffsetOptions options_;
+  double offset_px_ = 0;
+  double information_ = 0;  // Prior plus all measurements [1/px^2].
+};
+
+}  // namespace sightline
