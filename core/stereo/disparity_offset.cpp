@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/stereo/motion_estimator.h"
 #include "core/stereo/option_check.h"
 
 namespace sightline {
@@ -17,6 +18,7 @@ bool DisparityOffsetOptions::IsValid(std::string* error) const {
   if (!(huber_px > 0)) return Invalid(error, "stereo.disparity_offset.huber_px must be > 0");
   if (!(min_noise_px > 0)) return Invalid(error, "stereo.disparity_offset.min_noise_px must be > 0");
   if (!(min_parallax >= 0)) return Invalid(error, "stereo.disparity_offset.min_parallax must be >= 0");
+  if (!(min_applied_px >= 0)) return Invalid(error, "stereo.disparity_offset.min_applied_px must be >= 0");
   return true;
 }
 
@@ -37,9 +39,12 @@ OptionTable<DisparityOffsetOptions> DisparityOffsetOptions::Describe() {
       .Double("min_noise_px", &O::min_noise_px, "px", 1e-3, 10, 0.01,
               "Floor of the residual RMS by which each frame pair's measurement is weighted.")
       .Double("min_parallax", &O::min_parallax, "", 0, 10, 0.01,
-              "A frame pair measures the offset only when its translation is at least this "
-              "fraction of its inliers' median depth: with less parallax, tracking errors "
-              "dominate the measurement.");
+              "The offset is measured between an anchor frame and the first later frame whose "
+              "translation from it reaches this fraction of the common tracks' median depth: "
+              "with less parallax, tracking errors dominate the measurement.")
+      .Double("min_applied_px", &O::min_applied_px, "px", 0, 10, 0.01,
+              "Smaller estimates are not applied: within the spread the estimate shows on a rig "
+              "without offset (the simulator: +-0.03 px).");
 }
 
 namespace {
@@ -82,16 +87,6 @@ DisparityOffsetMeasurement MeasureDisparityOffset(
     const std::vector<int>& inliers, const Eigen::Isometry3d& current_from_previous,
     const DisparityOffsetOptions& options) {
   DisparityOffsetMeasurement m;
-  // Parallax first: pairs below min_parallax are not measured.
-  std::vector<double> depths;
-  depths.reserve(inliers.size());
-  for (int i : inliers) depths.push_back(correspondences[static_cast<size_t>(i)].x_previous.z());
-  if (depths.size() < 6) return m;
-  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
-  const double median_depth = depths[depths.size() / 2];
-  if (!(median_depth > 0)) return m;
-  m.parallax = current_from_previous.translation().norm() / median_depth;
-  if (!(m.parallax >= options.min_parallax)) return m;
   const Eigen::Matrix3d rotation = current_from_previous.rotation();
   Matrix7d s = Matrix7d::Zero();
   Vector7d b = Vector7d::Zero();
@@ -171,6 +166,8 @@ DisparityOffsetMeasurement MeasureDisparityOffset(
 
 void DisparityOffsetEstimator::Reset() {
   offset_px_ = 0;
+  anchor_.clear();
+  world_from_anchor_ = Eigen::Isometry3d::Identity();
   information_ = 1.0 / (options_.prior_sigma_px * options_.prior_sigma_px);
 }
 
@@ -181,12 +178,71 @@ void DisparityOffsetEstimator::Apply(StereoCorrespondence* c) const {
 }
 
 void DisparityOffsetEstimator::Update(const DisparityOffsetMeasurement& m) {
-  if (!options_.enabled || !m.valid) return;
-  // The pair's own estimate is offset - gradient / information; the running estimate is the
-  // information-weighted mean of the prior and all pairs.
+  if (!options_.enabled || !m.valid || !(m.information > 1e-9)) return;
+  // The pair's own estimate: the offset it was measured with plus its correction. The running
+  // estimate is the information-weighted mean of the prior and all pairs.
+  const double pair = offset_px() - m.gradient / m.information;
+  offset_px_ = (information_ * offset_px_ + m.information * pair) / (information_ + m.information);
+  offset_px_ = std::clamp(offset_px_, -options_.max_offset_px, options_.max_offset_px);
   information_ += m.information;
-  offset_px_ = std::clamp(offset_px_ - m.gradient / information_, -options_.max_offset_px,
-                          options_.max_offset_px);
+}
+
+void DisparityOffsetEstimator::Observe(const RectifiedStereoCamera& camera,
+                                       const MotionRefiner& refiner, double inlier_threshold_px,
+                                       std::vector<OffsetTrack> tracks,
+                                       const Eigen::Isometry3d& world_from_camera,
+                                       bool motion_accepted) {
+  if (!options_.enabled) return;
+  std::sort(tracks.begin(), tracks.end(),
+            [](const OffsetTrack& a, const OffsetTrack& b) { return a.id < b.id; });
+  auto make_anchor = [&]() {
+    anchor_ = std::move(tracks);
+    world_from_anchor_ = world_from_camera;
+  };
+  if (anchor_.empty() || !motion_accepted) {
+    make_anchor();
+    return;
+  }
+  // Tracks seen at the anchor and now.
+  std::vector<StereoCorrespondence> correspondences;
+  size_t a = 0;
+  for (const OffsetTrack& t : tracks) {
+    while (a < anchor_.size() && anchor_[a].id < t.id) ++a;
+    if (a == anchor_.size()) break;
+    if (anchor_[a].id != t.id) continue;
+    StereoCorrespondence c;
+    c.previous = anchor_[a].observation;
+    c.current = t.observation;
+    Apply(&c);
+    if (!(c.previous.disparity() > 0) || !(c.current.disparity() > 0)) continue;
+    Triangulate(camera, &c);
+    correspondences.push_back(c);
+  }
+  constexpr size_t kMinTracks = 20;  // Fewer common tracks or inliers: start a new anchor.
+  if (correspondences.size() < kMinTracks) {
+    make_anchor();
+    return;
+  }
+  Eigen::Isometry3d motion = world_from_camera.inverse() * world_from_anchor_;
+  std::vector<double> depths;
+  depths.reserve(correspondences.size());
+  for (const StereoCorrespondence& c : correspondences) depths.push_back(c.x_previous.z());
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  if (!(depths[depths.size() / 2] > 0) ||
+      motion.translation().norm() < options_.min_parallax * depths[depths.size() / 2]) {
+    return;  // Not enough parallax yet: keep the anchor.
+  }
+  // The accumulated motion is close; refine it on the anchor pair's own inliers.
+  std::vector<int> inliers = MotionEstimator::Inliers(camera, correspondences, motion,
+                                                      2 * inlier_threshold_px);
+  if (inliers.size() >= kMinTracks) {
+    refiner.Refine(camera, correspondences, inliers, &motion);
+    inliers = MotionEstimator::Inliers(camera, correspondences, motion, inlier_threshold_px);
+    if (inliers.size() >= kMinTracks) {
+      Update(MeasureDisparityOffset(camera, correspondences, inliers, motion, options_));
+    }
+  }
+  make_anchor();
 }
 
 }  // namespace sightline

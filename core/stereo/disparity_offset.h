@@ -12,10 +12,13 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "core/options/option_table.h"
+#include "core/stereo/motion_refiner.h"
 #include "core/stereo/stereo_correspondence.h"
 #include "core/stereo/stereo_geometry.h"
 
@@ -28,8 +31,9 @@ struct DisparityOffsetOptions {
   double max_offset_px = 1.0;  // The estimate is clamped to +-this [px].
   double huber_px = 0.5;       // Huber threshold of the measurement's robust weights [px].
   double min_noise_px = 0.1;   // Floor of the residual RMS that scales a measurement [px].
-  double min_parallax = 0.1;   // Pairs whose translation is less than this fraction of the
-                               // inliers' median depth are not measured.
+  double min_parallax = 0.1;   // A pair is measured once the translation from the anchor reaches
+                               // this fraction of the common tracks' median depth.
+  double min_applied_px = 0.05;  // Smaller estimates are not applied [px].
 
   bool IsValid(std::string* error) const;
   static OptionTable<DisparityOffsetOptions> Describe();
@@ -41,14 +45,18 @@ struct DisparityOffsetMeasurement {
   double gradient = 0;     // Of the cost in the offset, motion and points marginalised [1/px].
   double information = 0;  // Its curvature [1/px^2], already divided by the residual variance.
   int points = 0;          // Correspondences used.
-  double parallax = 0;     // Translation / median depth of the points used.
+};
+
+// A feature's stereo observation in one frame, as matched (no offset applied).
+struct OffsetTrack {
+  int64_t id = -1;
+  StereoObservation observation;
 };
 
 // Measures the disparity offset in one frame pair: the correspondences' observations (with the
 // current offset applied), the refined motion and its inliers. One Gauss-Newton step of the
 // two-frame bundle adjustment with the offset as a seventh unknown, with the points and then the
-// motion marginalised. Pairs with less parallax than options.min_parallax are not measured
-// (valid = false).
+// motion marginalised. Meaningful only for pairs with enough parallax (see Observe).
 DisparityOffsetMeasurement MeasureDisparityOffset(
     const RectifiedStereoCamera& camera, const std::vector<StereoCorrespondence>& correspondences,
     const std::vector<int>& inliers, const Eigen::Isometry3d& current_from_previous,
@@ -60,21 +68,37 @@ class DisparityOffsetEstimator {
     Reset();
   }
 
-  // Back to the prior: no offset.
+  // Back to the prior: no offset, no anchor.
   void Reset();
-  // Disparity to add to every measured disparity [px] (0 when disabled).
-  double offset_px() const { return options_.enabled ? offset_px_ : 0.0; }
+  // Disparity to add to every measured disparity [px]: the estimate, or 0 when disabled or when
+  // the estimate is smaller than min_applied_px.
+  double offset_px() const {
+    return options_.enabled && std::abs(offset_px_) >= options_.min_applied_px ? offset_px_ : 0.0;
+  }
+  // The running estimate, applied or not [px].
+  double estimate_px() const { return offset_px_; }
   // Corrects both observations of a correspondence (moves the right columns); call before
   // Triangulate.
   void Apply(StereoCorrespondence* c) const;
   // Folds in the measurement of an accepted frame pair.
   void Update(const DisparityOffsetMeasurement& m);
+  // Called once per frame with its tracks (as matched) and pose. The first frame, and any frame
+  // after a rejected motion or when too few of the anchor's tracks are left, becomes the anchor.
+  // Once the camera has moved min_parallax of the common tracks' median depth from the anchor,
+  // the pair (anchor, this frame) is measured: inliers at the motion between the two poses,
+  // refined with `refiner`, MeasureDisparityOffset, Update; this frame becomes the anchor. So
+  // slow motion is measured over several frames instead of from pairs with little parallax.
+  void Observe(const RectifiedStereoCamera& camera, const MotionRefiner& refiner,
+               double inlier_threshold_px, std::vector<OffsetTrack> tracks,
+               const Eigen::Isometry3d& world_from_camera, bool motion_accepted);
   const DisparityOffsetOptions& options() const { return options_; }
 
  private:
   DisparityOffsetOptions options_;
   double offset_px_ = 0;
   double information_ = 0;  // Prior plus all measurements [1/px^2].
+  std::vector<OffsetTrack> anchor_;  // Sorted by id; empty = no anchor.
+  Eigen::Isometry3d world_from_anchor_ = Eigen::Isometry3d::Identity();
 };
 
 }  // namespace sightline

@@ -245,7 +245,6 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     stats.status = "first frame";
   } else {
     MotionCandidate candidate;
-    DisparityOffsetMeasurement offset_seen;
     const MotionHypothesis h = estimator_.Estimate(cam, correspondences);
     stats.ransac_iterations = h.iterations;
     stats.rigidity_failures = h.rigidity_failures;
@@ -269,10 +268,6 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       candidate.inliers = static_cast<int>(inliers.size());
       stats.residual_px = summary.final_rms_px;
       stats.inliers = candidate.inliers;
-      if (options_.disparity_offset.enabled) {
-        offset_seen = MeasureDisparityOffset(cam, correspondences, inliers, motion,
-                                             options_.disparity_offset);
-      }
     } else {
       candidate.failure = stats.stereo_matches == 0
                               ? "no stereo matches (no texture, lens cap, or identical left and "
@@ -282,7 +277,6 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     Record(timing, "refine", clock.Lap(), &stats.refine_ms);
     const GateDecision decision = gate_.Check(candidate, dt);
     stats.gated = !decision.accepted;
-    if (decision.accepted) disparity_offset_.Update(offset_seen);
     if (!decision.accepted) stats.status = decision.reason;
     result->current_from_previous = decision.current_from_previous;
     if (stats.gated && stats.stereo_matches < options_.gate.min_inliers) {
@@ -350,6 +344,12 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     result->features.push_back(t);
   }
 
+  std::vector<OffsetTrack> offset_tracks(kept.size());
+  for (size_t k = 0; k < kept.size(); ++k) {
+    offset_tracks[k] = {kept[k].id, {kept[k].left.x, kept[k].left.y, kept[k].right.x}};
+  }
+  disparity_offset_.Observe(cam, refiner_, options_.ransac.inlier_threshold_px,
+                            std::move(offset_tracks), world_from_camera_, !stats.gated);
   features_ = std::move(kept);
   if (options_.keyframe.enabled && !has_keyframe_) {
     // This frame becomes the keyframe: its stereo observations are what later frames refer to.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numeric>
+#include <random>
 
 #include "core/stereo/motion_refiner.h"
 #include "stereo_test_util.h"
@@ -88,6 +89,49 @@ TEST(DisparityOffset, StaysAtZeroWithoutParallaxAndWithoutOffset) {
   disabled.Reset();
   for (int i = 0; i < 3; ++i) Step(camera, Biased(exact, 0.3), FastMotion(), &disabled);
   EXPECT_EQ(disabled.offset_px(), 0.0);
+}
+
+// Tracks of fixed world points seen from a camera moving 0.3 m forward per frame (too little
+// parallax for one frame pair), their disparities `offset_px` too small.
+std::vector<OffsetTrack> TracksAt(const RectifiedStereoCamera& camera,
+                                  const Eigen::Isometry3d& world_from_camera, double offset_px,
+                                  unsigned seed) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> depth(4, 30), side(-1, 1);
+  std::mt19937 noise_rng(seed);
+  std::normal_distribution<double> noise(0, 0.1);
+  std::vector<OffsetTrack> tracks;
+  for (int i = 0; i < 400; ++i) {
+    const double z = depth(rng);
+    const Eigen::Vector3d world(side(rng) * 0.5 * z, side(rng) * 0.3 * z, z);
+    const Eigen::Vector3d x = world_from_camera.inverse() * world;
+    if (!(x.z() > 1)) continue;
+    const Eigen::Vector2d l = camera.ProjectLeft(x), r = camera.ProjectRight(x);
+    if (l.x() < 0 || l.y() < 0 || r.x() < 0 || l.x() >= camera.width || l.y() >= camera.height) continue;
+    OffsetTrack t;
+    t.id = i;
+    t.observation = {l.x() + noise(noise_rng), l.y(), r.x() + offset_px + noise(noise_rng)};
+    tracks.push_back(t);
+  }
+  return tracks;
+}
+
+TEST(DisparityOffset, SlowMotionIsMeasuredAcrossSeveralFrames) {
+  const RectifiedStereoCamera camera = testing::TestCamera();
+  const MotionRefiner refiner;
+  DisparityOffsetOptions options;
+  options.prior_sigma_px = 1.0;
+  DisparityOffsetEstimator moving(options), still(options);
+  for (int n = 0; n < 30; ++n) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation().z() = 0.3 * n;
+    moving.Observe(camera, refiner, 1.0, TracksAt(camera, pose, 0.3, n), pose, true);
+    still.Observe(camera, refiner, 1.0, TracksAt(camera, Eigen::Isometry3d::Identity(), 0.3, n),
+                  Eigen::Isometry3d::Identity(), true);
+  }
+  EXPECT_NEAR(moving.offset_px(), 0.3, 0.05);
+  EXPECT_EQ(still.offset_px(), 0.0);
+  EXPECT_EQ(still.estimate_px(), 0.0);
 }
 
 }  // namespace

@@ -85,11 +85,12 @@ TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
   StatusOr<std::vector<SubsampleRow>> table = EvaluateSubsampleSweep(estimates, *gt, 0.02);
   ASSERT_TRUE(table.ok()) << table.status().ToString();
   std::cout << FormatSubsampleTable(*table);
-  // The issue asks for < 1.5 % at every k = 1..5; k = 5 (6 m between frames, about a quarter
-  // of the tracks survive the scale change) measures 1.9 %, so it is held to a regression bound
-  // of 2 % until tracking improves.
+  // The issue asks for < 1.5 % at every k = 1..5. Measured with the online disparity offset
+  // (stereo.disparity_offset, about 0.2 px on this clip): 0.32, 0.34, 0.14, 0.16, 0.04 %
+  // (without it 0.42, 0.64, 1.01, 1.25, 1.92 %: far points too far, and at large k the
+  // surviving inliers are far).
   for (const SubsampleRow& row : *table) {
-    EXPECT_LT(row.length_error_pct, row.factor < 5 ? 1.5 : 2.0) << "k = " << row.factor;
+    EXPECT_LT(row.length_error_pct, 1.5) << "k = " << row.factor;
   }
 }
 
