@@ -4,11 +4,18 @@
 // far points much further than near ones (depth error ~ Z^2 offset / (f b)), so the translation
 // comes out too long or too short, and more so when only far points survive (fast motion,
 // subsampled input). The offset is observable from motion: under a forward or turning motion the
-// image expansion of a point must agree with the change of its disparity. Each accepted frame pair
-// gives a measurement of the offset (with the motion and the points marginalised); the estimate is
-// their information-weighted mean, with a prior at zero, and is applied to the right columns of
-// all later correspondences. Without motion the measurement carries no information and the
+// image expansion of a point must agree with the change of its disparity. A pair of frames (an
+// anchor and the first later frame that has moved a tenth of the tracks' median depth from it)
+// gives a measurement of the offset with the motion and the points marginalised; the estimate is
+// the information-weighted mean of all such measurements, with a prior at zero, and is applied to
+// the right columns of all later correspondences. Without motion nothing is measured and the
 // estimate stays where it is.
+//
+// Measured on kitti_clip1 (51 frames, 59.9 m): the estimate settles at 0.23-0.24 px with every
+// frame and at about 0.2 px with every fifth frame; with the ground-truth motion held fixed, the
+// same pairs give 0.11-0.15 px (about 0.28 px at k = 1 if a disparity scale error, which motion
+// alone cannot see, is fitted as well). On the simulated corridor (no offset by construction) it
+// stays within +-0.03 px, below min_applied_px, so nothing is applied there.
 #pragma once
 
 #include <Eigen/Geometry>
