@@ -28,7 +28,7 @@ OptionTable<DisparityOffsetOptions> DisparityOffsetOptions::Describe() {
       .Bool("enabled", &O::enabled,
             "Estimate a constant disparity offset of the rig (rectification or matcher bias) "
             "online from the motion, and add it to every disparity; an offset of a fraction of a "
-            "pixel makes far points too far and the translation too long.")
+            "pixel moves far points most and makes the translation too long or too short.")
       .Double("prior_sigma_px", &O::prior_sigma_px, "px", 1e-3, 10, 0.01,
               "Prior standard deviation of the offset around zero; smaller trusts the "
               "calibration longer.")
