@@ -169,9 +169,10 @@ Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
   std::ofstream csv(path);
   if (!csv) return NotFound("cannot write " + path);
   csv << "frame,time_s,tracked,retracked,new_features,stereo_matches,correspondences,inliers,"
-         "ransac_iterations,rigidity_failures,residual_px,translation_m,rotation_deg,gated,"
+         "ransac_iterations,rigidity_failures,residual_px,disparity_offset_px,window_points,"
+         "window_rms_px,translation_m,rotation_deg,gated,"
          "rectify_ms,pyramid_ms,tracking_ms,detection_ms,matching_ms,ransac_ms,refine_ms,"
-         "total_ms,status\n";
+         "window_ms,total_ms,status\n";
   for (size_t i = 0; i < run.frames.size(); ++i) {
     const FrameStats& s = run.frames[i];
     std::string status = s.status;
@@ -180,14 +181,15 @@ Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
     }
     char row[512];
     std::snprintf(row, sizeof(row),
-                  "%lld,%.6f,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,%.5f,%.5f,%d,%.3f,%.3f,%.3f,%.3f,%.3f,"
-                  "%.3f,%.3f,%.3f,\"%s\"\n",
+                  "%lld,%.6f,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%d,%.4f,%.5f,%.5f,%d,%.3f,%.3f,"
+                  "%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,\"%s\"\n",
                   static_cast<long long>(run.sequence_ids[i]), run.estimate.poses()[i].time_s,
                   s.tracked, s.retracked ? 1 : 0, s.new_features, s.stereo_matches,
                   s.correspondences, s.inliers, s.ransac_iterations, s.rigidity_failures,
-                  s.residual_px, s.translation_m, s.rotation_deg, s.gated ? 1 : 0, s.rectify_ms,
-                  s.pyramid_ms, s.tracking_ms, s.detection_ms, s.matching_ms, s.ransac_ms,
-                  s.refine_ms, s.total_ms, status.c_str());
+                  s.residual_px, s.disparity_offset_px, s.window_points, s.window_rms_px,
+                  s.translation_m, s.rotation_deg, s.gated ? 1 : 0, s.rectify_ms, s.pyramid_ms,
+                  s.tracking_ms, s.detection_ms, s.matching_ms, s.ransac_ms, s.refine_ms,
+                  s.window_ms, s.total_ms, status.c_str());
     csv << row;
   }
   csv.flush();

@@ -16,7 +16,7 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
   }
   return rectify.IsValid(error) && tracking.IsValid(error) && matching.IsValid(error) &&
          ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
-         keyframe.IsValid(error) && window.IsValid(error);
+         keyframe.IsValid(error) && window.IsValid(error) && disparity_offset.IsValid(error);
 }
 
 OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
@@ -30,6 +30,7 @@ OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
       .Nested(&O::gate, MotionGateOptions::Describe())
       .Nested(&O::keyframe, KeyframeOptions::Describe())
       .Nested(&O::window, WindowBundleOptions::Describe())
+      .Nested(&O::disparity_offset, DisparityOffsetOptions::Describe())
       .Int("stereo.refine_rounds", &O::refine_rounds, "", 1, 10, 1,
            "Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.");
 }
@@ -80,7 +81,8 @@ StereoOdometry::StereoOdometry(StereoOdometryOptions options)
       estimator_(options.ransac),
       refiner_(options.refine),
       gate_(options.gate),
-      window_(options.window) {}
+      window_(options.window),
+      disparity_offset_(options.disparity_offset) {}
 
 Status StereoOdometry::Configure(const StereoRig& rig) {
   std::string error;
@@ -112,6 +114,7 @@ void StereoOdometry::Reset() {
   keyframe_tracks_ = 0;
   gate_.Reset();
   window_.Reset();
+  disparity_offset_.Reset();
 }
 
 StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
@@ -238,6 +241,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       StereoCorrespondence c;
       c.previous = {p.left.x, p.left.y, p.right.x};
       c.current = {f.left.x, f.left.y, f.right.x};
+      disparity_offset_.Apply(&c);
       Triangulate(cam, &c);
       correspondences.push_back(c);
       correspondence_feature.push_back(static_cast<int>(kept.size()));
@@ -249,6 +253,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   }
   stats.stereo_matches = static_cast<int>(kept.size());
   stats.correspondences = static_cast<int>(correspondences.size());
+  stats.disparity_offset_px = disparity_offset_.offset_px();
   Record(timing, "matching", clock.Lap(), &stats.matching_ms);
 
   // Motion: RANSAC, refinement, gate.
@@ -318,6 +323,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
         StereoCorrespondence c;
         c.previous = {f.keyframe_left.x, f.keyframe_left.y, f.keyframe_right.x};
         c.current = {f.left.x, f.left.y, f.right.x};
+        disparity_offset_.Apply(&c);
         Triangulate(cam, &c);
         from_keyframe.push_back(c);
       }
@@ -342,7 +348,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       }
       WindowBundleSummary summary;
       const Eigen::Isometry3d adjusted =
-          window_.Add(cam, world_from_current, Observations(kept, kept_source, use), &summary);
+          window_.Add(cam, world_from_current, Observations(kept, kept_source, use), &summary,
+                      disparity_offset_.offset_px());
       if (summary.adjusted) {
         world_from_current = adjusted;
         result->current_from_previous = world_from_current.inverse() * world_from_camera_;
@@ -379,6 +386,12 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     result->features.push_back(t);
   }
 
+  std::vector<OffsetTrack> offset_tracks(kept.size());
+  for (size_t k = 0; k < kept.size(); ++k) {
+    offset_tracks[k] = {kept[k].id, {kept[k].left.x, kept[k].left.y, kept[k].right.x}};
+  }
+  disparity_offset_.Observe(cam, refiner_, options_.ransac.inlier_threshold_px,
+                            std::move(offset_tracks), world_from_camera_, !stats.gated);
   features_ = std::move(kept);
   if (options_.keyframe.enabled && !has_keyframe_) {
     // This frame becomes the keyframe: its stereo observations are what later frames refer to.

@@ -17,6 +17,7 @@
 #include "core/common/timing.h"
 #include "core/common/trajectory.h"
 #include "core/options/option_table.h"
+#include "core/stereo/disparity_offset.h"
 #include "core/stereo/feature_tracker.h"
 #include "core/stereo/image_pyramid.h"
 #include "core/stereo/keyframe.h"
@@ -39,6 +40,7 @@ struct StereoOdometryOptions {
   MotionGateOptions gate;
   KeyframeOptions keyframe;
   WindowBundleOptions window;
+  DisparityOffsetOptions disparity_offset;
   int refine_rounds = 2;  // Refine, re-select inliers by UMBRAL3, refine again (rounds in total).
 
   bool IsValid(std::string* error) const;
@@ -75,6 +77,7 @@ struct FrameStats {
   double residual_px = 0;      // Refined RMS reprojection error over the inliers [px].
   int window_points = 0;       // Points of the sliding-window bundle adjustment.
   double window_rms_px = 0;    // Its RMS reprojection error after adjustment [px].
+  double disparity_offset_px = 0;  // Disparity offset applied to this frame's matches [px].
   double translation_m = 0;    // Length of the applied motion [m].
   double rotation_deg = 0;     // Angle of the applied motion [deg].
   bool gated = false;          // The estimate was rejected (or failed) and a fallback applied.
@@ -141,6 +144,7 @@ class StereoOdometry {
   MotionRefiner refiner_;
   MotionGate gate_;
   WindowBundleAdjuster window_;
+  DisparityOffsetEstimator disparity_offset_;
   bool configured_ = false;
   int pyramid_levels_ = 3;
   int pyramid_window_ = 15;

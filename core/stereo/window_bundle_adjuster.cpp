@@ -107,7 +107,8 @@ Eigen::Isometry3d Update(const Eigen::Isometry3d& t, const Vector6& delta) {
 Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
                                             const Eigen::Isometry3d& world_from_camera,
                                             std::vector<TrackObservation> observations,
-                                            WindowBundleSummary* summary) {
+                                            WindowBundleSummary* summary,
+                                            double disparity_offset_px) {
   WindowBundleSummary local;
   WindowBundleSummary& s = summary ? *summary : local;
   s = WindowBundleSummary();
@@ -145,8 +146,10 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
     for (size_t i = 0; i < f.observations.size(); ++i) {
       const TrackObservation& o = f.observations[i];
       if (!f.usable[i] || count[o.track_id] < 2) continue;
+      const double right_u = o.right_u - disparity_offset_px;
+      const double disparity = o.left_u - right_u;
+      if (!(disparity > 0)) continue;
       auto [it, inserted] = point_of.emplace(o.track_id, static_cast<int>(points.size()));
-      const double disparity = o.left_u - o.right_u;
       // Each point starts where its largest-disparity observation (best depth) puts it.
       const Eigen::Vector3d world =
           f.camera_from_world.inverse() * camera.Triangulate(o.left_u, o.v, disparity);
@@ -160,7 +163,7 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
       const double weight =
           options_.center_weighting ? 1.0 / (std::abs(o.left_u - camera.cx) / camera.cx + 0.05)
                                     : 1.0;
-      edges.push_back({fi, it->second, Eigen::Vector3d(o.left_u, o.v, o.right_u),
+      edges.push_back({fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u),
                        static_cast<int>(i), weight});
     }
   }

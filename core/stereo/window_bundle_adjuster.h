@@ -57,10 +57,12 @@ class WindowBundleAdjuster {
 
   // Appends the frame (dropping the oldest beyond options.frames), adjusts the window and returns
   // the refined world_from_camera of the appended frame (its input when nothing could be adjusted).
+  // `disparity_offset_px` is added to every observation's disparity in the window (the rig's
+  // estimated offset, see disparity_offset.h), so all frames are adjusted with the current one.
   Eigen::Isometry3d Add(const RectifiedStereoCamera& camera,
                         const Eigen::Isometry3d& world_from_camera,
                         std::vector<TrackObservation> observations,
-                        WindowBundleSummary* summary = nullptr);
+                        WindowBundleSummary* summary = nullptr, double disparity_offset_px = 0);
   void Reset() {
     frames_.clear();
     added_ = 0;

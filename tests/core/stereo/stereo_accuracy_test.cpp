@@ -3,7 +3,10 @@
 // false motion) and the simulator's corridor with turns.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/eval/evaluation.h"
 #include "core/eval/subsample_sweep.h"
@@ -85,11 +88,12 @@ TEST(StereoAccuracy, KittiClipSubsamplingSweepStaysUnder1p5Percent) {
   StatusOr<std::vector<SubsampleRow>> table = EvaluateSubsampleSweep(estimates, *gt, 0.02);
   ASSERT_TRUE(table.ok()) << table.status().ToString();
   std::cout << FormatSubsampleTable(*table);
-  // The issue asks for < 1.5 % at every k = 1..5; k = 5 (6 m between frames, about a quarter
-  // of the tracks survive the scale change) measures 1.9 %, so it is held to a regression bound
-  // of 2 % until tracking improves.
+  // The issue asks for < 1.5 % at every k = 1..5. Measured with the online disparity offset
+  // (stereo.disparity_offset, 0.2-0.25 px on this clip): 0.33, 0.34, 0.18, 0.21, 0.06 %
+  // (without it 0.42, 0.64, 1.01, 1.25, 1.92 %, too long: far points came out too far, and at
+  // large k the surviving inliers are far; median inlier depth ~20 m at k = 1, 50-65 m at k = 5).
   for (const SubsampleRow& row : *table) {
-    EXPECT_LT(row.length_error_pct, row.factor < 5 ? 1.5 : 2.0) << "k = " << row.factor;
+    EXPECT_LT(row.length_error_pct, 1.5) << "k = " << row.factor;
   }
 }
 
@@ -132,6 +136,58 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   // 0.76 (0.96 without). Most of it is on the 5 m segments (0.04 deg of rotation error over 50
   // frames). The bound fails when the window adjustment stops working; it is not the target.
   EXPECT_LT(m["kitti_r_err_deg_per_100m"], 0.75);
+}
+
+// A rig whose disparities are all 0.3 px too small (both images of every pair shifted 0.15 px
+// apart), on the corridor with a 90 deg turn: the online disparity offset finds it and keeps the
+// length right; without it the length comes out too long.
+TEST(StereoAccuracy, SimulatedCorridorWithADisparityOffsetIsCorrected) {
+  sim::SimulationOptions options = sim::SimulationOptions::ForScene("corridor");
+  options.frames = 200;
+  options.rate_hz = 10;
+  options.motion.speed_mps = 1.0;
+  options.sensors = "stereo";
+  const std::string dir = testing::TempDir("stereo_corridor_offset");
+  ASSERT_TRUE(sim::Simulate(options, dir).ok());
+  int shifted = 0;
+  for (const char* camera : {"image_0", "image_1"}) {
+    const double dx = std::string(camera) == "image_0" ? -0.15 : 0.15;
+    for (const auto& e : std::filesystem::directory_iterator(dir + "/stereo/" + camera)) {
+      const cv::Mat image = cv::imread(e.path().string(), cv::IMREAD_UNCHANGED);
+      ASSERT_FALSE(image.empty()) << e.path();
+      cv::Mat out;
+      const cv::Mat m = (cv::Mat_<double>(2, 3) << 1, 0, dx, 0, 1, 0);
+      cv::warpAffine(image, out, m, image.size(), cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+      ASSERT_TRUE(cv::imwrite(e.path().string(), out));
+      ++shifted;
+    }
+  }
+  ASSERT_EQ(shifted, 400);
+  auto length_error = [&](bool enabled, double* offset_px) {
+    StereoOdometryOptions vo;
+    vo.disparity_offset.enabled = enabled;
+    StatusOr<StereoVoRun> run = RunStereoOdometry(dir, vo, {});
+    EXPECT_TRUE(run.ok()) << run.status().ToString();
+    if (!run.ok() || !run->ground_truth) return 100.0;
+    EXPECT_EQ(GatedFrames(*run), 0);
+    *offset_px = run->frames.back().disparity_offset_px;
+    StatusOr<TrajectoryErrors> errors = EvaluateTrajectory(run->estimate, *run->ground_truth, {});
+    EXPECT_TRUE(errors.ok());
+    if (!errors.ok()) return 100.0;
+    std::map<std::string, double> m;
+    for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
+    std::cout << "corridor with offset, estimator " << (enabled ? "on" : "off") << ": length "
+              << m["length_error_pct"] << " %, t_err " << m["kitti_t_err_pct"] << " %, r_err "
+              << m["kitti_r_err_deg_per_100m"] << " deg/100 m, offset " << *offset_px << " px\n";
+    return m["length_error_pct"];
+  };
+  double offset_on = 0, offset_off = 0;
+  const double on = length_error(true, &offset_on);
+  const double off = length_error(false, &offset_off);
+  EXPECT_NEAR(offset_on, 0.3, 0.1);
+  EXPECT_EQ(offset_off, 0.0);
+  EXPECT_LT(on, 0.5);
+  EXPECT_GT(off, 2 * on);
 }
 
 }  // namespace
