@@ -14,7 +14,12 @@ using stereo_internal::Invalid;
 
 bool WindowBundleOptions::IsValid(std::string* error) const {
   if (frames < 2 || frames > 30) return Invalid(error, "stereo.window.frames must lie in [2, 30]");
-  if (spacing < 1 || spacing > 30) return Invalid(error, "stereo.window.spacing must lie in [1, 30]");
+  if (!(min_parallax >= 0 && min_parallax <= 1)) {
+    return Invalid(error, "stereo.window.min_parallax must lie in [0, 1]");
+  }
+  if (!(min_rotation_deg >= 0 && min_rotation_deg <= 180)) {
+    return Invalid(error, "stereo.window.min_rotation_deg must lie in [0, 180]");
+  }
   if (max_iterations < 1 || max_iterations > 100) {
     return Invalid(error, "stereo.window.max_iterations must lie in [1, 100]");
   }
@@ -33,9 +38,12 @@ OptionTable<WindowBundleOptions> WindowBundleOptions::Describe() {
             "add up.")
       .Int("frames", &O::frames, "frames", 2, 30, 1,
            "Frames in the window; the oldest is held fixed.")
-      .Int("spacing", &O::spacing, "frames", 1, 30, 1,
-           "Every spacing-th frame stays in the window (longer tracks between window frames); the "
-           "frames between are adjusted against it and then replaced.")
+      .Double("min_parallax", &O::min_parallax, "", 0, 1, 0.005,
+              "A frame stays in the window when the camera moved this fraction of its points' "
+              "median depth since the previous one that stayed (0 = every frame stays); otherwise "
+              "the next frame replaces it.")
+      .Double("min_rotation_deg", &O::min_rotation_deg, "deg", 0, 180, 0.5,
+              "... or when it turned at least this much.")
       .Int("max_iterations", &O::max_iterations, "", 1, 100, 1,
            "Levenberg-Marquardt iterations per frame.")
       .Double("huber_px", &O::huber_px, "px", 0.01, 100, 0.05,
@@ -104,6 +112,23 @@ Eigen::Isometry3d Update(const Eigen::Isometry3d& t, const Vector6& delta) {
 
 }  // namespace
 
+bool WindowBundleAdjuster::EnoughMotion(const RectifiedStereoCamera& camera, const Frame& from,
+                                        const Frame& to) const {
+  const Eigen::Isometry3d motion = to.camera_from_world * from.camera_from_world.inverse();
+  if (Eigen::AngleAxisd(motion.rotation()).angle() * 180.0 / M_PI >= options_.min_rotation_deg) {
+    return true;
+  }
+  std::vector<double> depths;
+  depths.reserve(to.observations.size());
+  for (size_t i = 0; i < to.observations.size(); ++i) {
+    const TrackObservation& o = to.observations[i];
+    if (to.usable[i]) depths.push_back(camera.f * camera.baseline_m / (o.left_u - o.right_u));
+  }
+  if (depths.empty()) return true;
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  return motion.translation().norm() >= options_.min_parallax * depths[depths.size() / 2];
+}
+
 Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
                                             const Eigen::Isometry3d& world_from_camera,
                                             std::vector<TrackObservation> observations,
@@ -121,13 +146,12 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
                       o.left_u - o.right_u >= options_.min_disparity_px;
   }
   frame.observations = std::move(observations);
-  frame.keep = added_ % options_.spacing == 0;
-  ++added_;
   if (!frames_.empty() && !frames_.back().keep) frames_.pop_back();
   frames_.push_back(std::move(frame));
   while (static_cast<int>(frames_.size()) > options_.frames) frames_.pop_front();
   const int n = static_cast<int>(frames_.size());
   s.frames = n;
+  frames_.back().keep = n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
   if (n < 2) return world_from_camera;
 
   // Points: tracks with at least two usable observations in the window.
@@ -333,6 +357,7 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
     }
   }
   s.adjusted = true;
+  frames_.back().keep = EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
   return poses.back().inverse();
 }
 

@@ -20,7 +20,11 @@ namespace sightline {
 struct WindowBundleOptions {
   bool enabled = true;         // Refine each accepted pose in the window.
   int frames = 6;              // Frames in the window (the oldest is held fixed).
-  int spacing = 1;             // Every spacing-th frame stays in the window; others are replaced.
+  // A frame stays in the window when the camera moved at least min_parallax of its points'
+  // median depth, or turned min_rotation_deg, since the previous frame that stayed; otherwise the
+  // next frame replaces it. So slow motion keeps enough parallax between window frames.
+  double min_parallax = 0.05;
+  double min_rotation_deg = 2.0;
   int max_iterations = 6;      // Levenberg-Marquardt iterations per frame.
   double huber_px = 0.5;       // Huber threshold of the robust weight [px].
   double max_error_px = 2.0;   // Observations reprojecting worse after refinement are dropped.
@@ -63,10 +67,7 @@ class WindowBundleAdjuster {
                         const Eigen::Isometry3d& world_from_camera,
                         std::vector<TrackObservation> observations,
                         WindowBundleSummary* summary = nullptr, double disparity_offset_px = 0);
-  void Reset() {
-    frames_.clear();
-    added_ = 0;
-  }
+  void Reset() { frames_.clear(); }
   size_t size() const { return frames_.size(); }
 
  private:
@@ -77,9 +78,11 @@ class WindowBundleAdjuster {
     bool keep = true;  // Stays when the next frame arrives (else the next frame replaces it).
   };
 
+  // Whether `to` moved enough from `from` to stay in the window (see WindowBundleOptions).
+  bool EnoughMotion(const RectifiedStereoCamera& camera, const Frame& from, const Frame& to) const;
+
   WindowBundleOptions options_;
   std::deque<Frame> frames_;
-  int64_t added_ = 0;  // Frames added since the last Reset().
 };
 
 }  // namespace sightline

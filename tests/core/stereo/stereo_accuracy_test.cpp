@@ -131,9 +131,9 @@ TEST(StereoAccuracy, SimulatedCorridorWithTurns) {
   std::map<std::string, double> m;
   for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
   EXPECT_LT(m["kitti_t_err_pct"], 0.5);
-  // The issue asks for < 0.5 deg/100 m. Measured 0.63 deg/100 m with the sliding-window bundle
+  // The issue asks for < 0.5 deg/100 m. Measured 0.69 deg/100 m with the sliding-window bundle
   // adjustment (stereo.window.*), 0.83 without it; over seeds 1-3 of this corridor the mean is
-  // 0.76 (0.96 without). Most of it is on the 5 m segments (0.04 deg of rotation error over 50
+  // 0.65 (0.96 without). Most of it is on the 5 m segments (0.04 deg of rotation error over 50
   // frames). The bound fails when the window adjustment stops working; it is not the target.
   EXPECT_LT(m["kitti_r_err_deg_per_100m"], 0.75);
 }
@@ -188,6 +188,35 @@ TEST(StereoAccuracy, SimulatedCorridorWithADisparityOffsetIsCorrected) {
   EXPECT_EQ(offset_off, 0.0);
   EXPECT_LT(on, 0.5);
   EXPECT_GT(off, 2 * on);
+}
+
+// The same corridor at the simulator's walking pace (0.5 m/s, 600 frames, 30 m): twice the frames
+// per metre, so per-frame errors weigh twice as much. The window keeps a frame only once the
+// camera has moved 5 % of its points' median depth (stereo.window.min_parallax), so its frames
+// stay far enough apart. Measured 0.77 deg/100 m (1.33 with every frame kept, 4.1 without the
+// window).
+TEST(StereoAccuracy, SimulatedCorridorAtWalkingPace) {
+  sim::SimulationOptions options = sim::SimulationOptions::ForScene("corridor");
+  options.frames = 600;
+  options.rate_hz = 10;
+  options.motion.speed_mps = 0.5;
+  options.sensors = "stereo";
+  const std::string dir = testing::TempDir("stereo_corridor_slow");
+  ASSERT_TRUE(sim::Simulate(options, dir).ok());
+  StatusOr<StereoVoRun> run = RunStereoOdometry(dir, {}, {});
+  ASSERT_TRUE(run.ok()) << run.status().ToString();
+  ASSERT_TRUE(run->ground_truth);
+  StatusOr<TrajectoryErrors> errors =
+      EvaluateTrajectory(run->estimate, *run->ground_truth, EvaluationOptions());
+  ASSERT_TRUE(errors.ok()) << errors.status().ToString();
+  std::map<std::string, double> m;
+  for (const auto& [k, v] : AccuracyFigures(*errors)) m[k] = v;
+  std::cout << "slow corridor: t_err " << m["kitti_t_err_pct"] << " %, r_err "
+            << m["kitti_r_err_deg_per_100m"] << " deg/100 m, ATE " << m["ate_rmse_m"] << " m, "
+            << GatedFrames(*run) << " gated\n";
+  EXPECT_EQ(GatedFrames(*run), 0);
+  EXPECT_LT(m["kitti_t_err_pct"], 0.5);
+  EXPECT_LT(m["kitti_r_err_deg_per_100m"], 1.0);
 }
 
 }  // namespace

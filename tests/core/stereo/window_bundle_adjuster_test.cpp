@@ -69,6 +69,7 @@ TEST(WindowBundleAdjuster, PullsPerturbedPosesBackToTheTruth) {
   const Drive drive = MakeDrive(8, 300, 3);
   WindowBundleOptions options;
   options.frames = 6;
+  options.min_parallax = 0;  // Every frame stays.
   WindowBundleAdjuster window(options);
   std::mt19937 rng(7);
   double worst_rotation = 0, worst_translation = 0;
@@ -102,7 +103,9 @@ TEST(WindowBundleAdjuster, PullsPerturbedPosesBackToTheTruth) {
 TEST(WindowBundleAdjuster, DropsAMovingObjectsTracks) {
   const RectifiedStereoCamera camera = testing::TestCamera();
   Drive drive = MakeDrive(6, 300, 5);
-  WindowBundleAdjuster window;
+  WindowBundleOptions options;
+  options.min_parallax = 0;  // Every frame stays.
+  WindowBundleAdjuster window(options);
   std::mt19937 rng(9);
   Eigen::Isometry3d refined;
   WindowBundleSummary summary;
@@ -139,20 +142,24 @@ TEST(WindowBundleAdjuster, TooFewSharedTracksLeavesThePoseAsGiven) {
   EXPECT_EQ(window.size(), 0u);
 }
 
-TEST(WindowBundleAdjuster, SpacingKeepsEveryKthFrame) {
+TEST(WindowBundleAdjuster, FramesThatBarelyMovedAreReplacedByTheNext) {
   const RectifiedStereoCamera camera = testing::TestCamera();
-  const Drive drive = MakeDrive(7, 100, 2);
+  const Drive drive = MakeDrive(1, 200, 2);  // Points 3.3..30 m ahead: median depth ~17 m.
   WindowBundleOptions options;
-  options.frames = 3;
-  options.spacing = 3;
+  options.min_parallax = 0.02;  // ~0.33 m to stay.
   WindowBundleAdjuster window(options);
   std::mt19937 rng(4);
-  for (int i = 0; i < 7; ++i) {
-    window.Add(camera, drive.world_from_camera[static_cast<size_t>(i)],
-               Observe(camera, drive.world_from_camera[static_cast<size_t>(i)], drive.points, 0.1,
-                       &rng));
-  }
-  // Frames 0, 3 and 6 stay; 6 is the newest: three in the window.
+  auto add = [&](double z) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation().z() = z;
+    window.Add(camera, pose, Observe(camera, pose, drive.points, 0.05, &rng));
+  };
+  add(0);
+  for (int i = 1; i <= 5; ++i) add(0.02 * i);  // Creeping: each replaces the one before.
+  EXPECT_EQ(window.size(), 2u);
+  add(0.5);  // 0.5 m from the first frame: stays.
+  EXPECT_EQ(window.size(), 2u);
+  add(0.52);
   EXPECT_EQ(window.size(), 3u);
 }
 
@@ -168,9 +175,9 @@ TEST(WindowBundleOptions, RejectsAbsurdValuesNamingTheKey) {
   EXPECT_FALSE(o.IsValid(&error));
   EXPECT_NE(error.find("stereo.window.huber_px"), std::string::npos);
   o = WindowBundleOptions();
-  o.spacing = 0;
+  o.min_parallax = -1;
   EXPECT_FALSE(o.IsValid(&error));
-  EXPECT_NE(error.find("stereo.window.spacing"), std::string::npos);
+  EXPECT_NE(error.find("stereo.window.min_parallax"), std::string::npos);
 }
 
 }  // namespace
