@@ -269,16 +269,19 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         const Eigen::Vector3d r = p - edge.measured;
         const double w = edge.weight * HuberWeight(r.norm(), k);
         const Eigen::Matrix3d Jl = Jproj * T.linear();
-        Hll.noalias() += w * Jl.transpose() * Jl;
-        bl.noalias() -= w * Jl.transpose() * r;
+        const Eigen::Matrix3d JlW = w * Jl.transpose();
+        Hll.noalias() += JlW * Jl;
+        bl.noalias() -= JlW * r;
         if (edge.frame == 0) continue;
         Matrix36 Jp;
-        Jp.leftCols<3>() = -Jproj * Skew(xc);
+        Jp.leftCols<3>().noalias() = -Jproj * Skew(xc);
         Jp.rightCols<3>() = Jproj;
+        const Matrix63 JpW = w * Jp.transpose();
         const int o = 6 * (edge.frame - 1);
-        H.block<6, 6>(o, o).noalias() += w * Jp.transpose() * Jp;
-        b.segment<6>(o).noalias() -= w * Jp.transpose() * r;
-        coupling[static_cast<size_t>(e)] = w * Jp.transpose() * Jl;
+        const Eigen::Matrix<double, 6, 6> Hpp = JpW * Jp;
+        H.block<6, 6>(o, o) += Hpp;
+        b.segment<6>(o).noalias() -= JpW * r;
+        coupling[static_cast<size_t>(e)].noalias() = JpW * Jl;
       }
       point_hessian[pi] = Hll;
       point_gradient[pi] = bl;
@@ -301,14 +304,18 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
           const Edge& ea = edges[static_cast<size_t>(es[a])];
           if (!active[static_cast<size_t>(es[a])] || ea.frame == 0) continue;
           const Matrix63& Wa = coupling[static_cast<size_t>(es[a])];
-          const Matrix63 WaInv = Wa * inverse[pi];
+          const Matrix63 WaInv = (Wa * inverse[pi]).eval();
           const int oa = 6 * (ea.frame - 1);
           rhs.segment<6>(oa).noalias() -= Wa * v;
-          for (size_t c = 0; c < es.size(); ++c) {
+          // S is symmetric: the blocks at and above the diagonal, mirrored below.
+          for (size_t c = a; c < es.size(); ++c) {
             const Edge& ec = edges[static_cast<size_t>(es[c])];
             if (!active[static_cast<size_t>(es[c])] || ec.frame == 0) continue;
             const int oc = 6 * (ec.frame - 1);
-            S.block<6, 6>(oa, oc).noalias() -= WaInv * coupling[static_cast<size_t>(es[c])].transpose();
+            const Eigen::Matrix<double, 6, 6> block =
+                WaInv * coupling[static_cast<size_t>(es[c])].transpose();
+            S.block<6, 6>(oa, oc) -= block;
+            if (oc != oa) S.block<6, 6>(oc, oa) -= block.transpose();
           }
         }
       }

@@ -25,7 +25,7 @@ struct WindowBundleOptions {
   // next frame replaces it. So slow motion keeps enough parallax between window frames.
   double min_parallax = 0.05;
   double min_rotation_deg = 2.0;
-  int max_iterations = 6;      // Levenberg-Marquardt iterations per frame.
+  int max_iterations = 4;      // Levenberg-Marquardt iterations per frame.
   double huber_px = 0.5;       // Huber threshold of the robust weight [px].
   double max_error_px = 2.0;   // Observations reprojecting worse after refinement are dropped.
   double min_disparity_px = 0.5;  // Observations with less disparity (no depth) are not used.
