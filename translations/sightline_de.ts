@@ -1282,11 +1282,16 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <source>window BA</source>
+        <translation>Fenster-BA</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
         <source>total</source>
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="257"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="258"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>

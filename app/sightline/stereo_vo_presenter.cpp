@@ -247,10 +247,11 @@ void StereoVoPresenter::PlotStatistics(int64_t frame, const FrameStats& s) {
       {tr("rectify"), s.rectify_ms},     {tr("pyramid"), s.pyramid_ms},
       {tr("tracking"), s.tracking_ms},   {tr("detection"), s.detection_ms},
       {tr("matching"), s.matching_ms},   {tr("RANSAC"), s.ransac_ms},
-      {tr("refine"), s.refine_ms},       {tr("total"), s.total_ms}};
+      {tr("refine"), s.refine_ms},       {tr("window BA"), s.window_ms},
+      {tr("total"), s.total_ms}};
   const QColor colors[] = {QColor(150, 150, 150), QColor(0, 200, 200), QColor(60, 120, 255),
                            QColor(255, 140, 0),   QColor(255, 200, 0), QColor(230, 120, 230),
-                           QColor(40, 220, 40),   QColor(240, 240, 240)};
+                           QColor(40, 220, 40),   QColor(200, 80, 80), QColor(240, 240, 240)};
   for (size_t i = 0; i < std::size(stages); ++i) {
     timing_plot_->Append(stages[i].first, x, stages[i].second, colors[i]);
   }
