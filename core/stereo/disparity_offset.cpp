@@ -18,6 +18,9 @@ bool DisparityOffsetOptions::IsValid(std::string* error) const {
   if (!(huber_px > 0)) return Invalid(error, "stereo.disparity_offset.huber_px must be > 0");
   if (!(min_noise_px > 0)) return Invalid(error, "stereo.disparity_offset.min_noise_px must be > 0");
   if (!(min_parallax >= 0)) return Invalid(error, "stereo.disparity_offset.min_parallax must be >= 0");
+  if (max_span_frames < 1) {
+    return Invalid(error, "stereo.disparity_offset.max_span_frames must be >= 1");
+  }
   if (!(min_applied_px >= 0)) return Invalid(error, "stereo.disparity_offset.min_applied_px must be >= 0");
   return true;
 }
@@ -42,6 +45,9 @@ OptionTable<DisparityOffsetOptions> DisparityOffsetOptions::Describe() {
               "The offset is measured between an anchor frame and the first later frame whose "
               "translation from it reaches this fraction of the common tracks' median depth: "
               "with less parallax, tracking errors dominate the measurement.")
+      .Int("max_span_frames", &O::max_span_frames, "frames", 1, 1000, 1,
+           "... reached within this many frames; otherwise the anchor starts again (tracks "
+           "followed over many frames drift, and their drift reads as an offset).")
       .Double("min_applied_px", &O::min_applied_px, "px", 0, 10, 0.01,
               "Smaller estimates are not applied: within the spread the estimate shows on a rig "
               "without offset (the simulator: +-0.03 px).");
@@ -168,6 +174,7 @@ void DisparityOffsetEstimator::Reset() {
   offset_px_ = 0;
   anchor_.clear();
   world_from_anchor_ = Eigen::Isometry3d::Identity();
+  frames_since_anchor_ = 0;
   information_ = 1.0 / (options_.prior_sigma_px * options_.prior_sigma_px);
 }
 
@@ -198,6 +205,7 @@ void DisparityOffsetEstimator::Observe(const RectifiedStereoCamera& camera,
   auto make_anchor = [&]() {
     anchor_ = std::move(tracks);
     world_from_anchor_ = world_from_camera;
+    frames_since_anchor_ = 0;
   };
   if (anchor_.empty() || !motion_accepted) {
     make_anchor();
@@ -230,7 +238,9 @@ void DisparityOffsetEstimator::Observe(const RectifiedStereoCamera& camera,
   std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
   if (!(depths[depths.size() / 2] > 0) ||
       motion.translation().norm() < options_.min_parallax * depths[depths.size() / 2]) {
-    return;  // Not enough parallax yet: keep the anchor.
+    // Not enough parallax yet: keep the anchor, unless its tracks have been followed too long.
+    if (++frames_since_anchor_ >= options_.max_span_frames) make_anchor();
+    return;
   }
   // The accumulated motion is close; refine it on the anchor pair's own inliers.
   std::vector<int> inliers = MotionEstimator::Inliers(camera, correspondences, motion,

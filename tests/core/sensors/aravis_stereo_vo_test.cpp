@@ -38,6 +38,11 @@ using ::sightline::testing::ChildProcess;
 constexpr char kLeftAddress[] = "127.0.0.1";
 constexpr char kRightAddress[] = "127.0.0.2";  // An alias of lo inside the namespace.
 constexpr double kPairToleranceMs = 15;
+// The first frames after acquisition starts are left out of the checks: a fake camera's first
+// frame comes off the frame grid, and on a loaded machine the source's first pair can then join
+// images of two different instants (the gate holds the pose through it, as it should). Seen once
+// in about fifteen runs beside a CPU-heavy test.
+constexpr size_t kWarmupFrames = 3;
 constexpr int kDriveFrames = 100;  // 4 s of driving at 0.5 m/s, 25 Hz.
 // Per tracked frame of the corridor (752x480): measured 800-870 stereo matches and 690-830
 // inliers, static or driving; the ramp of arv-fake-gv-camera-0.8 gives none.
@@ -183,11 +188,13 @@ class AravisStereoVo : public ::testing::Test {
     ReadServed(log_dir_ + "/served.csv", served);
   }
 
-  // Every estimated frame is a left frame the program served, and the right frame it was paired
-  // with (the only one within the pair tolerance) showed the same scene frame.
+  // Every estimated frame from `first` on is a left frame the program served, and the right frame
+  // it was paired with (the only one within the pair tolerance) showed the same scene frame.
   static void ExpectConsistentPairs(const StereoVoRun& run,
-                                    const std::vector<ServedFrame> served[2]) {
-    for (const TimedPose& p : run.estimate.poses()) {
+                                    const std::vector<ServedFrame> served[2], size_t first) {
+    const std::vector<TimedPose>& poses = run.estimate.poses();
+    for (size_t i = first; i < poses.size(); ++i) {
+      const TimedPose& p = poses[i];
       const ServedFrame* left = NearestServed(served[0], p.time_s, 1e-5);
       ASSERT_NE(left, nullptr) << "no left frame served at " << p.time_s;
       const ServedFrame* right = NearestServed(served[1], p.time_s, kPairToleranceMs * 1e-3);
@@ -196,10 +203,11 @@ class AravisStereoVo : public ::testing::Test {
     }
   }
 
-  // Every frame after the first: tracked with many stereo matches and inliers, not gated.
-  static void ExpectTracked(const StereoVoRun& run, int min_matches, int min_inliers) {
+  // Every frame after `first`: tracked with many stereo matches and inliers, not gated.
+  static void ExpectTracked(const StereoVoRun& run, int min_matches, int min_inliers,
+                            size_t first) {
     std::vector<int> matches, inliers;
-    for (size_t i = 1; i < run.frames.size(); ++i) {
+    for (size_t i = first + 1; i < run.frames.size(); ++i) {
       matches.push_back(run.frames[i].stereo_matches);
       inliers.push_back(run.frames[i].inliers);
     }
@@ -210,7 +218,7 @@ class AravisStereoVo : public ::testing::Test {
                 << matches[matches.size() / 2] << ", inliers min " << inliers.front() << " median "
                 << inliers[inliers.size() / 2] << "\n";
     }
-    for (size_t i = 1; i < run.frames.size(); ++i) {
+    for (size_t i = first + 1; i < run.frames.size(); ++i) {
       const FrameStats& s = run.frames[i];
       SCOPED_TRACE("frame " + std::to_string(i) + ": " + s.status);
       EXPECT_FALSE(s.gated);
@@ -242,17 +250,18 @@ TEST_F(AravisStereoVo, LivePairTracksTheServedCorridorDrive) {
   std::vector<ServedFrame> served[2];
   StopCameras(&truth, served);
   if (HasFatalFailure()) return;
-  ExpectConsistentPairs(*result, served);
-  ExpectTracked(*result, kMinStereoMatches, kMinInliers);
+  ExpectConsistentPairs(*result, served, kWarmupFrames);
+  ExpectTracked(*result, kMinStereoMatches, kMinInliers, kWarmupFrames);
   const ServedFrame* first =
-      NearestServed(served[0], result->estimate.poses().front().time_s, 1e-5);
+      NearestServed(served[0], result->estimate.poses()[kWarmupFrames].time_s, 1e-5);
   const ServedFrame* last = NearestServed(served[0], result->estimate.poses().back().time_s, 1e-5);
   ASSERT_TRUE(first != nullptr && last != nullptr);
   std::cout << "the run saw scene frames " << first->frame << " to " << last->frame << "\n";
 
   // The estimate against the true poses of the served left frames, both relative to the first
-  // estimated frame (no alignment).
-  const std::vector<TimedPose>& estimate = result->estimate.poses();
+  // frame after the warm-up (no alignment).
+  const std::vector<TimedPose> estimate(result->estimate.poses().begin() + kWarmupFrames,
+                                        result->estimate.poses().end());
   std::vector<Eigen::Isometry3d> true_poses;
   for (const TimedPose& p : estimate) {
     const std::optional<size_t> i = truth.Nearest(p.time_s, 1e-5);
@@ -271,13 +280,20 @@ TEST_F(AravisStereoVo, LivePairTracksTheServedCorridorDrive) {
     position_error = std::max(position_error, error.translation().norm());
     angle_error = std::max(angle_error, Eigen::AngleAxisd(error.rotation()).angle() * 180 / M_PI);
   }
-  const double estimated_length = result->estimate.LengthM();
+  double estimated_length = 0;
+  for (size_t i = 1; i < estimate.size(); ++i) {
+    estimated_length +=
+        (estimate[i].world_from_sensor.translation() - estimate[i - 1].world_from_sensor.translation())
+            .norm();
+  }
   std::cout << "served path " << true_length << " m, estimated " << estimated_length
             << " m; largest position error " << position_error << " m, angle error " << angle_error
             << " deg\n";
   ASSERT_GT(true_length, 0.5) << "the rig must have driven during the run";
-  EXPECT_NEAR(estimated_length, true_length, 0.02 * true_length);
-  EXPECT_LT(position_error, 0.02 * true_length);
+  // Measured: length within 0.2 %, position error 1.7-2.7 mm over 1.1-1.3 m (0.2 %). A
+  // disparity offset invented from drifting tracks made it 0.6 % and 7-10 mm.
+  EXPECT_NEAR(estimated_length, true_length, 0.005 * true_length);
+  EXPECT_LT(position_error, 0.005 * true_length);
   EXPECT_LT(angle_error, 0.5);
 }
 
@@ -310,7 +326,7 @@ TEST_F(AravisStereoVo, LiveStaticPairGivesNoFalseMotion) {
     ASSERT_TRUE(result.ok()) << result.status().ToString();
     EXPECT_EQ(result->dataset_format, "Aravis stereo pair");
     ASSERT_EQ(result->frames.size(), static_cast<size_t>(run.max_frames));
-    ExpectTracked(*result, kMinStereoMatches, kMinInliers);
+    ExpectTracked(*result, kMinStereoMatches, kMinInliers, kWarmupFrames);
     double metres = 0, degrees = 0;
     MaxMotion(result->estimate, &metres, &degrees);
     std::cout << "static rig: largest estimated motion " << metres << " m, " << degrees << " deg\n";
@@ -322,7 +338,7 @@ TEST_F(AravisStereoVo, LiveStaticPairGivesNoFalseMotion) {
   std::vector<ServedFrame> served[2];
   StopCameras(&truth, served);
   if (HasFatalFailure()) return;
-  for (const StereoVoRun& r : runs) ExpectConsistentPairs(r, served);
+  for (const StereoVoRun& r : runs) ExpectConsistentPairs(r, served, kWarmupFrames);
 }
 
 TEST_F(AravisStereoVo, WithoutCalibrationTheErrorNamesTheOption) {
