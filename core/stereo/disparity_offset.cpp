@@ -7,10 +7,14 @@
 
 #include "core/stereo/motion_estimator.h"
 #include "core/stereo/option_check.h"
+#include "core/stereo/reprojection.h"
 
 namespace sightline {
 
 using stereo_internal::Invalid;
+using stereo_internal::StereoHuberWeights;
+using stereo_internal::StereoResidual;
+using stereo_internal::Skew;
 
 bool DisparityOffsetOptions::IsValid(std::string* error) const {
   if (!(prior_sigma_px > 0)) return Invalid(error, "stereo.disparity_offset.prior_sigma_px must be > 0");
@@ -58,34 +62,6 @@ namespace {
 using Vector7d = Eigen::Matrix<double, 7, 1>;
 using Matrix7d = Eigen::Matrix<double, 7, 7>;
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
-// Residuals (left u, v; right u, v) of point y against `obs` and their derivative in y.
-bool Residual(const RectifiedStereoCamera& c, const Eigen::Vector3d& y, const StereoObservation& obs,
-              Eigen::Vector4d* r, Eigen::Matrix<double, 4, 3>* dr_dy) {
-  if (!(y.z() > 1e-3)) return false;
-  const double iz = 1.0 / y.z();
-  const double fx = c.f * iz;
-  const double v = c.f * y.y() * iz + c.cy;
-  *r << c.f * y.x() * iz + c.cx - obs.u_left, v - obs.v,
-      c.f * (y.x() - c.baseline_m) * iz + c.cx - obs.u_right, v - obs.v;
-  *dr_dy << fx, 0, -fx * y.x() * iz,  //
-      0, fx, -fx * y.y() * iz,          //
-      fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
-      0, fx, -fx * y.y() * iz;
-  return true;
-}
-
-Eigen::Vector4d HuberWeights(const Eigen::Vector4d& r, double huber) {
-  const double el = std::hypot(r(0), r(1)), er = std::hypot(r(2), r(3));
-  const double wl = el <= huber ? 1.0 : huber / el, wr = er <= huber ? 1.0 : huber / er;
-  return {wl, wl, wr, wr};
-}
-
 }  // namespace
 
 DisparityOffsetMeasurement MeasureDisparityOffset(
@@ -106,11 +82,11 @@ DisparityOffsetMeasurement MeasureDisparityOffset(
     Eigen::Matrix<double, 4, 3> a0, d1;
     bool ok = true;
     for (int it = 0; it < 3 && ok; ++it) {
-      ok = Residual(camera, x, c.previous, &r0, &a0) &&
-           Residual(camera, current_from_previous * x, c.current, &r1, &d1);
+      ok = StereoResidual(camera, x, c.previous, &r0, &a0) &&
+           StereoResidual(camera, current_from_previous * x, c.current, &r1, &d1);
       if (!ok) break;
-      w0 = HuberWeights(r0, options.huber_px);
-      w1 = HuberWeights(r1, options.huber_px);
+      w0 = StereoHuberWeights(r0, options.huber_px);
+      w1 = StereoHuberWeights(r1, options.huber_px);
       const Eigen::Matrix<double, 4, 3> a1 = d1 * rotation;
       const Eigen::Matrix3d h = a0.transpose() * w0.asDiagonal() * a0 +
                                 a1.transpose() * w1.asDiagonal() * a1 +
@@ -120,12 +96,12 @@ DisparityOffsetMeasurement MeasureDisparityOffset(
       x -= h.ldlt().solve(g);
     }
     const Eigen::Vector3d y = current_from_previous * x;
-    if (!ok || !Residual(camera, x, c.previous, &r0, &a0) ||
-        !Residual(camera, y, c.current, &r1, &d1)) {
+    if (!ok || !StereoResidual(camera, x, c.previous, &r0, &a0) ||
+        !StereoResidual(camera, y, c.current, &r1, &d1)) {
       continue;
     }
-    w0 = HuberWeights(r0, options.huber_px);
-    w1 = HuberWeights(r1, options.huber_px);
+    w0 = StereoHuberWeights(r0, options.huber_px);
+    w1 = StereoHuberWeights(r1, options.huber_px);
     const Eigen::Matrix<double, 4, 3> a1 = d1 * rotation;
     // Unknowns theta = (translation, rotation of the motion, offset); the offset adds to the
     // predicted right column in both frames.

@@ -4,10 +4,15 @@
 #include <cmath>
 
 #include "core/stereo/option_check.h"
+#include "core/stereo/reprojection.h"
 
 namespace sightline {
 
 using stereo_internal::Invalid;
+using stereo_internal::StereoHuberWeights;
+using stereo_internal::StereoResidual;
+using stereo_internal::Skew;
+using stereo_internal::CenterWeight;
 
 bool MotionRefinerOptions::IsValid(std::string* error) const {
   if (max_iterations < 0) return Invalid(error, "stereo.refine.max_iterations must be >= 0");
@@ -57,12 +62,6 @@ void Orthonormalize(Eigen::Isometry3d* pose) {
   pose->linear() = q.toRotationMatrix();
 }
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
 // Adds the residuals of point y (in the frame of `obs`) with dy/d(delta) = dy_ddelta.
 void AddTerm(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
              const Eigen::Matrix<double, 3, 6>& dy_ddelta, const StereoObservation& obs,
@@ -91,30 +90,6 @@ void AddTerm(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
     *cost += r[k] * r[k] + r[k + 1] * r[k + 1];
     *count += 2;
   }
-}
-
-// Residuals (left u, v; right u, v) of point y against `obs` and their derivative in y.
-bool StereoResidual(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
-                    const StereoObservation& obs, Eigen::Vector4d* r,
-                    Eigen::Matrix<double, 4, 3>* dr_dy) {
-  if (!(y.z() > 1e-3)) return false;
-  const double iz = 1.0 / y.z();
-  const double fx = c.f * iz;
-  const double v = c.f * y.y() * iz + c.cy;
-  *r << c.f * y.x() * iz + c.cx - obs.u_left, v - obs.v,
-      c.f * (y.x() - c.baseline_m) * iz + c.cx - obs.u_right, v - obs.v;
-  *dr_dy << fx, 0, -fx * y.x() * iz,  //
-      0, fx, -fx * y.y() * iz,          //
-      fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
-      0, fx, -fx * y.y() * iz;
-  return true;
-}
-
-// Huber weights of the left and right image of a residual, as a diagonal.
-Eigen::Vector4d HuberWeights(const Eigen::Vector4d& r, double huber) {
-  const double el = std::hypot(r(0), r(1)), er = std::hypot(r(2), r(3));
-  const double wl = el <= huber ? 1.0 : huber / el, wr = er <= huber ? 1.0 : huber / er;
-  return {wl, wl, wr, wr};
 }
 
 }  // namespace
@@ -150,11 +125,11 @@ RefinementSummary MotionRefiner::RefineJoint(
                  StereoResidual(camera, y, c.current, &r1, &a1);
       if (!valid[k]) continue;
       ++used;
-      Eigen::Vector4d w0 = HuberWeights(r0, options_.huber_px);
-      Eigen::Vector4d w1 = HuberWeights(r1, options_.huber_px);
+      Eigen::Vector4d w0 = StereoHuberWeights(r0, options_.huber_px);
+      Eigen::Vector4d w1 = StereoHuberWeights(r1, options_.huber_px);
       if (options_.center_weighting) {
-        w0 *= 1.0 / (std::abs(c.previous.u_left - camera.cx) / camera.cx + 0.05);
-        w1 *= 1.0 / (std::abs(c.current.u_left - camera.cx) / camera.cx + 0.05);
+        w0 *= CenterWeight(camera, c.previous.u_left);
+        w1 *= CenterWeight(camera, c.current.u_left);
       }
       Eigen::Matrix<double, 3, 6> dy_dpose;
       dy_dpose << Eigen::Matrix3d::Identity(), -Skew(y);

@@ -7,10 +7,13 @@
 #include <unordered_map>
 
 #include "core/stereo/option_check.h"
+#include "core/stereo/reprojection.h"
 
 namespace sightline {
 
 using stereo_internal::Invalid;
+using stereo_internal::Skew;
+using stereo_internal::CenterWeight;
 
 bool WindowBundleOptions::IsValid(std::string* error) const {
   if (frames < 2 || frames > 30) return Invalid(error, "stereo.window.frames must lie in [2, 30]");
@@ -92,12 +95,6 @@ bool Project(const RectifiedStereoCamera& c, const Eigen::Vector3d& x, Eigen::Ve
 double HuberWeight(double error, double k) { return error <= k ? 1.0 : k / error; }
 double HuberCost(double error, double k) {
   return error <= k ? error * error : 2 * k * error - k * k;
-}
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
 }
 
 // T <- Exp(delta) * T with delta = (rotation vector, translation).
@@ -185,8 +182,7 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         best_disparity[static_cast<size_t>(it->second)] = disparity;
       }
       const double weight =
-          options_.center_weighting ? 1.0 / (std::abs(o.left_u - camera.cx) / camera.cx + 0.05)
-                                    : 1.0;
+          options_.center_weighting ? CenterWeight(camera, o.left_u) : 1.0;
       edges.push_back({fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u),
                        static_cast<int>(i), weight});
     }
@@ -205,20 +201,30 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   std::vector<unsigned char> active(edges.size(), 1);
   const double k = options_.huber_px;
 
+  // Reprojection error of edge e at poses T and points X [px]; false behind the camera.
+  auto edge_error = [&](const std::vector<Eigen::Isometry3d>& T,
+                        const std::vector<Eigen::Vector3d>& X, size_t e, double* error) {
+    const Edge& edge = edges[e];
+    Eigen::Vector3d p;
+    if (!Project(camera, T[static_cast<size_t>(edge.frame)] * X[static_cast<size_t>(edge.point)],
+                 &p, nullptr)) {
+      return false;
+    }
+    *error = (p - edge.measured).norm();
+    return true;
+  };
   auto total_cost = [&](const std::vector<Eigen::Isometry3d>& T,
                         const std::vector<Eigen::Vector3d>& X, double* rms) {
     double cost = 0, squared = 0;
     int used = 0;
     for (size_t e = 0; e < edges.size(); ++e) {
       if (!active[e]) continue;
-      Eigen::Vector3d p;
       const Edge& edge = edges[e];
-      if (!Project(camera, T[static_cast<size_t>(edge.frame)] * X[static_cast<size_t>(edge.point)],
-                   &p, nullptr)) {
+      double err = 0;
+      if (!edge_error(T, X, e, &err)) {
         cost += edge.weight * 2 * k * 1e3;  // Behind the camera: a large, finite penalty.
         continue;
       }
-      const double err = (p - edge.measured).norm();
       cost += edge.weight * HuberCost(err, k);
       squared += err * err;
       ++used;
@@ -237,12 +243,8 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
       // Observations that still disagree (a track slid along an edge, a walking person).
       for (size_t e = 0; e < edges.size(); ++e) {
         if (!active[e]) continue;
-        Eigen::Vector3d p;
-        const Edge& edge = edges[e];
-        const bool ok = Project(
-            camera, poses[static_cast<size_t>(edge.frame)] * points[static_cast<size_t>(edge.point)],
-            &p, nullptr);
-        if (!ok || (p - edge.measured).norm() > options_.max_error_px) {
+        double err = 0;
+        if (!edge_error(poses, points, e, &err) || err > options_.max_error_px) {
           active[e] = 0;
           ++s.dropped;
         }
