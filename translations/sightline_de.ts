@@ -1232,66 +1232,71 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="243"/>
+        <source>anchored</source>
+        <translation>verankert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="244"/>
         <source>stereo</source>
         <translation>Stereo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="244"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="245"/>
         <source>inliers</source>
         <translation>Inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="245"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="246"/>
         <source>RANSAC it.</source>
         <translation>RANSAC-It.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
         <source>rectify</source>
         <translation>Rektifizierung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="247"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
         <source>pyramid</source>
         <translation>Pyramide</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
         <source>tracking</source>
         <translation>Tracking</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
         <source>detection</source>
         <translation>Detektion</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
         <source>matching</source>
         <translation>Matching</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
         <source>RANSAC</source>
         <translation>RANSAC</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
         <source>refine</source>
         <translation>Verfeinerung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
         <source>window BA</source>
         <translation>Fenster-BA</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="252"/>
         <source>total</source>
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="258"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="259"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>

@@ -240,6 +240,7 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
 void StereoVoPresenter::PlotStatistics(int64_t frame, const FrameStats& s) {
   const double x = static_cast<double>(frame);
   counts_plot_->Append(tr("tracks"), x, s.tracked, QColor(60, 120, 255));
+  counts_plot_->Append(tr("anchored"), x, s.anchored, QColor(0, 200, 200));
   counts_plot_->Append(tr("stereo"), x, s.stereo_matches, QColor(255, 200, 0));
   counts_plot_->Append(tr("inliers"), x, s.inliers, QColor(40, 220, 40));
   counts_plot_->Append(tr("RANSAC it."), x, s.ransac_iterations, QColor(230, 120, 230));

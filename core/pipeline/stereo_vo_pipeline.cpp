@@ -168,7 +168,7 @@ namespace {
 Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
   std::ofstream csv(path);
   if (!csv) return NotFound("cannot write " + path);
-  csv << "frame,time_s,tracked,retracked,new_features,stereo_matches,correspondences,inliers,"
+  csv << "frame,time_s,tracked,retracked,anchored,new_features,stereo_matches,correspondences,inliers,"
          "ransac_iterations,rigidity_failures,residual_px,disparity_offset_px,window_points,"
          "window_rms_px,translation_m,rotation_deg,gated,"
          "rectify_ms,pyramid_ms,tracking_ms,detection_ms,matching_ms,ransac_ms,refine_ms,"
@@ -181,10 +181,10 @@ Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
     }
     char row[512];
     std::snprintf(row, sizeof(row),
-                  "%lld,%.6f,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%d,%.4f,%.5f,%.5f,%d,%.3f,%.3f,"
+                  "%lld,%.6f,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%d,%.4f,%.5f,%.5f,%d,%.3f,%.3f,"
                   "%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,\"%s\"\n",
                   static_cast<long long>(run.sequence_ids[i]), run.estimate.poses()[i].time_s,
-                  s.tracked, s.retracked ? 1 : 0, s.new_features, s.stereo_matches,
+                  s.tracked, s.retracked ? 1 : 0, s.anchored, s.new_features, s.stereo_matches,
                   s.correspondences, s.inliers, s.ransac_iterations, s.rigidity_failures,
                   s.residual_px, s.disparity_offset_px, s.window_points, s.window_rms_px,
                   s.translation_m, s.rotation_deg, s.gated ? 1 : 0, s.rectify_ms, s.pyramid_ms,

@@ -28,8 +28,10 @@ struct MotionRefinerOptions {
   // motion-only refinement overestimate translation. Replaces `symmetric` when on.
   bool joint_points = true;
   // Weight observations by 1 / (|u - cx| / cx + 0.05) as libviso2 does: the image centre, where
-  // rectification and lens model are best, counts more (joint refinement only).
-  bool center_weighting = true;
+  // rectification and lens model are best, counts more (joint refinement only). Off by default:
+  // it down-weights the image sides twenty-fold, and there (the walls of a corridor, the
+  // roadside) are most of the features that fix the rotation.
+  bool center_weighting = false;
 
   bool IsValid(std::string* error) const;
   static OptionTable<MotionRefinerOptions> Describe();

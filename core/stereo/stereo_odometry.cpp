@@ -14,7 +14,8 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
   if (refine_rounds < 1 || refine_rounds > 10) {
     return Invalid(error, "stereo.refine_rounds must lie in [1, 10]");
   }
-  return rectify.IsValid(error) && tracking.IsValid(error) && matching.IsValid(error) &&
+  return rectify.IsValid(error) && tracking.IsValid(error) && anchor.IsValid(error) &&
+         matching.IsValid(error) &&
          ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
          keyframe.IsValid(error) && window.IsValid(error) && disparity_offset.IsValid(error);
 }
@@ -24,6 +25,7 @@ OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
   return OptionTable<O>("")
       .Nested(&O::rectify, RectifierOptions::Describe())
       .Nested(&O::tracking, FeatureTrackerOptions::Describe())
+      .Nested(&O::anchor, TrackAnchorOptions::Describe())
       .Nested(&O::matching, StereoMatcherOptions::Describe())
       .Nested(&O::ransac, MotionEstimatorOptions::Describe())
       .Nested(&O::refine, MotionRefinerOptions::Describe())
@@ -82,7 +84,8 @@ StereoOdometry::StereoOdometry(StereoOdometryOptions options)
       refiner_(options.refine),
       gate_(options.gate),
       window_(options.window),
-      disparity_offset_(options.disparity_offset) {}
+      disparity_offset_(options.disparity_offset),
+      anchors_(options.anchor) {}
 
 Status StereoOdometry::Configure(const StereoRig& rig) {
   std::string error;
@@ -115,6 +118,8 @@ void StereoOdometry::Reset() {
   gate_.Reset();
   window_.Reset();
   disparity_offset_.Reset();
+  anchors_.Reset();
+  frame_number_ = 0;
 }
 
 StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
@@ -164,10 +169,10 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   // fast motion and subsampled input.
   std::vector<cv::Point2f> predicted;
   std::vector<float> predicted_disparity;
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // Predicted current_from_previous.
   if (has_previous_ && last_motion_dt_s_ > 0 && dt > 0) {
     const double scale = dt / last_motion_dt_s_;
     const Eigen::AngleAxisd aa(last_motion_.rotation());
-    Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
     motion.linear() = Eigen::AngleAxisd(aa.angle() * scale, aa.axis()).toRotationMatrix();
     motion.translation() = last_motion_.translation() * scale;
     const RectifiedStereoCamera& c = rectifier_.camera();
@@ -190,6 +195,17 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   if (has_previous_) {
     stats.retracked = tracker_.Track(previous_left_, left_pyramid, previous_points, predicted,
                                      &tracked, &tracked_ok, tracked_fraction_);
+  }
+  // Tracked positions aligned against their anchors (no drift); kRenew marks new anchors.
+  std::vector<AnchorAlignment> alignment(tracked_ok.size(), AnchorAlignment::kUnchanged);
+  if (options_.anchor.enabled && has_previous_) {
+    const Eigen::Isometry3d world_from_predicted = world_from_camera_ * motion.inverse();
+    for (size_t i = 0; i < tracked_ok.size(); ++i) {
+      if (!tracked_ok[i]) continue;
+      alignment[i] = anchors_.Align(rectifier_.camera(), features_[i].anchor, frame_number_,
+                                    left_pyramid.image, world_from_predicted, &tracked[i]);
+      if (alignment[i] == AnchorAlignment::kAligned) ++stats.anchored;
+    }
   }
   std::vector<cv::Point2f> points;
   std::vector<float> guesses;
@@ -238,6 +254,7 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       f.has_keyframe = p.has_keyframe;
       f.keyframe_left = p.keyframe_left;
       f.keyframe_right = p.keyframe_right;
+      if (alignment[static_cast<size_t>(s)] != AnchorAlignment::kRenew) f.anchor = p.anchor;
       StereoCorrespondence c;
       c.previous = {p.left.x, p.left.y, p.right.x};
       c.current = {f.left.x, f.left.y, f.right.x};
@@ -393,6 +410,16 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   disparity_offset_.Observe(cam, refiner_, options_.ransac.inlier_threshold_px,
                             std::move(offset_tracks), world_from_camera_, !stats.gated);
   features_ = std::move(kept);
+  if (options_.anchor.enabled) {
+    // New tracks, and those whose anchor failed or expires, are anchored here.
+    for (Feature& f : features_) {
+      if (!anchors_.Usable(f.anchor.frame, frame_number_ + 1)) {
+        f.anchor = {frame_number_, f.left, f.left.x - f.right.x};
+      }
+    }
+    anchors_.AddFrame(frame_number_, left_pyramid.image, world_from_camera_);
+  }
+  ++frame_number_;
   if (options_.keyframe.enabled && !has_keyframe_) {
     // This frame becomes the keyframe: its stereo observations are what later frames refer to.
     for (Feature& f : features_) {

@@ -26,6 +26,7 @@
 #include "core/stereo/motion_refiner.h"
 #include "core/stereo/rectifier.h"
 #include "core/stereo/stereo_matcher.h"
+#include "core/stereo/track_anchor.h"
 #include "core/stereo/window_bundle_adjuster.h"
 
 namespace sightline {
@@ -34,6 +35,7 @@ namespace sightline {
 struct StereoOdometryOptions {
   RectifierOptions rectify;
   FeatureTrackerOptions tracking;
+  TrackAnchorOptions anchor;
   StereoMatcherOptions matching;
   MotionEstimatorOptions ransac;
   MotionRefinerOptions refine;
@@ -68,6 +70,7 @@ struct TrackedFeature {
 struct FrameStats {
   int tracked = 0;             // Features tracked from the previous left image.
   bool retracked = false;      // Lost tracks were tracked again with more pyramid levels.
+  int anchored = 0;            // Tracked positions refined against their anchors.
   int new_features = 0;        // Detected this frame (and matched in the right image).
   int stereo_matches = 0;      // Features matched in the right image (tracked + new).
   int correspondences = 0;     // Features with stereo at both times (RANSAC input).
@@ -134,6 +137,7 @@ class StereoOdometry {
     int age;
     bool has_keyframe = false;           // Seen at the current keyframe ...
     cv::Point2f keyframe_left, keyframe_right;  // ... there.
+    TrackAnchor anchor;                  // What its position is aligned against.
   };
 
   StereoOdometryOptions options_;
@@ -145,6 +149,8 @@ class StereoOdometry {
   MotionGate gate_;
   WindowBundleAdjuster window_;
   DisparityOffsetEstimator disparity_offset_;
+  TrackAnchors anchors_;
+  int64_t frame_number_ = 0;  // Of the next frame with images (the anchors' clock).
   bool configured_ = false;
   int pyramid_levels_ = 3;
   int pyramid_window_ = 15;

@@ -17,6 +17,9 @@ using stereo_internal::CenterWeight;
 
 bool WindowBundleOptions::IsValid(std::string* error) const {
   if (frames < 2 || frames > 30) return Invalid(error, "stereo.window.frames must lie in [2, 30]");
+  if (fixed_frames < 0 || fixed_frames > 30) {
+    return Invalid(error, "stereo.window.fixed_frames must lie in [0, 30]");
+  }
   if (!(min_parallax >= 0 && min_parallax <= 1)) {
     return Invalid(error, "stereo.window.min_parallax must lie in [0, 1]");
   }
@@ -41,6 +44,9 @@ OptionTable<WindowBundleOptions> WindowBundleOptions::Describe() {
             "add up.")
       .Int("frames", &O::frames, "frames", 2, 30, 1,
            "Frames in the window; the oldest is held fixed.")
+      .Int("fixed_frames", &O::fixed_frames, "frames", 0, 30, 1,
+           "Frames that left the window keep constraining its points this long, with their "
+           "poses held fixed, so the window's drift does not restart at every slide.")
       .Double("min_parallax", &O::min_parallax, "", 0, 1, 0.005,
               "A frame stays in the window when the camera moved this fraction of its points' "
               "median depth since the previous one that stayed (0 = every frame stays); otherwise "
@@ -145,17 +151,26 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   frame.observations = std::move(observations);
   if (!frames_.empty() && !frames_.back().keep) frames_.pop_back();
   frames_.push_back(std::move(frame));
-  while (static_cast<int>(frames_.size()) > options_.frames) frames_.pop_front();
+  while (static_cast<int>(frames_.size()) > options_.frames + options_.fixed_frames) {
+    frames_.pop_front();
+  }
   const int n = static_cast<int>(frames_.size());
-  s.frames = n;
+  // Frames [0, fixed) hold the gauge; the newest options_.frames - 1 are adjusted.
+  const int fixed = std::max(1, n - (options_.frames - 1));
+  s.frames = std::min(n, options_.frames);
+  s.fixed_frames = n - s.frames;
   frames_.back().keep = n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
   if (n < 2) return world_from_camera;
 
-  // Points: tracks with at least two usable observations in the window.
+  // Points: tracks with at least two usable observations, one of them in an adjusted frame.
   std::unordered_map<int64_t, int> count;
-  for (const Frame& f : frames_) {
+  std::unordered_map<int64_t, bool> seen_free;
+  for (int fi = 0; fi < n; ++fi) {
+    const Frame& f = frames_[static_cast<size_t>(fi)];
     for (size_t i = 0; i < f.observations.size(); ++i) {
-      if (f.usable[i]) ++count[f.observations[i].track_id];
+      if (!f.usable[i]) continue;
+      ++count[f.observations[i].track_id];
+      if (fi >= fixed) seen_free[f.observations[i].track_id] = true;
     }
   }
   std::unordered_map<int64_t, int> point_of;
@@ -166,7 +181,7 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
     const Frame& f = frames_[static_cast<size_t>(fi)];
     for (size_t i = 0; i < f.observations.size(); ++i) {
       const TrackObservation& o = f.observations[i];
-      if (!f.usable[i] || count[o.track_id] < 2) continue;
+      if (!f.usable[i] || count[o.track_id] < 2 || !seen_free.count(o.track_id)) continue;
       const double right_u = o.right_u - disparity_offset_px;
       const double disparity = o.left_u - right_u;
       if (!(disparity > 0)) continue;
@@ -233,7 +248,7 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
     return cost;
   };
 
-  const int free_frames = n - 1;  // Frame 0 holds the gauge.
+  const int free_frames = n - fixed;
   const int dim = 6 * free_frames;
   double lambda = 1e-4;
   double cost = total_cost(poses, points, &s.initial_rms_px);
@@ -274,12 +289,12 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         const Eigen::Matrix3d JlW = w * Jl.transpose();
         Hll.noalias() += JlW * Jl;
         bl.noalias() -= JlW * r;
-        if (edge.frame == 0) continue;
+        if (edge.frame < fixed) continue;
         Matrix36 Jp;
         Jp.leftCols<3>().noalias() = -Jproj * Skew(xc);
         Jp.rightCols<3>() = Jproj;
         const Matrix63 JpW = w * Jp.transpose();
-        const int o = 6 * (edge.frame - 1);
+        const int o = 6 * (edge.frame - fixed);
         const Eigen::Matrix<double, 6, 6> Hpp = JpW * Jp;
         H.block<6, 6>(o, o) += Hpp;
         b.segment<6>(o).noalias() -= JpW * r;
@@ -304,16 +319,16 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         const std::vector<int>& es = edges_of[pi];
         for (size_t a = 0; a < es.size(); ++a) {
           const Edge& ea = edges[static_cast<size_t>(es[a])];
-          if (!active[static_cast<size_t>(es[a])] || ea.frame == 0) continue;
+          if (!active[static_cast<size_t>(es[a])] || ea.frame < fixed) continue;
           const Matrix63& Wa = coupling[static_cast<size_t>(es[a])];
           const Matrix63 WaInv = (Wa * inverse[pi]).eval();
-          const int oa = 6 * (ea.frame - 1);
+          const int oa = 6 * (ea.frame - fixed);
           rhs.segment<6>(oa).noalias() -= Wa * v;
           // S is symmetric: the blocks at and above the diagonal, mirrored below.
           for (size_t c = a; c < es.size(); ++c) {
             const Edge& ec = edges[static_cast<size_t>(es[c])];
-            if (!active[static_cast<size_t>(es[c])] || ec.frame == 0) continue;
-            const int oc = 6 * (ec.frame - 1);
+            if (!active[static_cast<size_t>(es[c])] || ec.frame < fixed) continue;
+            const int oc = 6 * (ec.frame - fixed);
             const Eigen::Matrix<double, 6, 6> block =
                 WaInv * coupling[static_cast<size_t>(es[c])].transpose();
             S.block<6, 6>(oa, oc) -= block;
@@ -327,17 +342,17 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         continue;
       }
       std::vector<Eigen::Isometry3d> new_poses = poses;
-      for (int fi = 1; fi < n; ++fi) {
+      for (int fi = fixed; fi < n; ++fi) {
         new_poses[static_cast<size_t>(fi)] =
-            Update(poses[static_cast<size_t>(fi)], dp.segment<6>(6 * (fi - 1)));
+            Update(poses[static_cast<size_t>(fi)], dp.segment<6>(6 * (fi - fixed)));
       }
       std::vector<Eigen::Vector3d> new_points = points;
       for (size_t pi = 0; pi < points.size(); ++pi) {
         Eigen::Vector3d g = point_gradient[pi];
         for (int e : edges_of[pi]) {
           const Edge& edge = edges[static_cast<size_t>(e)];
-          if (!active[static_cast<size_t>(e)] || edge.frame == 0) continue;
-          g.noalias() -= coupling[static_cast<size_t>(e)].transpose() * dp.segment<6>(6 * (edge.frame - 1));
+          if (!active[static_cast<size_t>(e)] || edge.frame < fixed) continue;
+          g.noalias() -= coupling[static_cast<size_t>(e)].transpose() * dp.segment<6>(6 * (edge.frame - fixed));
         }
         new_points[pi] += inverse[pi] * g;
       }

@@ -2,7 +2,8 @@
 // points their tracks see are refined together on the stereo reprojection error (left u, v and
 // right u of every observation), with the oldest frame of the window held fixed. A track seen in
 // several frames ties their poses to one 3D point, so the per-frame motion errors of
-// frame-to-frame estimation do not simply add up.
+// frame-to-frame estimation do not simply add up. Frames that left the window keep observing as
+// fixed frames for a while (as the fixed keyframes of a local bundle adjustment do).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -20,6 +21,10 @@ namespace sightline {
 struct WindowBundleOptions {
   bool enabled = true;         // Refine each accepted pose in the window.
   int frames = 6;              // Frames in the window (the oldest is held fixed).
+  // Frames that left the window stay this long as fixed observers: their poses are not changed,
+  // but their observations still constrain the points, so the window's poses stay tied to
+  // where the older frames saw the same tracks and its drift does not restart at every slide.
+  int fixed_frames = 6;
   // A frame stays in the window when the camera moved at least min_parallax of its points'
   // median depth, or turned min_rotation_deg, since the previous frame that stayed; otherwise the
   // next frame replaces it. So slow motion keeps enough parallax between window frames.
@@ -29,7 +34,7 @@ struct WindowBundleOptions {
   double huber_px = 0.5;       // Huber threshold of the robust weight [px].
   double max_error_px = 2.0;   // Observations reprojecting worse after refinement are dropped.
   double min_disparity_px = 0.5;  // Observations with less disparity (no depth) are not used.
-  bool center_weighting = true;   // Weight by 1 / (|u - cx| / cx + 0.05), as the refinement.
+  bool center_weighting = false;  // Weight by 1 / (|u - cx| / cx + 0.05) (see MotionRefinerOptions).
 
   bool IsValid(std::string* error) const;
   static OptionTable<WindowBundleOptions> Describe();
@@ -44,6 +49,7 @@ struct TrackObservation {
 // What one adjustment did.
 struct WindowBundleSummary {
   int frames = 0;            // Frames in the window.
+  int fixed_frames = 0;      // Older frames observing with fixed poses (options.fixed_frames).
   int points = 0;            // Tracks seen in at least two of them (the adjusted points).
   int observations = 0;      // Their observations.
   int dropped = 0;           // Observations dropped as outliers.

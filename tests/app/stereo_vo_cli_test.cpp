@@ -30,8 +30,9 @@ std::vector<std::string> CsvFields(const std::string& line) {
   return fields;
 }
 
-// frames.csv has the `retracked` column right after `tracked`, and every row a 0 or 1 there.
-void ExpectRetrackedColumn(const std::string& frames) {
+// frames.csv has the `retracked` column right after `tracked`, and every row a 0 or 1 there;
+// then `anchored`, tracks aligned against their anchors, which most frames of real data have.
+void ExpectRetrackedAndAnchoredColumns(const std::string& frames) {
   std::istringstream lines(frames);
   std::string line;
   ASSERT_TRUE(std::getline(lines, line));
@@ -40,15 +41,20 @@ void ExpectRetrackedColumn(const std::string& frames) {
   ASSERT_NE(tracked, header.end()) << line;
   ASSERT_NE(tracked + 1, header.end()) << line;
   EXPECT_EQ(*(tracked + 1), "retracked") << line;
+  ASSERT_NE(tracked + 2, header.end()) << line;
+  EXPECT_EQ(*(tracked + 2), "anchored") << line;
   const size_t column = static_cast<size_t>(tracked - header.begin()) + 1;
-  int rows = 0;
+  int rows = 0, anchored_rows = 0;
   while (std::getline(lines, line)) {
     const std::vector<std::string> row = CsvFields(line);
     ASSERT_EQ(row.size(), header.size()) << line;
     EXPECT_TRUE(row[column] == "0" || row[column] == "1") << line;
+    EXPECT_LE(std::stoi(row[column + 1]), std::stoi(row[column - 1])) << line;
+    anchored_rows += std::stoi(row[column + 1]) > 0 ? 1 : 0;
     ++rows;
   }
   EXPECT_GT(rows, 0);
+  EXPECT_GT(anchored_rows, rows / 2);
 }
 
 TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
@@ -65,7 +71,7 @@ TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
   }
   const std::string frames = testing::ReadTextFile(out + "/frames.csv");
   EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 52);  // Header + 51 frames.
-  ExpectRetrackedColumn(frames);
+  ExpectRetrackedAndAnchoredColumns(frames);
   std::istringstream trajectory(testing::ReadTextFile(out + "/trajectory.txt"));
   std::string line;
   while (std::getline(trajectory, line) && (line.empty() || line[0] == '#')) {

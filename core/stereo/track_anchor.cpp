@@ -1,0 +1,230 @@
+#include "core/stereo/track_anchor.h"
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+#include "core/stereo/option_check.h"
+
+namespace sightline {
+
+using stereo_internal::Invalid;
+
+bool TrackAnchorOptions::IsValid(std::string* error) const {
+  if (patch_px < 3 || patch_px > 31 || patch_px % 2 == 0) {
+    return Invalid(error, "stereo.anchor.patch_px must be odd and lie in [3, 31]");
+  }
+  if (max_frames < 1 || max_frames > 100) {
+    return Invalid(error, "stereo.anchor.max_frames must lie in [1, 100]");
+  }
+  if (!(max_scale_change > 0 && max_scale_change < 1)) {
+    return Invalid(error, "stereo.anchor.max_scale_change must lie in (0, 1)");
+  }
+  if (!(max_correction_px > 0)) return Invalid(error, "stereo.anchor.max_correction_px must be > 0");
+  if (!(min_zncc >= -1 && min_zncc <= 1)) {
+    return Invalid(error, "stereo.anchor.min_zncc must lie in [-1, 1]");
+  }
+  if (max_iterations < 1 || max_iterations > 100) {
+    return Invalid(error, "stereo.anchor.max_iterations must lie in [1, 100]");
+  }
+  if (!(max_view_change_deg > 0 && max_view_change_deg <= 90)) {
+    return Invalid(error, "stereo.anchor.max_view_change_deg must lie in (0, 90]");
+  }
+  return true;
+}
+
+OptionTable<TrackAnchorOptions> TrackAnchorOptions::Describe() {
+  using O = TrackAnchorOptions;
+  return OptionTable<O>("stereo.anchor")
+      .Bool("enabled", &O::enabled,
+            "Refine every tracked position against the track's anchor (where it was first seen), "
+            "its patch warped by the motion since, so tracks do not drift frame by frame.")
+      .Int("patch_px", &O::patch_px, "px", 3, 31, 2, "Side of the aligned patch (odd).")
+      .Int("max_frames", &O::max_frames, "frames", 1, 100, 1,
+           "An anchor is used for at most this many frames; then the track is anchored anew.")
+      .Double("max_scale_change", &O::max_scale_change, "", 0.01, 0.99, 0.01,
+              "A track whose patch would be scaled by more than this fraction since its anchor "
+              "(the camera came close) is anchored anew.")
+      .Double("max_correction_px", &O::max_correction_px, "px", 0.05, 20, 0.05,
+              "An alignment that moves the tracked position further than this failed (the KLT "
+              "position is kept and the track anchored anew).")
+      .Double("min_zncc", &O::min_zncc, "", -1, 1, 0.05,
+              "An aligned patch whose zero-mean normalised correlation with the warped anchor "
+              "patch is lower failed (occlusion, reflection).")
+      .Int("max_iterations", &O::max_iterations, "", 1, 100, 1,
+           "Gauss-Newton iterations of the alignment.")
+      .Double("max_view_change_deg", &O::max_view_change_deg, "deg", 0.1, 90, 0.5,
+              "A track seen from a direction differing more than this from its anchor's is "
+              "anchored anew: the warp treats the patch as facing the camera, which a slanted "
+              "surface (the road) no longer does.");
+}
+
+namespace {
+
+// Bilinear sample of a CV_8UC1 image at (x, y); the caller keeps (x, y) inside [0, w-1) x [0, h-1).
+inline float Sample(const cv::Mat& image, float x, float y) {
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const float a = x - static_cast<float>(x0), b = y - static_cast<float>(y0);
+  const uchar* r0 = image.ptr<uchar>(y0) + x0;
+  const uchar* r1 = r0 + image.step[0];
+  return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);
+}
+
+// The side x side patch of `image` whose top-left sample is at (x, y), bilinear; one set of
+// weights serves every sample (they share the sub-pixel offset). The patch must lie inside.
+void SamplePatch(const cv::Mat& image, float x, float y, int side, float* out) {
+  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+  const float a = x - static_cast<float>(x0), b = y - static_cast<float>(y0);
+  const float w00 = (1 - a) * (1 - b), w01 = a * (1 - b), w10 = (1 - a) * b, w11 = a * b;
+  for (int j = 0; j < side; ++j) {
+    const uchar* r0 = image.ptr<uchar>(y0 + j) + x0;
+    const uchar* r1 = r0 + image.step[0];
+    for (int i = 0; i < side; ++i) {
+      out[j * side + i] = w00 * r0[i] + w01 * r0[i + 1] + w10 * r1[i] + w11 * r1[i + 1];
+    }
+  }
+}
+
+inline bool Inside(const cv::Mat& image, float x, float y) {
+  return x >= 0 && y >= 0 && x < static_cast<float>(image.cols - 1) &&
+         y < static_cast<float>(image.rows - 1);
+}
+
+}  // namespace
+
+void TrackAnchors::AddFrame(int64_t frame, const cv::Mat& left,
+                            const Eigen::Isometry3d& world_from_camera) {
+  // A copy: a source may reuse its image buffers for the next frames.
+  frames_.push_back({frame, left.clone(), world_from_camera});
+  // Frame `frame + 1` is the next to be aligned; older anchors than max_frames before it are
+  // renewed, so their images are not needed.
+  while (!frames_.empty() && !Usable(frames_.front().frame, frame + 1)) frames_.pop_front();
+}
+
+const TrackAnchors::Frame* TrackAnchors::Find(int64_t frame) const {
+  for (const Frame& f : frames_) {
+    if (f.frame == frame) return &f;
+  }
+  return nullptr;
+}
+
+AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const TrackAnchor& anchor,
+                                    int64_t frame, const cv::Mat& current,
+                                    const Eigen::Isometry3d& world_from_current,
+                                    cv::Point2f* position) const {
+  if (anchor.frame < 0 || anchor.frame >= frame - 1) return AnchorAlignment::kUnchanged;
+  if (!Usable(anchor.frame, frame) || !(anchor.disparity_px > 0)) return AnchorAlignment::kRenew;
+  const Frame* ref = Find(anchor.frame);
+  if (!ref) return AnchorAlignment::kRenew;
+
+  // The patch's warp from the anchor image to the current one: the Jacobian at the anchor of
+  // "back-project at the anchor's depth, move, project".
+  const Eigen::Isometry3d current_from_anchor = world_from_current.inverse() * ref->world_from_camera;
+  const Eigen::Vector3d x_anchor = camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
+  const Eigen::Vector3d y = current_from_anchor * x_anchor;
+  if (y.z() < 0.05) return AnchorAlignment::kRenew;
+  {
+    // The viewing direction changed too much: a slanted surface no longer looks like the
+    // fronto-parallel patch the warp assumes.
+    const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
+    const double cosine = x_anchor.normalized().dot((x_anchor - centre).normalized());
+    if (cosine < std::cos(options_.max_view_change_deg * M_PI / 180)) return AnchorAlignment::kRenew;
+  }
+  Eigen::Matrix<double, 2, 3> projection;
+  projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
+  const Eigen::Matrix2d warp =
+      (x_anchor.z() / y.z()) * projection * current_from_anchor.linear().leftCols<2>();
+  const double det = warp.determinant();
+  if (!(det > 0) || std::abs(std::sqrt(det) - 1) > options_.max_scale_change) {
+    return AnchorAlignment::kRenew;
+  }
+  const Eigen::Matrix2d inverse = warp.inverse();
+
+  // The anchor's patch resampled into the current image's pixel grid, one pixel of border for
+  // the gradients.
+  const int h = options_.patch_px / 2;
+  const int side = 2 * h + 3;
+  thread_local std::vector<float> templ;
+  templ.assign(static_cast<size_t>(side * side), 0.f);
+  for (int j = -h - 1; j <= h + 1; ++j) {
+    for (int i = -h - 1; i <= h + 1; ++i) {
+      const float sx = anchor.left.x + static_cast<float>(inverse(0, 0) * i + inverse(0, 1) * j);
+      const float sy = anchor.left.y + static_cast<float>(inverse(1, 0) * i + inverse(1, 1) * j);
+      if (!Inside(ref->left, sx, sy)) return AnchorAlignment::kRenew;
+      templ[static_cast<size_t>((j + h + 1) * side + (i + h + 1))] = Sample(ref->left, sx, sy);
+    }
+  }
+  const int n = (2 * h + 1) * (2 * h + 1);
+  thread_local std::vector<std::array<float, 3>> jac;  // d residual / (dx, dy, bias).
+  thread_local std::vector<float> values, patch;
+  jac.resize(static_cast<size_t>(n));
+  values.resize(static_cast<size_t>(n));
+  patch.resize(static_cast<size_t>(n));
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  int k = 0;
+  for (int j = -h; j <= h; ++j) {
+    for (int i = -h; i <= h; ++i, ++k) {
+      const size_t c = static_cast<size_t>((j + h + 1) * side + (i + h + 1));
+      const float gx = 0.5f * (templ[c + 1] - templ[c - 1]);
+      const float gy = 0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
+      jac[static_cast<size_t>(k)] = {gx, gy, -1.f};
+      values[static_cast<size_t>(k)] = templ[c];
+      const Eigen::Vector3d g(gx, gy, -1.0);
+      H.noalias() += g * g.transpose();
+    }
+  }
+  if (!(H.topLeftCorner<2, 2>().determinant() > 1e-6)) return AnchorAlignment::kRenew;
+  const Eigen::Matrix3d H_inv = H.inverse();
+
+  // Gauss-Newton on the translation and a brightness offset, from the KLT position.
+  const cv::Point2f start = *position;
+  float cx = start.x, cy = start.y, bias = 0;
+  for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
+    if (!Inside(current, cx - static_cast<float>(h), cy - static_cast<float>(h)) ||
+        !Inside(current, cx + static_cast<float>(h), cy + static_cast<float>(h))) {
+      return AnchorAlignment::kRenew;
+    }
+    SamplePatch(current, cx - static_cast<float>(h), cy - static_cast<float>(h), 2 * h + 1,
+                patch.data());
+    float bx = 0, by = 0, bz = 0;
+    for (int q = 0; q < n; ++q) {
+      const float e = patch[static_cast<size_t>(q)] - values[static_cast<size_t>(q)] - bias;
+      const std::array<float, 3>& g = jac[static_cast<size_t>(q)];
+      bx += g[0] * e;
+      by += g[1] * e;
+      bz += g[2] * e;
+    }
+    const Eigen::Vector3d b(bx, by, bz);
+    const Eigen::Vector3d step = -H_inv * b;
+    cx += static_cast<float>(step.x());
+    cy += static_cast<float>(step.y());
+    bias -= static_cast<float>(step.z());
+    if (step.head<2>().squaredNorm() < 1e-4) break;
+  }
+  if (std::hypot(cx - start.x, cy - start.y) > options_.max_correction_px ||
+      !Inside(current, cx - static_cast<float>(h), cy - static_cast<float>(h)) ||
+      !Inside(current, cx + static_cast<float>(h), cy + static_cast<float>(h))) {
+    return AnchorAlignment::kRenew;
+  }
+
+  // Zero-mean normalised correlation of the aligned patches.
+  SamplePatch(current, cx - static_cast<float>(h), cy - static_cast<float>(h), 2 * h + 1,
+              patch.data());
+  double st = 0, sc = 0, stt = 0, scc = 0, stc = 0;
+  for (int q = 0; q < n; ++q) {
+    const double t = values[static_cast<size_t>(q)], c = patch[static_cast<size_t>(q)];
+    st += t;
+    sc += c;
+    stt += t * t;
+    scc += c * c;
+    stc += t * c;
+  }
+  const double vt = stt - st * st / n, vc = scc - sc * sc / n;
+  if (!(vt > 0 && vc > 0) || (stc - st * sc / n) / std::sqrt(vt * vc) < options_.min_zncc) {
+    return AnchorAlignment::kRenew;
+  }
+  *position = cv::Point2f(cx, cy);
+  return AnchorAlignment::kAligned;
+}
+
+}  // namespace sightline
