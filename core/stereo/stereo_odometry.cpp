@@ -411,11 +411,24 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
                             std::move(offset_tracks), world_from_camera_, !stats.gated);
   features_ = std::move(kept);
   if (options_.anchor.enabled) {
-    // New tracks, and those whose anchor failed or expires, are anchored here.
-    for (Feature& f : features_) {
-      if (!anchors_.Usable(f.anchor.frame, frame_number_ + 1)) {
-        f.anchor = {frame_number_, f.left, f.left.x - f.right.x};
-      }
+    // New tracks, and those whose anchor failed or expires, are anchored here, with the surface
+    // their neighbours show.
+    std::vector<Eigen::Vector3d> points;
+    std::vector<cv::Point2f> pixels;
+    std::vector<size_t> renew;
+    points.reserve(features_.size());
+    pixels.reserve(features_.size());
+    for (size_t k = 0; k < features_.size(); ++k) {
+      const Feature& f = features_[k];
+      points.push_back(cam.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x));
+      pixels.push_back(f.left);
+      if (!anchors_.Usable(f.anchor.frame, frame_number_ + 1)) renew.push_back(k);
+    }
+    const std::vector<Eigen::Vector3f> normals =
+        SurfaceNormals(points, pixels, renew, options_.anchor);
+    for (size_t r = 0; r < renew.size(); ++r) {
+      Feature& f = features_[renew[r]];
+      f.anchor = {frame_number_, f.left, f.left.x - f.right.x, normals[r]};
     }
     anchors_.AddFrame(frame_number_, left_pyramid.image, world_from_camera_);
   }

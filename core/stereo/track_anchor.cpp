@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/stereo/option_check.h"
 
@@ -26,6 +27,12 @@ bool TrackAnchorOptions::IsValid(std::string* error) const {
   }
   if (max_iterations < 1 || max_iterations > 100) {
     return Invalid(error, "stereo.anchor.max_iterations must lie in [1, 100]");
+  }
+  if (!(normal_radius_px >= 0 && normal_radius_px <= 500)) {
+    return Invalid(error, "stereo.anchor.normal_radius_px must lie in [0, 500]");
+  }
+  if (normal_min_points < 3 || normal_min_points > 1000) {
+    return Invalid(error, "stereo.anchor.normal_min_points must lie in [3, 1000]");
   }
   if (!(max_view_change_deg > 0 && max_view_change_deg <= 90)) {
     return Invalid(error, "stereo.anchor.max_view_change_deg must lie in (0, 90]");
@@ -56,7 +63,13 @@ OptionTable<TrackAnchorOptions> TrackAnchorOptions::Describe() {
       .Double("max_view_change_deg", &O::max_view_change_deg, "deg", 0.1, 90, 0.5,
               "A track seen from a direction differing more than this from its anchor's is "
               "anchored anew: the warp treats the patch as facing the camera, which a slanted "
-              "surface (the road) no longer does.");
+              "surface (the road) no longer does.")
+      .Double("normal_radius_px", &O::normal_radius_px, "px", 0, 500, 5,
+              "A track's surface is fitted as a plane to the tracks within this radius at a "
+              "similar depth, so the anchor's patch is warped as that plane; 0 = every patch is "
+              "taken as facing the camera.")
+      .Int("normal_min_points", &O::normal_min_points, "points", 3, 1000, 1,
+           "Fewest tracks (the track included) a surface is fitted to.");
 }
 
 namespace {
@@ -92,6 +105,54 @@ inline bool Inside(const cv::Mat& image, float x, float y) {
 
 }  // namespace
 
+std::vector<Eigen::Vector3f> SurfaceNormals(const std::vector<Eigen::Vector3d>& points,
+                                            const std::vector<cv::Point2f>& pixels,
+                                            const std::vector<size_t>& which,
+                                            const TrackAnchorOptions& options) {
+  std::vector<Eigen::Vector3f> normals(which.size(), Eigen::Vector3f::Zero());
+  const double radius = options.normal_radius_px;
+  if (radius <= 0 || points.empty()) return normals;
+  // Tracks by grid cell of the radius' size: neighbours lie in the 3 x 3 cells around.
+  std::unordered_map<int64_t, std::vector<size_t>> cells;
+  auto cell_of = [&](const cv::Point2f& p, int dx, int dy) {
+    const int64_t cx = static_cast<int64_t>(std::floor(p.x / radius)) + dx;
+    const int64_t cy = static_cast<int64_t>(std::floor(p.y / radius)) + dy;
+    return cy * 1000003 + cx;
+  };
+  for (size_t i = 0; i < pixels.size(); ++i) cells[cell_of(pixels[i], 0, 0)].push_back(i);
+  std::vector<Eigen::Vector3d> near;
+  for (size_t w = 0; w < which.size(); ++w) {
+    const size_t t = which[w];
+    const Eigen::Vector3d& centre = points[t];
+    near.clear();
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        auto it = cells.find(cell_of(pixels[t], dx, dy));
+        if (it == cells.end()) continue;
+        for (size_t j : it->second) {
+          const cv::Point2f d = pixels[j] - pixels[t];
+          if (d.x * d.x + d.y * d.y > radius * radius) continue;
+          // The same surface: a similar depth (not across an occluding edge).
+          if (std::abs(points[j].z() - centre.z()) > 0.2 * centre.z()) continue;
+          near.push_back(points[j]);
+        }
+      }
+    }
+    if (static_cast<int>(near.size()) < options.normal_min_points) continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& p : near) mean += p;
+    mean /= static_cast<double>(near.size());
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const Eigen::Vector3d& p : near) scatter += (p - mean) * (p - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+    const Eigen::Vector3d values = eigen.eigenvalues();  // Ascending.
+    // A plane: thin across, spread along both of its directions.
+    if (!(values(0) < 0.05 * values(1)) || !(values(1) > 0)) continue;
+    normals[w] = eigen.eigenvectors().col(0).normalized().cast<float>();
+  }
+  return normals;
+}
+
 void TrackAnchors::AddFrame(int64_t frame, const cv::Mat& left,
                             const Eigen::Isometry3d& world_from_camera) {
   // A copy: a source may reuse its image buffers for the next frames.
@@ -123,6 +184,26 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
   const Eigen::Vector3d x_anchor = camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
   const Eigen::Vector3d y = current_from_anchor * x_anchor;
   if (y.z() < 0.05) return AnchorAlignment::kRenew;
+  // How the anchor's surface point moves with its pixel: on the fitted plane, or on a plane
+  // facing the camera at the anchor's depth.
+  const Eigen::Vector3d ray((anchor.left.x - camera.cx) / camera.f,
+                            (anchor.left.y - camera.cy) / camera.f, 1.0);
+  Eigen::Vector3d normal(0, 0, 1);
+  if (anchor.normal.squaredNorm() > 0.5 &&
+      std::abs(anchor.normal.cast<double>().dot(ray.normalized())) > 0.15) {
+    normal = anchor.normal.cast<double>();  // Not seen too close to edge-on.
+  }
+  {
+    // The viewing direction changed too much for the warp (a surface guessed or fitted wrongly
+    // shows it most).
+    const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
+    const double cosine = x_anchor.normalized().dot((x_anchor - centre).normalized());
+    if (cosine < std::cos(options_.max_view_change_deg * M_PI / 180)) return AnchorAlignment::kRenew;
+  }
+  const double along = normal.dot(ray);
+  Eigen::Matrix<double, 3, 2> surface;  // d(point) / d(u, v) at the anchor.
+  surface.col(0) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
+  surface.col(1) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
   {
     // The viewing direction changed too much: a slanted surface no longer looks like the
     // fronto-parallel patch the warp assumes.
@@ -133,7 +214,7 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
   Eigen::Matrix<double, 2, 3> projection;
   projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
   const Eigen::Matrix2d warp =
-      (x_anchor.z() / y.z()) * projection * current_from_anchor.linear().leftCols<2>();
+      (camera.f / y.z()) * projection * current_from_anchor.linear() * surface;
   const double det = warp.determinant();
   if (!(det > 0) || std::abs(std::sqrt(det) - 1) > options_.max_scale_change) {
     return AnchorAlignment::kRenew;

@@ -3,8 +3,9 @@
 // simulator's corridor 0.32 px after one frame, 0.79 px after ten), and so do the poses that the
 // sliding window ties to it. Here each track keeps an anchor: the left image position and depth
 // where it was first seen (or last re-anchored). Every later position is refined by aligning the
-// anchor's patch, warped by the predicted motion from the anchor's frame at the anchor's depth
-// (the patch taken as facing the camera), to the current image, starting from the KLT result.
+// anchor's patch, warped by the predicted motion from the anchor's frame as the plane its
+// neighbouring tracks show (or, without enough of them, as facing the camera at the anchor's
+// depth), to the current image, starting from the KLT result.
 // Positions then stay tied to the anchor's observation; they start over from a new anchor only
 // when the anchor is max_frames old, the patch would be scaled too much or seen from too far
 // aside, or the alignment fails.
@@ -15,6 +16,7 @@
 #include <deque>
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "core/options/option_table.h"
 #include "core/stereo/stereo_geometry.h"
@@ -34,6 +36,11 @@ struct TrackAnchorOptions {
   // fronto-parallel patch the warp assumes: re-anchor. 2-3 deg suits subsampled driving (the
   // road seen 5 m further on); the corridor's walls need their anchors longer.
   double max_view_change_deg = 30;
+  // The patch's surface is fitted to the tracks within this radius at a similar depth (at least
+  // normal_min_points of them), so a slanted surface (the road, a wall) is warped as what it is;
+  // 0 = every patch is taken as facing the camera.
+  double normal_radius_px = 40;
+  int normal_min_points = 6;
 
   bool IsValid(std::string* error) const;
   static OptionTable<TrackAnchorOptions> Describe();
@@ -44,7 +51,18 @@ struct TrackAnchor {
   int64_t frame = -1;  // -1 = none.
   cv::Point2f left;
   float disparity_px = 0;
+  // The surface's normal there, in the anchor camera's frame, when the neighbouring tracks
+  // showed a plane; zero = unknown (the patch is then taken as facing the camera).
+  Eigen::Vector3f normal = Eigen::Vector3f::Zero();
 };
+
+// Surface normals at the tracks `which` from the neighbouring tracks' 3D points (`points`, in
+// the camera frame, at image positions `pixels`): a plane fitted to the points within
+// options.normal_radius_px at a similar depth, when enough of them lie on one; zero otherwise.
+std::vector<Eigen::Vector3f> SurfaceNormals(const std::vector<Eigen::Vector3d>& points,
+                                            const std::vector<cv::Point2f>& pixels,
+                                            const std::vector<size_t>& which,
+                                            const TrackAnchorOptions& options);
 
 enum class AnchorAlignment {
   kAligned,    // The position was refined against the anchor.

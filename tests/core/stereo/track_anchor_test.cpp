@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <opencv2/imgproc.hpp>
 
 #include "stereo_test_util.h"
@@ -150,6 +151,112 @@ TEST(TrackAnchors, SaysWhenATrackNeedsANewAnchor) {
   EXPECT_TRUE(anchors.Usable(5, 6));
 }
 
+// The floor 1.2 m below a camera that drives 0.6 m forward: the patch of a floor point is
+// squeezed vertically much more than a patch facing the camera would be. With the floor's normal
+// fitted from the neighbouring tracks the alignment lands on the truth; assuming the patch faces
+// the camera it does not.
+TEST(TrackAnchors, AWarpOnTheFittedSurfaceFollowsASlantedFloor) {
+  const RectifiedStereoCamera camera = testing::TestCamera();
+  const cv::Mat anchor_image = testing::TexturedImage(cv::Size(640, 480), 5);
+  const Eigen::Vector3d normal(0, -1, 0);  // Floor y = 1.2 (optical frame: y down).
+  const double height = 1.2;
+  Eigen::Isometry3d world_from_current = Eigen::Isometry3d::Identity();
+  world_from_current.translation().z() = 0.6;
+  const Eigen::Isometry3d current_from_anchor = world_from_current.inverse();
+  // Pixels of the current image from those of the anchor image: the floor's homography.
+  Eigen::Matrix3d K;
+  K << camera.f, 0, camera.cx, 0, camera.f, camera.cy, 0, 0, 1;
+  const Eigen::Matrix3d H = K *
+                            (current_from_anchor.linear() +
+                             current_from_anchor.translation() * normal.transpose() / -height) *
+                            K.inverse();
+  cv::Mat Hcv(3, 3, CV_64F);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) Hcv.at<double>(r, c) = H(r, c);
+  }
+  cv::Mat current_image;
+  cv::warpPerspective(anchor_image, current_image, Hcv, anchor_image.size(), cv::INTER_LINEAR,
+                      cv::BORDER_REFLECT);
+  auto floor_point = [&](const cv::Point2f& p) {
+    const Eigen::Vector3d ray((p.x - camera.cx) / camera.f, (p.y - camera.cy) / camera.f, 1);
+    return Eigen::Vector3d(ray * (height / ray.y()));
+  };
+  // Corners on the floor's image (below the horizon, within 3..12 m).
+  std::vector<cv::Point2f> corners;
+  cv::goodFeaturesToTrack(anchor_image(cv::Rect(120, 300, 400, 150)), corners, 60, 0.01, 8);
+  ASSERT_GE(corners.size(), 30u);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<cv::Point2f> pixels;
+  std::vector<size_t> all;
+  for (cv::Point2f& c : corners) {
+    c += cv::Point2f(120, 300);
+    pixels.push_back(c);
+    points.push_back(floor_point(c));
+    all.push_back(all.size());
+  }
+  TrackAnchorOptions options;
+  options.normal_radius_px = 80;
+  const std::vector<Eigen::Vector3f> normals = SurfaceNormals(points, pixels, all, options);
+  TrackAnchors anchors(options);
+  anchors.AddFrame(0, anchor_image, Eigen::Isometry3d::Identity());
+  std::vector<double> fitted_errors, facing_errors;
+  int fitted = 0;
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const Eigen::Vector3d y = current_from_anchor * points[i];
+    const cv::Point2f truth(static_cast<float>(camera.f * y.x() / y.z() + camera.cx),
+                            static_cast<float>(camera.f * y.y() / y.z() + camera.cy));
+    if (truth.x < 20 || truth.y < 20 || truth.x > 620 || truth.y > 460) continue;
+    const float disparity = static_cast<float>(camera.f * camera.baseline_m / points[i].z());
+    if (normals[i].squaredNorm() > 0) {
+      ++fitted;
+      EXPECT_GT(std::abs(normals[i].cast<double>().dot(normal)), 0.99) << "track " << i;
+    }
+    for (bool use_normal : {true, false}) {
+      if (use_normal && normals[i].squaredNorm() == 0) continue;
+      TrackAnchor anchor{0, corners[i], disparity,
+                         use_normal ? normals[i] : Eigen::Vector3f::Zero()};
+      cv::Point2f position = truth + cv::Point2f(0.3f, 0.3f);
+      if (anchors.Align(camera, anchor, 2, current_image, world_from_current, &position) !=
+          AnchorAlignment::kAligned) {
+        continue;
+      }
+      (use_normal ? fitted_errors : facing_errors)
+          .push_back(std::hypot(position.x - truth.x, position.y - truth.y));
+    }
+  }
+  EXPECT_GE(fitted, static_cast<int>(corners.size()) / 2);
+  ASSERT_GE(fitted_errors.size(), 20u);
+  std::sort(fitted_errors.begin(), fitted_errors.end());
+  std::sort(facing_errors.begin(), facing_errors.end());
+  const double fitted_median = fitted_errors[fitted_errors.size() / 2];
+  const double facing_median =
+      facing_errors.empty() ? 99 : facing_errors[facing_errors.size() / 2];
+  std::cout << fitted_errors.size() << " aligned on the fitted floor, median "
+            << fitted_median << " px; " << facing_errors.size()
+            << " assuming the patch faces the camera, median " << facing_median << " px\n";
+  EXPECT_LT(fitted_median, 0.08);
+  EXPECT_LT(2 * fitted_median, facing_median);
+}
+
+TEST(TrackAnchors, NoSurfaceIsFittedToTooFewOrScatteredNeighbours) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<cv::Point2f> pixels;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> spread(-0.5, 0.5);
+  for (int i = 0; i < 12; ++i) {  // A cloud 4 m ahead, no plane.
+    points.emplace_back(spread(rng), spread(rng), 4 + spread(rng));
+    pixels.emplace_back(300 + 3 * i, 200 + 2 * i);
+  }
+  points.emplace_back(0, 0, 4);
+  pixels.emplace_back(900, 900);  // Alone.
+  TrackAnchorOptions options;
+  const std::vector<Eigen::Vector3f> normals = SurfaceNormals(points, pixels, {0, 12}, options);
+  EXPECT_EQ(normals[0], Eigen::Vector3f::Zero());
+  EXPECT_EQ(normals[1], Eigen::Vector3f::Zero());
+  options.normal_radius_px = 0;  // Off.
+  EXPECT_EQ(SurfaceNormals(points, pixels, {0}, options)[0], Eigen::Vector3f::Zero());
+}
+
 TEST(TrackAnchorOptions, RejectsAbsurdValuesNamingTheKey) {
   std::string error;
   TrackAnchorOptions o;
@@ -169,6 +276,10 @@ TEST(TrackAnchorOptions, RejectsAbsurdValuesNamingTheKey) {
   o.max_view_change_deg = 0;
   EXPECT_FALSE(o.IsValid(&error));
   EXPECT_NE(error.find("stereo.anchor.max_view_change_deg"), std::string::npos);
+  o = TrackAnchorOptions();
+  o.normal_min_points = 2;
+  EXPECT_FALSE(o.IsValid(&error));
+  EXPECT_NE(error.find("stereo.anchor.normal_min_points"), std::string::npos);
 }
 
 }  // namespace
