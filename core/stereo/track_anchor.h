@@ -1,6 +1,6 @@
 // Drift-free track positions for the stereo odometry. Frame-to-frame KLT adds a small error at
 // every frame, so a track's position wanders off its surface point like a random walk (on the
-// simulator's corridor 0.32 px after one frame, 0.79 px after ten), and so do the poses that the
+// simulator's corridor 0.32 px after one frame, 0.81 px after ten), and so do the poses that the
 // sliding window ties to it. Here each track keeps an anchor: the left image position and depth
 // where it was first seen (or last re-anchored). Every later position is refined by aligning the
 // anchor's patch, warped by the predicted motion from the anchor's frame as the plane its
