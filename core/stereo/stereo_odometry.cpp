@@ -15,9 +15,9 @@ bool StereoOdometryOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.refine_rounds must lie in [1, 10]");
   }
   return rectify.IsValid(error) && tracking.IsValid(error) && anchor.IsValid(error) &&
-         matching.IsValid(error) &&
-         ransac.IsValid(error) && refine.IsValid(error) && gate.IsValid(error) &&
-         keyframe.IsValid(error) && window.IsValid(error) && disparity_offset.IsValid(error);
+         matching.IsValid(error) && ransac.IsValid(error) && refine.IsValid(error) &&
+         gate.IsValid(error) && keyframe.IsValid(error) && window.IsValid(error) &&
+         disparity_offset.IsValid(error);
 }
 
 OptionTable<StereoOdometryOptions> StereoOdometryOptions::Describe() {
