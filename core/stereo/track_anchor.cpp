@@ -62,8 +62,9 @@ OptionTable<TrackAnchorOptions> TrackAnchorOptions::Describe() {
            "Gauss-Newton iterations of the alignment.")
       .Double("max_view_change_deg", &O::max_view_change_deg, "deg", 0.1, 90, 0.5,
               "A track seen from a direction differing more than this from its anchor's is "
-              "anchored anew: the warp treats the patch as facing the camera, which a slanted "
-              "surface (the road) no longer does.")
+              "anchored anew: the further aside, the more a wrongly fitted or assumed surface "
+              "(the road taken as facing the camera) misleads the warp; 3 suits subsampled "
+              "driving.")
       .Double("normal_radius_px", &O::normal_radius_px, "px", 0, 500, 5,
               "A track's surface is fitted as a plane to the tracks within this radius at a "
               "similar depth, so the anchor's patch is warped as that plane; 0 = every patch is "
@@ -184,6 +185,12 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
   const Eigen::Vector3d x_anchor = camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
   const Eigen::Vector3d y = current_from_anchor * x_anchor;
   if (y.z() < 0.05) return AnchorAlignment::kRenew;
+  // Seen from too far aside for the warp (a surface guessed or fitted wrongly shows it most).
+  const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
+  if (x_anchor.normalized().dot((x_anchor - centre).normalized()) <
+      std::cos(options_.max_view_change_deg * M_PI / 180)) {
+    return AnchorAlignment::kRenew;
+  }
   // How the anchor's surface point moves with its pixel: on the fitted plane, or on a plane
   // facing the camera at the anchor's depth.
   const Eigen::Vector3d ray((anchor.left.x - camera.cx) / camera.f,
@@ -193,24 +200,10 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
       std::abs(anchor.normal.cast<double>().dot(ray.normalized())) > 0.15) {
     normal = anchor.normal.cast<double>();  // Not seen too close to edge-on.
   }
-  {
-    // The viewing direction changed too much for the warp (a surface guessed or fitted wrongly
-    // shows it most).
-    const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
-    const double cosine = x_anchor.normalized().dot((x_anchor - centre).normalized());
-    if (cosine < std::cos(options_.max_view_change_deg * M_PI / 180)) return AnchorAlignment::kRenew;
-  }
   const double along = normal.dot(ray);
   Eigen::Matrix<double, 3, 2> surface;  // d(point) / d(u, v) at the anchor.
   surface.col(0) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
   surface.col(1) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
-  {
-    // The viewing direction changed too much: a slanted surface no longer looks like the
-    // fronto-parallel patch the warp assumes.
-    const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
-    const double cosine = x_anchor.normalized().dot((x_anchor - centre).normalized());
-    if (cosine < std::cos(options_.max_view_change_deg * M_PI / 180)) return AnchorAlignment::kRenew;
-  }
   Eigen::Matrix<double, 2, 3> projection;
   projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
   const Eigen::Matrix2d warp =

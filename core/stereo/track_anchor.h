@@ -32,9 +32,9 @@ struct TrackAnchorOptions {
   double max_correction_px = 1.0;  // An alignment moving the KLT position further failed.
   double min_zncc = 0.8;           // An aligned patch correlating less with its anchor failed.
   int max_iterations = 8;          // Gauss-Newton iterations of the alignment.
-  // Seen from a direction this far from the anchor's, a slanted surface no longer looks like the
-  // fronto-parallel patch the warp assumes: re-anchor. 2-3 deg suits subsampled driving (the
-  // road seen 5 m further on); the corridor's walls need their anchors longer.
+  // Seen from a direction this far from the anchor's, a wrongly fitted or assumed surface
+  // misleads the warp: re-anchor. 2-3 deg suits subsampled driving (the road seen 5 m further
+  // on); the corridor's walls need their anchors longer.
   double max_view_change_deg = 30;
   // The patch's surface is fitted to the tracks within this radius at a similar depth (at least
   // normal_min_points of them), so a slanted surface (the road, a wall) is warped as what it is;

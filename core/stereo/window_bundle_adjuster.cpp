@@ -163,14 +163,18 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   if (n < 2) return world_from_camera;
 
   // Points: tracks with at least two usable observations, one of them in an adjusted frame.
-  std::unordered_map<int64_t, int> count;
-  std::unordered_map<int64_t, bool> seen_free;
+  struct Seen {
+    int count = 0;
+    bool adjusted = false;  // In a frame whose pose is adjusted.
+  };
+  std::unordered_map<int64_t, Seen> seen;
   for (int fi = 0; fi < n; ++fi) {
     const Frame& f = frames_[static_cast<size_t>(fi)];
     for (size_t i = 0; i < f.observations.size(); ++i) {
       if (!f.usable[i]) continue;
-      ++count[f.observations[i].track_id];
-      if (fi >= fixed) seen_free[f.observations[i].track_id] = true;
+      Seen& t = seen[f.observations[i].track_id];
+      ++t.count;
+      t.adjusted = t.adjusted || fi >= fixed;
     }
   }
   std::unordered_map<int64_t, int> point_of;
@@ -181,7 +185,9 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
     const Frame& f = frames_[static_cast<size_t>(fi)];
     for (size_t i = 0; i < f.observations.size(); ++i) {
       const TrackObservation& o = f.observations[i];
-      if (!f.usable[i] || count[o.track_id] < 2 || !seen_free.count(o.track_id)) continue;
+      if (!f.usable[i]) continue;
+      const Seen& t = seen[o.track_id];
+      if (t.count < 2 || !t.adjusted) continue;
       const double right_u = o.right_u - disparity_offset_px;
       const double disparity = o.left_u - right_u;
       if (!(disparity > 0)) continue;
