@@ -6,7 +6,6 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QVBoxLayout>
-
 #include <cmath>
 #include <limits>
 
@@ -119,8 +118,10 @@ void OperatorPanel::SetDistance(double metres) {
 }
 
 void OperatorPanel::SetFullScreenMode(bool on) {
-  if (on) showFullScreen();
-  else showNormal();
+  if (on)
+    showFullScreen();
+  else
+    showNormal();
 }
 
 int OperatorPanel::MinTouchTargetPx() const {
@@ -151,15 +152,24 @@ void OperatorPanel::ApplyTouchSizes() {
 
 QString OperatorPanel::BannerText(OperatorState state) const {
   switch (state) {
-    case OperatorState::kIdle: return tr("Tap a button");
-    case OperatorState::kConfirm: return tr("Press this button?");
-    case OperatorState::kNoButton: return tr("No button here - tap again");
-    case OperatorState::kSearching: return tr("Searching");
-    case OperatorState::kTracking: return tr("Tracking");
-    case OperatorState::kLocating: return tr("Locating");
-    case OperatorState::kTargetSent: return tr("Target sent");
-    case OperatorState::kLost: return tr("Lost - hold still");
-    case OperatorState::kStopped: return tr("Stopped");
+    case OperatorState::kIdle:
+      return tr("Tap a button");
+    case OperatorState::kConfirm:
+      return tr("Press this button?");
+    case OperatorState::kNoButton:
+      return tr("No button here - tap again");
+    case OperatorState::kSearching:
+      return tr("Searching");
+    case OperatorState::kTracking:
+      return tr("Tracking");
+    case OperatorState::kLocating:
+      return tr("Locating");
+    case OperatorState::kTargetSent:
+      return tr("Target sent");
+    case OperatorState::kLost:
+      return tr("Lost - hold still");
+    case OperatorState::kStopped:
+      return tr("Stopped");
   }
   return {};
 }

@@ -9,7 +9,6 @@
 #include <QPointF>
 #include <QPolygonF>
 #include <QWidget>
-
 #include <opencv2/core.hpp>
 
 class QLabel;
@@ -21,15 +20,15 @@ class TapImageView;
 
 // What the panel shows in its banner.
 enum class OperatorState {
-  kIdle,        // "Tap a button"
-  kConfirm,     // "Press this button?" with Yes / Cancel
-  kNoButton,    // "No button here - tap again"
+  kIdle,      // "Tap a button"
+  kConfirm,   // "Press this button?" with Yes / Cancel
+  kNoButton,  // "No button here - tap again"
   kSearching,
   kTracking,
   kLocating,
   kTargetSent,
-  kLost,        // "Lost - hold still"
-  kStopped,     // After STOP until "Start again"
+  kLost,     // "Lost - hold still"
+  kStopped,  // After STOP until "Start again"
 };
 
 // A view of the button pipeline: it emits what the operator asks for and shows what the

@@ -48,8 +48,8 @@ QString OptionTooltip(const OptionSpec& spec) {
   } else if (spec.type == OptionType::kChoice) {
     QStringList choices;
     for (const std::string& c : spec.choices) choices << QString::fromStdString(c);
-    tip += QLatin1Char('\n') +
-           OptionEditor::tr("Choices: %1").arg(choices.join(QStringLiteral(", ")));
+    tip +=
+        QLatin1Char('\n') + OptionEditor::tr("Choices: %1").arg(choices.join(QStringLiteral(", ")));
   }
   tip += QLatin1Char('\n') +
          OptionEditor::tr("Default: %1%2")

@@ -4,7 +4,6 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QTouchEvent>
-
 #include <opencv2/imgproc.hpp>
 
 namespace sightline {
@@ -21,9 +20,12 @@ void TapImageView::SetImage(const cv::Mat& image) {
     image_ = QImage();
   } else {
     cv::Mat rgb;
-    if (image.channels() == 1) cv::cvtColor(image, rgb, cv::COLOR_GRAY2RGB);
-    else if (image.channels() == 4) cv::cvtColor(image, rgb, cv::COLOR_BGRA2RGB);
-    else cv::cvtColor(image, rgb, cv::COLOR_BGR2RGB);
+    if (image.channels() == 1)
+      cv::cvtColor(image, rgb, cv::COLOR_GRAY2RGB);
+    else if (image.channels() == 4)
+      cv::cvtColor(image, rgb, cv::COLOR_BGRA2RGB);
+    else
+      cv::cvtColor(image, rgb, cv::COLOR_BGR2RGB);
     image_ = QImage(rgb.data, rgb.cols, rgb.rows, int(rgb.step), QImage::Format_RGB888).copy();
   }
   update();

@@ -2,14 +2,12 @@
 // a finger or a mouse and reports them in image pixels, and outlines the found button.
 #pragma once
 
-#include <optional>
-
 #include <QImage>
 #include <QPointF>
 #include <QPolygonF>
 #include <QWidget>
-
 #include <opencv2/core.hpp>
+#include <optional>
 
 namespace sightline {
 

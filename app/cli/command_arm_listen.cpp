@@ -34,7 +34,8 @@ bool ParsePositive(const std::string& text, double* value) {
 }  // namespace
 
 int ArmListenCommand(const std::vector<std::string>& argv) {
-  auto parsed = CliArgs::Parse(argv, {"--token", "--count", "--timeout"}, {"--help", "--no-heartbeats"});
+  auto parsed =
+      CliArgs::Parse(argv, {"--token", "--count", "--timeout"}, {"--help", "--no-heartbeats"});
   if (!parsed.ok()) return Fail("arm-listen: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(kHelp, stdout);
@@ -64,7 +65,8 @@ int ArmListenCommand(const std::vector<std::string>& argv) {
       const double left_s =
           timeout_s - std::chrono::duration<double>(Clock::now() - last_printed).count();
       if (left_s <= 0) {
-        return Fail("arm-listen: nothing arrived within " + parsed->Value("--timeout").value() + " s");
+        return Fail("arm-listen: nothing arrived within " + parsed->Value("--timeout").value() +
+                    " s");
       }
       wait_ms = std::max(1, int(left_s * 1000));
     }

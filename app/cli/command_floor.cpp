@@ -67,10 +67,11 @@ int FloorCommand(const std::vector<std::string>& args) {
   const Eigen::Vector3d& n = fit->plane.normal;
   std::printf("floor of %s (%d frames): %.5f x %+.5f y %+.5f z %+.5f = 0\n", path.c_str(), used,
               n.x(), n.y(), n.z(), fit->plane.d);
-  std::printf("camera %.3f m above the floor, pitched %.1f deg down; %.1f %% of %d points within "
-              "%.3f m (rms %.4f m)\n",
-              fit->plane.CameraHeightM(), fit->plane.PitchDownDeg(), 100 * fit->inlier_ratio,
-              fit->points, floor_options.fit_threshold_m, fit->rms_m);
+  std::printf(
+      "camera %.3f m above the floor, pitched %.1f deg down; %.1f %% of %d points within "
+      "%.3f m (rms %.4f m)\n",
+      fit->plane.CameraHeightM(), fit->plane.PitchDownDeg(), 100 * fit->inlier_ratio, fit->points,
+      floor_options.fit_threshold_m, fit->rms_m);
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

@@ -26,7 +26,8 @@ int OptionsCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const PipelineInfo* pipeline = registry.Find(parsed->positionals()[0]);
-  if (pipeline == nullptr) return Fail("options: unknown pipeline '" + parsed->positionals()[0] + "'");
+  if (pipeline == nullptr)
+    return Fail("options: unknown pipeline '" + parsed->positionals()[0] + "'");
   OptionSet options;
   if (pipeline->declare_options) {
     Status s = pipeline->declare_options(&options);

@@ -53,8 +53,8 @@ StatusOr<OptionSet> RecordOptions(const CliArgs& args) {
   for (const OptionSpec& spec : std::vector<OptionSpec>(set.specs())) {
     const std::string& key = spec.key;
     auto ends_with = [&key](const std::string& suffix) {
-      return key.size() > suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(),
-                                                       suffix) == 0;
+      return key.size() > suffix.size() &&
+             key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
     if (ends_with(".latest_only")) SIGHTLINE_RETURN_IF_ERROR(set.Set(key, OptionValue(false)));
     if (ends_with(".queue_capacity") && key.rfind("sensors.", 0) == 0) {
@@ -89,12 +89,13 @@ void PrintSummary(const RecordSummary& s, bool quiet) {
               static_cast<unsigned long long>(r.frames_dropped),
               static_cast<unsigned long long>(r.frames_out_of_order));
   if (s.sensor) {
-    std::printf("  source: %llu frames received, %llu dropped, %llu incomplete, mean latency "
-                "%.1f ms, %.1f Hz\n",
-                static_cast<unsigned long long>(s.sensor->frames_received),
-                static_cast<unsigned long long>(s.sensor->frames_dropped),
-                static_cast<unsigned long long>(s.sensor->incomplete_frames),
-                s.sensor->mean_latency_ms, s.sensor->receive_rate_hz);
+    std::printf(
+        "  source: %llu frames received, %llu dropped, %llu incomplete, mean latency "
+        "%.1f ms, %.1f Hz\n",
+        static_cast<unsigned long long>(s.sensor->frames_received),
+        static_cast<unsigned long long>(s.sensor->frames_dropped),
+        static_cast<unsigned long long>(s.sensor->incomplete_frames), s.sensor->mean_latency_ms,
+        s.sensor->receive_rate_hz);
   }
   std::printf("  %.1f MB in %.2f s: %.1f MB/s\n", static_cast<double>(r.bytes_written) / 1e6,
               r.elapsed_s, r.write_mb_per_s);
@@ -104,8 +105,8 @@ void PrintSummary(const RecordSummary& s, bool quiet) {
 }  // namespace
 
 int RecordCommand(const std::vector<std::string>& args) {
-  StatusOr<CliArgs> parsed =
-      CliArgs::Parse(args, {"--out", "--seconds", "--frames", "--set"}, {"--help", "--ack", "--quiet"});
+  StatusOr<CliArgs> parsed = CliArgs::Parse(args, {"--out", "--seconds", "--frames", "--set"},
+                                            {"--help", "--ack", "--quiet"});
   if (!parsed.ok()) return Fail("record: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(kHelp, stdout);
@@ -118,8 +119,10 @@ int RecordCommand(const std::vector<std::string>& args) {
     if (!parsed->Value(flag)) continue;
     StatusOr<double> value = ParseNumber(*parsed, flag);
     if (!value.ok()) return Fail("record: " + value.status().message());
-    if (std::string(flag) == "--seconds") limits.max_seconds = *value;
-    else limits.max_frames = static_cast<int64_t>(*value);
+    if (std::string(flag) == "--seconds")
+      limits.max_seconds = *value;
+    else
+      limits.max_frames = static_cast<int64_t>(*value);
   }
   StatusOr<OptionSet> options = RecordOptions(*parsed);
   if (!options.ok()) return Fail("record: " + options.status().ToString());

@@ -29,17 +29,19 @@ int RunCommand(const std::vector<std::string>& args) {
       "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
       "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol).\n"
       "\nPipelines:\n";
-  for (const PipelineInfo& p : registry.pipelines()) help += "  " + p.name + "  " + p.summary + "\n";
+  for (const PipelineInfo& p : registry.pipelines())
+    help += "  " + p.name + "  " + p.summary + "\n";
 
-  StatusOr<CliArgs> parsed =
-      CliArgs::Parse(args, {"--out", "--profile", "--set", "--subsample", "--format", "--tap", "--serve"},
-                     {"--help", "--quiet"});
+  StatusOr<CliArgs> parsed = CliArgs::Parse(
+      args, {"--out", "--profile", "--set", "--subsample", "--format", "--tap", "--serve"},
+      {"--help", "--quiet"});
   if (!parsed.ok()) return Fail("run: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(help.c_str(), stdout);
     return 0;
   }
-  if (parsed->positionals().size() != 2) return Fail("run: expected PIPELINE and PATH (see --help)");
+  if (parsed->positionals().size() != 2)
+    return Fail("run: expected PIPELINE and PATH (see --help)");
   if (!parsed->Value("--out")) return Fail("run: --out DIR is required");
 
   RunRequest request;
@@ -55,7 +57,8 @@ int RunCommand(const std::vector<std::string>& args) {
   if (auto t = parsed->Value("--tap")) request.overrides.push_back("button.run.tap=" + *t);
   if (auto a = parsed->Value("--serve")) {
     const size_t colon = a->rfind(':');
-    if (colon == std::string::npos || colon == 0) return Fail("run: --serve expects HOST:PORT, got '" + *a + "'");
+    if (colon == std::string::npos || colon == 0)
+      return Fail("run: --serve expects HOST:PORT, got '" + *a + "'");
     request.overrides.push_back("button.run.serve=true");
     request.overrides.push_back("button.arm.bind_address=" + a->substr(0, colon));
     request.overrides.push_back("button.arm.port=" + a->substr(colon + 1));
@@ -74,7 +77,8 @@ int RunCommand(const std::vector<std::string>& args) {
     std::printf("%s on %s (%s): %lld frames\n", m.pipeline.c_str(), m.dataset.c_str(),
                 report->result.dataset_format.c_str(), static_cast<long long>(m.frames));
     std::fputs(FormatTimingTable(m.timing_ms).c_str(), stdout);
-    for (const auto& [key, value] : m.accuracy) std::printf("accuracy.%s = %.6g\n", key.c_str(), value);
+    for (const auto& [key, value] : m.accuracy)
+      std::printf("accuracy.%s = %.6g\n", key.c_str(), value);
     std::printf("wrote %s\n", report->metrics_path.c_str());
   }
   return 0;

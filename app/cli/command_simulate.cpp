@@ -61,7 +61,8 @@ StatusOr<sim::SimulationOptions> OptionsFromArgs(const std::string& scene, const
       {"--sensors", "sim.sensors"},
   };
   for (const auto& [flag, key] : flags) {
-    if (auto value = args.Value(flag)) SIGHTLINE_RETURN_IF_ERROR(set->SetFromString(key, *value, flag));
+    if (auto value = args.Value(flag))
+      SIGHTLINE_RETURN_IF_ERROR(set->SetFromString(key, *value, flag));
   }
   sim::SimulationOptions options = set->Extract(table, sim::SimulationOptions::ForScene(scene));
   if (options.scene != scene) {
@@ -137,9 +138,10 @@ int SimulateCommand(const std::vector<std::string>& args) {
   std::printf("wrote %s: %lld images and\n", s.dir.c_str(), static_cast<long long>(s.images));
   for (const std::string& file : s.files) std::printf("  %s\n", file.c_str());
   const double ms_per_frame = s.frames > 0 ? 1000.0 * s.render_s / s.frames : 0;
-  std::printf("rendered %.1f frames/s (%.1f ms per frame, all sensors); %.2f s in total with "
-              "writing\n",
-              s.render_fps, ms_per_frame, s.total_s);
+  std::printf(
+      "rendered %.1f frames/s (%.1f ms per frame, all sensors); %.2f s in total with "
+      "writing\n",
+      s.render_fps, ms_per_frame, s.total_s);
   return 0;
 }
 

@@ -1,12 +1,11 @@
 // `sightline-cli sweep stereo-vo PATH --subsample 1..10 [--out DIR]`: the stereo seed's Table 1
 // (path-length error per subsampling factor) on any dataset with ground truth, as a table and a
 // PNG plot of length error against the factor.
-#include <opencv2/imgcodecs.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
@@ -48,8 +47,9 @@ bool ParseRange(const std::string& text, int* first, int* last) {
 cv::Mat DrawSweep(const std::vector<SubsampleRow>& rows) {
   double max_error = 1;
   for (const SubsampleRow& r : rows) max_error = std::max(max_error, r.length_error_pct);
-  PlotCanvas canvas(800, 500, {static_cast<double>(rows.front().factor), static_cast<double>(rows.back().factor)},
-                    {0, max_error * 1.1}, false);
+  PlotCanvas canvas(
+      800, 500, {static_cast<double>(rows.front().factor), static_cast<double>(rows.back().factor)},
+      {0, max_error * 1.1}, false);
   canvas.DrawAxes("subsampling factor k", "length error [%]");
   canvas.DrawTitle("stereo-vo: path length error per subsampling factor");
   std::vector<Eigen::Vector2d> points;
@@ -69,14 +69,16 @@ int SweepCommand(const std::vector<std::string>& args) {
     std::fputs(kHelp, stdout);
     return 0;
   }
-  if (parsed->positionals().size() != 2) return Fail("sweep: expected PIPELINE and PATH (see --help)");
+  if (parsed->positionals().size() != 2)
+    return Fail("sweep: expected PIPELINE and PATH (see --help)");
   if (parsed->positionals()[0] != "stereo-vo") {
     return Fail("sweep: only the stereo-vo pipeline has a subsampling sweep");
   }
   const std::string path = parsed->positionals()[1];
   int first = 1, last = 10;
   if (auto range = parsed->Value("--subsample"); range && !ParseRange(*range, &first, &last)) {
-    return Fail("sweep: --subsample expects A..B with 1 <= A <= B (e.g. 1..10), got '" + *range + "'");
+    return Fail("sweep: --subsample expects A..B with 1 <= A <= B (e.g. 1..10), got '" + *range +
+                "'");
   }
 
   OptionSet options;
@@ -96,7 +98,8 @@ int SweepCommand(const std::vector<std::string>& args) {
     run.subsample = k;
     std::fprintf(stderr, "sweep: k = %d\n", k);
     StatusOr<StereoVoRun> result = RunStereoOdometry(path, odometry, run);
-    if (!result.ok()) return Fail("sweep k = " + std::to_string(k) + ": " + result.status().ToString());
+    if (!result.ok())
+      return Fail("sweep k = " + std::to_string(k) + ": " + result.status().ToString());
     if (!result->ground_truth) return Fail("sweep: " + path + " has no ground truth");
     ground_truth = result->ground_truth;
     estimates.push_back({k, std::move(result->estimate)});

@@ -23,7 +23,10 @@ class ButtonPickerProcessor : public FrameProcessor {
  public:
   ButtonPickerProcessor(SourceInfo info, PinholeCamera camera, std::unique_ptr<FrameProcessor> mono,
                         std::shared_ptr<ButtonPickerControls> controls)
-      : info_(std::move(info)), camera_(camera), mono_(std::move(mono)), controls_(std::move(controls)) {}
+      : info_(std::move(info)),
+        camera_(camera),
+        mono_(std::move(mono)),
+        controls_(std::move(controls)) {}
 
   Status Configure(const OptionSet& options) override {
     SIGHTLINE_RETURN_IF_ERROR(mono_->Configure(options));
@@ -84,9 +87,11 @@ class ButtonPickerProcessor : public FrameProcessor {
       if (out->tap_status.ok()) out->candidate_outline = picker_->candidate()->contour;
     }
     if (confirm) picker_->Confirm();
-    const std::optional<Eigen::Isometry3d> base_pose = metric_->BaseFromCamera(r.stamp.sensor_time_s);
+    const std::optional<Eigen::Isometry3d> base_pose =
+        metric_->BaseFromCamera(r.stamp.sensor_time_s);
     if (!base_pose) view.tracking = false;
-    const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out->picker = picker_->Process(r.stamp.sequence_id, r.stamp.sensor_time_s, r.image, view,
                                    base_pose.value_or(Eigen::Isometry3d::Identity()),
                                    r.stamp.sensor_time_s + elapsed_s);
@@ -95,7 +100,9 @@ class ButtonPickerProcessor : public FrameProcessor {
     return out;
   }
 
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override { return Process(frame); }
+  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
+    return Process(frame);
+  }
 
   void Reset() override {
     mono_->Reset();
@@ -115,38 +122,58 @@ class ButtonPickerProcessor : public FrameProcessor {
 // figures and in English, is the line's tooltip for the engineer beside the chair.
 QString OperatorReasonText(GateReason reason) {
   switch (reason) {
-    case GateReason::kSend: return {};
-    case GateReason::kStopped: return ButtonPickerPresenter::tr("Stopped");
-    case GateReason::kNotConfirmed: return ButtonPickerPresenter::tr("Waiting for Yes");
-    case GateReason::kTrackingLost: return ButtonPickerPresenter::tr("Button lost");
-    case GateReason::kTrackingPoor: return ButtonPickerPresenter::tr("Button unclear");
-    case GateReason::kNoEstimate: return ButtonPickerPresenter::tr("Measuring the button");
-    case GateReason::kStale: return ButtonPickerPresenter::tr("Measuring again");
-    case GateReason::kScaleNotConverged: return ButtonPickerPresenter::tr("Measuring the distance");
-    case GateReason::kPlaneUnsound: return ButtonPickerPresenter::tr("Panel unclear");
-    case GateReason::kUncertain: return ButtonPickerPresenter::tr("Position not sure yet");
-    case GateReason::kOutsideWorkspace: return ButtonPickerPresenter::tr("Button out of reach");
+    case GateReason::kSend:
+      return {};
+    case GateReason::kStopped:
+      return ButtonPickerPresenter::tr("Stopped");
+    case GateReason::kNotConfirmed:
+      return ButtonPickerPresenter::tr("Waiting for Yes");
+    case GateReason::kTrackingLost:
+      return ButtonPickerPresenter::tr("Button lost");
+    case GateReason::kTrackingPoor:
+      return ButtonPickerPresenter::tr("Button unclear");
+    case GateReason::kNoEstimate:
+      return ButtonPickerPresenter::tr("Measuring the button");
+    case GateReason::kStale:
+      return ButtonPickerPresenter::tr("Measuring again");
+    case GateReason::kScaleNotConverged:
+      return ButtonPickerPresenter::tr("Measuring the distance");
+    case GateReason::kPlaneUnsound:
+      return ButtonPickerPresenter::tr("Panel unclear");
+    case GateReason::kUncertain:
+      return ButtonPickerPresenter::tr("Position not sure yet");
+    case GateReason::kOutsideWorkspace:
+      return ButtonPickerPresenter::tr("Button out of reach");
   }
   return {};
 }
 
 OperatorState PanelState(PickerState s) {
   switch (s) {
-    case PickerState::kIdle: return OperatorState::kIdle;
-    case PickerState::kConfirm: return OperatorState::kConfirm;
-    case PickerState::kSearching: return OperatorState::kSearching;
-    case PickerState::kTracking: return OperatorState::kTracking;
-    case PickerState::kLocating: return OperatorState::kLocating;
-    case PickerState::kTargetSent: return OperatorState::kTargetSent;
-    case PickerState::kLost: return OperatorState::kLost;
-    case PickerState::kStopped: return OperatorState::kStopped;
+    case PickerState::kIdle:
+      return OperatorState::kIdle;
+    case PickerState::kConfirm:
+      return OperatorState::kConfirm;
+    case PickerState::kSearching:
+      return OperatorState::kSearching;
+    case PickerState::kTracking:
+      return OperatorState::kTracking;
+    case PickerState::kLocating:
+      return OperatorState::kLocating;
+    case PickerState::kTargetSent:
+      return OperatorState::kTargetSent;
+    case PickerState::kLost:
+      return OperatorState::kLost;
+    case PickerState::kStopped:
+      return OperatorState::kStopped;
   }
   return OperatorState::kIdle;
 }
 
 }  // namespace
 
-ButtonPickerPresenter::ButtonPickerPresenter(ArmServerOptions server_defaults, bool serve, QObject* parent)
+ButtonPickerPresenter::ButtonPickerPresenter(ArmServerOptions server_defaults, bool serve,
+                                             QObject* parent)
     : MonoSlamPresenter(parent), server_defaults_(std::move(server_defaults)), serve_(serve) {}
 
 const char* ButtonPickerPresenter::TitleSource() const {
@@ -250,8 +277,9 @@ void ButtonPickerPresenter::Show(const PlaybackResult& result) {
     } else {
       // The banner says it plainly; the detector's reason is for the log.
       panel_->SetState(OperatorState::kNoButton);
-      emit Message(0, tr("No button at the tap: %1")
-                          .arg(QString::fromStdString(view->tap_status.message())));
+      emit Message(
+          0,
+          tr("No button at the tap: %1").arg(QString::fromStdString(view->tap_status.message())));
     }
   }
   const PickerFrame& f = view->picker;

@@ -6,11 +6,10 @@
 // default); STOP publishes a stop at once from the GUI thread.
 #pragma once
 
+#include <QPointF>
 #include <memory>
 #include <mutex>
 #include <optional>
-
-#include <QPointF>
 
 #include "app/sightline/mono_slam_presenter.h"
 #include "core/button/arm_server.h"
@@ -35,8 +34,8 @@ struct ButtonPickerControls {
 // What the processor hands the GUI for one frame: the SLAM's, plus the picker's.
 struct ButtonViewResult : MonoViewResult {
   PickerFrame picker;
-  bool tap_answered = false;               // A tap was handled in this frame ...
-  Status tap_status;                       // ... with this outcome.
+  bool tap_answered = false;                 // A tap was handled in this frame ...
+  Status tap_status;                         // ... with this outcome.
   std::vector<cv::Point> candidate_outline;  // The found button (image pixels).
   bool scale_converged = false;
 };

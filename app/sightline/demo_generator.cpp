@@ -18,9 +18,10 @@ constexpr char kCompleteMarker[] = "COMPLETE";
 
 }  // namespace
 
-DemoGenerator::DemoGenerator(QString folder, QObject* parent, int corridor_frames,
-                             int panel_frames)
-    : QObject(parent), folder_(std::move(folder)), corridor_frames_(corridor_frames),
+DemoGenerator::DemoGenerator(QString folder, QObject* parent, int corridor_frames, int panel_frames)
+    : QObject(parent),
+      folder_(std::move(folder)),
+      corridor_frames_(corridor_frames),
       panel_frames_(panel_frames) {}
 
 DemoGenerator::~DemoGenerator() {
@@ -38,7 +39,8 @@ QString DemoGenerator::panel_path() const { return folder_ + "/panel"; }
 
 void DemoGenerator::Start() {
   if (QFile::exists(folder_ + "/" + kCompleteMarker)) {
-    QMetaObject::invokeMethod(this, [this] { emit Ready(corridor_path()); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this] { emit Ready(corridor_path()); }, Qt::QueuedConnection);
     return;
   }
   if (!QDir().mkpath(folder_)) {
@@ -55,8 +57,9 @@ void DemoGenerator::Start() {
   future_ = QtConcurrent::run([this, corridor, panel, marker, corridor_frames, panel_frames] {
     const int total = corridor_frames + panel_frames;
     auto report = [this](int done, int total_frames) {
-      QMetaObject::invokeMethod(this, [this, done, total_frames] { emit Progress(done, total_frames); },
-                                Qt::QueuedConnection);
+      QMetaObject::invokeMethod(
+          this, [this, done, total_frames] { emit Progress(done, total_frames); },
+          Qt::QueuedConnection);
     };
     sim::SimulationCallbacks callbacks;
     callbacks.cancel = &cancel_;
@@ -74,8 +77,8 @@ void DemoGenerator::Start() {
     }
     if (!made.ok()) {
       const QString message = QString::fromStdString(made.status().ToString());
-      QMetaObject::invokeMethod(this, [this, message] { emit Failed(message); },
-                                Qt::QueuedConnection);
+      QMetaObject::invokeMethod(
+          this, [this, message] { emit Failed(message); }, Qt::QueuedConnection);
       return;
     }
     QFile done(marker);
@@ -87,7 +90,8 @@ void DemoGenerator::Start() {
     }
     done.write("complete\n");
     done.close();
-    QMetaObject::invokeMethod(this, [this] { emit Ready(corridor_path()); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this] { emit Ready(corridor_path()); }, Qt::QueuedConnection);
   });
 }
 

@@ -21,9 +21,12 @@ namespace {
 // The state in the operator's language (SensorStateName is the key the CLI and logs print).
 QString StateText(SensorState state) {
   switch (state) {
-    case SensorState::kClosed: return LiveStatusWidget::tr("closed");
-    case SensorState::kStreaming: return LiveStatusWidget::tr("streaming");
-    case SensorState::kDisconnected: return LiveStatusWidget::tr("disconnected");
+    case SensorState::kClosed:
+      return LiveStatusWidget::tr("closed");
+    case SensorState::kStreaming:
+      return LiveStatusWidget::tr("streaming");
+    case SensorState::kDisconnected:
+      return LiveStatusWidget::tr("disconnected");
   }
   return QString::fromUtf8(SensorStateName(state));
 }

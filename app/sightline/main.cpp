@@ -5,15 +5,15 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/mobility_presenter.h"
-#include "app/sightline/stereo_vo_presenter.h"
-#include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
+#include "app/sightline/stereo_vo_presenter.h"
 #include "app/sightline/translation.h"
 #include "widgets/vtk_gl_widget.h"
 
@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
   QCommandLineOption open_option("open", "Open a dataset folder or file at start.", "PATH");
   QCommandLineOption screenshot_option(
       "screenshot", "Play --frames frames, save the window as a PNG to FILE and exit.", "FILE");
-  QCommandLineOption frames_option("frames", "Frames to play before --screenshot (default 5).",
-                                   "N", "5");
+  QCommandLineOption frames_option("frames", "Frames to play before --screenshot (default 5).", "N",
+                                   "5");
   QCommandLineOption timeout_option("timeout", "Give up on --screenshot after S seconds.", "S",
                                     "120");
   QCommandLineOption demo_option(
@@ -84,9 +84,9 @@ int main(int argc, char** argv) {
     QObject::connect(demo, &sightline::DemoGenerator::Ready, &window,
                      [&window, autoplay](const QString& corridor) {
                        if (autoplay) {
-                         QObject::connect(&window, &sightline::MainWindow::DatasetOpened, &window,
-                                          [&window] { window.PlayLooping(); },
-                                          Qt::SingleShotConnection);
+                         QObject::connect(
+                             &window, &sightline::MainWindow::DatasetOpened, &window,
+                             [&window] { window.PlayLooping(); }, Qt::SingleShotConnection);
                        }
                        window.OpenPath(corridor);
                      });

@@ -12,15 +12,15 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QProgressBar>
 #include <QPointer>
+#include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
 
-#include "app/sightline/demo_generator.h"
 #include "app/sightline/calibration_dialog.h"
+#include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/pipeline_presenter.h"
 #include "app/sightline/playback_controller.h"
@@ -48,8 +48,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   BuildViews();
   BuildMenus();
   ConnectPlayback();
-  if (!declared.ok()) log_panel_->AddMessage(LogPanel::Severity::kError,
-                                             QString::fromStdString(declared.ToString()));
+  if (!declared.ok())
+    log_panel_->AddMessage(LogPanel::Severity::kError, QString::fromStdString(declared.ToString()));
   ShowWelcome();
 }
 
@@ -79,8 +79,8 @@ void MainWindow::BuildViews() {
   log_panel_ = new LogPanel(this);
   QDockWidget* log_dock = add_dock(log_panel_, tr("Log"), "log_dock", Qt::RightDockWidgetArea);
   evaluation_panel_ = new EvaluationPanel(this);
-  evaluation_dock_ = add_dock(evaluation_panel_, tr("Evaluation"), "evaluation_dock",
-                              Qt::RightDockWidgetArea);
+  evaluation_dock_ =
+      add_dock(evaluation_panel_, tr("Evaluation"), "evaluation_dock", Qt::RightDockWidgetArea);
   tabifyDockWidget(log_dock, evaluation_dock_);
   log_dock->raise();
   // The images and the 3D view get the full height; dock sizes apply once the window has its
@@ -124,7 +124,8 @@ void MainWindow::BuildMenus() {
   reset->setShortcut(Qt::Key_R | Qt::CTRL);
   connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
   view_menu_->addSeparator();
-  for (QDockWidget* dock : findChildren<QDockWidget*>()) view_menu_->addAction(dock->toggleViewAction());
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    view_menu_->addAction(dock->toggleViewAction());
 
   // Every sensor driver, greyed out with the reason when it cannot run here.
   QMenu* sensors = menuBar()->addMenu(tr("&Sensors"));
@@ -135,10 +136,10 @@ void MainWindow::BuildMenus() {
     if (!available.ok()) text += tr(" (unavailable)");
     QAction* connect_action = sensors->addAction(text);
     connect_action->setEnabled(available.ok());
-    connect_action->setToolTip(available.ok()
-                                   ? tr("Connect to the first %1 device").arg(
-                                         QString::fromStdString(driver.name))
-                                   : QString::fromStdString(available.message()));
+    connect_action->setToolTip(
+        available.ok()
+            ? tr("Connect to the first %1 device").arg(QString::fromStdString(driver.name))
+            : QString::fromStdString(available.message()));
     const QString uri = QString::fromStdString(driver.scheme);
     const bool needs_folder = driver.name == "replay";  // replay://PATH plays a recording.
     connect(connect_action, &QAction::triggered, this, [this, uri, needs_folder] {
@@ -239,7 +240,8 @@ void MainWindow::ShowDemoProgress(DemoGenerator* demo) {
   });
   connect(demo, &DemoGenerator::Failed, this, [this, bar](const QString& message) {
     bar->deleteLater();
-    log_panel_->AddMessage(LogPanel::Severity::kError, tr("The demo could not be made: %1").arg(message));
+    log_panel_->AddMessage(LogPanel::Severity::kError,
+                           tr("The demo could not be made: %1").arg(message));
     emit DatasetFailed(message);
   });
 }
@@ -447,7 +449,8 @@ void MainWindow::RebuildRecentMenu() {
   recent_menu_->clear();
   const QStringList recent = QSettings().value(kRecentKey).toStringList();
   for (const QString& path : recent) {
-    connect(recent_menu_->addAction(path), &QAction::triggered, this, [this, path] { OpenPath(path); });
+    connect(recent_menu_->addAction(path), &QAction::triggered, this,
+            [this, path] { OpenPath(path); });
   }
   recent_menu_->setEnabled(!recent.isEmpty());
 }

@@ -3,10 +3,10 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QHBoxLayout>
-#include <QPushButton>
-#include <QVBoxLayout>
 #include <QMainWindow>
 #include <QPainter>
+#include <QPushButton>
+#include <QVBoxLayout>
 #include <cstdio>
 
 #include "core/mapping/mapping_frame_processor.h"
@@ -33,7 +33,8 @@ struct MappingViewResult : PipelineFrameResult {
 class MappingProcessor : public FrameProcessor {
  public:
   MappingProcessor(SourceInfo info, std::shared_ptr<const std::atomic<int>> recalibrations)
-      : info_(std::move(info)), recalibrations_(std::move(recalibrations)),
+      : info_(std::move(info)),
+        recalibrations_(std::move(recalibrations)),
         recalibrations_seen_(recalibrations_->load()) {}
 
   Status Configure(const OptionSet& options) override {
@@ -85,8 +86,8 @@ class MappingProcessor : public FrameProcessor {
                         &floor_points_);
       if (++floor_frames_ < run_.floor_frames) {
         char note[96];
-        std::snprintf(note, sizeof(note), "calibrating the floor (%d of %d frames)",
-                      floor_frames_, run_.floor_frames);
+        std::snprintf(note, sizeof(note), "calibrating the floor (%d of %d frames)", floor_frames_,
+                      run_.floor_frames);
         result->note = note;
         return result;
       }
@@ -119,9 +120,10 @@ class MappingProcessor : public FrameProcessor {
     result->floor = floor_;
     result->base_from_camera = processor_->base_from_camera();
     const MappingStageTimes& t = (*mapped)->times;
-    result->stats = {{"mapping/occupancy_ms", t.occupancy_ms}, {"mapping/scan_ms", t.scan_ms},
-                     {"mapping/lines_ms", t.lines_ms},         {"mapping/rotation_ms", t.rotation_ms},
-                     {"mapping/stitch_ms", t.stitch_ms},       {"mapping/total_ms", t.total_ms}};
+    result->stats = {
+        {"mapping/occupancy_ms", t.occupancy_ms}, {"mapping/scan_ms", t.scan_ms},
+        {"mapping/lines_ms", t.lines_ms},         {"mapping/rotation_ms", t.rotation_ms},
+        {"mapping/stitch_ms", t.stitch_ms},       {"mapping/total_ms", t.total_ms}};
     return result;
   }
 
@@ -145,10 +147,17 @@ cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
     cv::Vec3b* out = bgr.ptr<cv::Vec3b>(r);
     for (int c = 0; c < occupancy.width(); ++c) {
       switch (static_cast<OccupancyCell>(cells[c])) {
-        case OccupancyCell::kFree: out[c] = {60, 160, 60}; break;
-        case OccupancyCell::kOccupied: out[c] = {40, 40, 220}; break;
-        case OccupancyCell::kPerson: out[c] = {230, 230, 230}; break;
-        case OccupancyCell::kUnknown: break;
+        case OccupancyCell::kFree:
+          out[c] = {60, 160, 60};
+          break;
+        case OccupancyCell::kOccupied:
+          out[c] = {40, 40, 220};
+          break;
+        case OccupancyCell::kPerson:
+          out[c] = {230, 230, 230};
+          break;
+        case OccupancyCell::kUnknown:
+          break;
       }
     }
   }
@@ -178,12 +187,15 @@ SceneLines WallsAndFloorInCamera(const MappingFrameResult& mapping,
     segments.push_back({at(line.end, 0), at(line.end, kWallHeightM)});
   }
   // A 0.5 m grid on the calibrated floor plane, 0.5-4 m ahead and 2 m to each side.
-  for (double x = 0.5; x <= 4.0 + 1e-9; x += 0.5) out.floor.push_back({at({x, -2}, 0), at({x, 2}, 0)});
-  for (double y = -2; y <= 2 + 1e-9; y += 0.5) out.floor.push_back({at({0.5, y}, 0), at({4, y}, 0)});
+  for (double x = 0.5; x <= 4.0 + 1e-9; x += 0.5)
+    out.floor.push_back({at({x, -2}, 0), at({x, 2}, 0)});
+  for (double y = -2; y <= 2 + 1e-9; y += 0.5)
+    out.floor.push_back({at({0.5, y}, 0), at({4, y}, 0)});
   return out;
 }
 
-constexpr const char* kWallLayers[3] = {"mapping/walls_0", "mapping/walls_1", "mapping/walls_other"};
+constexpr const char* kWallLayers[3] = {"mapping/walls_0", "mapping/walls_1",
+                                        "mapping/walls_other"};
 constexpr const char* kFloorLayer = "mapping/floor";
 
 }  // namespace
@@ -219,12 +231,14 @@ void MappingPresenter::Attach(QMainWindow* window) {
     layout->setContentsMargins(0, 0, 0, 0);
     auto* buttons = new QHBoxLayout;
     auto* calibrate = new QPushButton(tr("Calibrate floor"), panel);
-    calibrate->setToolTip(tr("Fit the floor plane again from the next frames (the robot should "
-                             "see open floor)."));
+    calibrate->setToolTip(
+        tr("Fit the floor plane again from the next frames (the robot should "
+           "see open floor)."));
     connect(calibrate, &QPushButton::clicked, this, &MappingPresenter::RecalibrateFloor);
     auto* save = new QPushButton(tr("Save floor..."), panel);
-    save->setToolTip(tr("Save the floor calibration in use, for mapping.run.floor_file or "
-                        "`sightline-cli run mapping --set mapping.run.floor_file=...`."));
+    save->setToolTip(
+        tr("Save the floor calibration in use, for mapping.run.floor_file or "
+           "`sightline-cli run mapping --set mapping.run.floor_file=...`."));
     connect(save, &QPushButton::clicked, this, [this, window] {
       const QString path = QFileDialog::getSaveFileName(window, tr("Save floor calibration"),
                                                         "floor.yaml", tr("YAML (*.yaml)"));
@@ -322,8 +336,9 @@ Status MappingPresenter::SaveFloor(const QString& path) {
   FloorCalibration calibration;
   calibration.plane = *floor_;
   const Status written = WriteFloorCalibration(calibration, path.toStdString());
-  emit Message(written.ok() ? 0 : 2, written.ok() ? tr("Saved the floor calibration to %1").arg(path)
-                                                  : QString::fromStdString(written.ToString()));
+  emit Message(written.ok() ? 0 : 2, written.ok()
+                                         ? tr("Saved the floor calibration to %1").arg(path)
+                                         : QString::fromStdString(written.ToString()));
   return written;
 }
 

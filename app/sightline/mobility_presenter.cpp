@@ -66,7 +66,8 @@ class MobilityProcessor : public FrameProcessor {
     result->mobility = mapper_.Process(input);
     const MobilityResult& r = *result->mobility;
     result->status = r.status;
-    for (const StageReport& s : r.stages) result->stats.emplace_back("mobility/" + s.name + "_ms", s.ms);
+    for (const StageReport& s : r.stages)
+      result->stats.emplace_back("mobility/" + s.name + "_ms", s.ms);
     result->stats.emplace_back("mobility/total_ms", r.TotalMs());
     result->stats.emplace_back("mobility/segments", static_cast<double>(r.segments.size()));
     auto by_score = std::make_shared<PointCloud>();
@@ -79,8 +80,10 @@ class MobilityProcessor : public FrameProcessor {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (size_t i = 0; i < r.points.size(); ++i) {
       const int s = r.segment[i];
-      const cv::Vec3b rule = ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_rule));
-      const cv::Vec3b gpr = ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_gpr));
+      const cv::Vec3b rule =
+          ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_rule));
+      const cv::Vec3b gpr =
+          ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_gpr));
       by_score->colors.emplace_back(rule[2], rule[1], rule[0]);
       by_gpr->colors.emplace_back(gpr[2], gpr[1], gpr[0]);
       by_segment->colors.push_back(SegmentColor(r, s));

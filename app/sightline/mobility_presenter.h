@@ -4,8 +4,8 @@
 #pragma once
 
 #include <memory>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "app/sightline/pipeline_presenter.h"
 

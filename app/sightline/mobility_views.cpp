@@ -5,8 +5,8 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QSplitter>
-#include <QTableWidget>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include "core/mobility/mobility_map.h"
@@ -47,7 +47,9 @@ void MobilityTimingPanel::Show(const MobilityResult& result) {
   table_->setItem(row, 0, new QTableWidgetItem(tr("Total")));
   table_->setItem(row, 1, new QTableWidgetItem(QString::number(result.TotalMs(), 'f', 2)));
   table_->setItem(row, 2, new QTableWidgetItem(QString()));
-  QString text = tr("%1 mode, %2 segments").arg(QString::fromStdString(result.mode)).arg(result.segments.size());
+  QString text = tr("%1 mode, %2 segments")
+                     .arg(QString::fromStdString(result.mode))
+                     .arg(result.segments.size());
   if (result.ground.found) {
     text += tr(", camera %1 m above the ground").arg(result.ground.d, 0, 'f', 3);
   }

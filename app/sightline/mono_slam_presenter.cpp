@@ -20,8 +20,10 @@ namespace sightline {
 class ScalePlot : public QWidget {
   Q_OBJECT  // For tr(): without it the texts are looked up under QWidget and never translated.
 
- public:
-  explicit ScalePlot(QWidget* parent) : QWidget(parent) { setMinimumHeight(120); }
+      public : explicit ScalePlot(QWidget* parent)
+      : QWidget(parent) {
+    setMinimumHeight(120);
+  }
   void SetHistory(std::vector<ScaleSample> history) {
     history_ = std::move(history);
     update();
@@ -80,7 +82,8 @@ namespace {
 // changes, from its keyframes and the recording's arm poses or ground truth.
 class MonoSlamProcessor : public FrameProcessor {
  public:
-  MonoSlamProcessor(SourceInfo info, PinholeCamera camera, std::shared_ptr<MonoSlamControls> controls)
+  MonoSlamProcessor(SourceInfo info, PinholeCamera camera,
+                    std::shared_ptr<MonoSlamControls> controls)
       : info_(std::move(info)), camera_(camera), controls_(std::move(controls)) {}
 
   Status Configure(const OptionSet& options) override {
@@ -117,8 +120,10 @@ class MonoSlamProcessor : public FrameProcessor {
     }
     result->slam = *r;
     const MonoFrameStats& s = (*r)->stats;
-    result->stats = {{"mono/inliers", double(s.inliers)}, {"mono/matches", double(s.matches)},
-                     {"mono/map_points", double(s.map_points)}, {"mono/tracking_ms", s.tracking_ms}};
+    result->stats = {{"mono/inliers", double(s.inliers)},
+                     {"mono/matches", double(s.matches)},
+                     {"mono/map_points", double(s.map_points)},
+                     {"mono/tracking_ms", s.tracking_ms}};
     if ((*r)->map != last_map_) {
       last_map_ = (*r)->map;
       ScaleEstimator scale(scale_options_);
@@ -150,9 +155,11 @@ class MonoSlamProcessor : public FrameProcessor {
     std::optional<Trajectory> ground_truth;
     if (info_.has_ground_truth && !info_.live) {
       StatusOr<std::unique_ptr<Source>> source = OpenDataset(info_.path);
-      if (source.ok() && (*source)->ground_truth() != nullptr) ground_truth = *(*source)->ground_truth();
+      if (source.ok() && (*source)->ground_truth() != nullptr)
+        ground_truth = *(*source)->ground_truth();
     }
-    StatusOr<Trajectory> metric = LoadMetricCameraPoses(info_.path, run_, ground_truth, &metric_source_);
+    StatusOr<Trajectory> metric =
+        LoadMetricCameraPoses(info_.path, run_, ground_truth, &metric_source_);
     metric_ = metric.ok() ? *metric : Trajectory();
     if (!metric.ok()) metric_source_ = "none";
   }
@@ -184,17 +191,22 @@ QString MetricSourceText(const std::string& source) {
 
 QColor QualityColor(TrackingQuality q) {
   switch (q) {
-    case TrackingQuality::kGood: return QColor(40, 220, 40);
-    case TrackingQuality::kPoor: return QColor(240, 200, 40);
-    case TrackingQuality::kLost: return QColor(230, 40, 40);
-    case TrackingQuality::kInitialising: return QColor(120, 160, 255);
+    case TrackingQuality::kGood:
+      return QColor(40, 220, 40);
+    case TrackingQuality::kPoor:
+      return QColor(240, 200, 40);
+    case TrackingQuality::kLost:
+      return QColor(230, 40, 40);
+    case TrackingQuality::kInitialising:
+      return QColor(120, 160, 255);
   }
   return Qt::white;
 }
 
 // A colour per keyframe (golden-angle hues), as map.ply uses.
 Eigen::Matrix<uint8_t, 3, 1> KeyFrameColour(int64_t keyframe) {
-  const QColor c = QColor::fromHsv(static_cast<int>(std::fmod(keyframe * 137.508, 360.0)), 200, 255);
+  const QColor c =
+      QColor::fromHsv(static_cast<int>(std::fmod(keyframe * 137.508, 360.0)), 200, 255);
   return Eigen::Matrix<uint8_t, 3, 1>(c.red(), c.green(), c.blue());
 }
 
@@ -297,8 +309,9 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   image_view_->SetOverlayPainter([slam](QPainter& painter, const QTransform& to_widget) {
     for (size_t i = 0; i < slam->keypoints.size(); ++i) {
       const uint8_t state = slam->keypoint_state[i];
-      painter.setPen(QPen(state == 1 ? QColor(40, 220, 40) : state == 2 ? QColor(230, 40, 40)
-                                                                         : QColor(150, 150, 150),
+      painter.setPen(QPen(state == 1   ? QColor(40, 220, 40)
+                          : state == 2 ? QColor(230, 40, 40)
+                                       : QColor(150, 150, 150),
                           state == 0 ? 1.0 : 1.5));
       painter.drawEllipse(to_widget.map(QPointF(slam->keypoints[i].x, slam->keypoints[i].y)),
                           state == 0 ? 1.5 : 3.0, state == 0 ? 1.5 : 3.0);
@@ -343,7 +356,8 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   points_drawn_ = cloud->points.size();
   scene_->SetPointCloud(kMapLayer, cloud, SceneView::ColorMode::kRgb, 3.0);
   std::vector<Eigen::Isometry3d> keyframes;
-  for (const MapSnapshot::Frame& k : slam->map->keyframes) keyframes.push_back(metric(k.map_from_camera));
+  for (const MapSnapshot::Frame& k : slam->map->keyframes)
+    keyframes.push_back(metric(k.map_from_camera));
   keyframes_drawn_ = keyframes.size();
   const double frustum = view->lambda > 0 ? 0.03 : 0.03 * divide;
   scene_->SetFrusta(kKeyFramesLayer, keyframes, QColor(90, 200, 255), frustum);

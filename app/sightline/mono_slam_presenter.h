@@ -35,7 +35,7 @@ struct MonoSlamControls {
 struct MonoViewResult : PipelineFrameResult {
   std::shared_ptr<const MonoSlamResult> slam;
   std::shared_ptr<const std::vector<ScaleSample>> scale_history;  // Null when unchanged.
-  double lambda = 0;          // ML map units per metre, 0 = unknown.
+  double lambda = 0;  // ML map units per metre, 0 = unknown.
   double single_ratio = 0;
   std::string metric_source;  // "arm", "ground_truth" or "none".
 };

@@ -1,15 +1,15 @@
 #include "app/sightline/playback_controller.h"
 
 #include <QPointer>
-#include <algorithm>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 
 #include "core/common/depth_cloud.h"
 #include "core/common/timing.h"
 #include "core/io/dataset.h"
+#include "core/pipeline/player.h"
 #include "core/sensors/driver_registry.h"
 #include "core/sensors/live_source.h"
-#include "core/pipeline/player.h"
 
 namespace sightline {
 
@@ -84,12 +84,24 @@ std::optional<SensorStats> PlaybackController::live_stats() const {
   return live_->stats();
 }
 
-void PlaybackController::Play() { if (player_) player_->Play(); }
-void PlaybackController::Pause() { if (player_) player_->Pause(); }
-void PlaybackController::Step() { if (player_) player_->Step(); }
-void PlaybackController::Seek(int64_t index) { if (player_) player_->Seek(index); }
-void PlaybackController::SetSpeed(double factor) { if (player_) player_->SetSpeed(factor); }
-void PlaybackController::SetLoop(bool loop) { if (player_) player_->SetLoop(loop); }
+void PlaybackController::Play() {
+  if (player_) player_->Play();
+}
+void PlaybackController::Pause() {
+  if (player_) player_->Pause();
+}
+void PlaybackController::Step() {
+  if (player_) player_->Step();
+}
+void PlaybackController::Seek(int64_t index) {
+  if (player_) player_->Seek(index);
+}
+void PlaybackController::SetSpeed(double factor) {
+  if (player_) player_->SetSpeed(factor);
+}
+void PlaybackController::SetLoop(bool loop) {
+  if (player_) player_->SetLoop(loop);
+}
 
 void PlaybackController::SetViewOptions(const ViewOptions& options) {
   std::shared_ptr<const Frame> frame;
@@ -192,7 +204,8 @@ void PlaybackController::WorkerLoop() {
       const StatusCode code = frame.status().code();
       if (code == StatusCode::kCancelled) break;
       if (code == StatusCode::kOutOfRange) {
-        QMetaObject::invokeMethod(this, [this] { emit EndOfStream(); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this] { emit EndOfStream(); }, Qt::QueuedConnection);
         continue;  // Next() waits for Play, Step or Seek.
       }
       const QString message = QString::fromStdString(frame.status().ToString());
@@ -201,14 +214,14 @@ void PlaybackController::WorkerLoop() {
         // source reconnects by itself.
         if (!live_outage_) {
           live_outage_ = true;
-          QMetaObject::invokeMethod(this, [this, message] { emit ReadError(message); },
-                                    Qt::QueuedConnection);
+          QMetaObject::invokeMethod(
+              this, [this, message] { emit ReadError(message); }, Qt::QueuedConnection);
         }
         continue;
       }
       player_->Pause();
-      QMetaObject::invokeMethod(this, [this, message] { emit ReadError(message); },
-                                Qt::QueuedConnection);
+      QMetaObject::invokeMethod(
+          this, [this, message] { emit ReadError(message); }, Qt::QueuedConnection);
       continue;
     }
     live_outage_ = false;
@@ -229,8 +242,8 @@ void PlaybackController::WorkerLoop() {
   }
 }
 
-std::shared_ptr<const PlaybackResult> PlaybackController::Prepare(const Frame& frame,
-                                                                  const ViewOptions& options) const {
+std::shared_ptr<const PlaybackResult> PlaybackController::Prepare(
+    const Frame& frame, const ViewOptions& options) const {
   std::shared_ptr<const SourceInfo> info;
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -50,8 +50,7 @@ class PlaybackController : public QObject {
   void SetViewOptions(const ViewOptions& options);
 
   // Makes a pipeline's processor for an opened source (its calibration and folder).
-  using ProcessorFactory =
-      std::function<std::unique_ptr<FrameProcessor>(const SourceInfo& info)>;
+  using ProcessorFactory = std::function<std::unique_ptr<FrameProcessor>(const SourceInfo& info)>;
   // Runs a pipeline on every frame from now on (nullptr: none). Also made anew on each Open.
   void SetProcessorFactory(ProcessorFactory factory, const OptionSet& options);
   // New pipeline options: applied before the next frame, and the current frame is run again.
@@ -81,7 +80,8 @@ class PlaybackController : public QObject {
   void StartWorker(std::unique_ptr<Player> player);
   void StopWorker();
   void WorkerLoop();
-  std::shared_ptr<const PlaybackResult> Prepare(const Frame& frame, const ViewOptions& options) const;
+  std::shared_ptr<const PlaybackResult> Prepare(const Frame& frame,
+                                                const ViewOptions& options) const;
   // Stores the newest result and notifies the GUI unless a notification is already pending.
   void Publish(std::shared_ptr<const PlaybackResult> result);
   void DeliverLatest();

@@ -18,7 +18,7 @@ struct PlaybackResult {
   cv::Mat secondary_image;  // Depth (CV_32F metres) or right image; may be empty.
   bool secondary_is_depth = false;
   std::shared_ptr<const PointCloud> cloud;  // In the sensor frame; may be null.
-  double prepare_ms = 0;    // Worker time to read and prepare the frame.
+  double prepare_ms = 0;                    // Worker time to read and prepare the frame.
   std::shared_ptr<const PipelineFrameResult> pipeline;  // The active pipeline's result, if any.
 };
 

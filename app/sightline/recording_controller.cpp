@@ -50,8 +50,7 @@ bool RecordingController::Start(const QString& dir) {
   const SourceInfo& info = *playback_->info();
   RecorderOptions options;
   options.block_when_full = !info.live;  // Recordings can wait for the disk; sensors cannot.
-  StatusOr<std::unique_ptr<Recorder>> started =
-      Recorder::Start(dir.toStdString(), info, options);
+  StatusOr<std::unique_ptr<Recorder>> started = Recorder::Start(dir.toStdString(), info, options);
   if (!started.ok()) {
     emit Failed(QString::fromStdString(started.status().ToString()));
     return false;

@@ -12,7 +12,9 @@ namespace sightline {
 
 ScreenshotDriver::ScreenshotDriver(MainWindow* window, QString output_path, int frames,
                                    int timeout_s)
-    : QObject(window), window_(window), output_path_(std::move(output_path)),
+    : QObject(window),
+      window_(window),
+      output_path_(std::move(output_path)),
       frames_wanted_(frames < 1 ? 1 : frames) {
   connect(window_, &MainWindow::DatasetOpened, this, [this] { window_->playback()->Step(); });
   connect(window_, &MainWindow::DatasetFailed, this, &ScreenshotDriver::Fail);

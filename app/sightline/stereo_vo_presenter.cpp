@@ -58,7 +58,8 @@ class StereoVoProcessor : public FrameProcessor {
     }
     result->odometry = *r;
     const FrameStats& s = (*r)->stats;
-    result->stats = {{"vo/tracked", double(s.tracked)}, {"vo/inliers", double(s.inliers)},
+    result->stats = {{"vo/tracked", double(s.tracked)},
+                     {"vo/inliers", double(s.inliers)},
                      {"vo/ransac_iterations", double(s.ransac_iterations)},
                      {"vo/residual_px", s.residual_px}};
     if (ground_truth_) {
@@ -91,9 +92,12 @@ class StereoVoProcessor : public FrameProcessor {
 
 QColor RoleColor(FeatureRole role) {
   switch (role) {
-    case FeatureRole::kInlier: return QColor(40, 220, 40);
-    case FeatureRole::kOutlier: return QColor(230, 40, 40);
-    case FeatureRole::kNew: return QColor(60, 120, 255);
+    case FeatureRole::kInlier:
+      return QColor(40, 220, 40);
+    case FeatureRole::kOutlier:
+      return QColor(230, 40, 40);
+    case FeatureRole::kNew:
+      return QColor(60, 120, 255);
   }
   return Qt::white;
 }
@@ -225,7 +229,8 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
                             .arg(s.gated ? tr(", GATED: pose held") : QString()));
 
   estimate_.Add(odometry->stamp.sensor_time_s, odometry->world_from_camera);
-  if (view->ground_truth) ground_truth_drawn_.Add(odometry->stamp.sensor_time_s, *view->ground_truth);
+  if (view->ground_truth)
+    ground_truth_drawn_.Add(odometry->stamp.sensor_time_s, *view->ground_truth);
   if (scene_ != nullptr) {
     scene_->SetTrajectory(kEstimateLayer, estimate_, QColor(255, 80, 80), 3.0);
     if (!ground_truth_drawn_.empty()) {
@@ -245,10 +250,10 @@ void StereoVoPresenter::PlotStatistics(int64_t frame, const FrameStats& s) {
   counts_plot_->Append(tr("inliers"), x, s.inliers, QColor(40, 220, 40));
   counts_plot_->Append(tr("RANSAC it."), x, s.ransac_iterations, QColor(230, 120, 230));
   const std::pair<QString, double> stages[] = {
-      {tr("rectify"), s.rectify_ms},     {tr("pyramid"), s.pyramid_ms},
-      {tr("tracking"), s.tracking_ms},   {tr("detection"), s.detection_ms},
-      {tr("matching"), s.matching_ms},   {tr("RANSAC"), s.ransac_ms},
-      {tr("refine"), s.refine_ms},       {tr("window BA"), s.window_ms},
+      {tr("rectify"), s.rectify_ms},   {tr("pyramid"), s.pyramid_ms},
+      {tr("tracking"), s.tracking_ms}, {tr("detection"), s.detection_ms},
+      {tr("matching"), s.matching_ms}, {tr("RANSAC"), s.ransac_ms},
+      {tr("refine"), s.refine_ms},     {tr("window BA"), s.window_ms},
       {tr("total"), s.total_ms}};
   const QColor colors[] = {QColor(150, 150, 150), QColor(0, 200, 200), QColor(60, 120, 255),
                            QColor(255, 140, 0),   QColor(255, 200, 0), QColor(230, 120, 230),

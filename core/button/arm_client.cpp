@@ -68,7 +68,9 @@ StatusOr<ArmClient> ArmClient::Connect(const std::string& host, int port, const 
   return client;
 }
 
-ArmClient::ArmClient(ArmClient&& o) noexcept : fd_(o.fd_), buffer_(std::move(o.buffer_)) { o.fd_ = -1; }
+ArmClient::ArmClient(ArmClient&& o) noexcept : fd_(o.fd_), buffer_(std::move(o.buffer_)) {
+  o.fd_ = -1;
+}
 
 ArmClient& ArmClient::operator=(ArmClient&& o) noexcept {
   if (this != &o) {
@@ -112,8 +114,10 @@ StatusOr<std::string> ArmClient::ReadLine(int timeout_ms) {
       return line;
     }
     if (fd_ < 0) return Unavailable("arm client: connection closed");
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-    if (left.count() < 0) return OutOfRange("arm client: no line within " + std::to_string(timeout_ms) + " ms");
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() < 0)
+      return OutOfRange("arm client: no line within " + std::to_string(timeout_ms) + " ms");
     pollfd p{fd_, POLLIN, 0};
     const int ready = poll(&p, 1, int(left.count()));
     if (ready == 0) continue;

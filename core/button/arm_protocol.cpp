@@ -118,13 +118,28 @@ class FlatReader {
         if (i_ >= s_.size()) return false;
         const char e = s_[i_++];
         switch (e) {
-          case '"': case '\\': case '/': out->push_back(e); break;
-          case 'n': out->push_back('\n'); break;
-          case 't': out->push_back('\t'); break;
-          case 'r': out->push_back('\r'); break;
-          case 'b': out->push_back('\b'); break;
-          case 'f': out->push_back('\f'); break;
-          default: return false;  // \u escapes are not used by tokens.
+          case '"':
+          case '\\':
+          case '/':
+            out->push_back(e);
+            break;
+          case 'n':
+            out->push_back('\n');
+            break;
+          case 't':
+            out->push_back('\t');
+            break;
+          case 'r':
+            out->push_back('\r');
+            break;
+          case 'b':
+            out->push_back('\b');
+            break;
+          case 'f':
+            out->push_back('\f');
+            break;
+          default:
+            return false;  // \u escapes are not used by tokens.
         }
       } else {
         out->push_back(c);
@@ -134,8 +149,8 @@ class FlatReader {
   }
   bool Scalar() {
     const size_t start = i_;
-    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) ||
-                              s_[i_] == '-' || s_[i_] == '+' || s_[i_] == '.')) {
+    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '-' ||
+                              s_[i_] == '+' || s_[i_] == '.')) {
       ++i_;
     }
     const std::string word = s_.substr(start, i_ - start);

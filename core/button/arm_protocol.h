@@ -3,12 +3,11 @@
 // line a client may send (the token handshake).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace sightline {
 
@@ -16,12 +15,12 @@ inline constexpr int kArmProtocolVersion = 1;
 
 // A button target for the arm controller.
 struct ArmTarget {
-  double stamp_s = 0;                  // Time of the image the estimate comes from [s].
-  std::string frame_id = "arm_base";   // Frame of position and approach.
+  double stamp_s = 0;                 // Time of the image the estimate comes from [s].
+  std::string frame_id = "arm_base";  // Frame of position and approach.
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // Button centre [m].
   Eigen::Vector3d approach = Eigen::Vector3d::UnitX();   // Unit push direction.
-  double uncertainty_m = 0;            // 1-sigma position uncertainty [m].
-  std::vector<int64_t> source_frames;  // Frame ids the estimate used.
+  double uncertainty_m = 0;                              // 1-sigma position uncertainty [m].
+  std::vector<int64_t> source_frames;                    // Frame ids the estimate used.
 };
 
 // One JSON line (with the trailing '\n') per message; `seq` counts all messages of a server.

@@ -32,8 +32,10 @@ bool ArmServerOptions::IsValid(std::string* error) const {
   if (queue_messages < 1 || queue_messages > 100000) {
     return Invalid(error, "button.arm.queue_messages must lie in [1, 100000]");
   }
-  if (!(heartbeat_s >= 0 && heartbeat_s <= 3600)) return Invalid(error, "button.arm.heartbeat_s must lie in [0, 3600]");
-  if (max_clients < 1 || max_clients > 1000) return Invalid(error, "button.arm.max_clients must lie in [1, 1000]");
+  if (!(heartbeat_s >= 0 && heartbeat_s <= 3600))
+    return Invalid(error, "button.arm.heartbeat_s must lie in [0, 3600]");
+  if (max_clients < 1 || max_clients > 1000)
+    return Invalid(error, "button.arm.max_clients must lie in [1, 1000]");
   if (max_line_bytes < 64 || max_line_bytes > 1 << 20) {
     return Invalid(error, "button.arm.max_line_bytes must lie in [64, 1048576]");
   }
@@ -59,7 +61,7 @@ OptionTable<ArmServerOptions> ArmServerOptions::Describe() {
 struct ArmServer::Client {
   int fd = -1;
   bool authorised = false;
-  std::string in;        // Bytes received, not yet a whole line.
+  std::string in;           // Bytes received, not yet a whole line.
   bool discarding = false;  // Inside an over-long line.
   std::deque<std::shared_ptr<const std::string>> out;
   size_t out_offset = 0;  // Bytes of out.front() already written.
@@ -104,8 +106,12 @@ StatusOr<std::unique_ptr<ArmServer>> ArmServer::Start(ArmServerOptions options) 
       new ArmServer(std::move(options), fd, ntohs(addr.sin_port), pipe_fds[0], pipe_fds[1]));
 }
 
-ArmServer::ArmServer(ArmServerOptions options, int listen_fd, int port, int wake_read, int wake_write)
-    : options_(std::move(options)), listen_fd_(listen_fd), port_(port), wake_read_(wake_read),
+ArmServer::ArmServer(ArmServerOptions options, int listen_fd, int port, int wake_read,
+                     int wake_write)
+    : options_(std::move(options)),
+      listen_fd_(listen_fd),
+      port_(port),
+      wake_read_(wake_read),
       wake_write_(wake_write) {
   thread_ = std::thread([this] { Run(); });
 }
@@ -240,8 +246,10 @@ bool ArmServer::Read(Client& c) {
         ++stats_.ignored_lines;
       } else if (!c.authorised) {
         const std::optional<std::string> token = ParseTokenLine(c.in);
-        if (token && *token == options_.token) c.authorised = true;
-        else ++stats_.ignored_lines;
+        if (token && *token == options_.token)
+          c.authorised = true;
+        else
+          ++stats_.ignored_lines;
       } else {
         ++stats_.ignored_lines;  // Clients have nothing to say after the handshake.
       }
@@ -274,7 +282,8 @@ void ArmServer::Run() {
   while (running_.load()) {
     int timeout_ms = -1;
     if (options_.heartbeat_s > 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(next_heartbeat - Clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(next_heartbeat - Clock::now());
       timeout_ms = int(std::max<int64_t>(0, left.count()));
     }
     fds.clear();

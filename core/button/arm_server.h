@@ -34,15 +34,15 @@ struct ArmServerOptions {
 
 // Counters since Start().
 struct ArmServerStats {
-  int clients = 0;             // Connected now.
-  int authorised = 0;          // Connected and receiving.
-  int64_t targets = 0;         // Targets published.
-  int64_t stops = 0;           // Stops published.
-  int64_t suppressed = 0;      // Targets refused while stopped.
-  int64_t heartbeats = 0;      // Heartbeats published.
-  int64_t sent_lines = 0;      // Lines fully written to clients.
-  int64_t dropped = 0;         // Lines dropped from full client queues.
-  int64_t ignored_lines = 0;   // Client lines ignored (malformed, wrong token, after handshake).
+  int clients = 0;               // Connected now.
+  int authorised = 0;            // Connected and receiving.
+  int64_t targets = 0;           // Targets published.
+  int64_t stops = 0;             // Stops published.
+  int64_t suppressed = 0;        // Targets refused while stopped.
+  int64_t heartbeats = 0;        // Heartbeats published.
+  int64_t sent_lines = 0;        // Lines fully written to clients.
+  int64_t dropped = 0;           // Lines dropped from full client queues.
+  int64_t ignored_lines = 0;     // Client lines ignored (malformed, wrong token, after handshake).
   int64_t rejected_clients = 0;  // Connections refused (max_clients).
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -25,7 +24,8 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
   if (!(canny_low > 0 && canny_high > canny_low)) {
     return Invalid(error, "button.detect.canny_low must be > 0 and below canny_high");
   }
-  if (close_px < 0 || close_px > 31) return Invalid(error, "button.detect.close_px must lie in [0, 31]");
+  if (close_px < 0 || close_px > 31)
+    return Invalid(error, "button.detect.close_px must lie in [0, 31]");
   if (!(min_area_px >= 4)) return Invalid(error, "button.detect.min_area_px must be >= 4");
   if (!(max_area_fraction > 0 && max_area_fraction <= 1)) {
     return Invalid(error, "button.detect.max_area_fraction must lie in (0, 1]");
@@ -34,9 +34,11 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.detect.min_coverage must lie in [0, 1]");
   }
   if (!(max_aspect >= 1)) return Invalid(error, "button.detect.max_aspect must be >= 1");
-  if (!(max_tap_distance_px > 0)) return Invalid(error, "button.detect.max_tap_distance_px must be > 0");
+  if (!(max_tap_distance_px > 0))
+    return Invalid(error, "button.detect.max_tap_distance_px must be > 0");
   if (!(sift_margin_px >= 0)) return Invalid(error, "button.detect.sift_margin_px must be >= 0");
-  if (!(sift_margin_radius >= 0)) return Invalid(error, "button.detect.sift_margin_radius must be >= 0");
+  if (!(sift_margin_radius >= 0))
+    return Invalid(error, "button.detect.sift_margin_radius must be >= 0");
   if (min_keypoints < 1) return Invalid(error, "button.detect.min_keypoints must be >= 1");
   if (!(sift_contrast > 0 && sift_contrast < 1)) {
     return Invalid(error, "button.detect.sift_contrast must lie in (0, 1)");
@@ -79,8 +81,10 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
 cv::Mat ToGrey(const cv::Mat& image) {
   if (image.type() == CV_8UC1) return image;
   cv::Mat grey;
-  if (image.type() == CV_8UC3) cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  else if (image.type() == CV_8UC4) cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+  if (image.type() == CV_8UC3)
+    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  else if (image.type() == CV_8UC4)
+    cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
   return grey;
 }
 
@@ -150,7 +154,8 @@ std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptio
 // True when `outer` holds at least two other regions away from its centre that the tap is not
 // on: a panel plate or a group of buttons rather than one button (whose label sits near its
 // centre).
-bool IsGroup(const Candidate& outer, const std::vector<Candidate>& all, const std::vector<bool>& on_tap) {
+bool IsGroup(const Candidate& outer, const std::vector<Candidate>& all,
+             const std::vector<bool>& on_tap) {
   const double off_centre = 0.4 * std::sqrt(outer.area / M_PI);
   int others = 0;
   for (size_t i = 0; i < all.size(); ++i) {
@@ -165,7 +170,8 @@ bool IsGroup(const Candidate& outer, const std::vector<Candidate>& all, const st
 // The candidate for a tap: centroid distance relative to the region's size, so a tap on a
 // button prefers the button's outline over a small label printed on it; regions that hold
 // other buttons (plates, groups) are skipped.
-const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d tap, double max_dist) {
+const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d tap,
+                        double max_dist) {
   std::vector<bool> on_tap(candidates.size());
   for (size_t i = 0; i < candidates.size(); ++i) {
     on_tap[i] = cv::pointPolygonTest(candidates[i].contour, cv::Point2f(tap), false) >= 0;
@@ -194,15 +200,16 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   if (image.empty()) return InvalidArgument("button detector: empty image");
   const cv::Mat grey = ToGrey(image);
-  if (grey.empty()) return InvalidArgument("button detector: image must be 8-bit grey, BGR or BGRA");
+  if (grey.empty())
+    return InvalidArgument("button detector: image must be 8-bit grey, BGR or BGRA");
   if (!(tap.x >= 0 && tap.y >= 0 && tap.x < image.cols && tap.y < image.rows)) {
     char text[160];
-    std::snprintf(text, sizeof(text), "button detector: tap (%.1f, %.1f) lies outside the %dx%d image",
-                  tap.x, tap.y, image.cols, image.rows);
+    std::snprintf(text, sizeof(text),
+                  "button detector: tap (%.1f, %.1f) lies outside the %dx%d image", tap.x, tap.y,
+                  image.cols, image.rows);
     return InvalidArgument(text);
   }
-  const double scale =
-      double(options_.working_size_px) / std::max(image.cols, image.rows);
+  const double scale = double(options_.working_size_px) / std::max(image.cols, image.rows);
   cv::Mat work = grey;
   if (scale != 1.0) {
     cv::resize(grey, work, cv::Size(), scale, scale, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
@@ -230,10 +237,12 @@ StatusOr<std::shared_ptr<const ButtonModel>> ButtonDetector::Detect(const cv::Ma
   StatusOr<ButtonModel> region = FindRegion(image, tap);
   if (!region.ok()) return region.status();
   auto model = std::make_shared<ButtonModel>(std::move(*region));
-  const double keep = std::max(options_.sift_margin_px, options_.sift_margin_radius * model->RadiusPx());
+  const double keep =
+      std::max(options_.sift_margin_px, options_.sift_margin_radius * model->RadiusPx());
   const int margin = int(std::ceil(keep)) + 16;  // + SIFT support.
-  const cv::Rect crop = (model->box + cv::Size(2 * margin, 2 * margin) -
-                         cv::Point(margin, margin)) & cv::Rect(0, 0, image.cols, image.rows);
+  const cv::Rect crop =
+      (model->box + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
+      cv::Rect(0, 0, image.cols, image.rows);
   const cv::Mat grey = ToGrey(image);
   cv::Ptr<cv::SIFT> sift = cv::SIFT::create(0, 3, options_.sift_contrast);
   std::vector<cv::KeyPoint> keypoints;

@@ -1,11 +1,10 @@
 #include "core/button/button_locator.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
-
-#include <Eigen/Eigenvalues>
 
 #include "core/button/option_check.h"
 
@@ -18,10 +17,13 @@ bool ButtonLocatorOptions::IsValid(std::string* error) const {
   if (!(radius_px > 0)) return Invalid(error, "button.locate.radius_px must be > 0");
   if (min_points < 3) return Invalid(error, "button.locate.min_points must be >= 3");
   if (min_face_points < 1) return Invalid(error, "button.locate.min_face_points must be >= 1");
-  if (!(max_face_offset_m > 0)) return Invalid(error, "button.locate.max_face_offset_m must be > 0");
-  if (good_points < min_points) return Invalid(error, "button.locate.good_points must be >= min_points");
+  if (!(max_face_offset_m > 0))
+    return Invalid(error, "button.locate.max_face_offset_m must be > 0");
+  if (good_points < min_points)
+    return Invalid(error, "button.locate.good_points must be >= min_points");
   if (ransac_iterations < 1) return Invalid(error, "button.locate.ransac_iterations must be >= 1");
-  if (!(ransac_threshold_m > 0)) return Invalid(error, "button.locate.ransac_threshold_m must be > 0");
+  if (!(ransac_threshold_m > 0))
+    return Invalid(error, "button.locate.ransac_threshold_m must be > 0");
   if (!(max_plane_rms_m > 0)) return Invalid(error, "button.locate.max_plane_rms_m must be > 0");
   if (!(min_inlier_fraction > 0 && min_inlier_fraction <= 1)) {
     return Invalid(error, "button.locate.min_inlier_fraction must lie in (0, 1]");
@@ -47,7 +49,8 @@ OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
               "Larger median offset of the face points from the panel plane is not applied.")
       .Int("good_points", &O::good_points, "", 3, 1000, 1,
            "Fewer points than this: the plane is not sound (no target is sent).")
-      .Int("ransac_iterations", &O::ransac_iterations, "", 1, 100000, 10, "Plane RANSAC hypotheses.")
+      .Int("ransac_iterations", &O::ransac_iterations, "", 1, 100000, 10,
+           "Plane RANSAC hypotheses.")
       .Double("ransac_threshold_m", &O::ransac_threshold_m, "m", 1e-5, 1, 0.0005,
               "Plane inlier distance.")
       .Double("max_plane_rms_m", &O::max_plane_rms_m, "m", 1e-5, 1, 0.0005,
@@ -158,7 +161,8 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   out.points_near = int(near.size());
   if (out.points_near < options_.min_points) {
     return NotFound("button locator: " + std::to_string(out.points_near) +
-                    " map points near the button (needs " + std::to_string(options_.min_points) + ")");
+                    " map points near the button (needs " + std::to_string(options_.min_points) +
+                    ")");
   }
   const Eigen::Vector3d ray =
       input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();

@@ -4,10 +4,9 @@
 // plane, and the plane normal as the approach direction.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "core/common/camera.h"
 #include "core/common/status.h"
@@ -17,22 +16,22 @@ namespace sightline {
 
 // Locator options. Keys "button.locate.*".
 struct ButtonLocatorOptions {
-  double button_radii = 0.9;         // Map points within this many tracked button radii lie on
-                                     // the button's face; 0 = ignore the face.
-  double radius_px = 60;             // The panel around the button: points projecting within
-                                     // this of the centre [px].
-  int min_points = 3;                // Fewer points near the button: no position.
-  int good_points = 6;               // Points for a sound fit (fewer: plane_sound = false); this
-                                     // many on the face: the face's own plane is fitted.
-  int min_face_points = 3;           // Else this many face points move the panel plane onto the
-                                     // face (median offset; buttons stand out of their plate).
-  double max_face_offset_m = 0.03;   // Larger median face offsets are not applied [m].
-  int ransac_iterations = 200;       // Plane RANSAC hypotheses.
-  double ransac_threshold_m = 0.004; // Plane inlier distance [m].
-  double max_plane_rms_m = 0.004;    // Inlier RMS above this: plane not sound [m].
-  double min_inlier_fraction = 0.5;  // Fewer inliers than this fraction: plane not sound.
-  double min_incidence_cos = 0.2;    // |cos| between ray and normal below this: near-parallel.
-  uint64_t seed = 1;                 // RANSAC random seed (deterministic runs).
+  double button_radii = 0.9;          // Map points within this many tracked button radii lie on
+                                      // the button's face; 0 = ignore the face.
+  double radius_px = 60;              // The panel around the button: points projecting within
+                                      // this of the centre [px].
+  int min_points = 3;                 // Fewer points near the button: no position.
+  int good_points = 6;                // Points for a sound fit (fewer: plane_sound = false); this
+                                      // many on the face: the face's own plane is fitted.
+  int min_face_points = 3;            // Else this many face points move the panel plane onto the
+                                      // face (median offset; buttons stand out of their plate).
+  double max_face_offset_m = 0.03;    // Larger median face offsets are not applied [m].
+  int ransac_iterations = 200;        // Plane RANSAC hypotheses.
+  double ransac_threshold_m = 0.004;  // Plane inlier distance [m].
+  double max_plane_rms_m = 0.004;     // Inlier RMS above this: plane not sound [m].
+  double min_inlier_fraction = 0.5;   // Fewer inliers than this fraction: plane not sound.
+  double min_incidence_cos = 0.2;     // |cos| between ray and normal below this: near-parallel.
+  uint64_t seed = 1;                  // RANSAC random seed (deterministic runs).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonLocatorOptions> Describe();
@@ -46,16 +45,16 @@ struct LocatorInput {
   const std::vector<Eigen::Vector3d>* points_in_world = nullptr;
   Eigen::Vector2d button_px = Eigen::Vector2d::Zero();  // Tracked button centre.
   double button_radius_px = 0;  // Tracked apparent radius (ButtonTrack::radius_px); 0 = unknown.
-  double scale_sigma_rel = 0;  // 1-sigma relative error of the metric scale (0 = exact).
+  double scale_sigma_rel = 0;   // 1-sigma relative error of the metric scale (0 = exact).
 };
 
 // The located button, in the camera frame.
 struct ButtonLocation {
   Eigen::Vector3d button_in_camera = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal_in_camera = Eigen::Vector3d::UnitZ();  // Out of the panel (towards
-                                                                 // the camera).
-  Eigen::Vector3d approach_in_camera = Eigen::Vector3d::UnitZ(); // = -normal: push direction.
-  int points_near = 0;       // Map points near the button.
+  Eigen::Vector3d normal_in_camera = Eigen::Vector3d::UnitZ();    // Out of the panel (towards
+                                                                  // the camera).
+  Eigen::Vector3d approach_in_camera = Eigen::Vector3d::UnitZ();  // = -normal: push direction.
+  int points_near = 0;                                            // Map points near the button.
   bool on_button = false;    // The position is on the button's face (own plane or offset);
                              // else on the panel plane around it.
   int inliers = 0;           // Plane inliers.

@@ -1,7 +1,7 @@
 #include "core/button/button_picker.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/button/option_check.h"
@@ -39,8 +39,8 @@ OptionTable<ButtonFuseOptions> ButtonFuseOptions::Describe() {
 }
 
 bool ButtonPickerOptions::IsValid(std::string* error) const {
-  return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) && gate.IsValid(error) &&
-         fuse.IsValid(error);
+  return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) &&
+         gate.IsValid(error) && fuse.IsValid(error);
 }
 
 OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
@@ -55,14 +55,22 @@ OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
 
 const char* PickerStateKey(PickerState state) {
   switch (state) {
-    case PickerState::kIdle: return "idle";
-    case PickerState::kConfirm: return "confirm";
-    case PickerState::kSearching: return "searching";
-    case PickerState::kTracking: return "tracking";
-    case PickerState::kLocating: return "locating";
-    case PickerState::kTargetSent: return "target_sent";
-    case PickerState::kLost: return "lost";
-    case PickerState::kStopped: return "stopped";
+    case PickerState::kIdle:
+      return "idle";
+    case PickerState::kConfirm:
+      return "confirm";
+    case PickerState::kSearching:
+      return "searching";
+    case PickerState::kTracking:
+      return "tracking";
+    case PickerState::kLocating:
+      return "locating";
+    case PickerState::kTargetSent:
+      return "target_sent";
+    case PickerState::kLost:
+      return "lost";
+    case PickerState::kStopped:
+      return "stopped";
   }
   return "unknown";
 }
@@ -138,7 +146,8 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
   }
   const auto start = std::chrono::steady_clock::now();
   auto track = tracker_->Track(image, Predict(slam));
-  out.tracking_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.tracking_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (track.ok()) out.track = *track;
   safety.tracking = track.ok() && track->found;
   safety.tracking_confidence = out.track.confidence;

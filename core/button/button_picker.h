@@ -4,15 +4,14 @@
 // ArmServer) and shows the state (OperatorPanel). The SLAM plugs in through SlamView.
 #pragma once
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-#include <cmath>
-
-#include <Eigen/Geometry>
-#include <opencv2/core.hpp>
 
 #include "core/button/arm_protocol.h"
 #include "core/button/button_detector.h"
@@ -56,7 +55,16 @@ struct SlamView {
 };
 
 // The picker's state, as the operator's banner shows it.
-enum class PickerState { kIdle, kConfirm, kSearching, kTracking, kLocating, kTargetSent, kLost, kStopped };
+enum class PickerState {
+  kIdle,
+  kConfirm,
+  kSearching,
+  kTracking,
+  kLocating,
+  kTargetSent,
+  kLost,
+  kStopped
+};
 const char* PickerStateKey(PickerState state);  // "idle", "confirm", ..., "stopped".
 
 // What happened in one frame.
@@ -65,13 +73,13 @@ struct PickerFrame {
   double stamp_s = 0;
   PickerState state = PickerState::kIdle;
   ButtonTrack track;
-  double tracking_ms = 0;                       // Tracker time of this frame.
-  std::optional<ButtonLocation> location;       // Camera frame.
+  double tracking_ms = 0;                  // Tracker time of this frame.
+  std::optional<ButtonLocation> location;  // Camera frame.
   Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));  // Fused.
-  int fused_estimates = 0;                      // Estimates in button_in_base.
+  int fused_estimates = 0;  // Estimates in button_in_base.
   Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
   GateVerdict verdict;
-  std::optional<ArmTarget> target;              // Set when the gate lets it out.
+  std::optional<ArmTarget> target;  // Set when the gate lets it out.
 };
 
 // One picker per button; constructible many times.
@@ -113,7 +121,7 @@ class ButtonPicker {
   int64_t tap_frame_ = -1;
   std::unique_ptr<ButtonTracker> tracker_;
   std::optional<Eigen::Vector3d> button_in_world_;  // Last located position.
-  double last_scale_ = 1.0, last_depth_m_ = 0;       // Track scale and depth at that time.
+  double last_scale_ = 1.0, last_depth_m_ = 0;      // Track scale and depth at that time.
   std::vector<Eigen::Vector3d> fused_positions_, fused_approaches_;  // Base frame, since the tap.
 };
 

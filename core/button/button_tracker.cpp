@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <opencv2/calib3d.hpp>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -28,14 +27,17 @@ bool ButtonTrackerOptions::IsValid(std::string* error) const {
   if (!(sift_contrast > 0 && sift_contrast < 1)) {
     return Invalid(error, "button.track.sift_contrast must lie in (0, 1)");
   }
-  if (flann_trees < 1 || flann_trees > 64) return Invalid(error, "button.track.flann_trees must lie in [1, 64]");
+  if (flann_trees < 1 || flann_trees > 64)
+    return Invalid(error, "button.track.flann_trees must lie in [1, 64]");
   if (flann_checks < 1) return Invalid(error, "button.track.flann_checks must be >= 1");
-  if (!(refresh_scale_step > 1)) return Invalid(error, "button.track.refresh_scale_step must be > 1");
+  if (!(refresh_scale_step > 1))
+    return Invalid(error, "button.track.refresh_scale_step must be > 1");
   if (!(refresh_radius > 0)) return Invalid(error, "button.track.refresh_radius must be > 0");
   if (!(refresh_min_confidence >= 0 && refresh_min_confidence <= 1)) {
     return Invalid(error, "button.track.refresh_min_confidence must lie in [0, 1]");
   }
-  if (max_model_keypoints < 2) return Invalid(error, "button.track.max_model_keypoints must be >= 2");
+  if (max_model_keypoints < 2)
+    return Invalid(error, "button.track.max_model_keypoints must be >= 2");
   return true;
 }
 
@@ -113,7 +115,8 @@ void ButtonTracker::Refresh(const std::vector<cv::KeyPoint>& keypoints, const cv
 cv::Rect ButtonTracker::Window(cv::Size size, const TrackPrediction& p) const {
   const cv::Rect whole(0, 0, size.width, size.height);
   if (!options_.use_window || !p.valid) return whole;
-  const double half = std::max(options_.window_px, options_.window_radius * model_->RadiusPx() * p.scale);
+  const double half =
+      std::max(options_.window_px, options_.window_radius * model_->RadiusPx() * p.scale);
   const cv::Rect window(int(std::floor(p.center.x - half)), int(std::floor(p.center.y - half)),
                         int(std::ceil(2 * half)), int(std::ceil(2 * half)));
   return window & whole;
@@ -129,10 +132,12 @@ struct Match {
 
 }  // namespace
 
-StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image, const TrackPrediction& prediction) {
+StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image,
+                                           const TrackPrediction& prediction) {
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
-  if (!model_ || !index_) return FailedPrecondition("button tracker: the button model has no features");
+  if (!model_ || !index_)
+    return FailedPrecondition("button tracker: the button model has no features");
   if (image.empty()) return InvalidArgument("button tracker: empty image");
   const cv::Mat grey = ToGrey(image);
   if (grey.empty()) return InvalidArgument("button tracker: image must be 8-bit grey, BGR or BGRA");
@@ -155,8 +160,10 @@ StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image, const TrackPred
   std::vector<Match> best(points_.size(), Match{-1, {}, 0});
   if (!keypoints.empty() && points_.size() >= 2) {
     cv::Mat indices, dists;
-    index_->knnSearch(descriptors, indices, dists, 2, cv::flann::SearchParams(options_.flann_checks));
-    const double gate = std::max(options_.gate_px, options_.gate_radius * model_->RadiusPx() * p.scale);
+    index_->knnSearch(descriptors, indices, dists, 2,
+                      cv::flann::SearchParams(options_.flann_checks));
+    const double gate =
+        std::max(options_.gate_px, options_.gate_radius * model_->RadiusPx() * p.scale);
     const float ratio2 = float(options_.ratio * options_.ratio);  // Distances are squared.
     for (int i = 0; i < indices.rows; ++i) {
       const int m = indices.at<int>(i, 0);
@@ -211,7 +218,8 @@ StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image, const TrackPred
   track.found = true;
   last_ = TrackPrediction{true, track.center, track.scale};
   const double change = std::max(track.scale / refresh_scale_, refresh_scale_ / track.scale);
-  if (options_.refresh && !similarity.empty() && track.confidence >= options_.refresh_min_confidence &&
+  if (options_.refresh && !similarity.empty() &&
+      track.confidence >= options_.refresh_min_confidence &&
       change >= options_.refresh_scale_step) {
     Refresh(keypoints, descriptors, cv::Point2f(track.window.tl()), track, similarity);
   }

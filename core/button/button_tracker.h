@@ -5,11 +5,10 @@
 #pragma once
 
 #include <memory>
-#include <optional>
-#include <string>
-
 #include <opencv2/core.hpp>
 #include <opencv2/flann.hpp>
+#include <optional>
+#include <string>
 
 #include "core/button/button_model.h"
 #include "core/common/status.h"
@@ -19,27 +18,27 @@ namespace sightline {
 
 // Tracker options. Keys "button.track.*".
 struct ButtonTrackerOptions {
-  double ratio = 0.8;                 // Lowe's ratio: best / second-best descriptor distance.
-  double gate_px = 40;                // Distance gate: matches farther from the predicted
-                                      // centre are dropped [px] (at least; see gate_radius).
-  double gate_radius = 2.5;           // ... or this many predicted button radii, if larger.
-  bool use_window = true;             // Search only a window around the prediction.
-  double window_px = 80;              // Half size of the search window [px] (at least) ...
-  double window_radius = 4.0;         // ... or this many predicted button radii, if larger.
-  int min_matches = 4;                // Fewer consistent matches: the button is lost.
-  std::string centre = "similarity";  // similarity (model centre through a RANSAC similarity
-                                      // of the matches) or centroid (the seed's rule).
-  double ransac_px = 3.0;             // Inlier distance of the similarity RANSAC [px].
-  double sift_contrast = 0.01;        // SIFT contrast threshold.
-  int flann_trees = 4;                // FLANN randomised kd-trees.
-  int flann_checks = 64;              // FLANN leaf checks per query.
-  bool refresh = true;                // Add features of confidently tracked frames to the
-                                      // model when the button's size has changed (keeps
-                                      // tracking through a long approach).
-  double refresh_scale_step = 1.15;   // Size change since the last refresh that triggers one.
-  double refresh_radius = 5.0;        // Features within this many button radii are added.
+  double ratio = 0.8;                   // Lowe's ratio: best / second-best descriptor distance.
+  double gate_px = 40;                  // Distance gate: matches farther from the predicted
+                                        // centre are dropped [px] (at least; see gate_radius).
+  double gate_radius = 2.5;             // ... or this many predicted button radii, if larger.
+  bool use_window = true;               // Search only a window around the prediction.
+  double window_px = 80;                // Half size of the search window [px] (at least) ...
+  double window_radius = 4.0;           // ... or this many predicted button radii, if larger.
+  int min_matches = 4;                  // Fewer consistent matches: the button is lost.
+  std::string centre = "similarity";    // similarity (model centre through a RANSAC similarity
+                                        // of the matches) or centroid (the seed's rule).
+  double ransac_px = 3.0;               // Inlier distance of the similarity RANSAC [px].
+  double sift_contrast = 0.01;          // SIFT contrast threshold.
+  int flann_trees = 4;                  // FLANN randomised kd-trees.
+  int flann_checks = 64;                // FLANN leaf checks per query.
+  bool refresh = true;                  // Add features of confidently tracked frames to the
+                                        // model when the button's size has changed (keeps
+                                        // tracking through a long approach).
+  double refresh_scale_step = 1.15;     // Size change since the last refresh that triggers one.
+  double refresh_radius = 5.0;          // Features within this many button radii are added.
   double refresh_min_confidence = 0.5;  // Only frames tracked at least this confidently.
-  int max_model_keypoints = 2000;     // The model never grows beyond this.
+  int max_model_keypoints = 2000;       // The model never grows beyond this.
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonTrackerOptions> Describe();
@@ -55,16 +54,16 @@ struct TrackPrediction {
 
 // The tracker's answer for one frame.
 struct ButtonTrack {
-  bool found = false;         // False: lost (too few matches); `reason` says why.
+  bool found = false;  // False: lost (too few matches); `reason` says why.
   std::string reason;
-  cv::Point2d center;         // Button centre in this frame [px].
-  double scale = 1.0;         // Size relative to the model.
-  double radius_px = 0;       // Apparent button radius [px].
-  double confidence = 0;      // 0..1: inlier count and inlier fraction.
-  int keypoints = 0;          // SIFT keypoints found in the window.
-  int matches = 0;            // After ratio test and distance gate.
-  int inliers = 0;            // Consistent with the similarity (= matches for centroid).
-  cv::Rect window;            // The searched region.
+  cv::Point2d center;     // Button centre in this frame [px].
+  double scale = 1.0;     // Size relative to the model.
+  double radius_px = 0;   // Apparent button radius [px].
+  double confidence = 0;  // 0..1: inlier count and inlier fraction.
+  int keypoints = 0;      // SIFT keypoints found in the window.
+  int matches = 0;        // After ratio test and distance gate.
+  int inliers = 0;        // Consistent with the similarity (= matches for centroid).
+  cv::Rect window;        // The searched region.
 };
 
 // Stateful (remembers the last centre and scale for the next window). One per button.

@@ -28,7 +28,8 @@ StatusOr<std::vector<double>> Numbers(const DataLine& line, size_t count, const 
   return numbers;
 }
 
-StatusOr<Eigen::Isometry3d> ToPose(const Partial& p, const std::string& key, const std::string& path) {
+StatusOr<Eigen::Isometry3d> ToPose(const Partial& p, const std::string& key,
+                                   const std::string& path) {
   if (!p.translation || !p.rotation) {
     return ParseError(path + ": '" + key + "' needs translation and quaternion_xyzw");
   }
@@ -65,7 +66,8 @@ StatusOr<HandEye> ReadHandEyeFile(const std::string& path) {
       if (!n.ok()) return n.status();
       current->rotation = Eigen::Quaterniond((*n)[3], (*n)[0], (*n)[1], (*n)[2]);
     } else {
-      return ParseError(path + " line " + std::to_string(line.number) + ": unexpected '" + text + "'");
+      return ParseError(path + " line " + std::to_string(line.number) + ": unexpected '" + text +
+                        "'");
     }
   }
   if (!ee) return ParseError(path + ": no 'end_effector_from_camera'");

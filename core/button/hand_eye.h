@@ -3,10 +3,9 @@
 // world_from_base.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
-
-#include <Eigen/Geometry>
 
 #include "core/common/status.h"
 

@@ -30,34 +30,53 @@ OptionTable<SafetyGateOptions> SafetyGateOptions::Describe() {
               "Weaker tracking confidence: no target.")
       .Double("max_uncertainty_m", &O::max_uncertainty_m, "m", 1e-4, 1, 0.001,
               "Larger 1-sigma position uncertainty: no target.")
-      .Double("workspace_min_x_m", &O::workspace_min_x_m, "m", -10, 10, 0.01, "Workspace box, base x min.")
-      .Double("workspace_max_x_m", &O::workspace_max_x_m, "m", -10, 10, 0.01, "Workspace box, base x max.")
-      .Double("workspace_min_y_m", &O::workspace_min_y_m, "m", -10, 10, 0.01, "Workspace box, base y min.")
-      .Double("workspace_max_y_m", &O::workspace_max_y_m, "m", -10, 10, 0.01, "Workspace box, base y max.")
-      .Double("workspace_min_z_m", &O::workspace_min_z_m, "m", -10, 10, 0.01, "Workspace box, base z min.")
-      .Double("workspace_max_z_m", &O::workspace_max_z_m, "m", -10, 10, 0.01, "Workspace box, base z max.");
+      .Double("workspace_min_x_m", &O::workspace_min_x_m, "m", -10, 10, 0.01,
+              "Workspace box, base x min.")
+      .Double("workspace_max_x_m", &O::workspace_max_x_m, "m", -10, 10, 0.01,
+              "Workspace box, base x max.")
+      .Double("workspace_min_y_m", &O::workspace_min_y_m, "m", -10, 10, 0.01,
+              "Workspace box, base y min.")
+      .Double("workspace_max_y_m", &O::workspace_max_y_m, "m", -10, 10, 0.01,
+              "Workspace box, base y max.")
+      .Double("workspace_min_z_m", &O::workspace_min_z_m, "m", -10, 10, 0.01,
+              "Workspace box, base z min.")
+      .Double("workspace_max_z_m", &O::workspace_max_z_m, "m", -10, 10, 0.01,
+              "Workspace box, base z max.");
 }
 
 const char* GateReasonKey(GateReason reason) {
   switch (reason) {
-    case GateReason::kSend: return "send";
-    case GateReason::kStopped: return "stopped";
-    case GateReason::kNotConfirmed: return "not_confirmed";
-    case GateReason::kTrackingLost: return "tracking_lost";
-    case GateReason::kTrackingPoor: return "tracking_poor";
-    case GateReason::kNoEstimate: return "no_estimate";
-    case GateReason::kStale: return "stale";
-    case GateReason::kScaleNotConverged: return "scale_not_converged";
-    case GateReason::kPlaneUnsound: return "plane_unsound";
-    case GateReason::kUncertain: return "uncertain";
-    case GateReason::kOutsideWorkspace: return "outside_workspace";
+    case GateReason::kSend:
+      return "send";
+    case GateReason::kStopped:
+      return "stopped";
+    case GateReason::kNotConfirmed:
+      return "not_confirmed";
+    case GateReason::kTrackingLost:
+      return "tracking_lost";
+    case GateReason::kTrackingPoor:
+      return "tracking_poor";
+    case GateReason::kNoEstimate:
+      return "no_estimate";
+    case GateReason::kStale:
+      return "stale";
+    case GateReason::kScaleNotConverged:
+      return "scale_not_converged";
+    case GateReason::kPlaneUnsound:
+      return "plane_unsound";
+    case GateReason::kUncertain:
+      return "uncertain";
+    case GateReason::kOutsideWorkspace:
+      return "outside_workspace";
   }
   return "unknown";
 }
 
 namespace {
 
-GateVerdict Refuse(GateReason reason, const std::string& message) { return {false, reason, message}; }
+GateVerdict Refuse(GateReason reason, const std::string& message) {
+  return {false, reason, message};
+}
 
 bool Inside(const Eigen::Vector3d& p, const SafetyGateOptions& o) {
   return p.allFinite() && p.x() >= o.workspace_min_x_m && p.x() <= o.workspace_max_x_m &&
@@ -72,7 +91,8 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
   if (!o.IsValid(&error)) return Refuse(GateReason::kStopped, "invalid gate options: " + error);
   char text[200];
   if (s.stopped) return Refuse(GateReason::kStopped, "stopped by the operator");
-  if (!s.operator_confirmed) return Refuse(GateReason::kNotConfirmed, "waiting for the operator's confirmation");
+  if (!s.operator_confirmed)
+    return Refuse(GateReason::kNotConfirmed, "waiting for the operator's confirmation");
   if (!s.tracking) return Refuse(GateReason::kTrackingLost, "button lost");
   if (!(s.tracking_confidence >= o.min_confidence)) {
     std::snprintf(text, sizeof(text), "tracking confidence %.2f below %.2f", s.tracking_confidence,
@@ -81,10 +101,12 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
   }
   if (!s.has_estimate) return Refuse(GateReason::kNoEstimate, "no 3D position yet");
   if (!(s.estimate_age_ms >= 0 && s.estimate_age_ms <= o.max_age_ms)) {
-    std::snprintf(text, sizeof(text), "estimate %.0f ms old (limit %.0f ms)", s.estimate_age_ms, o.max_age_ms);
+    std::snprintf(text, sizeof(text), "estimate %.0f ms old (limit %.0f ms)", s.estimate_age_ms,
+                  o.max_age_ms);
     return Refuse(GateReason::kStale, text);
   }
-  if (!s.scale_converged) return Refuse(GateReason::kScaleNotConverged, "metric scale not converged");
+  if (!s.scale_converged)
+    return Refuse(GateReason::kScaleNotConverged, "metric scale not converged");
   if (!s.plane_sound) return Refuse(GateReason::kPlaneUnsound, "panel plane fit not sound");
   if (!(s.uncertainty_m <= o.max_uncertainty_m)) {
     std::snprintf(text, sizeof(text), "uncertainty %.1f mm above %.1f mm", s.uncertainty_m * 1e3,

@@ -4,9 +4,8 @@
 // A pure function of its inputs, so every rule is testable on its own.
 #pragma once
 
-#include <string>
-
 #include <Eigen/Core>
+#include <string>
 
 #include "core/options/option_table.h"
 
@@ -14,10 +13,10 @@ namespace sightline {
 
 // Gate options. Keys "button.gate.*". The workspace box is in the arm base frame.
 struct SafetyGateOptions {
-  double max_age_ms = 200;           // Older estimates are not sent [ms].
-  double min_confidence = 0.3;       // Weaker tracking confidence is "tracking poor".
-  double max_uncertainty_m = 0.02;   // Larger 1-sigma position uncertainty is not sent [m].
-  double workspace_min_x_m = 0.1, workspace_max_x_m = 1.3;   // Base frame box [m].
+  double max_age_ms = 200;          // Older estimates are not sent [ms].
+  double min_confidence = 0.3;      // Weaker tracking confidence is "tracking poor".
+  double max_uncertainty_m = 0.02;  // Larger 1-sigma position uncertainty is not sent [m].
+  double workspace_min_x_m = 0.1, workspace_max_x_m = 1.3;  // Base frame box [m].
   double workspace_min_y_m = -0.6, workspace_max_y_m = 0.6;
   double workspace_min_z_m = -0.5, workspace_max_z_m = 0.9;
 
@@ -41,8 +40,17 @@ struct SafetyState {
 
 // Why a target was (not) sent. kSend is the only value that lets a target out.
 enum class GateReason {
-  kSend, kStopped, kNotConfirmed, kTrackingLost, kTrackingPoor, kNoEstimate, kStale,
-  kScaleNotConverged, kPlaneUnsound, kUncertain, kOutsideWorkspace,
+  kSend,
+  kStopped,
+  kNotConfirmed,
+  kTrackingLost,
+  kTrackingPoor,
+  kNoEstimate,
+  kStale,
+  kScaleNotConverged,
+  kPlaneUnsound,
+  kUncertain,
+  kOutsideWorkspace,
 };
 
 struct GateVerdict {

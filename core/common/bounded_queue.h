@@ -94,12 +94,27 @@ class BoundedQueue {
   const std::string& name() const { return name_; }
   size_t capacity() const { return capacity_; }
   QueuePolicy policy() const { return policy_; }
-  bool IsShutdown() const { std::lock_guard<std::mutex> l(mutex_); return shutdown_; }
-  size_t size() const { std::lock_guard<std::mutex> l(mutex_); return items_.size(); }
-  uint64_t pushed() const { std::lock_guard<std::mutex> l(mutex_); return pushed_; }
-  uint64_t popped() const { std::lock_guard<std::mutex> l(mutex_); return popped_; }
+  bool IsShutdown() const {
+    std::lock_guard<std::mutex> l(mutex_);
+    return shutdown_;
+  }
+  size_t size() const {
+    std::lock_guard<std::mutex> l(mutex_);
+    return items_.size();
+  }
+  uint64_t pushed() const {
+    std::lock_guard<std::mutex> l(mutex_);
+    return pushed_;
+  }
+  uint64_t popped() const {
+    std::lock_guard<std::mutex> l(mutex_);
+    return popped_;
+  }
   // Items discarded by kDropOldest.
-  uint64_t dropped() const { std::lock_guard<std::mutex> l(mutex_); return dropped_; }
+  uint64_t dropped() const {
+    std::lock_guard<std::mutex> l(mutex_);
+    return dropped_;
+  }
 
  private:
   std::optional<T> TakeFront(std::unique_lock<std::mutex>& lock) {

@@ -12,10 +12,10 @@ namespace sightline {
 
 // A pinhole camera with OpenCV's 5-parameter radial-tangential distortion (k1 k2 p1 p2 k3).
 struct PinholeCamera {
-  int width = 0;   // Pixels.
-  int height = 0;  // Pixels.
-  double fx = 0, fy = 0;  // Focal lengths in pixels.
-  double cx = 0, cy = 0;  // Principal point in pixels.
+  int width = 0;                                    // Pixels.
+  int height = 0;                                   // Pixels.
+  double fx = 0, fy = 0;                            // Focal lengths in pixels.
+  double cx = 0, cy = 0;                            // Principal point in pixels.
   std::array<double, 5> distortion{0, 0, 0, 0, 0};  // k1 k2 p1 p2 k3; all zero = none.
 
   bool HasDistortion() const;

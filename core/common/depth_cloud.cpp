@@ -13,8 +13,8 @@ PointCloud DepthToCloud(const cv::Mat& depth_m, const cv::Mat& color_bgr,
   const PinholeCamera cam = (camera.width == depth_m.cols && camera.height == depth_m.rows)
                                 ? camera
                                 : camera.Scaled(depth_m.cols, depth_m.rows);
-  const bool with_color = !color_bgr.empty() && color_bgr.type() == CV_8UC3 &&
-                          color_bgr.size() == depth_m.size();
+  const bool with_color =
+      !color_bgr.empty() && color_bgr.type() == CV_8UC3 && color_bgr.size() == depth_m.size();
   cloud.width = (depth_m.cols + stride - 1) / stride;
   cloud.height = (depth_m.rows + stride - 1) / stride;
   cloud.points.reserve(static_cast<size_t>(cloud.width) * cloud.height);

@@ -13,9 +13,9 @@ namespace sightline {
 
 // When and in what order a payload was made.
 struct FrameStamp {
-  int64_t sequence_id = -1;   // Index in the source's stream, from 0.
-  double sensor_time_s = 0;   // Sensor (or dataset) timestamp in seconds.
-  double host_time_s = 0;     // Host clock (steady, seconds) when the frame was received/read.
+  int64_t sequence_id = -1;  // Index in the source's stream, from 0.
+  double sensor_time_s = 0;  // Sensor (or dataset) timestamp in seconds.
+  double host_time_s = 0;    // Host clock (steady, seconds) when the frame was received/read.
 };
 
 // A registered colour + depth pair. Depth is in metres, NaN where the sensor gave nothing.
@@ -40,10 +40,10 @@ struct MonoFrame {
 
 // A point cloud with optional colour; organized when width * height == size().
 struct PointCloud {
-  std::vector<Eigen::Vector3f> points;          // Metres in the sensor frame; NaN = invalid.
+  std::vector<Eigen::Vector3f> points;               // Metres in the sensor frame; NaN = invalid.
   std::vector<Eigen::Matrix<uint8_t, 3, 1>> colors;  // RGB, empty or one per point.
-  int width = 0;   // Columns when organized, else size().
-  int height = 1;  // Rows when organized, else 1.
+  int width = 0;                                     // Columns when organized, else size().
+  int height = 1;                                    // Rows when organized, else 1.
 
   size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }

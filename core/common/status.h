@@ -11,14 +11,14 @@ namespace sightline {
 // What kind of failure a Status carries. Callers branch on the code, people read the message.
 enum class StatusCode {
   kOk = 0,
-  kInvalidArgument,  // A parameter or option is out of range or malformed.
-  kNotFound,         // A file, device or key does not exist.
-  kParseError,       // A file exists but its content is malformed.
-  kUnavailable,      // A device or driver is absent or disconnected.
-  kOutOfRange,       // End of stream, seek beyond the end.
+  kInvalidArgument,     // A parameter or option is out of range or malformed.
+  kNotFound,            // A file, device or key does not exist.
+  kParseError,          // A file exists but its content is malformed.
+  kUnavailable,         // A device or driver is absent or disconnected.
+  kOutOfRange,          // End of stream, seek beyond the end.
   kFailedPrecondition,  // The call is valid but the object is not in a state for it.
-  kCancelled,        // Stopped on request.
-  kInternal,         // A broken invariant.
+  kCancelled,           // Stopped on request.
+  kInternal,            // A broken invariant.
 };
 
 // Returns a short name for a code, e.g. "parse error".
@@ -50,7 +50,9 @@ class [[nodiscard]] Status {
   std::string message_;
 };
 
-inline Status InvalidArgument(std::string m) { return {StatusCode::kInvalidArgument, std::move(m)}; }
+inline Status InvalidArgument(std::string m) {
+  return {StatusCode::kInvalidArgument, std::move(m)};
+}
 inline Status NotFound(std::string m) { return {StatusCode::kNotFound, std::move(m)}; }
 inline Status ParseError(std::string m) { return {StatusCode::kParseError, std::move(m)}; }
 inline Status Unavailable(std::string m) { return {StatusCode::kUnavailable, std::move(m)}; }
@@ -69,7 +71,7 @@ inline Status Internal(std::string m) { return {StatusCode::kInternal, std::move
 template <typename T>
 class [[nodiscard]] StatusOr {
  public:
-  StatusOr(T value) : value_(std::move(value)) {}  // NOLINT: implicit by design.
+  StatusOr(T value) : value_(std::move(value)) {}         // NOLINT: implicit by design.
   StatusOr(Status status) : status_(std::move(status)) {  // NOLINT: implicit by design.
     assert(!status_.ok() && "StatusOr built from an ok Status without a value");
     if (status_.ok()) status_ = Internal("StatusOr constructed from ok status without value");
@@ -95,8 +97,8 @@ class [[nodiscard]] StatusOr {
 }  // namespace sightline
 
 // Returns from the enclosing function when expr yields a non-ok Status.
-#define SIGHTLINE_RETURN_IF_ERROR(expr)          \
-  do {                                           \
-    ::sightline::Status _sl_status = (expr);     \
-    if (!_sl_status.ok()) return _sl_status;     \
+#define SIGHTLINE_RETURN_IF_ERROR(expr)      \
+  do {                                       \
+    ::sightline::Status _sl_status = (expr); \
+    if (!_sl_status.ok()) return _sl_status; \
   } while (false)

@@ -51,8 +51,7 @@ TimingSummary TimingStats::Summarize(std::vector<double> samples) {
 }
 
 double HostTimeS() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace sightline

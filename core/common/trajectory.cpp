@@ -32,8 +32,9 @@ std::optional<size_t> Trajectory::Nearest(double t, double tolerance_s) const {
 double Trajectory::LengthM() const {
   double length = 0;
   for (size_t i = 1; i < poses_.size(); ++i) {
-    length += (poses_[i].world_from_sensor.translation() -
-               poses_[i - 1].world_from_sensor.translation()).norm();
+    length +=
+        (poses_[i].world_from_sensor.translation() - poses_[i - 1].world_from_sensor.translation())
+            .norm();
   }
   return length;
 }
@@ -58,8 +59,8 @@ StatusOr<Trajectory> ReadTumTrajectory(const std::string& path) {
     Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
     const double norm = q.norm();
     if (!(std::abs(norm - 1.0) < 0.1)) {
-      return ParseError(path + " line " + std::to_string(line.number) +
-                        ": quaternion norm " + std::to_string(norm) + " is not 1");
+      return ParseError(path + " line " + std::to_string(line.number) + ": quaternion norm " +
+                        std::to_string(norm) + " is not 1");
     }
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.linear() = q.normalized().toRotationMatrix();
@@ -80,9 +81,8 @@ Status WriteTumTrajectory(const Trajectory& trajectory, const std::string& path)
   for (const TimedPose& p : trajectory.poses()) {
     const Eigen::Quaterniond q(p.world_from_sensor.linear());
     const Eigen::Vector3d t = p.world_from_sensor.translation();
-    out << std::setprecision(6) << p.time_s << std::setprecision(9) << ' ' << t.x() << ' '
-        << t.y() << ' ' << t.z() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << ' ' << q.w()
-        << '\n';
+    out << std::setprecision(6) << p.time_s << std::setprecision(9) << ' ' << t.x() << ' ' << t.y()
+        << ' ' << t.z() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << ' ' << q.w() << '\n';
   }
   out.flush();
   if (!out) return Unavailable("write to " + path + " failed (disk full?)");

@@ -44,9 +44,10 @@ std::unique_ptr<Source> MakeDatasetSource(const DetectedDataset& dataset);
 
 // Detects the format of `path`, opens it and returns the open source. When `path` is no dataset
 // itself but a recording with sensor sub-folders, opens the sub-folder whose kind is `want`, or
-// the RGB-D one (else stereo, else mono, else the first) when `want` is unset. Errors: NotFound for a missing path or a recording without
-// a sensor of kind `want`; InvalidArgument for a path that is not a dataset (the message lists
-// what was looked for) or a dataset of another kind than `want`; else the reader's own error.
+// the RGB-D one (else stereo, else mono, else the first) when `want` is unset. Errors: NotFound for
+// a missing path or a recording without a sensor of kind `want`; InvalidArgument for a path that is
+// not a dataset (the message lists what was looked for) or a dataset of another kind than `want`;
+// else the reader's own error.
 //
 //   auto source = OpenDataset("rec", SourceKind::kStereo);
 //   if (!source.ok()) return source.status();

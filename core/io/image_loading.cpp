@@ -105,8 +105,7 @@ StatusOr<cv::Mat> LoadDepthImage(const std::string& path, double units_per_metre
   return depth_m;
 }
 
-StatusOr<StereoFrame> LoadStereoPair(const std::string& left_path,
-                                     const std::string& right_path) {
+StatusOr<StereoFrame> LoadStereoPair(const std::string& left_path, const std::string& right_path) {
   auto left = LoadImage8(left_path);
   if (!left.ok()) return left.status();
   auto right = LoadImage8(right_path);

@@ -4,10 +4,14 @@ namespace sightline {
 
 const char* SourceKindName(SourceKind kind) {
   switch (kind) {
-    case SourceKind::kRgbd: return "RGB-D";
-    case SourceKind::kStereo: return "stereo";
-    case SourceKind::kMono: return "mono";
-    case SourceKind::kCloud: return "point cloud";
+    case SourceKind::kRgbd:
+      return "RGB-D";
+    case SourceKind::kStereo:
+      return "stereo";
+    case SourceKind::kMono:
+      return "mono";
+    case SourceKind::kCloud:
+      return "point cloud";
   }
   return "unknown";
 }

@@ -20,17 +20,18 @@ const char* SourceKindName(SourceKind kind);  // "RGB-D", "stereo", "mono", "poi
 
 // What a source is and what it can do; filled by Open().
 struct SourceInfo {
-  std::string format;             // "TUM RGB-D", "EuRoC MAV", "KITTI odometry", "image folder", "PCD".
-  std::string path;               // What was opened.
+  std::string format;  // "TUM RGB-D", "EuRoC MAV", "KITTI odometry", "image folder", "PCD".
+  std::string path;    // What was opened.
   SourceKind kind = SourceKind::kMono;
-  int64_t frame_count = -1;       // -1 for live sources.
-  int width = 0, height = 0;      // Pixels (organized clouds: columns x rows).
-  double duration_s = 0;          // Last minus first timestamp.
-  double rate_hz = 0;             // Nominal frame rate, 0 = unknown.
-  bool live = false;              // A sensor rather than a recording.
+  int64_t frame_count = -1;   // -1 for live sources.
+  int width = 0, height = 0;  // Pixels (organized clouds: columns x rows).
+  double duration_s = 0;      // Last minus first timestamp.
+  double rate_hz = 0;         // Nominal frame rate, 0 = unknown.
+  bool live = false;          // A sensor rather than a recording.
   bool seekable = false;
   bool has_ground_truth = false;
-  std::vector<std::string> notes;  // Facts a user should know, e.g. "timestamps synthesized at 10 Hz".
+  std::vector<std::string>
+      notes;  // Facts a user should know, e.g. "timestamps synthesized at 10 Hz".
   std::optional<PinholeCamera> camera;  // Mono sources and the left/colour camera.
   std::optional<StereoRig> stereo;      // Stereo sources.
   std::optional<RgbdCalibration> rgbd;  // RGB-D sources.

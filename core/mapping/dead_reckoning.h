@@ -12,9 +12,9 @@ namespace sightline {
 
 // The motion between two frames as the pose source saw it.
 struct OdometryIncrement {
-  bool valid = false;              // False for the first frame or when the source had no pose.
+  bool valid = false;  // False for the first frame or when the source had no pose.
   Eigen::Vector2d translation_in_previous_base = Eigen::Vector2d::Zero();  // [m]
-  double heading_change_rad = 0;   // Wrapped to [-pi, pi).
+  double heading_change_rad = 0;                                           // Wrapped to [-pi, pi).
 };
 
 // Turns a stream of absolute poses (world_from_base of the pose source) into increments.

@@ -26,8 +26,9 @@ bool FloorPlane::IsValid(std::string* error) const {
     return Invalid(error, "floor plane normal (a, b, c) must be a finite unit vector");
   }
   if (!(d > 0) || !std::isfinite(d)) {
-    return Invalid(error, "floor plane d (camera height) must be positive, with (a, b, c) "
-                          "pointing up towards the camera");
+    return Invalid(error,
+                   "floor plane d (camera height) must be positive, with (a, b, c) "
+                   "pointing up towards the camera");
   }
   if (!(epsilon_m > 0)) return Invalid(error, "floor plane epsilon_m must be positive");
   return true;
@@ -35,7 +36,8 @@ bool FloorPlane::IsValid(std::string* error) const {
 
 bool FloorPlaneOptions::IsValid(std::string* error) const {
   if (!(epsilon_m > 0)) return Invalid(error, "mapping.floor.epsilon_m must be positive");
-  if (!(fit_threshold_m > 0)) return Invalid(error, "mapping.floor.fit_threshold_m must be positive");
+  if (!(fit_threshold_m > 0))
+    return Invalid(error, "mapping.floor.fit_threshold_m must be positive");
   if (max_iterations < 1) return Invalid(error, "mapping.floor.max_iterations must be >= 1");
   if (!(min_inlier_ratio > 0 && min_inlier_ratio <= 1)) {
     return Invalid(error, "mapping.floor.min_inlier_ratio must lie in (0, 1]");
@@ -44,8 +46,9 @@ bool FloorPlaneOptions::IsValid(std::string* error) const {
     return Invalid(error, "mapping.floor.max_tilt_deg must lie in (0, 90)");
   }
   if (!(min_camera_height_m >= 0 && max_camera_height_m > min_camera_height_m)) {
-    return Invalid(error, "mapping.floor.min_camera_height_m must be >= 0 and below "
-                          "mapping.floor.max_camera_height_m");
+    return Invalid(error,
+                   "mapping.floor.min_camera_height_m must be >= 0 and below "
+                   "mapping.floor.max_camera_height_m");
   }
   if (!(max_below_ratio >= 0 && max_below_ratio <= 1)) {
     return Invalid(error, "mapping.floor.max_below_ratio must lie in [0, 1]");
@@ -237,8 +240,8 @@ StatusOr<FloorFitResult> FloorPlaneEstimator::Fit(
       ++rejected_orientation;
       continue;
     }
-    const PlaneScore score = ScorePlane(points, n.cast<float>(), static_cast<float>(d), threshold,
-                                        nullptr);
+    const PlaneScore score =
+        ScorePlane(points, n.cast<float>(), static_cast<float>(d), threshold, nullptr);
     if (score.below > options_.max_below_ratio * n_points) {
       ++rejected_below;
       continue;
@@ -253,18 +256,21 @@ StatusOr<FloorFitResult> FloorPlaneEstimator::Fit(
     }
   }
   if (best_inliers < 3) {
-    return FailedPrecondition(
-        "floor fit: no plane below the camera within " + std::to_string(options_.max_tilt_deg) +
-        " deg of level (" + std::to_string(rejected_orientation) + " hypotheses had the wrong "
-        "orientation or height, " + std::to_string(rejected_below) + " had points below them): "
-        "is the floor visible?");
+    return FailedPrecondition("floor fit: no plane below the camera within " +
+                              std::to_string(options_.max_tilt_deg) + " deg of level (" +
+                              std::to_string(rejected_orientation) +
+                              " hypotheses had the wrong "
+                              "orientation or height, " +
+                              std::to_string(rejected_below) +
+                              " had points below them): "
+                              "is the floor visible?");
   }
 
   // Least-squares refinement on the inliers: twice at the RANSAC threshold, then once with half
   // of it, so that the foot of a wall (points just above the floor) does not tilt the plane.
   std::vector<int> inliers;
-  PlaneScore score = ScorePlane(points, best_n.cast<float>(), static_cast<float>(best_d), threshold,
-                                &inliers);
+  PlaneScore score =
+      ScorePlane(points, best_n.cast<float>(), static_cast<float>(best_d), threshold, &inliers);
   for (int round = 0; round < 3; ++round) {
     const float round_threshold = round < 2 ? threshold : 0.5f * threshold;
     std::vector<int> fit_set;
@@ -278,8 +284,8 @@ StatusOr<FloorFitResult> FloorPlaneEstimator::Fit(
     double d = 0;
     if (!FitPlaneLeastSquares(points, fit_set, &n, &d)) break;
     std::vector<int> refit_inliers;
-    const PlaneScore refit = ScorePlane(points, n.cast<float>(), static_cast<float>(d), threshold,
-                                        &refit_inliers);
+    const PlaneScore refit =
+        ScorePlane(points, n.cast<float>(), static_cast<float>(d), threshold, &refit_inliers);
     if (round < 2 && refit.cost > score.cost) break;
     best_n = n;
     best_d = d;
@@ -384,18 +390,27 @@ StatusOr<FloorCalibration> ReadFloorCalibration(const std::string& path) {
     if (!ParseDouble(value, &number_value)) {
       return ParseError(where + ": expected a number for '" + key + "', found '" + value + "'");
     }
-    if (key == "a") a = number_value;
-    else if (key == "b") b = number_value;
-    else if (key == "c") c = number_value;
-    else if (key == "d") d = number_value;
-    else if (key == "epsilon_m") calibration.plane.epsilon_m = number_value;
-    else if (key == "inlier_ratio") calibration.inlier_ratio = number_value;
-    else if (key == "frames") calibration.frames = static_cast<int>(number_value);
-    else if (key == "camera_height_m" || key == "pitch_down_deg") continue;  // Derived.
-    else return ParseError(where + ": unknown key '" + key + "'");
+    if (key == "a")
+      a = number_value;
+    else if (key == "b")
+      b = number_value;
+    else if (key == "c")
+      c = number_value;
+    else if (key == "d")
+      d = number_value;
+    else if (key == "epsilon_m")
+      calibration.plane.epsilon_m = number_value;
+    else if (key == "inlier_ratio")
+      calibration.inlier_ratio = number_value;
+    else if (key == "frames")
+      calibration.frames = static_cast<int>(number_value);
+    else if (key == "camera_height_m" || key == "pitch_down_deg")
+      continue;  // Derived.
+    else
+      return ParseError(where + ": unknown key '" + key + "'");
   }
-  for (const auto& [name, v] : {std::pair<const char*, double>{"a", a}, {"b", b}, {"c", c},
-                                {"d", d}}) {
+  for (const auto& [name, v] :
+       {std::pair<const char*, double>{"a", a}, {"b", b}, {"c", c}, {"d", d}}) {
     if (std::isnan(v)) return ParseError(path + ": missing '" + name + "'");
   }
   Eigen::Vector3d n(a, b, c);

@@ -21,7 +21,7 @@ namespace sightline {
 // A calibrated floor plane in the camera frame.
 struct FloorPlane {
   Eigen::Vector3d normal = Eigen::Vector3d(0, -1, 0);  // (a, b, c): unit, pointing up.
-  double d = 0;             // Offset; equals the camera height above the floor [m].
+  double d = 0;              // Offset; equals the camera height above the floor [m].
   double epsilon_m = 0.035;  // epsilon_floor: floor tolerance on the height [m].
 
   // Height of a camera-frame point above the floor [m] (negative below it).
@@ -36,21 +36,21 @@ struct FloorPlane {
 
 // Options of the floor plane RANSAC fit. Keys "mapping.floor.*".
 struct FloorPlaneOptions {
-  double epsilon_m = 0.035;        // epsilon_floor. Seed: 3.5 (relative units); read as 3.5 cm.
-  double fit_threshold_m = 0.02;   // Point-to-plane distance of a RANSAC inlier [m].
-  int max_iterations = 500;        // RANSAC hypotheses.
+  double epsilon_m = 0.035;          // epsilon_floor. Seed: 3.5 (relative units); read as 3.5 cm.
+  double fit_threshold_m = 0.02;     // Point-to-plane distance of a RANSAC inlier [m].
+  int max_iterations = 500;          // RANSAC hypotheses.
   double local_sample_size_m = 0.3;  // Half of the hypotheses draw their points from one voxel
                                      // of this size [m].
-  double min_inlier_ratio = 0.03;  // Fraction of the sampled points the floor must hold.
-  double max_tilt_deg = 60;        // Largest angle between the floor normal and the camera's up
-                                   // axis (-y) [deg]; excludes walls.
+  double min_inlier_ratio = 0.03;    // Fraction of the sampled points the floor must hold.
+  double max_tilt_deg = 60;          // Largest angle between the floor normal and the camera's up
+                                     // axis (-y) [deg]; excludes walls.
   double min_camera_height_m = 0.1;  // Plausible camera heights [m].
   double max_camera_height_m = 3.0;
-  double max_below_ratio = 0.03;   // The floor is the lowest plane: at most this fraction of the
-                                   // points may lie more than 3 fit thresholds below it.
-  double max_depth_m = 6.0;        // Points farther away are not used [m].
-  int max_points = 20000;          // Points are subsampled evenly to at most this many.
-  int seed = 1;                    // RNG seed (runs are deterministic).
+  double max_below_ratio = 0.03;  // The floor is the lowest plane: at most this fraction of the
+                                  // points may lie more than 3 fit thresholds below it.
+  double max_depth_m = 6.0;       // Points farther away are not used [m].
+  int max_points = 20000;         // Points are subsampled evenly to at most this many.
+  int seed = 1;                   // RNG seed (runs are deterministic).
 
   bool IsValid(std::string* error) const;
   static OptionTable<FloorPlaneOptions> Describe();
@@ -71,8 +71,8 @@ struct FloorFitResult {
 //
 //   FloorPlaneEstimator estimator(options);
 //   std::vector<Eigen::Vector3f> points;
-//   for (const auto& depth : frames) AppendDepthPoints(depth, camera, options.max_depth_m, &points);
-//   StatusOr<FloorFitResult> fit = estimator.Fit(points);
+//   for (const auto& depth : frames) AppendDepthPoints(depth, camera, options.max_depth_m,
+//   &points); StatusOr<FloorFitResult> fit = estimator.Fit(points);
 class FloorPlaneEstimator {
  public:
   explicit FloorPlaneEstimator(FloorPlaneOptions options = {}) : options_(std::move(options)) {}

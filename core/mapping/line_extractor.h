@@ -17,13 +17,13 @@ namespace sightline {
 // One wall line in the base frame (x forward, y left, metres).
 struct WallSegment {
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  // Unit normal n.
-  double offset_m = 0;       // d in n . x = d.
-  Eigen::Vector2d start = Eigen::Vector2d::Zero();  // Extreme inlier projections onto the line.
+  double offset_m = 0;                                // d in n . x = d.
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();    // Extreme inlier projections onto the line.
   Eigen::Vector2d end = Eigen::Vector2d::Zero();
-  double length_m = 0;       // |end - start|.
-  double angle_rad = 0;      // Direction in [-pi/2, pi/2), counter-clockwise from forward.
-  int inliers = 0;           // Scan points assigned to the line.
-  double rms_error_m = 0;    // RMS point-to-line distance of the inliers [m].
+  double length_m = 0;     // |end - start|.
+  double angle_rad = 0;    // Direction in [-pi/2, pi/2), counter-clockwise from forward.
+  int inliers = 0;         // Scan points assigned to the line.
+  double rms_error_m = 0;  // RMS point-to-line distance of the inliers [m].
   // Manhattan direction class, set by the rotation stage: 0 = parallel to the reference's first
   // wall direction, 1 = perpendicular to it, -1 = neither (or not yet classified).
   int direction_class = -1;

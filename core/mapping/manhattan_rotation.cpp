@@ -11,7 +11,8 @@ namespace sightline {
 using mapping_internal::Invalid;
 
 bool ManhattanRotationOptions::IsValid(std::string* error) const {
-  if (!(min_line_length_m >= 0)) return Invalid(error, "mapping.rotation.min_line_length_m must be >= 0");
+  if (!(min_line_length_m >= 0))
+    return Invalid(error, "mapping.rotation.min_line_length_m must be >= 0");
   if (min_line_inliers < 2) return Invalid(error, "mapping.rotation.min_line_inliers must be >= 2");
   if (!(vote_gate_deg > 0 && vote_gate_deg <= 45)) {
     return Invalid(error, "mapping.rotation.vote_gate_deg must lie in (0, 45]");
@@ -22,7 +23,8 @@ bool ManhattanRotationOptions::IsValid(std::string* error) const {
     return Invalid(error, "mapping.rotation.min_vote_weight_m must be >= 0");
   }
   if (!(gate_min_deg > 0)) return Invalid(error, "mapping.rotation.gate_min_deg must be positive");
-  if (!(drift_deg_per_m >= 0)) return Invalid(error, "mapping.rotation.drift_deg_per_m must be >= 0");
+  if (!(drift_deg_per_m >= 0))
+    return Invalid(error, "mapping.rotation.drift_deg_per_m must be >= 0");
   if (!(turn_error >= 0 && turn_error <= 1)) {
     return Invalid(error, "mapping.rotation.turn_error must lie in [0, 1]");
   }
@@ -44,14 +46,16 @@ bool ManhattanRotationOptions::IsValid(std::string* error) const {
   if (!(class_tolerance_deg > 0 && class_tolerance_deg < 45)) {
     return Invalid(error, "mapping.rotation.class_tolerance_deg must lie in (0, 45)");
   }
-  if (!(reset_rotation_deg > 0)) return Invalid(error, "mapping.rotation.reset_rotation_deg must be positive");
+  if (!(reset_rotation_deg > 0))
+    return Invalid(error, "mapping.rotation.reset_rotation_deg must be positive");
   if (!(reset_translation_m > 0)) {
     return Invalid(error, "mapping.rotation.reset_translation_m must be positive");
   }
   if (reset_disagreement_frames < 1) {
     return Invalid(error, "mapping.rotation.reset_disagreement_frames must be >= 1");
   }
-  if (reset_cooldown_frames < 0) return Invalid(error, "mapping.rotation.reset_cooldown_frames must be >= 0");
+  if (reset_cooldown_frames < 0)
+    return Invalid(error, "mapping.rotation.reset_cooldown_frames must be >= 0");
   return true;
 }
 
@@ -131,7 +135,8 @@ ManhattanMeasurement MeasureManhattanAngle(const std::vector<WallSegment>& lines
       if (!eligible(candidate)) continue;
       double support = 0;
       for (const WallSegment& line : lines) {
-        if (eligible(line) && std::abs(WrapQuarterTurn(line.angle_rad - candidate.angle_rad)) <= gate) {
+        if (eligible(line) &&
+            std::abs(WrapQuarterTurn(line.angle_rad - candidate.angle_rad)) <= gate) {
           support += line.length_m;
         }
       }
@@ -157,7 +162,8 @@ ManhattanMeasurement MeasureManhattanAngle(const std::vector<WallSegment>& lines
       ++m.rejected_lines;
       continue;
     }
-    const double agreement = tracking ? std::exp(-0.5 * (deviation / sigma) * (deviation / sigma)) : 1.0;
+    const double agreement =
+        tracking ? std::exp(-0.5 * (deviation / sigma) * (deviation / sigma)) : 1.0;
     // A line whose consensus points scatter (a wall merged with a recessed door) is a few
     // tenths of a degree to degrees off: weight lines by their fit quality too.
     const double quality = 1.0 / (1.0 + (line.rms_error_m / options.rms_scale_m) *
@@ -329,8 +335,8 @@ RotationEstimate ManhattanRotation::Update(const std::vector<WallSegment>& lines
       e.status = "corrected";
     } else {
       e.gated = true;
-      std::snprintf(text, sizeof(text), "gated: walls say %.1f deg, limit %.1f",
-                    RadToDeg(raw), RadToDeg(gate));
+      std::snprintf(text, sizeof(text), "gated: walls say %.1f deg, limit %.1f", RadToDeg(raw),
+                    RadToDeg(gate));
       e.status = text;
     }
   }

@@ -38,33 +38,33 @@ namespace sightline {
 
 // Options of the Manhattan rotation. Keys "mapping.rotation.*".
 struct ManhattanRotationOptions {
-  bool enabled = true;                // False: dead reckoning only (for comparison).
-  double min_line_length_m = 0.4;     // Shorter lines do not vote [m].
-  int min_line_inliers = 10;          // Lines with fewer scan points do not vote.
-  double vote_gate_deg = 10;          // Without a reference: lines within this of the
-                                      // best-supported direction (modulo 90 deg) vote [deg].
-  double trim_deg = 1.5;              // Lines within this of the voters' weighted median are
-                                      // averaged (4 theta); the rest are dropped [deg].
-  double rms_scale_m = 0.02;          // Lines vote with weight length / (1 + (rms / scale)^2)
-                                      // (rms: the line's fit error) [m].
-  double min_vote_weight_m = 0.0;     // A frame's walls count only with this much summed vote
-                                      // weight [m].
-  double gate_min_deg = 2.0;          // With a reference, lines vote and corrections apply only
-  double drift_deg_per_m = 2.0;       // within gate_min_deg + drift_deg_per_m x distance +
-  double turn_error = 0.05;           // turn_error x |turn| since the last correction [deg]:
-                                      // the error dead reckoning can have accumulated.
-  double min_concentration = 0.7;     // |sum w e^(i 4 theta)| / sum w below this: the walls
-                                      // disagree and the frame is not used.
-  double min_reference_length_m = 1.0;  // Voting wall length a frame needs to set the reference.
+  bool enabled = true;                   // False: dead reckoning only (for comparison).
+  double min_line_length_m = 0.4;        // Shorter lines do not vote [m].
+  int min_line_inliers = 10;             // Lines with fewer scan points do not vote.
+  double vote_gate_deg = 10;             // Without a reference: lines within this of the
+                                         // best-supported direction (modulo 90 deg) vote [deg].
+  double trim_deg = 1.5;                 // Lines within this of the voters' weighted median are
+                                         // averaged (4 theta); the rest are dropped [deg].
+  double rms_scale_m = 0.02;             // Lines vote with weight length / (1 + (rms / scale)^2)
+                                         // (rms: the line's fit error) [m].
+  double min_vote_weight_m = 0.0;        // A frame's walls count only with this much summed vote
+                                         // weight [m].
+  double gate_min_deg = 2.0;             // With a reference, lines vote and corrections apply only
+  double drift_deg_per_m = 2.0;          // within gate_min_deg + drift_deg_per_m x distance +
+  double turn_error = 0.05;              // turn_error x |turn| since the last correction [deg]:
+                                         // the error dead reckoning can have accumulated.
+  double min_concentration = 0.7;        // |sum w e^(i 4 theta)| / sum w below this: the walls
+                                         // disagree and the frame is not used.
+  double min_reference_length_m = 1.0;   // Voting wall length a frame needs to set the reference.
   double max_reference_conflict = 0.25;  // ... and at most this fraction of it may conflict
                                          // (lines in the gate but outside the trim).
-  double max_correction_deg = 15;     // The tracking gate never exceeds this [deg].
-  double correction_gain = 1.0;       // Fraction of the correction applied (1 = seed: absolute).
-  double class_tolerance_deg = 10;    // A line within this of a Manhattan axis gets its class.
-  double reset_rotation_deg = 45;     // Pose-source heading jump that resets [deg per frame].
-  double reset_translation_m = 1.0;   // Pose-source position jump that resets [m per frame].
-  int reset_disagreement_frames = 15;  // Consecutive gated frames that reset.
-  int reset_cooldown_frames = 30;     // Frames after a reset during which no other fires.
+  double max_correction_deg = 15;        // The tracking gate never exceeds this [deg].
+  double correction_gain = 1.0;          // Fraction of the correction applied (1 = seed: absolute).
+  double class_tolerance_deg = 10;       // A line within this of a Manhattan axis gets its class.
+  double reset_rotation_deg = 45;        // Pose-source heading jump that resets [deg per frame].
+  double reset_translation_m = 1.0;      // Pose-source position jump that resets [m per frame].
+  int reset_disagreement_frames = 15;    // Consecutive gated frames that reset.
+  int reset_cooldown_frames = 30;        // Frames after a reset during which no other fires.
 
   bool IsValid(std::string* error) const;
   static OptionTable<ManhattanRotationOptions> Describe();
@@ -73,11 +73,11 @@ struct ManhattanRotationOptions {
 // The dominant wall direction of one frame.
 struct ManhattanMeasurement {
   bool valid = false;
-  double angle_rad = 0;       // m in [-pi/4, pi/4), base frame.
-  double concentration = 0;   // In [0, 1]; 1 = all voting lines exactly Manhattan.
-  double weight_m = 0;        // Summed vote weight (length x fit quality) of the voters [m].
+  double angle_rad = 0;      // m in [-pi/4, pi/4), base frame.
+  double concentration = 0;  // In [0, 1]; 1 = all voting lines exactly Manhattan.
+  double weight_m = 0;       // Summed vote weight (length x fit quality) of the voters [m].
   int voting_lines = 0;
-  int rejected_lines = 0;     // Long enough but outside the gate or the trim.
+  int rejected_lines = 0;       // Long enough but outside the gate or the trim.
   double trimmed_weight_m = 0;  // Length of the lines inside the gate that the trim dropped:
                                 // a second, conflicting direction [m].
 };
@@ -89,9 +89,10 @@ struct ManhattanMeasurement {
 // voters, those within trim_deg of their weighted median are averaged with the 4-theta formula
 // (weights = length / (1 + (rms / rms_scale_m)^2), so that lines whose points scatter, such as
 // a wall merged with a recessed door, count less). The median's weights are these, times, when
-// tracking, a Gaussian of the deviation from `expected_rad` with sigma = gate / 2. Boxes, bins and a wall merged with a recessed door give lines a
-// few degrees off; the median and the trim keep them out. Invalid when no line votes, the
-// concentration is below the limit or the vote weight is below min_vote_weight_m.
+// tracking, a Gaussian of the deviation from `expected_rad` with sigma = gate / 2. Boxes, bins and
+// a wall merged with a recessed door give lines a few degrees off; the median and the trim keep
+// them out. Invalid when no line votes, the concentration is below the limit or the vote weight is
+// below min_vote_weight_m.
 ManhattanMeasurement MeasureManhattanAngle(const std::vector<WallSegment>& lines,
                                            const ManhattanRotationOptions& options,
                                            std::optional<double> expected_rad = std::nullopt,
@@ -105,13 +106,13 @@ struct RotationEstimate {
   double raw_correction_rad = 0;     // What the walls said, before gating and gain.
   double gate_rad = 0;               // The tracking gate of this frame (see the options).
   ManhattanMeasurement measurement;
-  bool corrected = false;            // The walls corrected the heading.
-  bool gated = false;                // The walls disagreed too much; not applied.
-  bool reference_set = false;        // A reference direction exists (after this frame).
-  double reference_angle_rad = 0;    // alpha_ref in [-pi/4, pi/4), world frame.
-  bool reset = false;                // The reset rule fired on this frame.
-  std::string reset_reason;          // Why, for the log.
-  std::string status;                // "corrected", "no walls: dead reckoning", ...
+  bool corrected = false;          // The walls corrected the heading.
+  bool gated = false;              // The walls disagreed too much; not applied.
+  bool reference_set = false;      // A reference direction exists (after this frame).
+  double reference_angle_rad = 0;  // alpha_ref in [-pi/4, pi/4), world frame.
+  bool reset = false;              // The reset rule fired on this frame.
+  std::string reset_reason;        // Why, for the log.
+  std::string status;              // "corrected", "no walls: dead reckoning", ...
 };
 
 // Tracks the heading. Construct, then Update() once per frame in order.

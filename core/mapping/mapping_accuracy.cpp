@@ -40,8 +40,8 @@ HeadingErrors ComputeHeadingErrors(const std::vector<double>& estimate_rad,
   if (n == 0) return errors;
   double sum = 0;
   for (size_t k = 0; k < n; ++k) {
-    const double e = std::abs(RadToDeg(WrapAngle((estimate_rad[k] - estimate_rad[0]) -
-                                                 (truth_rad[k] - truth_rad[0]))));
+    const double e = std::abs(
+        RadToDeg(WrapAngle((estimate_rad[k] - estimate_rad[0]) - (truth_rad[k] - truth_rad[0]))));
     errors.error_deg.push_back(e);
     sum += e;
     errors.max_deg = std::max(errors.max_deg, e);

@@ -56,7 +56,7 @@ std::optional<WallMatch> MatchSegmentToWalls(const Eigen::Vector2d& start_in_wor
 // and by `occluders` (other obstacles: boxes, bins) when given.
 struct WallVisibility {
   int wall_index = -1;
-  int rays = 0;              // Rays whose first hit is this wall.
+  int rays = 0;                 // Rays whose first hit is this wall.
   double visible_length_m = 0;  // Extent of the hits along the wall [m].
 };
 std::vector<WallVisibility> VisibleWalls(const Pose2d& world_from_base, double fov_min_rad,

@@ -37,7 +37,8 @@ namespace {
 
 // Milliseconds since `start`.
 double MsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
@@ -62,10 +63,9 @@ Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCa
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   SIGHTLINE_RETURN_IF_ERROR(occupancy_.Configure(floor, camera));
-  SIGHTLINE_RETURN_IF_ERROR(scanner_.Configure(options_.occupancy.width_cells,
-                                               options_.occupancy.height_cells,
-                                               options_.occupancy.cell_size_m,
-                                               occupancy_.fov_min_rad(), occupancy_.fov_max_rad()));
+  SIGHTLINE_RETURN_IF_ERROR(scanner_.Configure(
+      options_.occupancy.width_cells, options_.occupancy.height_cells,
+      options_.occupancy.cell_size_m, occupancy_.fov_min_rad(), occupancy_.fov_max_rad()));
   base_from_camera_ = Eigen::Isometry3d::Identity();
   base_from_camera_.linear() = occupancy_.base_from_camera_rotation();
   base_from_camera_.translation() = Eigen::Vector3d(0, 0, floor.CameraHeightM());
@@ -161,8 +161,8 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
   if (result->rotation.reset) {
     result->reset = true;
     char text[64];
-    std::snprintf(text, sizeof(text), "frame %lld (t = %.3f s): ",
-                  static_cast<long long>(frames_), input.stamp.sensor_time_s);
+    std::snprintf(text, sizeof(text), "frame %lld (t = %.3f s): ", static_cast<long long>(frames_),
+                  input.stamp.sensor_time_s);
     reset_log_.push_back(text + result->rotation.reset_reason);
     if (options_.stitch.clear_on_reset) {
       map_.Clear();

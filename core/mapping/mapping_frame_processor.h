@@ -75,18 +75,18 @@ struct MappingStageTimes {
 // with the trajectory. A busy view can draw the pose alone.
 struct MappingFrameResult {
   FrameStamp stamp;
-  std::vector<PersonBox> people;       // Boxes used (image pixels).
+  std::vector<PersonBox> people;  // Boxes used (image pixels).
   OccupancyImage occupancy;
   PolarScan scan;
-  LineExtraction lines;                // Base frame; direction_class set.
+  LineExtraction lines;  // Base frame; direction_class set.
   RotationEstimate rotation;
-  Pose2d pose;                         // world_from_base estimate.
+  Pose2d pose;  // world_from_base estimate.
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
-  bool reset = false;                  // The reset rule fired (rotation.reset_reason says why).
-  bool map_cleared = false;            // ... and the map was started anew.
-  std::string status;                  // "ok" or what was degenerate ("no valid depth", ...).
+  bool reset = false;        // The reset rule fired (rotation.reset_reason says why).
+  bool map_cleared = false;  // ... and the map was started anew.
+  std::string status;        // "ok" or what was degenerate ("no valid depth", ...).
   MappingStageTimes times;
-  int64_t frame_index = 0;             // Frames processed before this one.
+  int64_t frame_index = 0;  // Frames processed before this one.
   // Every mapping.stitch.render_every_n frames (else null): the global map as BGR with the
   // trajectory in red; map_origin is the world position of its bottom-left corner.
   std::shared_ptr<const cv::Mat> map_image;

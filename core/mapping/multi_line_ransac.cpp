@@ -17,8 +17,9 @@ bool MultiLineRansacOptions::IsValid(std::string* error) const {
     return Invalid(error, "mapping.ransac.error_threshold_cells must be positive");
   }
   if (!(min_pair_distance_m >= 0 && max_pair_distance_m > min_pair_distance_m)) {
-    return Invalid(error, "mapping.ransac.min_pair_distance_m must be >= 0 and below "
-                          "max_pair_distance_m");
+    return Invalid(error,
+                   "mapping.ransac.min_pair_distance_m must be >= 0 and below "
+                   "max_pair_distance_m");
   }
   if (max_pair_draws < 1) return Invalid(error, "mapping.ransac.max_pair_draws must be >= 1");
   if (!(min_inlier_ratio > 0 && min_inlier_ratio <= 1)) {
@@ -112,9 +113,8 @@ void KeepLongestRun(const std::vector<Eigen::Vector2d>& points, const Eigen::Vec
                     double max_gap, std::vector<int>* indices) {
   if (indices->size() < 2) return;
   const Eigen::Vector2d direction(-normal.y(), normal.x());
-  std::sort(indices->begin(), indices->end(), [&](int a, int b) {
-    return direction.dot(points[a]) < direction.dot(points[b]);
-  });
+  std::sort(indices->begin(), indices->end(),
+            [&](int a, int b) { return direction.dot(points[a]) < direction.dot(points[b]); });
   size_t best_begin = 0, best_end = 1, begin = 0;
   for (size_t i = 1; i <= indices->size(); ++i) {
     const bool cut = i == indices->size() ||
@@ -126,7 +126,8 @@ void KeepLongestRun(const std::vector<Eigen::Vector2d>& points, const Eigen::Vec
     }
     begin = i;
   }
-  if (best_begin > 0) std::copy(indices->begin() + best_begin, indices->begin() + best_end, indices->begin());
+  if (best_begin > 0)
+    std::copy(indices->begin() + best_begin, indices->begin() + best_end, indices->begin());
   indices->resize(best_end - best_begin);
 }
 
@@ -165,10 +166,11 @@ void MultiLineRansac::RefineLine(const std::vector<Eigen::Vector2d>& points, dou
     const Eigen::Vector2d n(std::cos(angle), std::sin(angle));
     double lo = std::numeric_limits<double>::max();
     for (int idx : best_set_) lo = std::min(lo, n.dot(points[idx]));
-    histogram_.assign(static_cast<size_t>(4 * o.error_threshold_cells / o.refine_threshold_cells) + 8, 0);
+    histogram_.assign(
+        static_cast<size_t>(4 * o.error_threshold_cells / o.refine_threshold_cells) + 8, 0);
     for (int idx : best_set_) {
-      const size_t bin = std::min(histogram_.size() - 1,
-                                  static_cast<size_t>((n.dot(points[idx]) - lo) / band));
+      const size_t bin =
+          std::min(histogram_.size() - 1, static_cast<size_t>((n.dot(points[idx]) - lo) / band));
       ++histogram_[bin];
     }
     int64_t score = 0;

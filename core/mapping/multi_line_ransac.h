@@ -18,9 +18,9 @@
 // points per line (min_line_points; 2 = seed), contiguity (max_gap_m; 0 = seed): the consensus
 // set of step B6 is cut at gaps along the line and its longest piece kept, because in a real
 // corridor the 5-cell band of a line through two objects (a box face and a door recess across
-// the corridor, a person and a bin) collects 20 % of the points just as a wall does; the adaptive iteration count
-// k = log(1 - p) / log(1 - w^2) (algorithms.md) beside the fixed count, and a final refinement
-// of the chosen line (refine_sweep_deg; 0 = seed). The seed's single refit on the 5-cell
+// the corridor, a person and a bin) collects 20 % of the points just as a wall does; the adaptive
+// iteration count k = log(1 - p) / log(1 - w^2) (algorithms.md) beside the fixed count, and a final
+// refinement of the chosen line (refine_sweep_deg; 0 = seed). The seed's single refit on the 5-cell
 // consensus set tilts the line whenever the band holds two parallel surfaces: with 2 cm cells
 // the band is 20 cm wide, and a wall with a door recessed 10 cm behind it gives lines 4-10 deg
 // off. The refinement sweeps the direction in 0.1 deg steps, histograms the points' offsets in
@@ -41,29 +41,29 @@ namespace sightline {
 
 // Options of multi-line RANSAC. Keys "mapping.ransac.*".
 struct MultiLineRansacOptions {
-  double error_threshold_cells = 5;   // err_max_init: inlier distance in occupancy cells (seed 5
-                                      // pixels); in metres it is this times the cell size.
-  double min_pair_distance_m = 0.2;   // Step B2: the two seed points must be at least this far
-  double max_pair_distance_m = 4.0;   // apart and at most this far [m].
-  int max_pair_draws = 50;            // Draws per hypothesis before it counts as failed.
-  double min_inlier_ratio = 0.2;      // ratio_min (steps B5, B6).
-  double early_exit_ratio = 0.5;      // ratio_max (step B8).
-  std::string iterations = "fixed";   // "fixed": j_max hypotheses; "adaptive": log(1-p)/log(1-w^2).
-  int max_iterations = 250;           // j_max (also caps the adaptive count).
-  double confidence = 0.99;           // p of the adaptive count.
+  double error_threshold_cells = 5;  // err_max_init: inlier distance in occupancy cells (seed 5
+                                     // pixels); in metres it is this times the cell size.
+  double min_pair_distance_m = 0.2;  // Step B2: the two seed points must be at least this far
+  double max_pair_distance_m = 4.0;  // apart and at most this far [m].
+  int max_pair_draws = 50;           // Draws per hypothesis before it counts as failed.
+  double min_inlier_ratio = 0.2;     // ratio_min (steps B5, B6).
+  double early_exit_ratio = 0.5;     // ratio_max (step B8).
+  std::string iterations = "fixed";  // "fixed": j_max hypotheses; "adaptive": log(1-p)/log(1-w^2).
+  int max_iterations = 250;          // j_max (also caps the adaptive count).
+  double confidence = 0.99;          // p of the adaptive count.
   std::string best_by = "total_error";  // Step B7: "total_error" (seed: sum of errors) or
                                         // "mean_error".
-  double stop_assigned_ratio = 0.8;   // ratio_scan_max (step E).
-  int max_lines = 100;                // i_max (step E).
-  int min_line_points = 8;            // A line needs this many points (2 = seed).
-  double max_gap_m = 0.5;             // Step B6: the re-tested consensus set is cut at gaps wider
-                                      // than this along the line and its longest piece kept
-                                      // (0 = seed: no cut) [m].
-  double refine_sweep_deg = 6;        // Step C: the chosen line's dominant surface is re-found
-                                      // by sweeping its direction this far either way, then
-                                      // refitted (0 = seed: no refinement) [deg].
+  double stop_assigned_ratio = 0.8;     // ratio_scan_max (step E).
+  int max_lines = 100;                  // i_max (step E).
+  int min_line_points = 8;              // A line needs this many points (2 = seed).
+  double max_gap_m = 0.5;               // Step B6: the re-tested consensus set is cut at gaps wider
+                                        // than this along the line and its longest piece kept
+                                        // (0 = seed: no cut) [m].
+  double refine_sweep_deg = 6;          // Step C: the chosen line's dominant surface is re-found
+                                        // by sweeping its direction this far either way, then
+                                        // refitted (0 = seed: no refinement) [deg].
   double refine_threshold_cells = 1.0;  // Band of the refinement [cells].
-  int seed = 1;                       // Random generator seed.
+  int seed = 1;                         // Random generator seed.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MultiLineRansacOptions> Describe();

@@ -23,8 +23,9 @@ bool OccupancyGridMapOptions::IsValid(std::string* error) const {
   }
   if (!(free_threshold > 0 && free_threshold < 0.5 && occupied_threshold > 0.5 &&
         occupied_threshold < 1)) {
-    return Invalid(error, "mapping.stitch thresholds: need 0 < free_threshold < 0.5 < "
-                          "occupied_threshold < 1");
+    return Invalid(error,
+                   "mapping.stitch thresholds: need 0 < free_threshold < 0.5 < "
+                   "occupied_threshold < 1");
   }
   if (!(grow_margin_m >= 0)) return Invalid(error, "mapping.stitch.grow_margin_m must be >= 0");
   if (render_every_n < 0) return Invalid(error, "mapping.stitch.render_every_n must be >= 0");
@@ -61,7 +62,8 @@ OptionTable<OccupancyGridMapOptions> OccupancyGridMapOptions::Describe() {
            "Frame results carry a rendered map image every n frames (0 = never).");
 }
 
-OccupancyGridMap::OccupancyGridMap(OccupancyGridMapOptions options) : options_(std::move(options)) {}
+OccupancyGridMap::OccupancyGridMap(OccupancyGridMapOptions options)
+    : options_(std::move(options)) {}
 
 void OccupancyGridMap::Clear() {
   log_odds_.release();
@@ -160,7 +162,8 @@ Status OccupancyGridMap::Insert(const OccupancyImage& image, const Pose2d& world
   const float l_min = static_cast<float>(options_.min_log_odds);
   const float l_max = static_cast<float>(options_.max_log_odds);
   const double res = options_.resolution_m;
-  const double c = std::cos(world_from_base.heading_rad), sn = std::sin(world_from_base.heading_rad);
+  const double c = std::cos(world_from_base.heading_rad),
+               sn = std::sin(world_from_base.heading_rad);
   const int map_w = width(), map_h = height();
 
   // Occupied evidence, forward-mapped: base (x, y) of local (col, row) is
@@ -223,8 +226,10 @@ cv::Mat OccupancyGridMap::RenderGray() const {
   for (int iy = 0; iy < height(); ++iy) {
     uint8_t* out = gray.ptr<uint8_t>(height() - 1 - iy);
     for (int ix = 0; ix < width(); ++ix) {
-      if (IsOccupied(ix, iy)) out[ix] = 0;
-      else if (IsFree(ix, iy)) out[ix] = 254;
+      if (IsOccupied(ix, iy))
+        out[ix] = 0;
+      else if (IsFree(ix, iy))
+        out[ix] = 254;
     }
   }
   return gray;
@@ -248,7 +253,8 @@ cv::Mat OccupancyGridMap::RenderBgr(const std::vector<Pose2d>& trajectory) const
 }
 
 Status OccupancyGridMap::SaveRos(const std::string& dir, const std::string& name) const {
-  if (log_odds_.empty()) return FailedPrecondition("map stitching: the map is empty, nothing to save");
+  if (log_odds_.empty())
+    return FailedPrecondition("map stitching: the map is empty, nothing to save");
   const cv::Mat gray = RenderGray();
   const std::string pgm_path = JoinPath(dir, name + ".pgm");
   {
@@ -278,7 +284,8 @@ Status OccupancyGridMap::SaveRos(const std::string& dir, const std::string& name
 
 Status OccupancyGridMap::SavePng(const std::string& path,
                                  const std::vector<Pose2d>& trajectory) const {
-  if (log_odds_.empty()) return FailedPrecondition("map stitching: the map is empty, nothing to save");
+  if (log_odds_.empty())
+    return FailedPrecondition("map stitching: the map is empty, nothing to save");
   const cv::Mat bgr = RenderBgr(trajectory);
   bool written = false;
   try {

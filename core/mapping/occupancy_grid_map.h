@@ -18,20 +18,20 @@ namespace sightline {
 
 // Options of the global map. Keys "mapping.stitch.*".
 struct OccupancyGridMapOptions {
-  double resolution_m = 0.05;      // Global cell edge [m].
-  double hit_log_odds = 0.85;      // Added when a frame sees a cell occupied (log(0.7/0.3)).
-  double miss_log_odds = -0.4;     // Added when a frame sees a cell free.
-  double min_log_odds = -2.0;      // Clamp, so that the map can change its mind.
+  double resolution_m = 0.05;   // Global cell edge [m].
+  double hit_log_odds = 0.85;   // Added when a frame sees a cell occupied (log(0.7/0.3)).
+  double miss_log_odds = -0.4;  // Added when a frame sees a cell free.
+  double min_log_odds = -2.0;   // Clamp, so that the map can change its mind.
   double max_log_odds = 3.5;
-  double occupied_threshold = 0.65;  // ROS map_server occupied_thresh (probability).
-  double free_threshold = 0.196;     // ROS map_server free_thresh (probability).
-  bool clear_on_reset = true;      // Start a new map when the reset rule fires (seed).
+  double occupied_threshold = 0.65;    // ROS map_server occupied_thresh (probability).
+  double free_threshold = 0.196;       // ROS map_server free_thresh (probability).
+  bool clear_on_reset = true;          // Start a new map when the reset rule fires (seed).
   std::string occupied_from = "scan";  // Occupied evidence: "scan" (the polar scan's nearest
                                        // hits: visible surfaces) or "image" (every occupied
                                        // cell of the occupancy image, as the seed stitches).
-  double grow_margin_m = 4.0;      // The grid grows by at least this much when it must [m].
-  int render_every_n = 0;          // Frame results carry a rendered map every n frames (0: never;
-                                   // the GUI sets it).
+  double grow_margin_m = 4.0;          // The grid grows by at least this much when it must [m].
+  int render_every_n = 0;  // Frame results carry a rendered map every n frames (0: never;
+                           // the GUI sets it).
 
   bool IsValid(std::string* error) const;
   static OptionTable<OccupancyGridMapOptions> Describe();
@@ -96,9 +96,9 @@ class OccupancyGridMap {
   void Cover(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
 
   OccupancyGridMapOptions options_;
-  cv::Mat log_odds_;   // CV_32FC1.
-  cv::Mat stamps_;     // CV_32SC1: the frame that last marked the cell occupied.
-  cv::Mat observed_;   // CV_8UC1: 1 once observed.
+  cv::Mat log_odds_;  // CV_32FC1.
+  cv::Mat stamps_;    // CV_32SC1: the frame that last marked the cell occupied.
+  cv::Mat observed_;  // CV_8UC1: 1 once observed.
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
   int frames_ = 0;
   int stamp_ = 0;

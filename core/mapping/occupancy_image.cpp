@@ -59,8 +59,9 @@ Status OccupancyImageBuilder::Configure(const FloorPlane& floor, const PinholeCa
   const Eigen::Vector3d optical_axis(0, 0, 1);
   Eigen::Vector3d forward = optical_axis - optical_axis.dot(up) * up;
   if (forward.norm() < 0.1) {
-    return InvalidArgument("occupancy image: the camera looks (almost) straight at the floor; "
-                           "no forward direction");
+    return InvalidArgument(
+        "occupancy image: the camera looks (almost) straight at the floor; "
+        "no forward direction");
   }
   forward.normalize();
   const Eigen::Vector3d left = up.cross(forward);
@@ -103,8 +104,8 @@ Status OccupancyImageBuilder::PrepareTable(int depth_cols, int depth_rows) {
   const PinholeCamera cam = (camera_.width == depth_cols && camera_.height == depth_rows)
                                 ? camera_
                                 : camera_.Scaled(depth_cols, depth_rows);
-  step_ = std::max(1, static_cast<int>(std::lround(static_cast<double>(depth_cols) /
-                                                   options_.target_columns)));
+  step_ = std::max(
+      1, static_cast<int>(std::lround(static_cast<double>(depth_cols) / options_.target_columns)));
   const Eigen::Vector3d forward = base_from_camera_.row(0).transpose();
   const Eigen::Vector3d left = base_from_camera_.row(1).transpose();
   const Eigen::Vector3d up = base_from_camera_.row(2).transpose();
@@ -162,15 +163,19 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
     for (size_t k = 0; k < people.size() && k < 255; ++k) {
       const PersonBox& person = people[k];
       const double sx = person.image_size.width > 0
-                            ? static_cast<double>(depth_m.cols) / person.image_size.width : 1.0;
+                            ? static_cast<double>(depth_m.cols) / person.image_size.width
+                            : 1.0;
       const double sy = person.image_size.height > 0
-                            ? static_cast<double>(depth_m.rows) / person.image_size.height : 1.0;
+                            ? static_cast<double>(depth_m.rows) / person.image_size.height
+                            : 1.0;
       const int u0 = std::max(0, static_cast<int>(std::floor(person.box.x * sx)) / step_);
       const int v0 = std::max(0, static_cast<int>(std::floor(person.box.y * sy)) / step_);
-      const int u1 = std::min(sampled_cols - 1,
-                              static_cast<int>(std::ceil((person.box.x + person.box.width) * sx)) / step_);
-      const int v1 = std::min(sampled_rows - 1,
-                              static_cast<int>(std::ceil((person.box.y + person.box.height) * sy)) / step_);
+      const int u1 =
+          std::min(sampled_cols - 1,
+                   static_cast<int>(std::ceil((person.box.x + person.box.width) * sx)) / step_);
+      const int v1 =
+          std::min(sampled_rows - 1,
+                   static_cast<int>(std::ceil((person.box.y + person.box.height) * sy)) / step_);
       if (u1 < u0 || v1 < v0) continue;
       depths.clear();
       for (int sv = v0; sv <= v1; ++sv) {
@@ -210,7 +215,8 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
   for (int sv = 0; sv < sampled_rows; ++sv) {
     const float* row = depth_m.ptr<float>(sv * step_);
     const Eigen::Vector3f* rays = &ray_table_[static_cast<size_t>(sv) * sampled_cols];
-    const uint8_t* mask = with_people ? &person_mask_[static_cast<size_t>(sv) * sampled_cols] : nullptr;
+    const uint8_t* mask =
+        with_people ? &person_mask_[static_cast<size_t>(sv) * sampled_cols] : nullptr;
     for (int su = 0; su < sampled_cols; ++su) {
       const float z = row[su * step_];
       if (!(z > 0)) {
@@ -221,8 +227,7 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
       const float height = z * r.x() + d;
       const float cf = half_w - z * r.z() * inv_cell;
       const float rf = fh - z * r.y() * inv_cell;
-      if (!(cf >= 0 && cf < half_w * 2 && rf >= 0 && rf < fh) || height < -eps ||
-          height > max_h) {
+      if (!(cf >= 0 && cf < half_w * 2 && rf >= 0 && rf < fh) || height < -eps || height > max_h) {
         ++outside;
         continue;
       }
@@ -266,7 +271,8 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
     kept.push_back(footprint);
   }
   image.people.swap(kept);
-  if (max_col >= 0) image.known_cells = cv::Rect(min_col, min_row, max_col - min_col + 1, max_row - min_row + 1);
+  if (max_col >= 0)
+    image.known_cells = cv::Rect(min_col, min_row, max_col - min_col + 1, max_row - min_row + 1);
   image.sampled_pixels = sampled_cols * sampled_rows;
   image.invalid_pixels = invalid;
   image.floor_pixels = floor_count;

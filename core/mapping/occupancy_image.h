@@ -31,12 +31,12 @@ enum class OccupancyCell : uint8_t {
 
 // Options of the occupancy image. Keys "mapping.occupancy.*".
 struct OccupancyImageOptions {
-  int width_cells = 400;          // Seed: 400.
-  int height_cells = 400;         // Seed: 400.
-  double cell_size_m = 0.02;      // Cell edge [m]; 400 cells x 2 cm = 8 m, the Kinect's range.
-  double max_height_m = 1.8;      // Points higher above the floor (ceiling, lamps) are ignored [m].
-  int min_occupied_points = 1;    // Points a cell needs to be occupied (1 = seed: any point).
-  int target_columns = 320;       // Depth is sampled to about this many columns (seed: 320x240).
+  int width_cells = 400;        // Seed: 400.
+  int height_cells = 400;       // Seed: 400.
+  double cell_size_m = 0.02;    // Cell edge [m]; 400 cells x 2 cm = 8 m, the Kinect's range.
+  double max_height_m = 1.8;    // Points higher above the floor (ceiling, lamps) are ignored [m].
+  int min_occupied_points = 1;  // Points a cell needs to be occupied (1 = seed: any point).
+  int target_columns = 320;     // Depth is sampled to about this many columns (seed: 320x240).
   double person_depth_margin_m = 0.4;  // Pixels in a person box within this depth of the box's
                                        // median depth belong to the person [m].
 
@@ -47,22 +47,22 @@ struct OccupancyImageOptions {
 // A person's footprint in the occupancy image.
 struct PersonFootprint {
   int id = -1;
-  cv::Rect cells;          // Bounding rectangle in cells (x = column, y = row).
-  double range_m = 0;      // Median distance from the robot [m].
+  cv::Rect cells;      // Bounding rectangle in cells (x = column, y = row).
+  double range_m = 0;  // Median distance from the robot [m].
 };
 
 // One frame's occupancy image and what went into it.
 struct OccupancyImage {
-  cv::Mat cells;             // CV_8UC1 of OccupancyCell, height_cells x width_cells.
+  cv::Mat cells;  // CV_8UC1 of OccupancyCell, height_cells x width_cells.
   double cell_size_m = 0.02;
   std::vector<PersonFootprint> people;  // Scans skip these rectangles.
-  cv::Rect known_cells;      // Bounding rectangle of the cells that are not unknown.
-  int sampled_pixels = 0;    // Depth pixels looked at.
-  int invalid_pixels = 0;    // NaN or non-positive depth.
+  cv::Rect known_cells;                 // Bounding rectangle of the cells that are not unknown.
+  int sampled_pixels = 0;               // Depth pixels looked at.
+  int invalid_pixels = 0;               // NaN or non-positive depth.
   int floor_pixels = 0;
   int occupied_pixels = 0;
   int person_pixels = 0;
-  int outside_pixels = 0;    // Valid but outside the image, below the floor or above max height.
+  int outside_pixels = 0;  // Valid but outside the image, below the floor or above max height.
 
   int width() const { return cells.cols; }
   int height() const { return cells.rows; }

@@ -64,7 +64,8 @@ StatusOr<std::vector<PersonBox>> HogPersonDetector::Detect(const cv::Mat& image)
     return InvalidArgument("person detector: expected an 8-bit BGR or grey image");
   }
   const double scale = image.cols > options_.hog_max_columns
-                           ? static_cast<double>(options_.hog_max_columns) / image.cols : 1.0;
+                           ? static_cast<double>(options_.hog_max_columns) / image.cols
+                           : 1.0;
   const cv::Mat* input = &image;
   if (scale < 1.0) {
     cv::resize(image, impl_->small, cv::Size(), scale, scale, cv::INTER_AREA);

@@ -16,20 +16,20 @@ namespace sightline {
 
 // A person's box in one image.
 struct PersonBox {
-  int id = -1;           // Ground-truth person id, or -1 for a detection.
-  cv::Rect2d box;        // Pixels of the image it was found in.
-  cv::Size image_size;   // Size of that image (boxes are scaled to the depth image).
-  double score = 1;      // Detector confidence (1 for ground truth).
+  int id = -1;          // Ground-truth person id, or -1 for a detection.
+  cv::Rect2d box;       // Pixels of the image it was found in.
+  cv::Size image_size;  // Size of that image (boxes are scaled to the depth image).
+  double score = 1;     // Detector confidence (1 for ground truth).
 };
 
 // Where person boxes come from. Keys "mapping.people.*".
 struct PersonDetectorOptions {
-  std::string source = "auto";   // auto: ground truth when the dataset has it, else HOG;
-                                 // ground_truth, hog or none.
+  std::string source = "auto";     // auto: ground truth when the dataset has it, else HOG;
+                                   // ground_truth, hog or none.
   double hog_hit_threshold = 0.3;  // SVM score a HOG window needs.
-  int hog_max_columns = 320;     // The colour image is downscaled to at most this width first.
-  double hog_scale_step = 1.08;  // Pyramid step of detectMultiScale.
-  double hog_box_shrink = 0.1;   // HOG boxes are padded; shrink each side by this fraction.
+  int hog_max_columns = 320;       // The colour image is downscaled to at most this width first.
+  double hog_scale_step = 1.08;    // Pyramid step of detectMultiScale.
+  double hog_box_shrink = 0.1;     // HOG boxes are padded; shrink each side by this fraction.
 
   bool IsValid(std::string* error) const;
   static OptionTable<PersonDetectorOptions> Describe();

@@ -15,7 +15,8 @@ bool PolarScanOptions::IsValid(std::string* error) const {
   if (!(resolution_deg > 0 && resolution_deg <= 10)) {
     return Invalid(error, "mapping.scan.resolution_deg must lie in (0, 10]");
   }
-  if (!(fov_deg >= 0 && fov_deg <= 360)) return Invalid(error, "mapping.scan.fov_deg must lie in [0, 360]");
+  if (!(fov_deg >= 0 && fov_deg <= 360))
+    return Invalid(error, "mapping.scan.fov_deg must lie in [0, 360]");
   if (!(min_range_m >= 0)) return Invalid(error, "mapping.scan.min_range_m must be >= 0");
   if (!(max_range_m >= 0)) return Invalid(error, "mapping.scan.max_range_m must be >= 0");
   if (max_range_m > 0 && max_range_m <= min_range_m) {
@@ -40,7 +41,8 @@ OptionTable<PolarScanOptions> PolarScanOptions::Describe() {
 
 std::string PolarScan::Describe() const {
   const double full = 180.0;
-  const int seed_rays = resolution_rad > 0 ? static_cast<int>(std::lround(full / RadToDeg(resolution_rad))) : 0;
+  const int seed_rays =
+      resolution_rad > 0 ? static_cast<int>(std::lround(full / RadToDeg(resolution_rad))) : 0;
   char text[200];
   std::snprintf(text, sizeof(text),
                 "%d of %d rays (%.2f deg over %.0f deg) lie in the %.1f deg field of view; %zu hit",
@@ -80,7 +82,8 @@ Status PolarScanner::Configure(int width_cells, int height_cells, double cell_si
   // column - sin(b), row - cos(b).
   const double origin_c = 0.5 * width_cells, origin_r = height_cells;
   const double min_range_cells = options_.min_range_m / cell_size_m;
-  const double max_range_cells = options_.max_range_m > 0 ? options_.max_range_m / cell_size_m : 1e9;
+  const double max_range_cells =
+      options_.max_range_m > 0 ? options_.max_range_m / cell_size_m : 1e9;
   for (int k = first; k <= last; ++k) {
     const double bearing = k * resolution_rad_;
     bearings_.push_back(bearing);
@@ -142,7 +145,8 @@ StatusOr<PolarScan> PolarScanner::Scan(const OccupancyImage& image) const {
       const int column = index % width_, row = index / width_;
       if (with_people) {
         bool inside = false;
-        for (const PersonFootprint& p : image.people) inside = inside || p.cells.contains({column, row});
+        for (const PersonFootprint& p : image.people)
+          inside = inside || p.cells.contains({column, row});
         if (inside) {
           blocked = true;
           continue;

@@ -16,7 +16,8 @@ bool SplitAndMergeOptions::IsValid(std::string* error) const {
     return Invalid(error, "mapping.split_merge.error_threshold_cells must be positive");
   }
   if (!(max_gap_m > 0)) return Invalid(error, "mapping.split_merge.max_gap_m must be positive");
-  if (min_line_points < 2) return Invalid(error, "mapping.split_merge.min_line_points must be >= 2");
+  if (min_line_points < 2)
+    return Invalid(error, "mapping.split_merge.min_line_points must be >= 2");
   if (!(min_length_m >= 0)) return Invalid(error, "mapping.split_merge.min_length_m must be >= 0");
   if (!(merge_angle_deg >= 0 && merge_angle_deg < 90)) {
     return Invalid(error, "mapping.split_merge.merge_angle_deg must lie in [0, 90)");
@@ -84,8 +85,8 @@ void SplitAndMerge::Split(const std::vector<Eigen::Vector2d>& points, int begin,
     int worst_index = -1;
     for (int i = b + 1; i < e - 1; ++i) {
       const Eigen::Vector2d q = points[i] - points[b];
-      const double dist = length > 1e-12 ? std::abs(chord.x() * q.y() - chord.y() * q.x()) / length
-                                         : q.norm();
+      const double dist =
+          length > 1e-12 ? std::abs(chord.x() * q.y() - chord.y() * q.x()) / length : q.norm();
       if (dist > worst) {
         worst = dist;
         worst_index = i;
@@ -181,8 +182,8 @@ StatusOr<LineExtraction> SplitAndMerge::ExtractPoints(const std::vector<Eigen::V
   }
   result.iterations = splits;
   char text[96];
-  std::snprintf(text, sizeof(text), "%d splits, %zu pieces, %zu lines kept", splits,
-                pieces_.size(), result.lines.size());
+  std::snprintf(text, sizeof(text), "%d splits, %zu pieces, %zu lines kept", splits, pieces_.size(),
+                result.lines.size());
   result.stop_reason = text;
   return result;
 }

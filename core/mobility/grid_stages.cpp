@@ -170,8 +170,7 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
   }
 }
 
-void GridNeighbors(const WorkingCloud& cloud, int i, double max_depth_jump,
-                   std::vector<int>* out) {
+void GridNeighbors(const WorkingCloud& cloud, int i, double max_depth_jump, std::vector<int>* out) {
   out->clear();
   const int cell = cloud.point_cell[i];
   const int gx = cell % cloud.grid_w, gy = cell / cloud.grid_w;

@@ -24,9 +24,9 @@ struct Candidate {
 
 // One RANSAC search among `pool` (cloud indices); returns false when no hypothesis had an
 // up-facing normal.
-bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool,
-                 const Eigen::Vector3d& up, const MobilityOptions& options, int iterations,
-                 std::mt19937* rng, Eigen::Vector3d* normal, double* d) {
+bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const Eigen::Vector3d& up,
+                 const MobilityOptions& options, int iterations, std::mt19937* rng,
+                 Eigen::Vector3d* normal, double* d) {
   if (pool.size() < 3) return false;
   std::uniform_int_distribution<size_t> pick(0, pool.size() - 1);
   // Hypotheses are scored on an even subsample of the pool.

@@ -31,8 +31,8 @@ Eigen::Isometry3d GroundFromCamera(const GroundPlane& ground) {
 }
 
 TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
-                        const std::vector<float>& scores, const GroundPlane& ground,
-                        double cell_m, double range_m) {
+                        const std::vector<float>& scores, const GroundPlane& ground, double cell_m,
+                        double range_m) {
   TopViewMap map;
   map.cell_m = cell_m;
   map.x_max_m = range_m;
@@ -94,7 +94,8 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
     for (int y = y0; y < y1; ++y) {
       cv::Vec3b* row = out.ptr<cv::Vec3b>(y);
       for (int x = x0; x < x1; ++x) {
-        for (int c = 0; c < 3; ++c) row[x][c] = static_cast<uchar>((9 * row[x][c] + 11 * color[c]) / 20);
+        for (int c = 0; c < 3; ++c)
+          row[x][c] = static_cast<uchar>((9 * row[x][c] + 11 * color[c]) / 20);
       }
     }
   }

@@ -24,8 +24,8 @@ Eigen::Isometry3d GroundFromCamera(const GroundPlane& ground);
 // A top-view grid of cell_m cells over x in [0, range_m], y in [-range_m, range_m] holding the
 // lowest score of the points falling into each cell (NaN where none).
 TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
-                        const std::vector<float>& scores, const GroundPlane& ground,
-                        double cell_m, double range_m);
+                        const std::vector<float>& scores, const GroundPlane& ground, double cell_m,
+                        double range_m);
 
 // The top view as a BGR image (camera at the bottom centre, forward up), one pixel per cell.
 cv::Mat RenderTopView(const TopViewMap& map);

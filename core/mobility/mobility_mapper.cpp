@@ -45,10 +45,20 @@ Status PointStages(const PointCloud& cloud, const MobilityOptions& o, WorkingClo
       if (!grid.ok()) return grid.status();
       *work = std::move(*grid);
     }
-    { StageClock t(result, "range_cut", work->size()); RangeCut(range, work); }
+    {
+      StageClock t(result, "range_cut", work->size());
+      RangeCut(range, work);
+    }
   } else {
-    { StageClock t(result, "range_cut", cloud.size()); *work = CloudPoints(cloud); RangeCut(range, work); }
-    { StageClock t(result, "downsample", work->size()); PclVoxelDownsample(o.voxel_m, work); }
+    {
+      StageClock t(result, "range_cut", cloud.size());
+      *work = CloudPoints(cloud);
+      RangeCut(range, work);
+    }
+    {
+      StageClock t(result, "downsample", work->size());
+      PclVoxelDownsample(o.voxel_m, work);
+    }
   }
   if (work->size() < static_cast<size_t>(o.min_points)) {
     char text[200];
@@ -59,10 +69,19 @@ Status PointStages(const PointCloud& cloud, const MobilityOptions& o, WorkingClo
     return OutOfRange(text);
   }
   if (o.mode == "grid") {
-    { StageClock t(result, "denoise", work->size()); GridRemoveOutliers(o.sor_alpha, work); }
-    { StageClock t(result, "normals", work->size()); GridNormals(o.normal_window, o.max_curvature, work); }
+    {
+      StageClock t(result, "denoise", work->size());
+      GridRemoveOutliers(o.sor_alpha, work);
+    }
+    {
+      StageClock t(result, "normals", work->size());
+      GridNormals(o.normal_window, o.max_curvature, work);
+    }
   } else {
-    { StageClock t(result, "denoise", work->size()); PclRemoveOutliers(o.sor_k, o.sor_alpha, work); }
+    {
+      StageClock t(result, "denoise", work->size());
+      PclRemoveOutliers(o.sor_k, o.sor_alpha, work);
+    }
     StageClock t(result, "normals", work->size());
     *search = std::make_unique<PclNeighborSearch>(work->points);
     (*search)->ComputeNormals(o.normal_k, o.max_curvature, work);
@@ -128,8 +147,9 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
   const PointCloud& cloud = *input.cloud;
   result->input_width = cloud.width;
   result->input_height = cloud.height;
-  result->expected_up = input.up_in_camera ? input.up_in_camera->normalized()
-                                           : ExpectedUpFromMount(o.mount_pitch_deg, o.mount_roll_deg);
+  result->expected_up = input.up_in_camera
+                            ? input.up_in_camera->normalized()
+                            : ExpectedUpFromMount(o.mount_pitch_deg, o.mount_roll_deg);
   WorkingCloud work;
   std::unique_ptr<PclNeighborSearch> search;
   if (Status s = PointStages(cloud, o, &work, &search, result.get()); !s.ok()) {
@@ -156,13 +176,18 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
   int regions = 0;
   {
     std::vector<uint8_t> eligible(work.size());
-    for (size_t i = 0; i < work.size(); ++i) eligible[i] = !is_ground[i] && work.normals[i].allFinite();
+    for (size_t i = 0; i < work.size(); ++i)
+      eligible[i] = !is_ground[i] && work.normals[i].allFinite();
     StageClock t(result.get(), "segmentation", work.size() - result->ground.inliers);
     NeighborFunction neighbors;
     if (work.gridded()) {
-      neighbors = [&](int i, std::vector<int>* out) { GridNeighbors(work, i, o.max_depth_jump, out); };
+      neighbors = [&](int i, std::vector<int>* out) {
+        GridNeighbors(work, i, o.max_depth_jump, out);
+      };
     } else {
-      neighbors = [&](int i, std::vector<int>* out) { search->Radius(i, o.pcl_neighbor_radius_m, out); };
+      neighbors = [&](int i, std::vector<int>* out) {
+        search->Radius(i, o.pcl_neighbor_radius_m, out);
+      };
     }
     label = GrowRegions(result->rgbn, eligible, o.color_threshold, o.min_segment_points, neighbors,
                         &regions);
@@ -170,12 +195,15 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
   // Segment 0 is the ground when found; regions follow.
   const int offset = result->ground.found ? 1 : 0;
   for (size_t i = 0; i < label.size(); ++i) {
-    if (is_ground[i]) label[i] = 0;
-    else if (label[i] >= 0) label[i] += offset;
+    if (is_ground[i])
+      label[i] = 0;
+    else if (label[i] >= 0)
+      label[i] += offset;
   }
   {
     StageClock t(result.get(), "surface", work.size());
-    const std::vector<std::vector<Eigen::Vector3f>> members = SegmentPoints(work, label, regions + offset);
+    const std::vector<std::vector<Eigen::Vector3f>> members =
+        SegmentPoints(work, label, regions + offset);
     std::vector<int> new_index(members.size(), -1);
     for (size_t s = 0; s < members.size(); ++s) {
       StatusOr<SegmentProperties> props =

@@ -19,9 +19,9 @@ namespace sightline {
 // One frame for the mapper.
 struct MobilityInput {
   FrameStamp stamp;
-  std::shared_ptr<const PointCloud> cloud;  // Camera frame (x right, y down, z forward).
-  cv::Mat color;                            // BGR image for the projection; may be empty.
-  std::optional<PinholeCamera> camera;      // Colour camera; else recovered from the cloud.
+  std::shared_ptr<const PointCloud> cloud;      // Camera frame (x right, y down, z forward).
+  cv::Mat color;                                // BGR image for the projection; may be empty.
+  std::optional<PinholeCamera> camera;          // Colour camera; else recovered from the cloud.
   std::optional<Eigen::Vector3d> up_in_camera;  // E.g. from a floor calibration; else the mount.
 };
 

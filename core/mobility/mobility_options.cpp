@@ -11,7 +11,7 @@ bool Invalid(std::string* error, const std::string& message) {
 }  // namespace
 
 double MobilityOptions::RangeCutM() const {
-  if (platform == "icub") return 1.75;  // The seed's 1.5-2 m.
+  if (platform == "icub") return 1.75;       // The seed's 1.5-2 m.
   if (platform == "wheelchair") return 5.0;  // office1's floor lies 3.3-5 m away.
   return range_cut_m;
 }

@@ -72,7 +72,7 @@ struct StageReport {
 // The top view: a grid on the ground plane holding the lowest score seen in each cell.
 // Ground frame: origin under the camera, z up, x along the camera's view, y left.
 struct TopViewMap {
-  cv::Mat score;       // CV_32FC1, rows = x (row 0 farthest), cols = y (col 0 leftmost); NaN = unknown.
+  cv::Mat score;  // CV_32FC1, rows = x (row 0 farthest), cols = y (col 0 leftmost); NaN = unknown.
   double cell_m = 0.02;
   double x_max_m = 0;  // Forward extent; row r covers x in [x_max - (r+1) cell, x_max - r cell).
   double y_max_m = 0;  // Lateral half-width; col c covers y in [y_max - (c+1) cell, ...).
@@ -82,21 +82,21 @@ struct TopViewMap {
 // Everything the mapper made of one frame. Immutable once built; shared with views.
 struct MobilityResult {
   FrameStamp stamp;
-  Status status;                 // Why the frame has no (full) map, if so.
-  std::string mode;              // "grid" or "pcl".
+  Status status;     // Why the frame has no (full) map, if so.
+  std::string mode;  // "grid" or "pcl".
   int input_width = 0, input_height = 0;
   Eigen::Vector3d expected_up = Eigen::Vector3d(0, -1, 0);
   GroundPlane ground;
-  int ransac_iterations = 0;     // Per candidate, from seed eq. 6.
+  int ransac_iterations = 0;            // Per candidate, from seed eq. 6.
   std::vector<Eigen::Vector3f> points;  // The scored cloud (after cut, downsampling, denoising).
   std::vector<int> pixel;               // Input index of each point, -1 = none.
   std::vector<int> segment;             // Index into segments, -1 = unsegmented.
   std::vector<cv::Vec3b> rgbn;          // RGB-N colour (R, G, B) of each point.
   std::vector<SegmentProperties> segments;  // The ground first when found.
   TopViewMap map;
-  cv::Mat projection;            // BGR colour image with the scores drawn on it.
+  cv::Mat projection;  // BGR colour image with the scores drawn on it.
   std::vector<StageReport> stages;
-  bool use_gpr = false;          // Which score the maps show.
+  bool use_gpr = false;  // Which score the maps show.
 
   // Score of point i (the chosen one), NaN when unsegmented.
   float PointScore(size_t i) const {

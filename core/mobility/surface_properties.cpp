@@ -1,8 +1,8 @@
 #include "core/mobility/surface_properties.h"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <unordered_map>
@@ -51,8 +51,10 @@ void TriangulateDelaunay(const std::vector<Eigen::Vector3d>& means, double cell_
                          double max_edge_cells, RoughnessResult* r) {
   double u0 = 1e30, v0 = 1e30, u1 = -1e30, v1 = -1e30;
   for (const Eigen::Vector3d& m : means) {
-    u0 = std::min(u0, m.x()); v0 = std::min(v0, m.y());
-    u1 = std::max(u1, m.x()); v1 = std::max(v1, m.y());
+    u0 = std::min(u0, m.x());
+    v0 = std::min(v0, m.y());
+    u1 = std::max(u1, m.x());
+    v1 = std::max(v1, m.y());
   }
   // Subdiv2D works in float pixels: scale to cell units with a margin.
   const double scale = 1.0 / cell_m;
@@ -165,8 +167,8 @@ StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& p
   }
   if (r.triangles == 0 || r.projected_area_m2 <= 0) {
     return InvalidArgument("no triangle for the roughness: the segment covers " +
-                           std::to_string(r.cells) + " cell(s) of " +
-                           std::to_string(cell_m) + " m");
+                           std::to_string(r.cells) + " cell(s) of " + std::to_string(cell_m) +
+                           " m");
   }
   r.roughness = std::max(1.0, r.surface_area_m2 / r.projected_area_m2);
   return r;
@@ -177,8 +179,8 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
                                            const GroundPlane& ground,
                                            const MobilityOptions& options) {
   const std::string name = is_ground ? "the ground" : "segment " + std::to_string(id);
-  StatusOr<SegmentPlane> plane = FitSegmentPlane(points, options.plane_ransac_iterations,
-                                                 options.plane_distance_m, 1 + id);
+  StatusOr<SegmentPlane> plane =
+      FitSegmentPlane(points, options.plane_ransac_iterations, options.plane_distance_m, 1 + id);
   if (!plane.ok()) return plane.status().WithContext(name);
   SegmentProperties s;
   s.id = id;
@@ -187,11 +189,12 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
   s.normal = plane->normal;
   s.centroid = plane->centroid;
   if (!is_ground) {
-    s.slope_deg = std::acos(std::clamp(std::abs(plane->normal.dot(ground.normal)), 0.0, 1.0)) *
-                  180.0 / M_PI;
+    s.slope_deg =
+        std::acos(std::clamp(std::abs(plane->normal.dot(ground.normal)), 0.0, 1.0)) * 180.0 / M_PI;
   }
   // Roughness from the near points (depth noise grows with z^2), area from all of them.
-  const float max2 = static_cast<float>(options.roughness_max_range_m * options.roughness_max_range_m);
+  const float max2 =
+      static_cast<float>(options.roughness_max_range_m * options.roughness_max_range_m);
   std::vector<Eigen::Vector3f> near;
   for (const Eigen::Vector3f& p : points) {
     if (p.squaredNorm() <= max2) near.push_back(p);
@@ -210,14 +213,15 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
   s.area_m2 = rough->cells * options.roughness_cell_m * options.roughness_cell_m;
   if (near.size() != points.size()) {
     // Area over every point: count the occupied cells of all of them.
-    StatusOr<RoughnessResult> all = ComputeRoughness(points, *plane, options.roughness_cell_m,
-                                                     "grid", options.max_edge_cells);
+    StatusOr<RoughnessResult> all =
+        ComputeRoughness(points, *plane, options.roughness_cell_m, "grid", options.max_edge_cells);
     if (all.ok()) s.area_m2 = all->cells * options.roughness_cell_m * options.roughness_cell_m;
   }
   // Raised height: a low quantile of the heights above the ground.
   if (ground.found && !is_ground) {
     std::vector<float> heights(points.size());
-    for (size_t i = 0; i < points.size(); ++i) heights[i] = static_cast<float>(ground.HeightOf(points[i]));
+    for (size_t i = 0; i < points.size(); ++i)
+      heights[i] = static_cast<float>(ground.HeightOf(points[i]));
     const size_t k = std::min(heights.size() - 1,
                               static_cast<size_t>(options.height_percentile * heights.size()));
     std::nth_element(heights.begin(), heights.begin() + k, heights.end());

@@ -27,10 +27,10 @@ StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& point
 
 // What the roughness triangulation gave.
 struct RoughnessResult {
-  double roughness = 1;         // Sum of 3D areas / sum of projected areas (>= 1).
+  double roughness = 1;  // Sum of 3D areas / sum of projected areas (>= 1).
   double projected_area_m2 = 0;
   double surface_area_m2 = 0;
-  int cells = 0;                // Occupied plane cells.
+  int cells = 0;  // Occupied plane cells.
   int triangles = 0;
 };
 
@@ -41,8 +41,7 @@ struct RoughnessResult {
 // InvalidArgument when no triangle can be formed.
 StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& points,
                                            const SegmentPlane& plane, double cell_m,
-                                           const std::string& triangulation,
-                                           double max_edge_cells);
+                                           const std::string& triangulation, double max_edge_cells);
 
 // All properties of one segment (scores are left 0). `ground` is the found ground (for the
 // ground segment itself the slope is 0 by definition). InvalidArgument, naming the segment,

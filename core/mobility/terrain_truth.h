@@ -26,9 +26,9 @@ StatusOr<std::vector<TrueRegion>> ReadTerrainRegions(const std::string& path);
 
 // A segment matched to the true region holding most of its points.
 struct SegmentMatch {
-  int segment = 0;          // Index into MobilityResult::segments.
-  int region = -1;          // Index into the regions, -1 = none.
-  double fraction = 0;      // Of the segment's points inside the region.
+  int segment = 0;      // Index into MobilityResult::segments.
+  int region = -1;      // Index into the regions, -1 = none.
+  double fraction = 0;  // Of the segment's points inside the region.
 };
 
 // Matches each segment to the region whose footprint holds most of its points (a point

@@ -13,7 +13,12 @@ namespace {
 // Residual of a keypoint against a point seen from a pose [angle-axis, translation].
 struct ReprojectionCost {
   ReprojectionCost(const PinholeCamera& camera, const Eigen::Vector2d& pixel, double scale)
-      : fx(camera.fx), fy(camera.fy), cx(camera.cx), cy(camera.cy), u(pixel.x()), v(pixel.y()),
+      : fx(camera.fx),
+        fy(camera.fy),
+        cx(camera.cx),
+        cy(camera.cy),
+        u(pixel.x()),
+        v(pixel.y()),
         inv_scale(1.0 / scale) {}
 
   template <typename T>
@@ -67,9 +72,11 @@ double Rms(const PinholeCamera& camera, const BundleProblem& problem) {
 
 double ReprojectionErrorPx(const PinholeCamera& camera, const BundleProblem& problem,
                            const BundleProblem::Observation& o) {
-  const Eigen::Vector3d p = problem.poses[o.pose].camera_from_map * problem.points[o.point].position;
+  const Eigen::Vector3d p =
+      problem.poses[o.pose].camera_from_map * problem.points[o.point].position;
   if (p.z() <= 1e-9) return std::numeric_limits<double>::infinity();
-  const Eigen::Vector2d proj(camera.fx * p.x() / p.z() + camera.cx, camera.fy * p.y() / p.z() + camera.cy);
+  const Eigen::Vector2d proj(camera.fx * p.x() / p.z() + camera.cx,
+                             camera.fy * p.y() / p.z() + camera.cy);
   return (proj - o.pixel).norm();
 }
 
@@ -85,7 +92,8 @@ BundleSummary SolveBundle(const PinholeCamera& camera, BundleProblem* problem, i
   }
   std::vector<double> poses(problem->poses.size() * 6);
   std::vector<double> points(problem->points.size() * 3);
-  for (size_t i = 0; i < problem->poses.size(); ++i) ToArray(problem->poses[i].camera_from_map, &poses[6 * i]);
+  for (size_t i = 0; i < problem->poses.size(); ++i)
+    ToArray(problem->poses[i].camera_from_map, &poses[6 * i]);
   for (size_t i = 0; i < problem->points.size(); ++i) {
     for (int k = 0; k < 3; ++k) points[3 * i + k] = problem->points[i].position[k];
   }
@@ -118,7 +126,8 @@ BundleSummary SolveBundle(const PinholeCamera& camera, BundleProblem* problem, i
     if (!problem->poses[i].fixed) problem->poses[i].camera_from_map = FromArray(&poses[6 * i]);
   }
   for (size_t i = 0; i < problem->points.size(); ++i) {
-    problem->points[i].position = Eigen::Vector3d(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+    problem->points[i].position =
+        Eigen::Vector3d(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
   }
   summary.final_rms_px = Rms(camera, *problem);
   return summary;

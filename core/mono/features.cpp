@@ -8,9 +8,9 @@ namespace sightline {
 
 FeatureExtractor::FeatureExtractor(const MonoFeatureOptions& options, const PinholeCamera& camera)
     : options_(options), camera_(camera) {
-  orb_ = cv::ORB::create(options.max_features, static_cast<float>(options.scale_factor),
-                         options.levels, 19, 0, 2, cv::ORB::HARRIS_SCORE, 31,
-                         options.fast_threshold);
+  orb_ =
+      cv::ORB::create(options.max_features, static_cast<float>(options.scale_factor),
+                      options.levels, 19, 0, 2, cv::ORB::HARRIS_SCORE, 31, options.fast_threshold);
 }
 
 double FeatureExtractor::LevelScale(int octave) const {
@@ -37,7 +37,8 @@ FrameFeatures FeatureExtractor::Extract(const cv::Mat& image) const {
   if (camera_.HasDistortion() && !f.keypoints.empty()) {
     std::vector<cv::Point2f> raw, undistorted;
     for (const cv::KeyPoint& k : f.keypoints) raw.push_back(k.pt);
-    cv::Mat K = (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
+    cv::Mat K =
+        (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
     cv::Mat d(1, 5, CV_64F);
     for (int i = 0; i < 5; ++i) d.at<double>(i) = camera_.distortion[i];
     cv::undistortPoints(raw, undistorted, K, d, cv::noArray(), K);

@@ -49,7 +49,8 @@ inline int DescriptorDistance(const cv::Mat& a, const cv::Mat& b) {
 
 // Pixel of a point in the camera frame; no distortion (keypoints are undistorted).
 inline Eigen::Vector2d ProjectToPixel(const PinholeCamera& camera, const Eigen::Vector3d& x) {
-  return Eigen::Vector2d(camera.fx * x.x() / x.z() + camera.cx, camera.fy * x.y() / x.z() + camera.cy);
+  return Eigen::Vector2d(camera.fx * x.x() / x.z() + camera.cx,
+                         camera.fy * x.y() / x.z() + camera.cy);
 }
 
 // Normalised image coordinates (x/z, y/z) of a pixel.

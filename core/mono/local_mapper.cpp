@@ -10,7 +10,11 @@ namespace sightline {
 
 LocalMapper::LocalMapper(const MonoMappingOptions& options, const PinholeCamera& camera,
                          double scale_factor, SlamMap* map, std::mutex* map_mutex)
-    : options_(options), camera_(camera), scale_factor_(scale_factor), map_(map), mutex_(map_mutex) {}
+    : options_(options),
+      camera_(camera),
+      scale_factor_(scale_factor),
+      map_(map),
+      mutex_(map_mutex) {}
 
 namespace {
 
@@ -39,7 +43,8 @@ KeyFrameStats LocalMapper::ProcessKeyFrame(std::shared_ptr<KeyFrame> keyframe) {
   }
   std::vector<KeyFrame*> neighbours;
   const auto& all = map_->keyframes();
-  for (int k = static_cast<int>(all.size()) - 2; k >= 0 && static_cast<int>(neighbours.size()) < options_.neighbours; --k) {
+  for (int k = static_cast<int>(all.size()) - 2;
+       k >= 0 && static_cast<int>(neighbours.size()) < options_.neighbours; --k) {
     neighbours.push_back(all[k].get());
   }
   stats.fused = FuseNeighbourPoints(current, neighbours);
@@ -73,7 +78,9 @@ int LocalMapper::FuseNeighbourPoints(KeyFrame* current, const std::vector<KeyFra
     const uint8_t* dp = p->descriptor.ptr<uint8_t>();
     for (int k : f.InWindow(uv.x(), uv.y(), 3.0 * options_.epipolar_px)) {
       if (taken[k]) continue;
-      if ((f.pixels[k] - uv).norm() > options_.max_reprojection_px * Scale(scale_factor_, f.keypoints[k])) continue;
+      if ((f.pixels[k] - uv).norm() >
+          options_.max_reprojection_px * Scale(scale_factor_, f.keypoints[k]))
+        continue;
       const int d = DescriptorDistance(dp, f.descriptors.ptr<uint8_t>(k));
       if (d < best) {
         best = d;
@@ -211,8 +218,8 @@ int LocalMapper::Cull(int64_t current_keyframe) {
   std::lock_guard<std::mutex> lock(*mutex_);
   std::vector<int64_t> bad;
   for (const auto& [id, p] : map_->points()) {
-    const bool unreliable = p.visible >= 10 &&
-                            static_cast<double>(p.found) / p.visible < options_.min_found_ratio;
+    const bool unreliable =
+        p.visible >= 10 && static_cast<double>(p.found) / p.visible < options_.min_found_ratio;
     const bool unconfirmed = current_keyframe - p.first_keyframe >= 3 && p.observations.size() <= 2;
     if (unreliable || unconfirmed) bad.push_back(id);
   }
@@ -250,7 +257,8 @@ double PathLength(const std::vector<BundleProblem::Pose>& poses) {
   double length = 0;
   for (size_t k = 1; k < poses.size(); ++k) {
     length += (poses[k].camera_from_map.inverse().translation() -
-               poses[k - 1].camera_from_map.inverse().translation()).norm();
+               poses[k - 1].camera_from_map.inverse().translation())
+                  .norm();
   }
   return length;
 }
@@ -260,13 +268,15 @@ double PathLength(const std::vector<BundleProblem::Pose>& poses) {
 BundleSummary LocalMapper::SolveGlobal(int iterations, double baseline, bool keep_path_length) {
   BundleProblem problem;
   std::unordered_map<int64_t, int> point_index;
-  for (const auto& k : map_->keyframes()) problem.poses.push_back({k->id, k->camera_from_map, k->id == 0});
+  for (const auto& k : map_->keyframes())
+    problem.poses.push_back({k->id, k->camera_from_map, k->id == 0});
   for (const auto& [id, p] : map_->points()) {
     point_index[id] = static_cast<int>(problem.points.size());
     problem.points.push_back({id, p.position});
     for (const auto& [kf, index] : p.observations) {
       const KeyFrame& k = *map_->keyframes()[kf];
-      problem.observations.push_back({static_cast<int>(kf), point_index[id], k.features.pixels[index],
+      problem.observations.push_back({static_cast<int>(kf), point_index[id],
+                                      k.features.pixels[index],
                                       Scale(scale_factor_, k.features.keypoints[index])});
     }
   }
@@ -279,7 +289,8 @@ BundleSummary LocalMapper::SolveGlobal(int iterations, double baseline, bool kee
     if (length_after > 0) s = length_before / length_after;
   } else {
     const double length = (problem.poses[1].camera_from_map.inverse().translation() -
-                           problem.poses[0].camera_from_map.inverse().translation()).norm();
+                           problem.poses[0].camera_from_map.inverse().translation())
+                              .norm();
     if (length > 0) s = baseline / length;
   }
   std::lock_guard<std::mutex> lock(*mutex_);
@@ -290,7 +301,8 @@ BundleSummary LocalMapper::SolveGlobal(int iterations, double baseline, bool kee
   }
   for (const auto& point : problem.points) map_->FindPoint(point.id)->position = point.position * s;
   for (const auto& o : problem.observations) {
-    if (ReprojectionErrorPx(camera_, problem, o) > 2.0 * options_.max_reprojection_px * o.level_scale) {
+    if (ReprojectionErrorPx(camera_, problem, o) >
+        2.0 * options_.max_reprojection_px * o.level_scale) {
       map_->RemoveObservation(problem.points[o.point].id, problem.poses[o.pose].keyframe);
     }
   }

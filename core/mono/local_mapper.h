@@ -21,13 +21,13 @@ namespace sightline {
 // What processing one keyframe did.
 struct KeyFrameStats {
   int64_t keyframe = -1;
-  int new_points = 0;        // Triangulated.
-  int fused = 0;             // Observations of existing points added.
-  int culled = 0;            // Points removed.
-  int ba_outliers = 0;       // Observations removed after bundle adjustment.
+  int new_points = 0;   // Triangulated.
+  int fused = 0;        // Observations of existing points added.
+  int culled = 0;       // Points removed.
+  int ba_outliers = 0;  // Observations removed after bundle adjustment.
   BundleSummary bundle;
-  double mapping_ms = 0;     // Everything.
-  double bundle_ms = 0;      // Bundle adjustment alone.
+  double mapping_ms = 0;  // Everything.
+  double bundle_ms = 0;   // Bundle adjustment alone.
 };
 
 class LocalMapper {

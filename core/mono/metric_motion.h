@@ -15,9 +15,9 @@ namespace sightline {
 
 // One frame with both poses (either may be missing).
 struct DualPose {
-  int64_t frame = -1;                                  // Source sequence id.
-  std::optional<Eigen::Isometry3d> map_from_camera;    // SLAM estimate [map units].
-  std::optional<Eigen::Isometry3d> metric_from_camera; // Measured [m], any fixed world frame.
+  int64_t frame = -1;                                   // Source sequence id.
+  std::optional<Eigen::Isometry3d> map_from_camera;     // SLAM estimate [map units].
+  std::optional<Eigen::Isometry3d> metric_from_camera;  // Measured [m], any fixed world frame.
 };
 
 // Pairs over consecutive intervals of `interval_frames` frames (frame i to i + interval), for

@@ -25,8 +25,7 @@ OptionTable<MonoFeatureOptions> MonoFeatureOptions::Describe() {
       .Double("scale_factor", &O::scale_factor, "", 1.05, 1.95, 0.05,
               "Scale between pyramid levels.")
       .Int("levels", &O::levels, "levels", 1, 12, 1, "Pyramid levels.")
-      .Int("fast_threshold", &O::fast_threshold, "grey levels", 1, 100, 1,
-           "FAST corner threshold.")
+      .Int("fast_threshold", &O::fast_threshold, "grey levels", 1, 100, 1, "FAST corner threshold.")
       .Int("grid_cell_px", &O::grid_cell_px, "px", 4, 256, 4,
            "Cell of the keypoint grid used by window searches.");
 }
@@ -36,15 +35,18 @@ bool MonoInitOptions::IsValid(std::string* error) const {
   if (!(min_median_parallax_deg >= 0)) {
     return Invalid(error, "mono.init.min_median_parallax_deg must be >= 0");
   }
-  if (!(min_baseline_ratio >= 0)) return Invalid(error, "mono.init.min_baseline_ratio must be >= 0");
-  if (!(ransac_threshold_px > 0)) return Invalid(error, "mono.init.ransac_threshold_px must be > 0");
+  if (!(min_baseline_ratio >= 0))
+    return Invalid(error, "mono.init.min_baseline_ratio must be >= 0");
+  if (!(ransac_threshold_px > 0))
+    return Invalid(error, "mono.init.ransac_threshold_px must be > 0");
   if (!(homography_ratio > 0 && homography_ratio < 1)) {
     return Invalid(error, "mono.init.homography_ratio must lie in (0, 1)");
   }
   if (!(min_point_parallax_deg >= 0)) {
     return Invalid(error, "mono.init.min_point_parallax_deg must be >= 0");
   }
-  if (!(max_reprojection_px > 0)) return Invalid(error, "mono.init.max_reprojection_px must be > 0");
+  if (!(max_reprojection_px > 0))
+    return Invalid(error, "mono.init.max_reprojection_px must be > 0");
   if (min_points < 8) return Invalid(error, "mono.init.min_points must be >= 8");
   if (!(baseline > 0)) return Invalid(error, "mono.init.baseline must be > 0");
   if (max_frames < 1) return Invalid(error, "mono.init.max_frames must be >= 1");
@@ -80,7 +82,8 @@ OptionTable<MonoInitOptions> MonoInitOptions::Describe() {
 
 bool MonoTrackingOptions::IsValid(std::string* error) const {
   if (!(search_radius_px > 0) || !(wide_radius_px >= search_radius_px) || !(fine_radius_px > 0)) {
-    return Invalid(error, "mono.tracking: radii must be > 0 and wide_radius_px >= search_radius_px");
+    return Invalid(error,
+                   "mono.tracking: radii must be > 0 and wide_radius_px >= search_radius_px");
   }
   if (max_descriptor_distance < 1 || max_descriptor_distance > 256) {
     return Invalid(error, "mono.tracking.max_descriptor_distance must lie in [1, 256]");
@@ -92,7 +95,8 @@ bool MonoTrackingOptions::IsValid(std::string* error) const {
     return Invalid(error, "mono.tracking.huber_px and outlier_px must be > 0");
   }
   if (min_inliers < 6 || good_inliers < min_inliers) {
-    return Invalid(error, "mono.tracking: min_inliers must be >= 6 and good_inliers >= min_inliers");
+    return Invalid(error,
+                   "mono.tracking: min_inliers must be >= 6 and good_inliers >= min_inliers");
   }
   if (!(min_found_fraction >= 0 && min_found_fraction < 1)) {
     return Invalid(error, "mono.tracking.min_found_fraction must lie in [0, 1)");
@@ -153,7 +157,8 @@ bool MonoMappingOptions::IsValid(std::string* error) const {
   if (thread_nice < 0 || thread_nice > 19) {
     return Invalid(error, "mono.mapping.thread_nice must lie in [0, 19]");
   }
-  if (final_ba_iterations < 0) return Invalid(error, "mono.mapping.final_ba_iterations must be >= 0");
+  if (final_ba_iterations < 0)
+    return Invalid(error, "mono.mapping.final_ba_iterations must be >= 0");
   if (!(ba_huber_px > 0)) return Invalid(error, "mono.mapping.ba_huber_px must be > 0");
   if (!(min_found_ratio >= 0 && min_found_ratio < 1)) {
     return Invalid(error, "mono.mapping.min_found_ratio must lie in [0, 1)");
@@ -188,8 +193,9 @@ OptionTable<MonoMappingOptions> MonoMappingOptions::Describe() {
               "Huber loss threshold of bundle adjustment.")
       .Double("min_found_ratio", &O::min_found_ratio, "", 0, 0.99, 0.05,
               "Points found in fewer of the frames that should see them are culled.")
-      .Bool("threaded", &O::threaded,
-            "Run mapping on its own thread (live); off = inline after each keyframe, deterministic.")
+      .Bool(
+          "threaded", &O::threaded,
+          "Run mapping on its own thread (live); off = inline after each keyframe, deterministic.")
       .Int("thread_nice", &O::thread_nice, "", 0, 19, 1,
            "Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core "
            "it shares with mapping, but starves mapping on a loaded machine.")

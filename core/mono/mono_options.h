@@ -11,11 +11,11 @@ namespace sightline {
 
 // ORB features per frame. Keys "mono.features.*".
 struct MonoFeatureOptions {
-  int max_features = 1500;      // Keypoints per frame.
-  double scale_factor = 1.2;    // Pyramid scale between levels.
-  int levels = 8;               // Pyramid levels.
-  int fast_threshold = 12;      // FAST corner threshold [grey levels].
-  int grid_cell_px = 32;        // Cell of the keypoint grid used for window searches [px].
+  int max_features = 1500;    // Keypoints per frame.
+  double scale_factor = 1.2;  // Pyramid scale between levels.
+  int levels = 8;             // Pyramid levels.
+  int fast_threshold = 12;    // FAST corner threshold [grey levels].
+  int grid_cell_px = 32;      // Cell of the keypoint grid used for window searches [px].
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoFeatureOptions> Describe();
@@ -23,16 +23,16 @@ struct MonoFeatureOptions {
 
 // Two-view initialisation. Keys "mono.init.*".
 struct MonoInitOptions {
-  int min_matches = 100;              // Matches with the first frame needed to try [matches].
+  int min_matches = 100;                 // Matches with the first frame needed to try [matches].
   double min_median_parallax_deg = 1.0;  // Median ray angle needed before trying [deg].
-  double min_baseline_ratio = 0.07;   // Baseline / median depth of the first points needed.
-  double ransac_threshold_px = 1.5;   // RANSAC inlier distance of E and H [px].
-  double homography_ratio = 0.40;     // H is chosen when inliers_H / (inliers_H + inliers_E) > this.
+  double min_baseline_ratio = 0.07;      // Baseline / median depth of the first points needed.
+  double ransac_threshold_px = 1.5;      // RANSAC inlier distance of E and H [px].
+  double homography_ratio = 0.40;  // H is chosen when inliers_H / (inliers_H + inliers_E) > this.
   double min_point_parallax_deg = 0.5;  // A triangulated point needs this ray angle [deg].
-  double max_reprojection_px = 2.0;   // ... and this reprojection error in both views [px].
-  int min_points = 60;                // Triangulated points needed to accept [points].
-  double baseline = 0.1;              // Length of the first baseline in map units (PTAM).
-  int max_frames = 60;                // Frames to try against one first frame before restarting.
+  double max_reprojection_px = 2.0;     // ... and this reprojection error in both views [px].
+  int min_points = 60;                  // Triangulated points needed to accept [points].
+  double baseline = 0.1;                // Length of the first baseline in map units (PTAM).
+  int max_frames = 60;                  // Frames to try against one first frame before restarting.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoInitOptions> Describe();
@@ -40,18 +40,18 @@ struct MonoInitOptions {
 
 // Tracking. Keys "mono.tracking.*".
 struct MonoTrackingOptions {
-  double search_radius_px = 20;       // Window around predicted positions [px] ...
-  double wide_radius_px = 60;         // ... widened to this when too few are found [px].
-  double fine_radius_px = 5;          // Window of the second pass after the first pose [px].
-  int max_descriptor_distance = 80;   // Hamming distance of an ORB match [bits].
-  double match_ratio = 0.9;           // Best / second-best distance in a window.
-  double huber_px = 2.5;              // M-estimator (Huber) threshold of pose refinement [px].
-  double outlier_px = 4.0;            // Residual that makes a match an outlier [px].
-  int good_inliers = 60;              // Quality good from this many inliers.
-  int min_inliers = 20;               // Quality poor from this many; fewer = lost.
-  double min_found_fraction = 0.1;    // Lost when fewer of the predicted points are found.
-  int reloc_min_matches = 15;         // Descriptor matches with a keyframe to try PnP.
-  int reloc_min_inliers = 30;         // Inliers to accept a relocalisation.
+  double search_radius_px = 20;      // Window around predicted positions [px] ...
+  double wide_radius_px = 60;        // ... widened to this when too few are found [px].
+  double fine_radius_px = 5;         // Window of the second pass after the first pose [px].
+  int max_descriptor_distance = 80;  // Hamming distance of an ORB match [bits].
+  double match_ratio = 0.9;          // Best / second-best distance in a window.
+  double huber_px = 2.5;             // M-estimator (Huber) threshold of pose refinement [px].
+  double outlier_px = 4.0;           // Residual that makes a match an outlier [px].
+  int good_inliers = 60;             // Quality good from this many inliers.
+  int min_inliers = 20;              // Quality poor from this many; fewer = lost.
+  double min_found_fraction = 0.1;   // Lost when fewer of the predicted points are found.
+  int reloc_min_matches = 15;        // Descriptor matches with a keyframe to try PnP.
+  int reloc_min_inliers = 30;        // Inliers to accept a relocalisation.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoTrackingOptions> Describe();
@@ -59,21 +59,23 @@ struct MonoTrackingOptions {
 
 // Keyframes and mapping. Keys "mono.mapping.*".
 struct MonoMappingOptions {
-  int min_keyframe_gap = 3;            // Frames between keyframes at least.
-  double keyframe_distance = 0.04;     // New keyframe when this far (x mean depth) from all ...
-  double keyframe_match_ratio = 0.7;   // ... or when tracking fewer than this x the last KF's points.
-  int neighbours = 3;                  // Keyframes to triangulate new points with.
-  double epipolar_px = 2.0;            // Epipolar distance of a new-point match [px].
-  int max_descriptor_distance = 60;    // Hamming distance of a new-point match [bits].
-  double min_parallax_deg = 1.0;       // A new point needs this ray angle [deg].
-  double max_reprojection_px = 2.5;    // ... and this reprojection error [px].
-  int local_window = 6;                // Keyframes optimised by local bundle adjustment.
-  int ba_iterations = 15;              // Ceres iterations per local bundle adjustment.
-  double ba_huber_px = 2.5;            // Huber loss of bundle adjustment [px].
-  double min_found_ratio = 0.25;       // Points found in fewer of the frames that should see them are culled.
-  bool threaded = false;               // Mapping on its own thread (GUI) or inline (tests, CLI).
-  int thread_nice = 0;                 // Threaded mode: the mapping thread's niceness (Linux).
-  int final_ba_iterations = 30;        // Global bundle adjustment when the run stops (0 = none).
+  int min_keyframe_gap = 3;         // Frames between keyframes at least.
+  double keyframe_distance = 0.04;  // New keyframe when this far (x mean depth) from all ...
+  double keyframe_match_ratio =
+      0.7;                           // ... or when tracking fewer than this x the last KF's points.
+  int neighbours = 3;                // Keyframes to triangulate new points with.
+  double epipolar_px = 2.0;          // Epipolar distance of a new-point match [px].
+  int max_descriptor_distance = 60;  // Hamming distance of a new-point match [bits].
+  double min_parallax_deg = 1.0;     // A new point needs this ray angle [deg].
+  double max_reprojection_px = 2.5;  // ... and this reprojection error [px].
+  int local_window = 6;              // Keyframes optimised by local bundle adjustment.
+  int ba_iterations = 15;            // Ceres iterations per local bundle adjustment.
+  double ba_huber_px = 2.5;          // Huber loss of bundle adjustment [px].
+  double min_found_ratio =
+      0.25;               // Points found in fewer of the frames that should see them are culled.
+  bool threaded = false;  // Mapping on its own thread (GUI) or inline (tests, CLI).
+  int thread_nice = 0;    // Threaded mode: the mapping thread's niceness (Linux).
+  int final_ba_iterations = 30;  // Global bundle adjustment when the run stops (0 = none).
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoMappingOptions> Describe();

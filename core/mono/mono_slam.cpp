@@ -59,7 +59,8 @@ void MonoSlam::StopThread() {
 
 void MonoSlam::Stop() {
   StopThread();
-  if (!configured_ || !initialised_ || final_bundle_done_ || options_.mapping.final_ba_iterations <= 0) {
+  if (!configured_ || !initialised_ || final_bundle_done_ ||
+      options_.mapping.final_ba_iterations <= 0) {
     return;
   }
   final_bundle_done_ = true;
@@ -111,8 +112,9 @@ void MonoSlam::Reset() {
     local_points_ = std::make_shared<std::vector<LocalPoint>>();
     keyframe_history_.clear();
   }
-  if (initializer_) initializer_ = std::make_unique<TwoViewInitializer>(
-      options_.init, camera_, options_.features.scale_factor);
+  if (initializer_)
+    initializer_ = std::make_unique<TwoViewInitializer>(options_.init, camera_,
+                                                        options_.features.scale_factor);
   initialised_ = false;
   final_bundle_done_ = false;
   pending_visible_.clear();
@@ -236,7 +238,8 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
   keyframe_inliers_ = static_cast<int>(result->points.size());
   PublishSnapshot();
   char text[160];
-  std::snprintf(text, sizeof(text), "initialised (%s, %zu points, median parallax %.1f deg, baseline %.3f of depth, "
+  std::snprintf(text, sizeof(text),
+                "initialised (%s, %zu points, median parallax %.1f deg, baseline %.3f of depth, "
                 "inliers H %d E %d)",
                 result->model.c_str(), result->points.size(), result->median_parallax_deg,
                 result->baseline_ratio, result->homography_inliers, result->essential_inliers);
@@ -300,11 +303,12 @@ void MonoSlam::HandOver(std::shared_ptr<KeyFrame> keyframe) {
 
 StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFrame& frame) {
   if (!configured_) return FailedPrecondition("MonoSlam::Process before Configure");
-  if (!frame.image.empty() && (frame.image.cols != camera_.width || frame.image.rows != camera_.height)) {
+  if (!frame.image.empty() &&
+      (frame.image.cols != camera_.width || frame.image.rows != camera_.height)) {
     return InvalidArgument("frame " + std::to_string(frame.stamp.sequence_id) + " is " +
-                           std::to_string(frame.image.cols) + "x" + std::to_string(frame.image.rows) +
-                           ", the camera " + std::to_string(camera_.width) + "x" +
-                           std::to_string(camera_.height));
+                           std::to_string(frame.image.cols) + "x" +
+                           std::to_string(frame.image.rows) + ", the camera " +
+                           std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
   }
   const double start = HostTimeS();
   const double start_cpu = ThreadCpuMs();
@@ -351,12 +355,14 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
       camera_from_map_ = outcome.camera_from_map;
       result->tracked = true;
       stats.status = stats.relocalised ? "relocalised" : TrackingQualityName(quality);
-      pending_visible_.insert(pending_visible_.end(), outcome.predicted.begin(), outcome.predicted.end());
+      pending_visible_.insert(pending_visible_.end(), outcome.predicted.begin(),
+                              outcome.predicted.end());
       for (const PointMatch& m : outcome.matches) {
         if (m.inlier) pending_found_.push_back(m.point);
       }
       FlushPointCounts(false);
-      for (const PointMatch& m : outcome.matches) result->keypoint_state[m.keypoint] = m.inlier ? 1 : 2;
+      for (const PointMatch& m : outcome.matches)
+        result->keypoint_state[m.keypoint] = m.inlier ? 1 : 2;
       ++frames_since_keyframe_;
       if (NeedKeyFrame(outcome)) {
         new_keyframe = std::make_shared<KeyFrame>();

@@ -35,17 +35,17 @@ namespace sightline {
 
 // Statistics of one frame.
 struct MonoFrameStats {
-  int keypoints = 0;        // ORB keypoints extracted.
-  int predicted = 0;        // Map points predicted inside the image (fine pass).
-  int matches = 0;          // Map points matched (fine pass).
-  int inliers = 0;          // After robust pose optimisation.
-  double rms_px = 0;        // Inlier reprojection RMS (level-scaled) [px].
-  int map_points = 0;       // In the map after this frame.
-  int keyframes = 0;        // In the map after this frame.
+  int keypoints = 0;   // ORB keypoints extracted.
+  int predicted = 0;   // Map points predicted inside the image (fine pass).
+  int matches = 0;     // Map points matched (fine pass).
+  int inliers = 0;     // After robust pose optimisation.
+  double rms_px = 0;   // Inlier reprojection RMS (level-scaled) [px].
+  int map_points = 0;  // In the map after this frame.
+  int keyframes = 0;   // In the map after this frame.
   bool new_keyframe = false;
   bool relocalised = false;
-  std::string status;       // What happened, for people ("initialised (homography, 212 points)").
-  double tracking_ms = 0;   // Features + tracking (+ relocalisation) of this frame.
+  std::string status;      // What happened, for people ("initialised (homography, 212 points)").
+  double tracking_ms = 0;  // Features + tracking (+ relocalisation) of this frame.
 };
 
 // The result of one frame, shared immutable with views.
@@ -55,8 +55,8 @@ struct MonoSlamResult {
   bool tracked = false;  // The pose below is valid for this frame.
   Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();  // Map units.
   MonoFrameStats stats;
-  std::vector<cv::Point2f> keypoints;    // Every keypoint (image pixels).
-  std::vector<uint8_t> keypoint_state;   // 0 unmatched, 1 inlier, 2 outlier.
+  std::vector<cv::Point2f> keypoints;      // Every keypoint (image pixels).
+  std::vector<uint8_t> keypoint_state;     // 0 unmatched, 1 inlier, 2 outlier.
   std::shared_ptr<const MapSnapshot> map;  // The latest map (shared until it changes).
   cv::Mat image;                           // The frame as given.
 };
@@ -148,7 +148,8 @@ class MonoSlam {
   // Tracking state (tracking thread only).
   bool initialised_ = false;
   bool final_bundle_done_ = false;
-  std::vector<int64_t> pending_visible_, pending_found_;  // Point ids to count (see FlushPointCounts).
+  std::vector<int64_t> pending_visible_,
+      pending_found_;  // Point ids to count (see FlushPointCounts).
   std::string init_model_;
   FrameStamp first_stamp_;
   Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();

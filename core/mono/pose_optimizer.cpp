@@ -7,7 +7,8 @@ namespace sightline {
 namespace {
 
 // Applies the left increment exp([v, w]) to a pose.
-Eigen::Isometry3d Increment(const Eigen::Matrix<double, 6, 1>& delta, const Eigen::Isometry3d& pose) {
+Eigen::Isometry3d Increment(const Eigen::Matrix<double, 6, 1>& delta,
+                            const Eigen::Isometry3d& pose) {
   Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
   const double angle = delta.tail<3>().norm();
   if (angle > 1e-12) {
@@ -26,7 +27,8 @@ bool Residual(const PinholeCamera& camera, const Eigen::Isometry3d& pose, const 
   const Eigen::Vector3d p = pose * o.x_in_map;
   if (p.z() <= 1e-9) return false;
   const double iz = 1.0 / p.z();
-  const Eigen::Vector2d proj(camera.fx * p.x() * iz + camera.cx, camera.fy * p.y() * iz + camera.cy);
+  const Eigen::Vector2d proj(camera.fx * p.x() * iz + camera.cx,
+                             camera.fy * p.y() * iz + camera.cy);
   *r = (proj - o.pixel) / o.level_scale;
   if (jacobian) {
     Eigen::Matrix<double, 2, 3> dproj;
@@ -79,7 +81,8 @@ PoseEstimate OptimizePose(const PinholeCamera& camera, const Eigen::Isometry3d& 
     // Re-classify: the last round's classification is the result.
     for (size_t i = 0; i < observations.size(); ++i) {
       Eigen::Vector2d r;
-      out.inliers[i] = Residual(camera, pose, observations[i], &r, nullptr) && r.norm() <= outlier_px;
+      out.inliers[i] =
+          Residual(camera, pose, observations[i], &r, nullptr) && r.norm() <= outlier_px;
     }
   }
   double sum = 0;

@@ -21,7 +21,7 @@ struct PoseEstimate {
   Eigen::Isometry3d camera_from_map = Eigen::Isometry3d::Identity();
   std::vector<bool> inliers;  // Per observation.
   int inlier_count = 0;
-  double rms_px = 0;          // Over the inliers.
+  double rms_px = 0;  // Over the inliers.
 };
 
 // Refines `initial` over `observations`. Residuals are divided by each level_scale; weights

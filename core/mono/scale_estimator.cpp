@@ -59,7 +59,9 @@ StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double 
   double xx = 0, yy = 0, xy = 0;
   for (const ScalePair& p : pairs) {
     const double length = p.metric_displacement.norm();
-    const double w = length_exponent == 0 ? 1.0 : length > 0 ? std::pow(length, -length_exponent) : 0.0;
+    const double w = length_exponent == 0 ? 1.0
+                     : length > 0         ? std::pow(length, -length_exponent)
+                                          : 0.0;
     xx += w * p.map_displacement.squaredNorm();
     yy += w * p.metric_displacement.squaredNorm();
     xy += w * p.map_displacement.dot(p.metric_displacement);
@@ -72,8 +74,9 @@ StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double 
     return InvalidArgument("maximum-likelihood scale: a displacement is not finite");
   }
   if (s_xy <= 0) {
-    return InvalidArgument("maximum-likelihood scale: s_xy <= 0 (map and measured displacements "
-                           "do not point the same way; check the hand-eye transform)");
+    return InvalidArgument(
+        "maximum-likelihood scale: s_xy <= 0 (map and measured displacements "
+        "do not point the same way; check the hand-eye transform)");
   }
   const double d = s_xx - s_yy;
   // s_xy > 0 here, so sign(s_xy) = +1.

@@ -8,7 +8,8 @@
 // - Maximum likelihood (Engel, Sturm and Cremers 2014; seed eq. 4.6 in its correct form), with
 //   x_i ~ N(lambda mu_i, sigma_x^2 I) and y_i ~ N(mu_i, sigma_y^2 I):
 //     s_xx = sigma_y^2 sum x.x,  s_yy = sigma_x^2 sum y.y,  s_xy = sigma_y sigma_x sum x.y
-//     lambda = (s_xx - s_yy + sign(s_xy) sqrt((s_xx - s_yy)^2 + 4 s_xy^2)) / (2 sigma_y s_xy / sigma_x)
+//     lambda = (s_xx - s_yy + sign(s_xy) sqrt((s_xx - s_yy)^2 + 4 s_xy^2)) / (2 sigma_y s_xy /
+//     sigma_x)
 //   Pair i may carry a weight w_i in all three sums (its sigmas scaled by 1 / sqrt(w_i)). With
 //   length_exponent e, w_i = |y_i|^-e: e = 1 models a map whose displacement error grows like a
 //   random walk with the distance travelled (the drift of monocular SLAM), so one long pair no
@@ -32,12 +33,12 @@ struct ScalePair {
 
 // Options of the scale estimators. Keys "mono.scale.*".
 struct ScaleEstimatorOptions {
-  double sigma_map = 0.002;          // sigma_x: noise of a map displacement [map units].
-  double sigma_metric_m = 0.001;     // sigma_y: noise of a measured displacement [m].
-  double min_metric_length_m = 0.01; // Shorter measured displacements are dropped [m].
-  double outlier_factor = 5.0;       // Pairs whose own ratio is outside [l/f, l*f] are dropped.
-  int min_pairs = 3;                 // The ML estimate is reported from this many pairs on.
-  double length_exponent = 1.0;      // Pair weight |y|^-e (variance grows with the interval).
+  double sigma_map = 0.002;           // sigma_x: noise of a map displacement [map units].
+  double sigma_metric_m = 0.001;      // sigma_y: noise of a measured displacement [m].
+  double min_metric_length_m = 0.01;  // Shorter measured displacements are dropped [m].
+  double outlier_factor = 5.0;        // Pairs whose own ratio is outside [l/f, l*f] are dropped.
+  int min_pairs = 3;                  // The ML estimate is reported from this many pairs on.
+  double length_exponent = 1.0;       // Pair weight |y|^-e (variance grows with the interval).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ScaleEstimatorOptions> Describe();
@@ -55,11 +56,11 @@ StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double 
 
 // The state after one added pair (a row of scale.csv).
 struct ScaleSample {
-  int index = 0;                // Pairs offered so far (1-based).
-  double pair_ratio = 0;        // |x| / |y| of this pair alone (0 when dropped as too short).
-  double single_ratio = 0;      // The single-ratio estimate (first accepted pair), 0 = none yet.
-  double max_likelihood = 0;    // ML estimate over the accepted pairs, 0 = none yet.
-  int pairs_used = 0;           // Pairs inside the ML estimate after outlier rejection.
+  int index = 0;              // Pairs offered so far (1-based).
+  double pair_ratio = 0;      // |x| / |y| of this pair alone (0 when dropped as too short).
+  double single_ratio = 0;    // The single-ratio estimate (first accepted pair), 0 = none yet.
+  double max_likelihood = 0;  // ML estimate over the accepted pairs, 0 = none yet.
+  int pairs_used = 0;         // Pairs inside the ML estimate after outlier rejection.
 };
 
 // Accumulates pairs and keeps both estimates and their history.

@@ -105,14 +105,14 @@ std::shared_ptr<const MapSnapshot> SnapshotOf(const SlamMap& map) {
   auto snapshot = std::make_shared<MapSnapshot>();
   snapshot->points.reserve(map.points().size());
   for (const auto& [id, p] : map.points()) {
-    snapshot->points.push_back({id, p.position, p.first_keyframe,
-                                static_cast<int>(p.observations.size())});
+    snapshot->points.push_back(
+        {id, p.position, p.first_keyframe, static_cast<int>(p.observations.size())});
   }
   std::sort(snapshot->points.begin(), snapshot->points.end(),
             [](const MapSnapshot::Point& a, const MapSnapshot::Point& b) { return a.id < b.id; });
   for (const auto& k : map.keyframes()) {
-    const int seen = static_cast<int>(
-        std::count_if(k->point_ids.begin(), k->point_ids.end(), [](int64_t id) { return id >= 0; }));
+    const int seen = static_cast<int>(std::count_if(k->point_ids.begin(), k->point_ids.end(),
+                                                    [](int64_t id) { return id >= 0; }));
     snapshot->keyframes.push_back(
         {k->id, k->frame_index, k->time_s, k->camera_from_map.inverse(), seen});
   }

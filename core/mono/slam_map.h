@@ -20,7 +20,7 @@ struct FrameFeatures {
   int width = 0, height = 0;
   int cell_px = 32;
   int grid_columns = 0, grid_rows = 0;
-  std::vector<std::vector<int>> grid;   // Keypoint indices per cell, row-major.
+  std::vector<std::vector<int>> grid;  // Keypoint indices per cell, row-major.
 
   size_t size() const { return keypoints.size(); }
   // Keypoints within `radius` px of (u, v).
@@ -36,8 +36,8 @@ struct MapPoint {
   cv::Mat descriptor;                                  // 1x32 CV_8U, from the creating view.
   int64_t first_keyframe = -1;                         // Keyframe that created it.
   std::map<int64_t, int> observations;                 // Keyframe id -> keypoint index.
-  int visible = 0;  // Frames in whose image it was predicted ...
-  int found = 0;    // ... and those in which tracking found it.
+  int visible = 0;                                     // Frames in whose image it was predicted ...
+  int found = 0;                                       // ... and those in which tracking found it.
 };
 
 // One keyframe: its pose, its features and which keypoints observe which map points.
@@ -55,7 +55,7 @@ struct KeyFrame {
 // Points and keyframes by id.
 class SlamMap {
  public:
-  int64_t AddPoint(MapPoint point);  // Assigns the id.
+  int64_t AddPoint(MapPoint point);                         // Assigns the id.
   int64_t AddKeyFrame(std::shared_ptr<KeyFrame> keyframe);  // Assigns the id.
   // Records that keypoint `index` of `keyframe` sees `point` (both must exist).
   void AddObservation(int64_t point, int64_t keyframe, int index);

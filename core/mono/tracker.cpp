@@ -13,15 +13,20 @@ namespace sightline {
 
 const char* TrackingQualityName(TrackingQuality quality) {
   switch (quality) {
-    case TrackingQuality::kInitialising: return "initialising";
-    case TrackingQuality::kGood: return "good";
-    case TrackingQuality::kPoor: return "poor";
-    case TrackingQuality::kLost: return "lost";
+    case TrackingQuality::kInitialising:
+      return "initialising";
+    case TrackingQuality::kGood:
+      return "good";
+    case TrackingQuality::kPoor:
+      return "poor";
+    case TrackingQuality::kLost:
+      return "lost";
   }
   return "?";
 }
 
-Tracker::Tracker(const MonoTrackingOptions& options, const PinholeCamera& camera, double scale_factor)
+Tracker::Tracker(const MonoTrackingOptions& options, const PinholeCamera& camera,
+                 double scale_factor)
     : options_(options), camera_(camera), scale_factor_(scale_factor) {}
 
 TrackingQuality Tracker::QualityOf(const TrackOutcome& outcome) const {
@@ -85,8 +90,8 @@ double Tracker::Optimise(const FrameFeatures& features, const std::vector<LocalP
     observations.push_back({points[m.point].position, features.pixels[m.keypoint],
                             std::pow(scale_factor_, features.keypoints[m.keypoint].octave)});
   }
-  const PoseEstimate estimate = OptimizePose(camera_, *camera_from_map, observations,
-                                             options_.huber_px, options_.outlier_px);
+  const PoseEstimate estimate =
+      OptimizePose(camera_, *camera_from_map, observations, options_.huber_px, options_.outlier_px);
   *inliers = estimate.inlier_count;
   if (estimate.inlier_count >= 6) *camera_from_map = estimate.camera_from_map;
   for (size_t i = 0; i < matches->size(); ++i) (*matches)[i].inlier = estimate.inliers[i];
@@ -102,7 +107,8 @@ TrackOutcome Tracker::Track(const FrameFeatures& features, const std::vector<Loc
   std::vector<PointMatch> matches =
       SearchByProjection(features, points, out.camera_from_map, options_.search_radius_px, nullptr);
   if (static_cast<int>(matches.size()) < 2 * options_.min_inliers) {
-    matches = SearchByProjection(features, points, out.camera_from_map, options_.wide_radius_px, nullptr);
+    matches =
+        SearchByProjection(features, points, out.camera_from_map, options_.wide_radius_px, nullptr);
   }
   int inliers = 0;
   Optimise(features, points, &matches, &out.camera_from_map, &inliers);
@@ -133,8 +139,8 @@ bool Tracker::Relocalise(const FrameFeatures& features, const KeyFrame& keyframe
   for (size_t i = 0; i < keyframe_points.size(); ++i) {
     keyframe_points[i].descriptor.copyTo(descriptors.row(static_cast<int>(i)));
   }
-  const auto matches = MatchDescriptors(descriptors, features.descriptors,
-                                        options_.max_descriptor_distance, 0.8);
+  const auto matches =
+      MatchDescriptors(descriptors, features.descriptors, options_.max_descriptor_distance, 0.8);
   if (static_cast<int>(matches.size()) < options_.reloc_min_matches) return false;
   std::vector<cv::Point3f> object;
   std::vector<cv::Point2f> image;
@@ -143,12 +149,14 @@ bool Tracker::Relocalise(const FrameFeatures& features, const KeyFrame& keyframe
     object.emplace_back(x.x(), x.y(), x.z());
     image.emplace_back(features.pixels[k].x(), features.pixels[k].y());
   }
-  const cv::Mat K = (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
+  const cv::Mat K =
+      (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
   cv::Mat rvec, tvec;
   std::vector<int> inliers;
   cv::theRNG().state = 0x7e1;
   if (!cv::solvePnPRansac(object, image, K, cv::noArray(), rvec, tvec, false, 200,
-                          static_cast<float>(options_.outlier_px), 0.99, inliers, cv::SOLVEPNP_EPNP) ||
+                          static_cast<float>(options_.outlier_px), 0.99, inliers,
+                          cv::SOLVEPNP_EPNP) ||
       static_cast<int>(inliers.size()) < options_.reloc_min_matches) {
     return false;
   }

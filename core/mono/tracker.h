@@ -38,7 +38,7 @@ struct TrackOutcome {
   std::vector<int64_t> predicted;   // Points predicted inside the image (PTAM's "visible").
   int inliers = 0;
   double rms_px = 0;
-  double mean_depth = 0;            // Of the inliers, in map units.
+  double mean_depth = 0;  // Of the inliers, in map units.
 };
 
 // The tracker's computations; stateless apart from options and the camera.

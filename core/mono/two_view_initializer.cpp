@@ -62,9 +62,9 @@ struct Candidate {
 };
 
 Candidate Evaluate(const PinholeCamera& camera, const cv::Mat& R, const cv::Mat& t,
-                   const std::vector<std::pair<int, int>>& matches, const std::vector<uchar>& inlier,
-                   const FrameFeatures& a, const FrameFeatures& b, double scale_factor,
-                   const MonoInitOptions& options) {
+                   const std::vector<std::pair<int, int>>& matches,
+                   const std::vector<uchar>& inlier, const FrameFeatures& a, const FrameFeatures& b,
+                   double scale_factor, const MonoInitOptions& options) {
   Candidate c;
   Eigen::Matrix3d r;
   Eigen::Vector3d tv;
@@ -123,12 +123,15 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
     return fail("too little parallax yet (median " + std::to_string(angles[angles.size() / 2]) +
                 " deg); move the camera sideways");
   }
-  const cv::Mat K = (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
+  const cv::Mat K =
+      (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
   std::vector<uchar> mask_e, mask_h;
   cv::RNG& rng = cv::theRNG();
   rng.state = 0x5151;  // Deterministic RANSAC.
-  const cv::Mat E = cv::findEssentialMat(pa, pb, K, cv::RANSAC, 0.999, options_.ransac_threshold_px, mask_e);
-  const cv::Mat H = cv::findHomography(pa, pb, cv::RANSAC, options_.ransac_threshold_px, mask_h, 2000, 0.999);
+  const cv::Mat E =
+      cv::findEssentialMat(pa, pb, K, cv::RANSAC, 0.999, options_.ransac_threshold_px, mask_e);
+  const cv::Mat H =
+      cv::findHomography(pa, pb, cv::RANSAC, options_.ransac_threshold_px, mask_h, 2000, 0.999);
   const int ne = E.rows == 3 && E.cols == 3 ? cv::countNonZero(mask_e) : 0;
   const int nh = H.empty() ? 0 : cv::countNonZero(mask_h);
   if (ne + nh == 0) return fail("neither an essential matrix nor a homography fits");
@@ -140,8 +143,8 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
     cv::decomposeHomographyMat(H, K, Rs, ts, normals);
     for (size_t s = 0; s < Rs.size(); ++s) {
       if (cv::norm(ts[s]) < 1e-9) continue;  // Pure rotation: no baseline.
-      candidates.push_back(
-          Evaluate(camera_, Rs[s], ts[s], matches, mask_h, first_, current, scale_factor_, options_));
+      candidates.push_back(Evaluate(camera_, Rs[s], ts[s], matches, mask_h, first_, current,
+                                    scale_factor_, options_));
     }
   } else {
     cv::Mat R1, R2, t;
@@ -153,14 +156,16 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
       }
     }
   }
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& a, const Candidate& b) { return a.accepted.size() > b.accepted.size(); });
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.accepted.size() > b.accepted.size();
+  });
   if (candidates.empty() || static_cast<int>(candidates[0].accepted.size()) < options_.min_points) {
     return fail(std::string(use_h ? "homography" : "essential matrix") + ": " +
                 std::to_string(candidates.empty() ? 0 : candidates[0].accepted.size()) +
                 " points triangulate well (need " + std::to_string(options_.min_points) + ")");
   }
-  if (candidates.size() > 1 && candidates[1].accepted.size() > 0.75 * candidates[0].accepted.size()) {
+  if (candidates.size() > 1 &&
+      candidates[1].accepted.size() > 0.75 * candidates[0].accepted.size()) {
     return fail("two motions explain the matches equally well; keep moving");
   }
   const Candidate& best = candidates[0];

@@ -24,8 +24,8 @@ struct TwoViewResult {
   std::vector<Eigen::Vector3d> points;       // x_in_first, one per match [map units].
   std::string model;                         // "homography" or "essential".
   int homography_inliers = 0, essential_inliers = 0;
-  double median_parallax_deg = 0;            // Of the accepted points.
-  double baseline_ratio = 0;                 // Baseline / median depth of the accepted points.
+  double median_parallax_deg = 0;  // Of the accepted points.
+  double baseline_ratio = 0;       // Baseline / median depth of the accepted points.
 };
 
 // Holds the first frame and tries each later one against it.
@@ -36,7 +36,8 @@ struct TwoViewResult {
 //   if (auto r = init.TryInitialize(next_features, &why)) { ... }
 class TwoViewInitializer {
  public:
-  TwoViewInitializer(const MonoInitOptions& options, const PinholeCamera& camera, double scale_factor);
+  TwoViewInitializer(const MonoInitOptions& options, const PinholeCamera& camera,
+                     double scale_factor);
 
   void SetFirst(FrameFeatures first);
   bool has_first() const { return has_first_; }

@@ -66,8 +66,7 @@ Status OptionSet::ApplyOverride(const std::string& assignment) {
   if (eq == std::string::npos || eq == 0) {
     return InvalidArgument("--set '" + assignment + "': expected key=value");
   }
-  return SetFromString(assignment.substr(0, eq), assignment.substr(eq + 1),
-                       "--set " + assignment);
+  return SetFromString(assignment.substr(0, eq), assignment.substr(eq + 1), "--set " + assignment);
 }
 
 void OptionSet::ResetToDefaults() {

@@ -72,7 +72,8 @@ class OptionSet {
   // Copies the fields of a typed Options struct into the set (keys must be declared).
   template <typename T>
   Status Store(const OptionTable<T>& table, const T& options) {
-    for (const auto& [key, value] : table.Values(options)) SIGHTLINE_RETURN_IF_ERROR(Set(key, value));
+    for (const auto& [key, value] : table.Values(options))
+      SIGHTLINE_RETURN_IF_ERROR(Set(key, value));
     return Status::Ok();
   }
 

@@ -10,11 +10,16 @@ namespace sightline {
 
 const char* OptionTypeName(OptionType type) {
   switch (type) {
-    case OptionType::kBool: return "bool";
-    case OptionType::kInt: return "int";
-    case OptionType::kDouble: return "double";
-    case OptionType::kString: return "string";
-    case OptionType::kChoice: return "choice";
+    case OptionType::kBool:
+      return "bool";
+    case OptionType::kInt:
+      return "int";
+    case OptionType::kDouble:
+      return "double";
+    case OptionType::kString:
+      return "string";
+    case OptionType::kChoice:
+      return "choice";
   }
   return "unknown";
 }
@@ -44,7 +49,8 @@ StatusOr<OptionValue> ParseOptionValue(const OptionSpec& spec, const std::string
   switch (spec.type) {
     case OptionType::kBool: {
       std::string t = text;
-      std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
+      std::transform(t.begin(), t.end(), t.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
       if (t == "true" || t == "1" || t == "yes" || t == "on") return OptionValue(true);
       if (t == "false" || t == "0" || t == "no" || t == "off") return OptionValue(false);
       return InvalidArgument(where + ": '" + text + "' is not a boolean (true/false)");
@@ -77,30 +83,37 @@ Status CheckOptionValue(const OptionSpec& spec, const OptionValue& value) {
   const std::string where = "option '" + spec.key + "'";
   switch (spec.type) {
     case OptionType::kBool:
-      if (!std::holds_alternative<bool>(value)) return InvalidArgument(where + " expects true or false");
+      if (!std::holds_alternative<bool>(value))
+        return InvalidArgument(where + " expects true or false");
       return Status::Ok();
     case OptionType::kInt: {
-      if (!std::holds_alternative<int64_t>(value)) return InvalidArgument(where + " expects an integer");
+      if (!std::holds_alternative<int64_t>(value))
+        return InvalidArgument(where + " expects an integer");
       const double v = static_cast<double>(std::get<int64_t>(value));
       if (v < spec.min || v > spec.max) {
-        return InvalidArgument(where + ": " + FormatOptionValue(value) + " is outside " + Range(spec));
+        return InvalidArgument(where + ": " + FormatOptionValue(value) + " is outside " +
+                               Range(spec));
       }
       return Status::Ok();
     }
     case OptionType::kDouble: {
-      if (!std::holds_alternative<double>(value)) return InvalidArgument(where + " expects a number");
+      if (!std::holds_alternative<double>(value))
+        return InvalidArgument(where + " expects a number");
       const double v = std::get<double>(value);
       if (!std::isfinite(v)) return InvalidArgument(where + ": value is not finite");
       if (v < spec.min || v > spec.max) {
-        return InvalidArgument(where + ": " + FormatOptionValue(value) + " is outside " + Range(spec));
+        return InvalidArgument(where + ": " + FormatOptionValue(value) + " is outside " +
+                               Range(spec));
       }
       return Status::Ok();
     }
     case OptionType::kString:
-      if (!std::holds_alternative<std::string>(value)) return InvalidArgument(where + " expects text");
+      if (!std::holds_alternative<std::string>(value))
+        return InvalidArgument(where + " expects text");
       return Status::Ok();
     case OptionType::kChoice: {
-      if (!std::holds_alternative<std::string>(value)) return InvalidArgument(where + " expects a choice");
+      if (!std::holds_alternative<std::string>(value))
+        return InvalidArgument(where + " expects a choice");
       const std::string& v = std::get<std::string>(value);
       if (std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
         std::string list;

@@ -19,14 +19,14 @@ using OptionValue = std::variant<bool, int64_t, double, std::string>;
 // One row of a Describe() table. The GUI turns it into a spin box, check box or combo box;
 // the CLI into a `--set key=value` key; YAML profiles into a nested key.
 struct OptionSpec {
-  std::string key;          // Dotted, e.g. "mapping.ransac.max_iterations".
+  std::string key;  // Dotted, e.g. "mapping.ransac.max_iterations".
   OptionType type = OptionType::kDouble;
-  std::string unit;         // "m", "deg", "px", "ms", "" for counts and ratios.
-  double min = 0;           // Inclusive lower bound (kInt, kDouble).
-  double max = 0;           // Inclusive upper bound (kInt, kDouble).
-  double step = 1;          // Spin-box step (kInt, kDouble).
+  std::string unit;                  // "m", "deg", "px", "ms", "" for counts and ratios.
+  double min = 0;                    // Inclusive lower bound (kInt, kDouble).
+  double max = 0;                    // Inclusive upper bound (kInt, kDouble).
+  double step = 1;                   // Spin-box step (kInt, kDouble).
   std::vector<std::string> choices;  // Allowed values (kChoice).
-  std::string description;  // One sentence: what it does, and why one would change it.
+  std::string description;           // One sentence: what it does, and why one would change it.
   OptionValue default_value;
 };
 

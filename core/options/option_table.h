@@ -33,36 +33,41 @@ class OptionTable {
 
   explicit OptionTable(std::string prefix) : prefix_(std::move(prefix)) {}
 
-  OptionTable& Double(const std::string& key, double T::*field, const std::string& unit,
-                      double min, double max, double step, const std::string& description) {
-    return Add(key, OptionType::kDouble, unit, min, max, step, {}, description,
-               [field](const T& o) { return OptionValue(o.*field); },
-               [field](T* o, const OptionValue& v) { o->*field = std::get<double>(v); });
+  OptionTable& Double(const std::string& key, double T::*field, const std::string& unit, double min,
+                      double max, double step, const std::string& description) {
+    return Add(
+        key, OptionType::kDouble, unit, min, max, step, {}, description,
+        [field](const T& o) { return OptionValue(o.*field); },
+        [field](T* o, const OptionValue& v) { o->*field = std::get<double>(v); });
   }
   OptionTable& Int(const std::string& key, int T::*field, const std::string& unit, double min,
                    double max, double step, const std::string& description) {
-    return Add(key, OptionType::kInt, unit, min, max, step, {}, description,
-               [field](const T& o) { return OptionValue(static_cast<int64_t>(o.*field)); },
-               [field](T* o, const OptionValue& v) {
-                 o->*field = static_cast<int>(std::get<int64_t>(v));
-               });
+    return Add(
+        key, OptionType::kInt, unit, min, max, step, {}, description,
+        [field](const T& o) { return OptionValue(static_cast<int64_t>(o.*field)); },
+        [field](T* o, const OptionValue& v) {
+          o->*field = static_cast<int>(std::get<int64_t>(v));
+        });
   }
   OptionTable& Bool(const std::string& key, bool T::*field, const std::string& description) {
-    return Add(key, OptionType::kBool, "", 0, 1, 1, {}, description,
-               [field](const T& o) { return OptionValue(o.*field); },
-               [field](T* o, const OptionValue& v) { o->*field = std::get<bool>(v); });
+    return Add(
+        key, OptionType::kBool, "", 0, 1, 1, {}, description,
+        [field](const T& o) { return OptionValue(o.*field); },
+        [field](T* o, const OptionValue& v) { o->*field = std::get<bool>(v); });
   }
   OptionTable& String(const std::string& key, std::string T::*field,
                       const std::string& description) {
-    return Add(key, OptionType::kString, "", 0, 0, 1, {}, description,
-               [field](const T& o) { return OptionValue(o.*field); },
-               [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
+    return Add(
+        key, OptionType::kString, "", 0, 0, 1, {}, description,
+        [field](const T& o) { return OptionValue(o.*field); },
+        [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
   }
   OptionTable& Choice(const std::string& key, std::string T::*field,
                       std::vector<std::string> choices, const std::string& description) {
-    return Add(key, OptionType::kChoice, "", 0, 0, 1, std::move(choices), description,
-               [field](const T& o) { return OptionValue(o.*field); },
-               [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
+    return Add(
+        key, OptionType::kChoice, "", 0, 0, 1, std::move(choices), description,
+        [field](const T& o) { return OptionValue(o.*field); },
+        [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
   }
   // Includes the table of a member struct, e.g. the RANSAC options inside mapping's options.
   template <typename U>

@@ -18,18 +18,20 @@ StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path) {
   for (const DataLine& line : *lines) {
     const std::vector<std::string> f = SplitFields(line.text);
     if (f.size() < 8) {
-      return ParseError(path + ":" + std::to_string(line.number) + ": expected frame,button,u,v,x,y,z,visible");
+      return ParseError(path + ":" + std::to_string(line.number) +
+                        ": expected frame,button,u,v,x,y,z,visible");
     }
     double v[8];
     for (int i = 0; i < 8; ++i) {
       char* end = nullptr;
       v[i] = std::strtod(f[i].c_str(), &end);
       if (end == f[i].c_str()) {
-        return ParseError(path + ":" + std::to_string(line.number) + ": field " + std::to_string(i + 1) +
-                          " is not a number");
+        return ParseError(path + ":" + std::to_string(line.number) + ": field " +
+                          std::to_string(i + 1) + " is not a number");
       }
     }
-    if (v[0] < 0 || v[0] > 1e7) return ParseError(path + ":" + std::to_string(line.number) + ": bad frame");
+    if (v[0] < 0 || v[0] > 1e7)
+      return ParseError(path + ":" + std::to_string(line.number) + ": bad frame");
     const size_t frame = static_cast<size_t>(v[0]);
     TrueButton& b = buttons[static_cast<int>(v[1])];
     b.id = static_cast<int>(v[1]);
@@ -56,17 +58,19 @@ Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& 
   for (const ButtonRunRow& r : rows) {
     const PickerFrame& p = r.picker;
     const bool found = p.track.found;
-    const Eigen::Vector3d cam = p.location ? p.location->button_in_camera : Eigen::Vector3d::Constant(std::nan(""));
-    std::snprintf(line, sizeof(line),
-                  "%lld,%.6f,%s,%s,%.2f,%.2f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%d,%d,%d,%.6g,%.3f,%.3f\n",
-                  static_cast<long long>(p.frame_id), p.stamp_s, PickerStateKey(p.state),
-                  GateReasonKey(p.verdict.reason), found ? p.track.center.x : std::nan(""),
-                  found ? p.track.center.y : std::nan(""), found ? p.track.radius_px : std::nan(""),
-                  p.track.confidence, cam.x(), cam.y(), cam.z(), p.button_in_base.x(),
-                  p.button_in_base.y(), p.button_in_base.z(),
-                  p.location ? p.location->uncertainty_m : std::nan(""),
-                  p.location && p.location->plane_sound ? 1 : 0, p.target ? 1 : 0, r.slam_tracking ? 1 : 0,
-                  r.scale_converged ? 1 : 0, r.lambda_ml, p.tracking_ms, r.slam_ms);
+    const Eigen::Vector3d cam =
+        p.location ? p.location->button_in_camera : Eigen::Vector3d::Constant(std::nan(""));
+    std::snprintf(
+        line, sizeof(line),
+        "%lld,%.6f,%s,%s,%.2f,%.2f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%d,%d,%d,%.6g,%."
+        "3f,%.3f\n",
+        static_cast<long long>(p.frame_id), p.stamp_s, PickerStateKey(p.state),
+        GateReasonKey(p.verdict.reason), found ? p.track.center.x : std::nan(""),
+        found ? p.track.center.y : std::nan(""), found ? p.track.radius_px : std::nan(""),
+        p.track.confidence, cam.x(), cam.y(), cam.z(), p.button_in_base.x(), p.button_in_base.y(),
+        p.button_in_base.z(), p.location ? p.location->uncertainty_m : std::nan(""),
+        p.location && p.location->plane_sound ? 1 : 0, p.target ? 1 : 0, r.slam_tracking ? 1 : 0,
+        r.scale_converged ? 1 : 0, r.lambda_ml, p.tracking_ms, r.slam_ms);
     out << line;
   }
   out.flush();

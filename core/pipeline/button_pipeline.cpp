@@ -99,15 +99,18 @@ struct LastTarget {
 };
 
 struct Waiter {
-  static Status ForClients(ArmServer& server, const ButtonRunOptions& run, const RunContext& context) {
+  static Status ForClients(ArmServer& server, const ButtonRunOptions& run,
+                           const RunContext& context) {
     const auto start = std::chrono::steady_clock::now();
     while (server.Stats().authorised < run.wait_clients) {
       if (context.Cancelled()) return Cancelled("run cancelled while waiting for arm clients");
-      const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double waited =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (waited > run.wait_clients_s) {
-        return Unavailable("button.run.wait_clients: " + std::to_string(server.Stats().authorised) + " of " +
-                           std::to_string(run.wait_clients) + " arm clients connected within " +
-                           std::to_string(run.wait_clients_s) + " s");
+        return Unavailable("button.run.wait_clients: " + std::to_string(server.Stats().authorised) +
+                           " of " + std::to_string(run.wait_clients) +
+                           " arm clients connected within " + std::to_string(run.wait_clients_s) +
+                           " s");
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -118,7 +121,8 @@ struct Waiter {
 StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   const MonoSlamOptions slam_options = context.options.Extract(MonoSlamOptions::Describe());
   MonoSlamRunOptions mono_run = context.options.Extract(MonoSlamRunOptions::Describe());
-  const ButtonPickerOptions picker_options = context.options.Extract(ButtonPickerOptions::Describe());
+  const ButtonPickerOptions picker_options =
+      context.options.Extract(ButtonPickerOptions::Describe());
   const ButtonRunOptions run = context.options.Extract(ButtonRunOptions::Describe());
   const MetricViewOptions view_options = context.options.Extract(MetricViewOptions::Describe());
   const ArmServerOptions server_options = context.options.Extract(ArmServerOptions::Describe());
@@ -131,15 +135,18 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   const std::string& path = context.dataset_path;
   if (mono_run.metric_source == "auto") mono_run.metric_source = "arm";
   if (mono_run.metric_source != "arm") {
-    return InvalidArgument("mono.run.metric_source must be arm (or auto) for the button pipeline: "
-                           "the targets are in the arm's base frame");
+    return InvalidArgument(
+        "mono.run.metric_source must be arm (or auto) for the button pipeline: "
+        "the targets are in the arm's base frame");
   }
   StatusOr<OpenedMono> opened = OpenMono(path);
   if (!opened.ok()) return opened.status();
   std::string metric_source;
-  StatusOr<Trajectory> base_from_camera = LoadMetricCameraPoses(path, mono_run, opened->ground_truth, &metric_source);
+  StatusOr<Trajectory> base_from_camera =
+      LoadMetricCameraPoses(path, mono_run, opened->ground_truth, &metric_source);
   if (!base_from_camera.ok()) return base_from_camera.status();
-  MetricSlamView metric(*base_from_camera, slam_options.scale, view_options, mono_run.gt_tolerance_s);
+  MetricSlamView metric(*base_from_camera, slam_options.scale, view_options,
+                        mono_run.gt_tolerance_s);
 
   // Ground truth: the simulator's buttons and the arm base in its map frame.
   std::optional<std::vector<TrueButton>> truth;
@@ -172,7 +179,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   ButtonPicker picker(picker_options);
   Source& source = *opened->source;
   int64_t total = source.info().frame_count;
-  if (mono_run.max_frames > 0 && (total < 0 || total > mono_run.max_frames)) total = mono_run.max_frames;
+  if (mono_run.max_frames > 0 && (total < 0 || total > mono_run.max_frames))
+    total = mono_run.max_frames;
   std::vector<ButtonRunRow> rows;
   LastTarget last;
   std::vector<LastTarget> sent;  // Every frame that sent a target, for the single-ratio figure.
@@ -180,7 +188,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   double tap_stamp_s = 0, first_target_stamp_s = 0, processing_ms_to_first = 0;
   std::optional<cv::Point2d> tapped_centre;
   for (int64_t index = 0; total < 0 || index < total; ++index) {
-    if (context.Cancelled()) return Cancelled("run cancelled after " + std::to_string(index) + " frames");
+    if (context.Cancelled())
+      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
     StatusOr<std::optional<MonoFrame>> next = NextMonoFrame(source, path);
     if (!next.ok()) return next.status().WithContext("frame " + std::to_string(index));
     if (!*next) break;
@@ -189,7 +198,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
     const auto start = std::chrono::steady_clock::now();
     StatusOr<std::shared_ptr<const MonoSlamResult>> result = slam.Process(mono);
     if (!result.ok()) return result.status();
-    const double slam_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double slam_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     context.timing->Add("slam", slam_ms);
     const MonoSlamResult& r = **result;
     const SlamView view = metric.Update(r, opened->camera);
@@ -219,7 +229,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
       const std::optional<Eigen::Isometry3d> base = metric.BaseFromCamera(mono.stamp.sensor_time_s);
       SlamView gated = view;
       if (!base) gated.tracking = false;  // No arm pose: no base frame for this image.
-      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double elapsed_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       row.picker = picker.Process(frame_id, mono.stamp.sensor_time_s, mono.image, gated,
                                   base.value_or(Eigen::Isometry3d::Identity()),
                                   mono.stamp.sensor_time_s + elapsed_s);
@@ -228,12 +239,14 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
         ++targets;
         if (server) server->PublishTarget(*row.picker.target);
         last = {index, *row.picker.target, row.picker.track, r.map_from_camera, r.map, *base};
-        if (row.picker.location) last.unfused_in_base = *base * row.picker.location->button_in_camera;
+        if (row.picker.location)
+          last.unfused_in_base = *base * row.picker.location->button_in_camera;
         sent.push_back(last);
       }
       rows.push_back(row);
     }
-    const double frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double frame_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     context.timing->Add("total", frame_ms);
     if (index >= tap->frame && first_target_index < 0) {
       processing_ms_to_first += frame_ms;
@@ -247,8 +260,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   slam.Stop();
   if (frames == 0) return OutOfRange(path + " holds no frames");
   if (tap->frame >= frames) {
-    return OutOfRange("button.run.tap: frame " + std::to_string(tap->frame) + " is past the last frame (" +
-                      std::to_string(frames - 1) + ")");
+    return OutOfRange("button.run.tap: frame " + std::to_string(tap->frame) +
+                      " is past the last frame (" + std::to_string(frames - 1) + ")");
   }
   if (server && run.linger_s > 0) {
     std::this_thread::sleep_for(std::chrono::duration<double>(run.linger_s));
@@ -257,14 +270,18 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   RunResult result;
   result.dataset_format = source.info().format;
   result.frames = frames;
-  SIGHTLINE_RETURN_IF_ERROR(WriteButtonCsv(rows, (fs::path(context.out_dir) / "button.csv").string()));
+  SIGHTLINE_RETURN_IF_ERROR(
+      WriteButtonCsv(rows, (fs::path(context.out_dir) / "button.csv").string()));
   result.outputs.push_back("button.csv");
   result.accuracy.emplace_back("targets_sent", static_cast<double>(targets));
   if (metric.lambda_ml() > 0) result.accuracy.emplace_back("scale_ml", metric.lambda_ml());
-  if (metric.lambda_single() > 0) result.accuracy.emplace_back("scale_single", metric.lambda_single());
+  if (metric.lambda_single() > 0)
+    result.accuracy.emplace_back("scale_single", metric.lambda_single());
   if (first_target_index >= 0) {
-    result.counts.emplace_back("tap_to_first_target_frames", static_cast<double>(first_target_index - tap->frame));
-    result.counts.emplace_back("tap_to_first_target_ms", 1e3 * (first_target_stamp_s - tap_stamp_s));
+    result.counts.emplace_back("tap_to_first_target_frames",
+                               static_cast<double>(first_target_index - tap->frame));
+    result.counts.emplace_back("tap_to_first_target_ms",
+                               1e3 * (first_target_stamp_s - tap_stamp_s));
     result.counts.emplace_back("tap_to_first_target_processing_ms", processing_ms_to_first);
   } else {
     notes.push_back("no target was sent");
@@ -282,7 +299,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
     double best = 1e18;
     for (const TrueButton& b : *truth) {
       if (static_cast<size_t>(tap->frame) >= b.pixel.size() || !b.visible[tap->frame]) continue;
-      const double d = (b.pixel[tap->frame] - Eigen::Vector2d(tapped_centre->x, tapped_centre->y)).norm();
+      const double d =
+          (b.pixel[tap->frame] - Eigen::Vector2d(tapped_centre->x, tapped_centre->y)).norm();
       if (d < best) best = d, button = &b;
     }
     if (button == nullptr) {
@@ -294,26 +312,31 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
       for (const ButtonRunRow& row : rows) {
         const size_t f = static_cast<size_t>(row.picker.frame_id);
         if (!row.picker.track.found || f >= button->pixel.size() || !button->visible[f]) continue;
-        errors.push_back((Eigen::Vector2d(row.picker.track.center.x, row.picker.track.center.y) - button->pixel[f]).norm());
+        errors.push_back((Eigen::Vector2d(row.picker.track.center.x, row.picker.track.center.y) -
+                          button->pixel[f])
+                             .norm());
       }
       if (!errors.empty()) {
         result.accuracy.emplace_back("track_error_px_median", Median(errors));
-        result.accuracy.emplace_back("track_error_px_max", *std::max_element(errors.begin(), errors.end()));
+        result.accuracy.emplace_back("track_error_px_max",
+                                     *std::max_element(errors.begin(), errors.end()));
         result.counts.emplace_back("track_error_frames", static_cast<double>(errors.size()));
       }
       if (!world_from_base) {
         notes.push_back("hand_eye.yaml has no world_from_base: no 3D error");
       } else if (last.index >= 0) {
         const Eigen::Vector3d truth_in_base = world_from_base->inverse() * button->center_in_world;
-        result.accuracy.emplace_back("final_error_mm", 1e3 * (last.target.position_m - truth_in_base).norm());
-        result.accuracy.emplace_back("final_error_mm_unfused", 1e3 * (last.unfused_in_base - truth_in_base).norm());
+        result.accuracy.emplace_back("final_error_mm",
+                                     1e3 * (last.target.position_m - truth_in_base).norm());
+        result.accuracy.emplace_back("final_error_mm_unfused",
+                                     1e3 * (last.unfused_in_base - truth_in_base).norm());
         // The same frames located with the single-ratio scale and fused the same way.
         if (metric.lambda_single() > 0) {
           std::vector<Eigen::Vector3d> single_positions;
           for (const LastTarget& t : sent) {
             if (!t.map) continue;
-            const SlamView single = MetricSlamView::MakeView(opened->camera, true, t.map_from_camera, *t.map,
-                                                             metric.lambda_single());
+            const SlamView single = MetricSlamView::MakeView(
+                opened->camera, true, t.map_from_camera, *t.map, metric.lambda_single());
             LocatorInput in;
             in.camera = single.camera;
             in.camera_from_world = single.camera_from_world;
@@ -321,13 +344,15 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
             in.button_px = {t.track.center.x, t.track.center.y};
             in.button_radius_px = t.track.radius_px;
             StatusOr<ButtonLocation> at = ButtonLocator(picker_options.locate).Locate(in);
-            if (at.ok() && at->plane_sound) single_positions.push_back(t.base_from_camera * at->button_in_camera);
+            if (at.ok() && at->plane_sound)
+              single_positions.push_back(t.base_from_camera * at->button_in_camera);
           }
           if (single_positions.empty()) {
             notes.push_back("single-ratio relocation found no sound plane");
           } else {
             Eigen::Vector3d p = FuseMedian(single_positions, picker_options.fuse.window);
-            result.accuracy.emplace_back("final_error_mm_single_ratio", 1e3 * (p - truth_in_base).norm());
+            result.accuracy.emplace_back("final_error_mm_single_ratio",
+                                         1e3 * (p - truth_in_base).norm());
           }
         }
       }
@@ -346,7 +371,8 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
 PipelineInfo ButtonPipeline() {
   PipelineInfo info;
   info.name = "button";
-  info.summary = "the operator's button picker headless: tap (--tap X,Y[@FRAME]), track, locate, gate, send";
+  info.summary =
+      "the operator's button picker headless: tap (--tap X,Y[@FRAME]), track, locate, gate, send";
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MonoSlamOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MonoSlamRunOptions::Describe()));

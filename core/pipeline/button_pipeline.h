@@ -6,11 +6,10 @@
 // against the true centre of the tapped button.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "core/button/button_picker.h"
 #include "core/common/status.h"
@@ -21,11 +20,11 @@ namespace sightline {
 
 // Run-level options of the button pipeline. Keys "button.run.*".
 struct ButtonRunOptions {
-  std::string tap;          // "X,Y" or "X,Y@FRAME" (frame index; default 0). Required.
-  bool serve = false;       // Publish targets through the arm-target server (button.arm.*).
-  int wait_clients = 0;     // With serve: wait for this many clients before the first frame.
+  std::string tap;             // "X,Y" or "X,Y@FRAME" (frame index; default 0). Required.
+  bool serve = false;          // Publish targets through the arm-target server (button.arm.*).
+  int wait_clients = 0;        // With serve: wait for this many clients before the first frame.
   double wait_clients_s = 30;  // ... at most this long [s].
-  double linger_s = 0.5;    // With serve: keep serving this long after the last frame [s].
+  double linger_s = 0.5;       // With serve: keep serving this long after the last frame [s].
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonRunOptions> Describe();

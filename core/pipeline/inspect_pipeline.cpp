@@ -81,7 +81,8 @@ StatusOr<RunResult> RunInspect(const RunContext& context) {
   int64_t with_gt = 0;
   bool header_written = false;
   while (total < 0 || result.frames < total) {
-    if (context.Cancelled()) return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
+    if (context.Cancelled())
+      return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
     ScopedTimer frame_timer(context.timing, "total");
     StatusOr<Frame> frame = Internal("not read");
     {

@@ -11,9 +11,9 @@ namespace sightline {
 
 // Options of the inspect pipeline.
 struct InspectOptions {
-  int max_frames = 0;             // Frames to read; 0 reads all.
-  double max_depth_m = 10.0;      // Depth beyond this counts as invalid [m].
-  double gt_tolerance_s = 0.02;   // A frame has ground truth if a pose lies this close in time [s].
+  int max_frames = 0;            // Frames to read; 0 reads all.
+  double max_depth_m = 10.0;     // Depth beyond this counts as invalid [m].
+  double gt_tolerance_s = 0.02;  // A frame has ground truth if a pose lies this close in time [s].
 
   bool IsValid(std::string* error) const;
   static OptionTable<InspectOptions> Describe();

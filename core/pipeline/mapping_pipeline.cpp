@@ -26,7 +26,8 @@ bool MappingRunOptions::IsValid(std::string* error) const {
   if (max_frames < 0) return Invalid(error, "mapping.run.max_frames must be >= 0");
   if (floor_frames < 1) return Invalid(error, "mapping.run.floor_frames must be >= 1");
   if (!(gt_tolerance_s >= 0)) return Invalid(error, "mapping.run.gt_tolerance_s must be >= 0");
-  if (map_tolerance_cells < 0) return Invalid(error, "mapping.run.map_tolerance_cells must be >= 0");
+  if (map_tolerance_cells < 0)
+    return Invalid(error, "mapping.run.map_tolerance_cells must be >= 0");
   if (!(visible_wall_min_length_m >= 0)) {
     return Invalid(error, "mapping.run.visible_wall_min_length_m must be >= 0");
   }
@@ -119,7 +120,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
     StatusOr<Frame> frame = source.Retrieve();
     if (!frame.ok()) return frame.status();
     RgbdFrame* rgbd = AsRgbd(&*frame);
-    if (rgbd == nullptr) return InvalidArgument(context.dataset_path + " does not give RGB-D frames");
+    if (rgbd == nullptr)
+      return InvalidArgument(context.dataset_path + " does not give RGB-D frames");
     pending.push_back(std::move(*rgbd));
     return true;
   };
@@ -207,8 +209,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
       const WallSegment& l = r.lines.lines[i];
       char row[256];
       std::snprintf(row, sizeof(row), "%lld,%.6f,%zu,%.4f,%.4f,%.4f,%.4f,%.3f,%d,%.4f,%d\n",
-                    static_cast<long long>(frame.stamp.sequence_id), frame.stamp.sensor_time_s,
-                    i, l.start.x(), l.start.y(), l.end.x(), l.end.y(), RadToDeg(l.angle_rad),
+                    static_cast<long long>(frame.stamp.sequence_id), frame.stamp.sensor_time_s, i,
+                    l.start.x(), l.start.y(), l.end.x(), l.end.y(), RadToDeg(l.angle_rad),
                     l.inliers, l.length_m, l.direction_class);
       lines_csv << row;
     }
@@ -227,7 +229,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
   for (size_t k = 0; k < processor.camera_trajectory().size(); ++k) {
     estimate.Add(processor.trajectory_times()[k], processor.camera_trajectory()[k]);
   }
-  SIGHTLINE_RETURN_IF_ERROR(WriteTumTrajectory(estimate, JoinPath(context.out_dir, "trajectory.txt")));
+  SIGHTLINE_RETURN_IF_ERROR(
+      WriteTumTrajectory(estimate, JoinPath(context.out_dir, "trajectory.txt")));
   result.outputs.push_back("trajectory.txt");
   if (!processor.map().empty()) {
     SIGHTLINE_RETURN_IF_ERROR(processor.map().SaveRos(context.out_dir, "map"));
@@ -240,7 +243,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
 
   // Counts.
   result.counts.emplace_back("resets", static_cast<double>(processor.reset_log().size()));
-  result.counts.emplace_back("scan_points_per_frame", static_cast<double>(scan_points) / result.frames);
+  result.counts.emplace_back("scan_points_per_frame",
+                             static_cast<double>(scan_points) / result.frames);
   result.counts.emplace_back("lines_per_frame", static_cast<double>(line_count) / result.frames);
   for (const auto& [status, count] : statuses) {
     std::string key = "frames_" + status;
@@ -291,8 +295,10 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
         const Eigen::Isometry3d world_from_base = *truth_of_frame[k] * camera_from_base;
         std::vector<int> matched;
         for (const WallSegment& line : frame_lines[k].lines) {
-          const Eigen::Vector3d a = world_from_base * Eigen::Vector3d(line.start.x(), line.start.y(), 0);
-          const Eigen::Vector3d b = world_from_base * Eigen::Vector3d(line.end.x(), line.end.y(), 0);
+          const Eigen::Vector3d a =
+              world_from_base * Eigen::Vector3d(line.start.x(), line.start.y(), 0);
+          const Eigen::Vector3d b =
+              world_from_base * Eigen::Vector3d(line.end.x(), line.end.y(), 0);
           auto match = MatchSegmentToWalls(a.head<2>(), b.head<2>(), *walls);
           if (!match) continue;
           angle_errors.push_back(match->angle_error_deg);
@@ -312,7 +318,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
       }
       if (!angle_errors.empty()) {
         result.accuracy.emplace_back("wall_angle_error_deg_median", Median(angle_errors));
-        result.counts.emplace_back("lines_matched_to_walls", static_cast<double>(angle_errors.size()));
+        result.counts.emplace_back("lines_matched_to_walls",
+                                   static_cast<double>(angle_errors.size()));
       }
       if (visible > 0) {
         result.accuracy.emplace_back("wall_recall", static_cast<double>(found) / visible);
@@ -320,9 +327,8 @@ StatusOr<RunResult> RunMapping(const RunContext& context) {
       }
       if (!processor.map().empty() && est_positions.size() >= 2) {
         const Pose2d truth_from_estimate = AlignSe2(est_positions, true_positions);
-        const MapAgreement agreement = CompareMapWithWalls(processor.map(), *walls,
-                                                           truth_from_estimate,
-                                                           run.map_tolerance_cells);
+        const MapAgreement agreement = CompareMapWithWalls(
+            processor.map(), *walls, truth_from_estimate, run.map_tolerance_cells);
         result.accuracy.emplace_back("map_iou", agreement.iou);
         result.accuracy.emplace_back("map_precision", agreement.precision);
         result.accuracy.emplace_back("map_recall", agreement.recall);
@@ -370,7 +376,8 @@ StatusOr<FloorFitResult> CalibrateFloorFromDataset(const std::string& path, int 
     if (const auto* rgbd = std::get_if<RgbdFrame>(&*frame)) {
       AppendDepthPoints(rgbd->depth_m, *camera, options.max_depth_m, 2, &points);
     } else if (const auto* cloud = std::get_if<CloudFrame>(&*frame)) {
-      if (cloud->cloud) points.insert(points.end(), cloud->cloud->points.begin(), cloud->cloud->points.end());
+      if (cloud->cloud)
+        points.insert(points.end(), cloud->cloud->points.begin(), cloud->cloud->points.end());
     }
     ++read;
   }

@@ -23,16 +23,16 @@ namespace sightline {
 
 // Options of a mapping run besides the mapping chain's own. Keys "mapping.run.*".
 struct MappingRunOptions {
-  int max_frames = 0;                  // Frames to process; 0 = all.
-  std::string floor_file;              // Floor calibration to use; "" = calibrate from the
-                                       // first floor_frames frames.
-  int floor_frames = 5;                // Frames for the automatic floor calibration.
-  double gt_tolerance_s = 0.02;        // Pose association tolerance (ground truth, odometry) [s].
+  int max_frames = 0;                    // Frames to process; 0 = all.
+  std::string floor_file;                // Floor calibration to use; "" = calibrate from the
+                                         // first floor_frames frames.
+  int floor_frames = 5;                  // Frames for the automatic floor calibration.
+  double gt_tolerance_s = 0.02;          // Pose association tolerance (ground truth, odometry) [s].
   bool camera_offset_from_scene = true;  // Read the camera's offset ahead of the odometry base
                                          // from scene.yaml (simulator) when present.
-  double camera_forward_m = 0.0;       // Else: the camera's optical centre ahead of the
-                                       // odometry base [m].
-  int map_tolerance_cells = 2;         // Tolerance of the map agreement (map_iou) [cells].
+  double camera_forward_m = 0.0;         // Else: the camera's optical centre ahead of the
+                                         // odometry base [m].
+  int map_tolerance_cells = 2;           // Tolerance of the map agreement (map_iou) [cells].
   double visible_wall_min_length_m = 1.0;  // A true wall counts as visible in a frame when this
   double visible_wall_min_fraction = 0.2;  // much of it and this fraction of the scan's rays
                                            // hit it (ratio_min: smaller walls cannot be lines).

@@ -21,13 +21,13 @@ struct MappingRunOptions;
 // A recording's extra files for mapping, found in its top folder (the parent of an rgbd/
 // sensor folder): odometry.txt, people.csv, walls.csv, scene.yaml.
 struct MappingRecording {
-  std::string root;                         // The folder the files were looked for in.
-  PinholeCamera camera;                     // The depth camera.
-  std::optional<Trajectory> odometry;       // world_from_base of the wheel odometry.
-  std::optional<PersonBoxTable> people;     // Ground-truth person boxes.
+  std::string root;                            // The folder the files were looked for in.
+  PinholeCamera camera;                        // The depth camera.
+  std::optional<Trajectory> odometry;          // world_from_base of the wheel odometry.
+  std::optional<PersonBoxTable> people;        // Ground-truth person boxes.
   std::optional<std::vector<TrueWall>> walls;  // True wall faces, for accuracy.
-  double camera_forward_m = 0;              // Optical centre ahead of the odometry base [m].
-  std::vector<std::string> log_lines;       // What was found, for the run's log.
+  double camera_forward_m = 0;                 // Optical centre ahead of the odometry base [m].
+  std::vector<std::string> log_lines;          // What was found, for the run's log.
 
   // One frame's mapping input: depth, colour, the odometry pose (moved to the camera) within
   // `tolerance_s` of the frame, and the frame's person boxes.

@@ -36,7 +36,8 @@ MetricSlamView::MetricSlamView(Trajectory base_from_camera, ScaleEstimatorOption
       tolerance_s_(tolerance_s) {}
 
 bool MetricSlamView::converged() const {
-  return lambda_ml_ > 0 && pairs_used_ >= options_.min_pairs && sigma_rel_ <= options_.max_sigma_rel;
+  return lambda_ml_ > 0 && pairs_used_ >= options_.min_pairs &&
+         sigma_rel_ <= options_.max_sigma_rel;
 }
 
 std::optional<Eigen::Isometry3d> MetricSlamView::BaseFromCamera(double time_s) const {
@@ -47,7 +48,8 @@ std::optional<Eigen::Isometry3d> MetricSlamView::BaseFromCamera(double time_s) c
 
 void MetricSlamView::Rescale(const MapSnapshot& map) {
   ScaleEstimator scale(scale_options_);
-  for (const ScalePair& pair : KeyFrameScalePairs(map, base_from_camera_, tolerance_s_)) scale.Add(pair);
+  for (const ScalePair& pair : KeyFrameScalePairs(map, base_from_camera_, tolerance_s_))
+    scale.Add(pair);
   lambda_ml_ = scale.max_likelihood();
   lambda_single_ = scale.single_ratio();
   pairs_used_ = scale.pairs_used();

@@ -19,8 +19,8 @@ namespace sightline {
 
 // When the metric scale counts as converged. Keys "button.scale.*".
 struct MetricViewOptions {
-  int min_pairs = 4;             // Displacement pairs inside the ML estimate at least.
-  double max_sigma_rel = 0.02;   // Relative 1-sigma scale error at most (see MetricSlamView).
+  int min_pairs = 4;            // Displacement pairs inside the ML estimate at least.
+  double max_sigma_rel = 0.02;  // Relative 1-sigma scale error at most (see MetricSlamView).
 
   bool IsValid(std::string* error) const;
   static OptionTable<MetricViewOptions> Describe();
@@ -35,8 +35,8 @@ class MetricSlamView {
  public:
   // `base_from_camera`: the measured camera poses in metres (arm_poses.txt times the hand-eye
   // transform, LoadMetricCameraPoses), associated with frames within `tolerance_s`.
-  MetricSlamView(Trajectory base_from_camera, ScaleEstimatorOptions scale, MetricViewOptions options,
-                 double tolerance_s);
+  MetricSlamView(Trajectory base_from_camera, ScaleEstimatorOptions scale,
+                 MetricViewOptions options, double tolerance_s);
 
   // The view of one SLAM result (the scale is re-estimated when its map changed).
   SlamView Update(const MonoSlamResult& result, const PinholeCamera& camera);

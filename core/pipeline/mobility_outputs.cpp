@@ -32,8 +32,8 @@ Status WriteScoredCloud(const MobilityResult& result, const std::string& format,
       std::snprintf(line, sizeof(line), "%.4f %.4f %.4f %d %d %d %.4f %d\n", p.x(), p.y(), p.z(),
                     bgr[2], bgr[1], bgr[0], std::isfinite(score) ? score : -1.f, result.segment[i]);
     } else {
-      const unsigned rgb = (static_cast<unsigned>(bgr[2]) << 16) |
-                           (static_cast<unsigned>(bgr[1]) << 8) | bgr[0];
+      const unsigned rgb =
+          (static_cast<unsigned>(bgr[2]) << 16) | (static_cast<unsigned>(bgr[1]) << 8) | bgr[0];
       std::snprintf(line, sizeof(line), "%.4f %.4f %.4f %u %s %d\n", p.x(), p.y(), p.z(), rgb,
                     std::isfinite(score) ? std::to_string(score).c_str() : "nan",
                     result.segment[i]);

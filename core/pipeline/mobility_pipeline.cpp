@@ -10,11 +10,11 @@
 
 #include "core/common/text_file.h"
 #include "core/io/dataset.h"
-#include "core/sensors/driver_registry.h"
 #include "core/mapping/floor_plane.h"
 #include "core/mobility/mobility_map.h"
 #include "core/mobility/terrain_truth.h"
 #include "core/pipeline/mobility_outputs.h"
+#include "core/sensors/driver_registry.h"
 
 namespace sightline {
 
@@ -62,8 +62,7 @@ double Median(std::vector<double> v) {
 // The recording folder holding regions.csv: the dataset path or its parent.
 std::string FindRegionsFile(const std::string& dataset_path, const std::string& source_path) {
   for (const std::string& folder :
-       {dataset_path, source_path,
-        std::filesystem::path(source_path).parent_path().string()}) {
+       {dataset_path, source_path, std::filesystem::path(source_path).parent_path().string()}) {
     const std::string path = JoinPath(folder, "regions.csv");
     if (FileExists(path)) return path;
   }
@@ -143,7 +142,8 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
   if (run.max_frames > 0 && (total < 0 || total > run.max_frames)) total = run.max_frames;
   int failed = 0;
   while (total < 0 || result.frames < total) {
-    if (context.Cancelled()) return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
+    if (context.Cancelled())
+      return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
     Status grabbed = source.Grab();
     if (grabbed.code() == StatusCode::kOutOfRange) break;
     if (!grabbed.ok()) return grabbed;
@@ -156,7 +156,8 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
     } else if (const auto* cloud = std::get_if<CloudFrame>(&*frame)) {
       input = MobilityInputFromCloud(*cloud);
     } else {
-      return InvalidArgument(context.dataset_path + " gave a frame that is neither RGB-D nor a cloud");
+      return InvalidArgument(context.dataset_path +
+                             " gave a frame that is neither RGB-D nor a cloud");
     }
     input.up_in_camera = up;
     const std::shared_ptr<const MobilityResult> r = mapper.Process(input);
@@ -173,15 +174,16 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
       ++failed;
       log.push_back("frame " + std::to_string(index) + ": " + r->status.message());
     } else {
-      log.push_back("frame " + std::to_string(index) + ": ok, " + std::to_string(r->segments.size()) +
-                    " segments");
+      log.push_back("frame " + std::to_string(index) + ": ok, " +
+                    std::to_string(r->segments.size()) + " segments");
     }
     if (r->ground.found) heights.push_back(r->ground.d);
     csv << SegmentsCsvRows(index, *r);
     if (run.cloud_format != "none" && !r->points.empty()) {
       std::snprintf(name, sizeof(name), "%06lld_cloud.%s", static_cast<long long>(index),
                     run.cloud_format.c_str());
-      SIGHTLINE_RETURN_IF_ERROR(WriteScoredCloud(*r, run.cloud_format, JoinPath(context.out_dir, name)));
+      SIGHTLINE_RETURN_IF_ERROR(
+          WriteScoredCloud(*r, run.cloud_format, JoinPath(context.out_dir, name)));
       result.outputs.push_back(name);
     }
     if (run.write_images && !r->projection.empty()) {
@@ -238,8 +240,9 @@ StatusOr<RunResult> RunMobility(const RunContext& context) {
 PipelineInfo MobilityPipeline() {
   PipelineInfo info;
   info.name = "mobility";
-  info.summary = "mobility map from RGB-D frames or point clouds: ground, segments, slope, "
-                 "roughness, rule and GPR scores (seed 001)";
+  info.summary =
+      "mobility map from RGB-D frames or point clouds: ground, segments, slope, "
+      "roughness, rule and GPR scores (seed 001)";
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MobilityOptions::Describe()));
     return set->Declare(MobilityRunOptions::Describe());

@@ -22,14 +22,14 @@ namespace sightline {
 
 // Run-level options of mobility. Keys "mobility.run.*".
 struct MobilityRunOptions {
-  int max_frames = 0;                  // Frames to process; 0 = all.
-  std::string floor_file;              // Floor calibration (sightline-cli floor): its normal is
-                                       // the expected up direction; "" = the mount options.
-  std::string cloud_format = "pcd";    // Scored cloud per frame: pcd, ply or none.
-  bool write_images = true;            // Projection and top-view PNGs per frame.
-  double gt_tolerance_s = 0.02;        // Ground-truth pose association [s].
-  double min_match_fraction = 0.8;     // A segment counts for accuracy when this fraction of
-                                       // its points lies in one true region.
+  int max_frames = 0;                // Frames to process; 0 = all.
+  std::string floor_file;            // Floor calibration (sightline-cli floor): its normal is
+                                     // the expected up direction; "" = the mount options.
+  std::string cloud_format = "pcd";  // Scored cloud per frame: pcd, ply or none.
+  bool write_images = true;          // Projection and top-view PNGs per frame.
+  double gt_tolerance_s = 0.02;      // Ground-truth pose association [s].
+  double min_match_fraction = 0.8;   // A segment counts for accuracy when this fraction of
+                                     // its points lies in one true region.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MobilityRunOptions> Describe();

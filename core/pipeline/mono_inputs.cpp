@@ -36,8 +36,9 @@ OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
               "ground-truth displacements, or none; auto prefers the arm.")
       .String("arm_poses", &O::arm_poses,
               "arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.")
-      .String("hand_eye", &O::hand_eye,
-              "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses; none = identity.")
+      .String(
+          "hand_eye", &O::hand_eye,
+          "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses; none = identity.")
       .Choice("scale_pairs", &O::scale_pairs, {"keyframes", "frames"},
               "Displacement pairs between consecutive keyframes (poses refined by bundle "
               "adjustment) or between tracked frames scale_interval_frames apart.")
@@ -104,21 +105,26 @@ StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSl
   *source = "none";
   Trajectory metric;
   if (run.metric_source == "none") return metric;
-  const std::string arm_path = run.arm_poses.empty() ? FindBeside(path, "arm_poses.txt") : run.arm_poses;
-  const bool use_arm = run.metric_source == "arm" || (run.metric_source == "auto" && !arm_path.empty());
+  const std::string arm_path =
+      run.arm_poses.empty() ? FindBeside(path, "arm_poses.txt") : run.arm_poses;
+  const bool use_arm =
+      run.metric_source == "arm" || (run.metric_source == "auto" && !arm_path.empty());
   if (use_arm) {
-    if (arm_path.empty()) return NotFound(path + ": no arm_poses.txt beside the images (mono.run.arm_poses)");
+    if (arm_path.empty())
+      return NotFound(path + ": no arm_poses.txt beside the images (mono.run.arm_poses)");
     StatusOr<Trajectory> arm = ReadTumTrajectory(arm_path);
     if (!arm.ok()) return arm.status();
     Eigen::Isometry3d ee_from_camera = Eigen::Isometry3d::Identity();
     if (run.hand_eye != "none") {
       std::string hand_eye = run.hand_eye;
-      if (hand_eye.empty()) hand_eye = (fs::path(arm_path).parent_path() / "hand_eye.yaml").string();
+      if (hand_eye.empty())
+        hand_eye = (fs::path(arm_path).parent_path() / "hand_eye.yaml").string();
       StatusOr<HandEye> read = ReadHandEyeFile(hand_eye);
       if (!read.ok()) return read.status();
       ee_from_camera = read->end_effector_from_camera;
     }
-    for (const TimedPose& p : arm->poses()) metric.Add(p.time_s, p.world_from_sensor * ee_from_camera);
+    for (const TimedPose& p : arm->poses())
+      metric.Add(p.time_s, p.world_from_sensor * ee_from_camera);
     *source = "arm";
     return metric;
   }

@@ -22,13 +22,13 @@ namespace sightline {
 
 // Run-level options of the monocular pipelines. Keys "mono.run.*".
 struct MonoSlamRunOptions {
-  int max_frames = 0;                   // Frames read; 0 = all.
-  std::string metric_source = "auto";   // auto, arm, ground_truth or none.
-  std::string arm_poses;                // arm_poses.txt; "" = beside the sensor folder.
-  std::string hand_eye;                 // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
+  int max_frames = 0;                  // Frames read; 0 = all.
+  std::string metric_source = "auto";  // auto, arm, ground_truth or none.
+  std::string arm_poses;               // arm_poses.txt; "" = beside the sensor folder.
+  std::string hand_eye;                // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
   std::string scale_pairs = "keyframes";  // Displacements between keyframes or frames.
-  int scale_interval_frames = 5;        // Frames per displacement pair (scale_pairs = frames).
-  double gt_tolerance_s = 0.02;         // Time association tolerance [s].
+  int scale_interval_frames = 5;          // Frames per displacement pair (scale_pairs = frames).
+  double gt_tolerance_s = 0.02;           // Time association tolerance [s].
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoSlamRunOptions> Describe();

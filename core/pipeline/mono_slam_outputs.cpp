@@ -27,12 +27,30 @@ Eigen::Vector3i KeyFrameColour(int64_t keyframe) {
   const double x = 1 - std::abs(std::fmod(h, 2.0) - 1);
   double r = 0, g = 0, b = 0;
   switch (static_cast<int>(h)) {
-    case 0: r = 1; g = x; break;
-    case 1: r = x; g = 1; break;
-    case 2: g = 1; b = x; break;
-    case 3: g = x; b = 1; break;
-    case 4: r = x; b = 1; break;
-    default: r = 1; b = x; break;
+    case 0:
+      r = 1;
+      g = x;
+      break;
+    case 1:
+      r = x;
+      g = 1;
+      break;
+    case 2:
+      g = 1;
+      b = x;
+      break;
+    case 3:
+      g = x;
+      b = 1;
+      break;
+    case 4:
+      r = x;
+      b = 1;
+      break;
+    default:
+      r = 1;
+      b = x;
+      break;
   }
   return Eigen::Vector3i(static_cast<int>(55 + 200 * r), static_cast<int>(55 + 200 * g),
                          static_cast<int>(55 + 200 * b));
@@ -42,8 +60,10 @@ Eigen::Vector3i KeyFrameColour(int64_t keyframe) {
 
 Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunResult* result) {
   const double divide = run.lambda() > 0 ? run.lambda() : 1.0;
-  SIGHTLINE_RETURN_IF_ERROR(WriteTumTrajectory(run.MetricEstimate(), (fs::path(dir) / "trajectory.txt").string()));
-  SIGHTLINE_RETURN_IF_ERROR(WriteTumTrajectory(run.estimate, (fs::path(dir) / "trajectory_map.txt").string()));
+  SIGHTLINE_RETURN_IF_ERROR(
+      WriteTumTrajectory(run.MetricEstimate(), (fs::path(dir) / "trajectory.txt").string()));
+  SIGHTLINE_RETURN_IF_ERROR(
+      WriteTumTrajectory(run.estimate, (fs::path(dir) / "trajectory_map.txt").string()));
   std::ostringstream ply;
   ply << "ply\nformat ascii 1.0\ncomment Sightline mono-slam map points ("
       << (run.lambda() > 0 ? "metres" : "map units") << "), coloured by creating keyframe\n"
@@ -53,7 +73,8 @@ Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunR
   for (const MapSnapshot::Point& p : run.map->points) {
     const Eigen::Vector3d x = p.position / divide;
     const Eigen::Vector3i c = KeyFrameColour(p.first_keyframe);
-    ply << x.x() << ' ' << x.y() << ' ' << x.z() << ' ' << c.x() << ' ' << c.y() << ' ' << c.z() << '\n';
+    ply << x.x() << ' ' << x.y() << ' ' << x.z() << ' ' << c.x() << ' ' << c.y() << ' ' << c.z()
+        << '\n';
   }
   SIGHTLINE_RETURN_IF_ERROR(WriteFile((fs::path(dir) / "map.ply").string(), ply.str()));
   std::ostringstream kf;
@@ -77,7 +98,8 @@ Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunR
   }
   SIGHTLINE_RETURN_IF_ERROR(WriteFile((fs::path(dir) / "scale.csv").string(), scale.str()));
   std::ostringstream frames;
-  frames << "frame,time_s,quality,tracked,keypoints,predicted,matches,inliers,rms_px,map_points,keyframes,"
+  frames << "frame,time_s,quality,tracked,keypoints,predicted,matches,inliers,rms_px,map_points,"
+            "keyframes,"
             "new_keyframe,relocalised,tracking_ms,status\n";
   for (const MonoRunFrame& f : run.frames) {
     std::string status = f.stats.status;
@@ -86,14 +108,13 @@ Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunR
     }
     frames << f.frame << ',' << f.time_s << ',' << TrackingQualityName(f.quality) << ','
            << f.tracked << ',' << f.stats.keypoints << ',' << f.stats.predicted << ','
-           << f.stats.matches << ','
-           << f.stats.inliers << ',' << f.stats.rms_px << ',' << f.stats.map_points << ','
-           << f.stats.keyframes << ',' << f.stats.new_keyframe << ',' << f.stats.relocalised << ','
-           << f.stats.tracking_ms << ",\"" << status << "\"\n";
+           << f.stats.matches << ',' << f.stats.inliers << ',' << f.stats.rms_px << ','
+           << f.stats.map_points << ',' << f.stats.keyframes << ',' << f.stats.new_keyframe << ','
+           << f.stats.relocalised << ',' << f.stats.tracking_ms << ",\"" << status << "\"\n";
   }
   SIGHTLINE_RETURN_IF_ERROR(WriteFile((fs::path(dir) / "frames.csv").string(), frames.str()));
-  result->outputs = {"trajectory.txt", "trajectory_map.txt", "map.ply", "keyframes.txt",
-                     "scale.csv", "frames.csv"};
+  result->outputs = {"trajectory.txt", "trajectory_map.txt", "map.ply",
+                     "keyframes.txt",  "scale.csv",          "frames.csv"};
   return Status::Ok();
 }
 }  // namespace sightline

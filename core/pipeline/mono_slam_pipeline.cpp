@@ -35,7 +35,8 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
   out.scale = ScaleEstimator(options.scale);
   out.dataset_format = source.info().format;
   out.ground_truth = opened->ground_truth;
-  StatusOr<Trajectory> metric_poses = LoadMetricCameraPoses(path, run, out.ground_truth, &out.metric_source);
+  StatusOr<Trajectory> metric_poses =
+      LoadMetricCameraPoses(path, run, out.ground_truth, &out.metric_source);
   if (!metric_poses.ok()) return metric_poses.status();
   const Trajectory& metric = *metric_poses;
 
@@ -84,7 +85,8 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
   }
   if (run.scale_pairs == "keyframes") {
     for (size_t k = 0; k < out.map->keyframes.size(); ++k) {
-      add_dual(static_cast<int64_t>(k), out.map->keyframes[k].time_s, out.map->keyframes[k].map_from_camera);
+      add_dual(static_cast<int64_t>(k), out.map->keyframes[k].time_s,
+               out.map->keyframes[k].map_from_camera);
     }
   }
   const int interval = run.scale_pairs == "frames" ? run.scale_interval_frames : 1;
@@ -111,7 +113,8 @@ std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& 
   }
   figures.emplace_back("ate_rmse_m", sim3->ate.rmse);
   if (sim3->ground_truth_length_m > 0) {
-    figures.emplace_back("ate_rmse_pct_of_path", 100 * sim3->ate.rmse / sim3->ground_truth_length_m);
+    figures.emplace_back("ate_rmse_pct_of_path",
+                         100 * sim3->ate.rmse / sim3->ground_truth_length_m);
   }
   figures.emplace_back("path_length_m", sim3->ground_truth_length_m);
   figures.emplace_back("tracked_poses_evaluated", static_cast<double>(sim3->pairs));
@@ -120,18 +123,22 @@ std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& 
   double lambda_true = 1.0 / sim3->ground_truth_from_estimate.scale;
   Trajectory keyframes;
   for (const MapSnapshot::Frame& k : run.map->keyframes) keyframes.Add(k.time_s, k.map_from_camera);
-  if (StatusOr<TrajectoryErrors> kf = EvaluateTrajectory(keyframes, *run.ground_truth, eval); kf.ok()) {
+  if (StatusOr<TrajectoryErrors> kf = EvaluateTrajectory(keyframes, *run.ground_truth, eval);
+      kf.ok()) {
     lambda_true = 1.0 / kf->ground_truth_from_estimate.scale;
     figures.emplace_back("keyframe_ate_rmse_m", kf->ate.rmse);
   }
   figures.emplace_back("scale_true", lambda_true);
   if (run.lambda() > 0) {
-    figures.emplace_back("scale_error_pct_ml", 100 * std::abs(run.lambda() - lambda_true) / lambda_true);
+    figures.emplace_back("scale_error_pct_ml",
+                         100 * std::abs(run.lambda() - lambda_true) / lambda_true);
     eval.align = "se3";
-    StatusOr<TrajectoryErrors> metric = EvaluateTrajectory(run.MetricEstimate(), *run.ground_truth, eval);
+    StatusOr<TrajectoryErrors> metric =
+        EvaluateTrajectory(run.MetricEstimate(), *run.ground_truth, eval);
     if (metric.ok()) figures.emplace_back("ate_metric_rmse_m", metric->ate.rmse);
   } else if (notes) {
-    notes->push_back("no metric scale: no arm poses or ground-truth displacements, or too few pairs");
+    notes->push_back(
+        "no metric scale: no arm poses or ground-truth displacements, or too few pairs");
   }
   if (run.scale.single_ratio() > 0) {
     figures.emplace_back("scale_error_pct_single",

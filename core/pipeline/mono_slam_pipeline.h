@@ -38,12 +38,12 @@ struct MonoRunFrame {
 struct MonoSlamRun {
   std::string dataset_format;
   std::vector<MonoRunFrame> frames;
-  Trajectory estimate;                      // Tracked frames, map units.
-  std::shared_ptr<const MapSnapshot> map;   // After the last frame.
+  Trajectory estimate;                     // Tracked frames, map units.
+  std::shared_ptr<const MapSnapshot> map;  // After the last frame.
   std::vector<KeyFrameStats> keyframes;
   int lost_frames = 0, relocalisations = 0;
   std::string init_model;
-  std::string metric_source;                // What the scale came from ("arm", ...), or "none".
+  std::string metric_source;  // What the scale came from ("arm", ...), or "none".
   ScaleEstimator scale;
   std::optional<Trajectory> ground_truth;
 

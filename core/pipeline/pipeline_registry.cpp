@@ -4,10 +4,10 @@
 
 #include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/inspect_pipeline.h"
-#include "core/pipeline/stereo_vo_pipeline.h"
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mobility_pipeline.h"
 #include "core/pipeline/mono_slam_pipeline.h"
+#include "core/pipeline/stereo_vo_pipeline.h"
 
 namespace sightline {
 
@@ -49,7 +49,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   RunContext context;
   context.dataset_path = request.dataset_path;
   context.out_dir = request.out_dir;
-  if (pipeline->declare_options) SIGHTLINE_RETURN_IF_ERROR(pipeline->declare_options(&context.options));
+  if (pipeline->declare_options)
+    SIGHTLINE_RETURN_IF_ERROR(pipeline->declare_options(&context.options));
   if (!request.profile_path.empty()) {
     SIGHTLINE_RETURN_IF_ERROR(context.options.LoadYaml(request.profile_path));
   }

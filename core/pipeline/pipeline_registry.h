@@ -21,10 +21,10 @@ using ProgressCallback = std::function<void(int64_t done, int64_t total)>;
 // What a headless pipeline run gets.
 struct RunContext {
   std::string dataset_path;
-  std::string out_dir;                  // Exists when the run starts.
-  OptionSet options;                    // Effective, validated options.
-  TimingStats* timing = nullptr;        // Stages add their durations here, and "total" per frame.
-  ProgressCallback progress;            // May be empty.
+  std::string out_dir;            // Exists when the run starts.
+  OptionSet options;              // Effective, validated options.
+  TimingStats* timing = nullptr;  // Stages add their durations here, and "total" per frame.
+  ProgressCallback progress;      // May be empty.
   const std::atomic<bool>* cancel = nullptr;  // Checked between frames; may be null.
 
   bool Cancelled() const { return cancel != nullptr && cancel->load(); }

@@ -79,18 +79,19 @@ StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
     if (read->left.width != source.info().width || read->left.height != source.info().height) {
       return InvalidArgument("stereo.calibration_file " + run.calibration_file + " is for " +
                              std::to_string(read->left.width) + "x" +
-                             std::to_string(read->left.height) + " images but " + path +
-                             " gives " + std::to_string(source.info().width) + "x" +
+                             std::to_string(read->left.height) + " images but " + path + " gives " +
+                             std::to_string(source.info().width) + "x" +
                              std::to_string(source.info().height));
     }
     rig = *read;
   }
   if (!rig) {
     return FailedPrecondition(
-        path + ": the source has no stereo calibration; give one with "
-               "stereo.calibration_file=FILE (--set; an OpenCV stereo YAML as `sightline-cli "
-               "calibrate stereo` writes), or for an Aravis pair "
-               "aravis://LEFT,RIGHT?calibration_file=FILE");
+        path +
+        ": the source has no stereo calibration; give one with "
+        "stereo.calibration_file=FILE (--set; an OpenCV stereo YAML as `sightline-cli "
+        "calibrate stereo` writes), or for an Aravis pair "
+        "aravis://LEFT,RIGHT?calibration_file=FILE");
   }
   StereoOdometry odometry(options);
   SIGHTLINE_RETURN_IF_ERROR(odometry.Configure(*rig).WithContext(path));
@@ -116,7 +117,8 @@ StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
     if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
     const StereoFrame* stereo = std::get_if<StereoFrame>(&*frame);
     if (stereo == nullptr) return InvalidArgument(path + " does not give stereo frames");
-    StatusOr<std::shared_ptr<const StereoOdometryResult>> result = odometry.Process(*stereo, timing);
+    StatusOr<std::shared_ptr<const StereoOdometryResult>> result =
+        odometry.Process(*stereo, timing);
     if (!result.ok()) return result.status();
     out.estimate.Add((*result)->stamp.sensor_time_s, (*result)->world_from_camera);
     out.frames.push_back((*result)->stats);
@@ -135,7 +137,8 @@ std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& 
     // A static recording: relative figures (% of a path of millimetres) mean nothing; the only
     // error is any motion at all.
     double max_translation = 0, max_rotation = 0;
-    const Eigen::Isometry3d first_inverse = run.estimate.poses().front().world_from_sensor.inverse();
+    const Eigen::Isometry3d first_inverse =
+        run.estimate.poses().front().world_from_sensor.inverse();
     for (const TimedPose& p : run.estimate.poses()) {
       const Eigen::Isometry3d rel = first_inverse * p.world_from_sensor;
       max_translation = std::max(max_translation, rel.translation().norm());
@@ -144,9 +147,10 @@ std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& 
     figures.emplace_back("static_translation_m", max_translation);
     figures.emplace_back("static_rotation_deg", max_rotation);
     if (notes) {
-      notes->push_back("the ground truth moves less than 5 cm: static recording, reporting the "
-                       "estimated motion (static_translation_m, static_rotation_deg) instead of "
-                       "trajectory errors");
+      notes->push_back(
+          "the ground truth moves less than 5 cm: static recording, reporting the "
+          "estimated motion (static_translation_m, static_rotation_deg) instead of "
+          "trajectory errors");
     }
   } else if (run.ground_truth) {
     EvaluationOptions eval;
@@ -168,7 +172,8 @@ namespace {
 Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
   std::ofstream csv(path);
   if (!csv) return NotFound("cannot write " + path);
-  csv << "frame,time_s,tracked,retracked,anchored,new_features,stereo_matches,correspondences,inliers,"
+  csv << "frame,time_s,tracked,retracked,anchored,new_features,stereo_matches,correspondences,"
+         "inliers,"
          "ransac_iterations,rigidity_failures,residual_px,disparity_offset_px,window_points,"
          "window_rms_px,translation_m,rotation_deg,gated,"
          "rectify_ms,pyramid_ms,tracking_ms,detection_ms,matching_ms,ransac_ms,refine_ms,"
@@ -200,9 +205,9 @@ Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
 StatusOr<RunResult> RunStereoVo(const RunContext& context) {
   const StereoOdometryOptions options = context.options.Extract(StereoOdometryOptions::Describe());
   const StereoVoRunOptions run = context.options.Extract(StereoVoRunOptions::Describe());
-  StatusOr<StereoVoRun> estimated = RunStereoOdometry(context.dataset_path, options, run,
-                                                      context.timing, context.progress,
-                                                      context.cancel, &context.options);
+  StatusOr<StereoVoRun> estimated =
+      RunStereoOdometry(context.dataset_path, options, run, context.timing, context.progress,
+                        context.cancel, &context.options);
   if (!estimated.ok()) return estimated.status();
   RunResult result;
   result.dataset_format = estimated->dataset_format;

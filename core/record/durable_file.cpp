@@ -14,8 +14,9 @@ Status FileSystemError(const std::string& what, const std::string& path, int err
   if (error_number == ENOSPC || error_number == EDQUOT) {
     message += " (the disk is full; the recording is valid up to the last complete frame)";
   } else if (error_number == EFBIG) {
-    message += " (the file size limit is reached; the recording is valid up to the last "
-               "complete frame)";
+    message +=
+        " (the file size limit is reached; the recording is valid up to the last "
+        "complete frame)";
   }
   return Unavailable(message);
 }
@@ -40,8 +41,7 @@ int WriteFully(int fd, const void* data, size_t size) {
 
 }  // namespace
 
-Status WriteFileAtomically(const std::string& path, const std::vector<uint8_t>& bytes,
-                           bool sync) {
+Status WriteFileAtomically(const std::string& path, const std::vector<uint8_t>& bytes, bool sync) {
   const std::string part = path + ".part";
   const int fd = ::open(part.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return FileSystemError("cannot create", part, errno);

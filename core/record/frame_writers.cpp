@@ -147,7 +147,8 @@ class TumRgbdWriter : public FrameWriter {
       const float* z = depth_m.ptr<float>(v);
       uint16_t* out = raw.ptr<uint16_t>(v);
       for (int u = 0; u < depth_m.cols; ++u) {
-        const double value = std::isfinite(z[u]) && z[u] > 0 ? std::round(z[u] * kTumDepthScale) : 0;
+        const double value =
+            std::isfinite(z[u]) && z[u] > 0 ? std::round(z[u] * kTumDepthScale) : 0;
         out[u] = static_cast<uint16_t>(value > 65535 ? 0 : value);
       }
     }
@@ -162,7 +163,8 @@ class TumRgbdWriter : public FrameWriter {
 // An image folder: NNNNNN.png and times.txt with "time filename" lines (which define the frames).
 class ImageFolderWriter : public FrameWriter {
  public:
-  ImageFolderWriter(std::string folder, FrameWriterSettings s) : folder_(std::move(folder)), s_(s) {}
+  ImageFolderWriter(std::string folder, FrameWriterSettings s)
+      : folder_(std::move(folder)), s_(s) {}
 
   Status Init(const SourceInfo& info) {
     SIGHTLINE_RETURN_IF_ERROR(MakeDirs(folder_));
@@ -198,7 +200,8 @@ class ImageFolderWriter : public FrameWriter {
 // pairs equal timestamps, so a pair listed in one data.csv only is skipped, not an error.
 class EurocStereoWriter : public FrameWriter {
  public:
-  EurocStereoWriter(std::string folder, FrameWriterSettings s) : folder_(std::move(folder)), s_(s) {}
+  EurocStereoWriter(std::string folder, FrameWriterSettings s)
+      : folder_(std::move(folder)), s_(s) {}
 
   Status Init(const SourceInfo& info) {
     StereoRig rig;
@@ -213,12 +216,14 @@ class EurocStereoWriter : public FrameWriter {
         c->cy = (info.height - 1) / 2.0;
       }
       rig.right_from_left.translation() = Eigen::Vector3d(-0.1, 0, 0);
-      notes_.push_back("the source has no stereo calibration: sensor.yaml holds a nominal one "
-                       "(focal length = width, baseline 0.1 m)");
+      notes_.push_back(
+          "the source has no stereo calibration: sensor.yaml holds a nominal one "
+          "(focal length = width, baseline 0.1 m)");
     }
     if (rig.rectified) {
-      notes_.push_back("the source's images were rectified; EuRoC stores the rig as "
-                       "unrectified (zero distortion), so readers rectify again (a no-op)");
+      notes_.push_back(
+          "the source's images were rectified; EuRoC stores the rig as "
+          "unrectified (zero distortion), so readers rectify again (a no-op)");
     }
     const Eigen::Isometry3d body_from_right = rig.right_from_left.inverse();
     const double rate = info.rate_hz;
@@ -232,8 +237,8 @@ class EurocStereoWriter : public FrameWriter {
     if (stereo == nullptr) return InvalidArgument("EuRoC recording got a non-stereo frame");
     const long long ns = std::llround(stereo->stamp.sensor_time_s * 1e9);
     const std::string name = std::to_string(ns) + ".png";
-    SIGHTLINE_RETURN_IF_ERROR(
-        WritePngPair(Data("cam0", name), stereo->left, Data("cam1", name), stereo->right, s_, &bytes_));
+    SIGHTLINE_RETURN_IF_ERROR(WritePngPair(Data("cam0", name), stereo->left, Data("cam1", name),
+                                           stereo->right, s_, &bytes_));
     const std::string line = std::to_string(ns) + "," + name;
     // The reader pairs equal times; a cam1 line lost without its cam0 line only unpairs it.
     SIGHTLINE_RETURN_IF_ERROR(AppendCounted(&right_, line, &bytes_, false));
@@ -266,9 +271,8 @@ class EurocStereoWriter : public FrameWriter {
     for (int i = 0; i < 5; ++i) yaml << (i ? ", " : "") << c.distortion[i];
     yaml << "]\n";
     const std::string text = yaml.str();
-    SIGHTLINE_RETURN_IF_ERROR(WriteFileAtomically(JoinPath(dir, "sensor.yaml"),
-                                                  std::vector<uint8_t>(text.begin(), text.end()),
-                                                  s_.sync));
+    SIGHTLINE_RETURN_IF_ERROR(WriteFileAtomically(
+        JoinPath(dir, "sensor.yaml"), std::vector<uint8_t>(text.begin(), text.end()), s_.sync));
     return csv->Open(JoinPath(dir, "data.csv"), "#timestamp [ns],filename\n", s_.sync);
   }
 
@@ -289,10 +293,14 @@ StatusOr<std::unique_ptr<FrameWriter>> Make(const std::string& folder, const Sou
 
 const char* SensorFolderName(SourceKind kind) {
   switch (kind) {
-    case SourceKind::kRgbd: return "rgbd";
-    case SourceKind::kStereo: return "stereo";
-    case SourceKind::kMono: return "mono";
-    case SourceKind::kCloud: return "cloud";
+    case SourceKind::kRgbd:
+      return "rgbd";
+    case SourceKind::kStereo:
+      return "stereo";
+    case SourceKind::kMono:
+      return "mono";
+    case SourceKind::kCloud:
+      return "cloud";
   }
   return "sensor";
 }
@@ -302,10 +310,14 @@ StatusOr<std::unique_ptr<FrameWriter>> CreateFrameWriter(const std::string& dir,
                                                          const FrameWriterSettings& settings) {
   const std::string folder = JoinPath(dir, SensorFolderName(info.kind));
   switch (info.kind) {
-    case SourceKind::kRgbd: return Make<TumRgbdWriter>(folder, info, settings);
-    case SourceKind::kStereo: return Make<EurocStereoWriter>(folder, info, settings);
-    case SourceKind::kMono: return Make<ImageFolderWriter>(folder, info, settings);
-    case SourceKind::kCloud: break;
+    case SourceKind::kRgbd:
+      return Make<TumRgbdWriter>(folder, info, settings);
+    case SourceKind::kStereo:
+      return Make<EurocStereoWriter>(folder, info, settings);
+    case SourceKind::kMono:
+      return Make<ImageFolderWriter>(folder, info, settings);
+    case SourceKind::kCloud:
+      break;
   }
   return InvalidArgument("point-cloud sources cannot be recorded yet (RGB-D, stereo and mono can)");
 }

@@ -21,11 +21,11 @@ namespace sightline {
 
 // How a Recorder buffers and stores frames; keys `record.*`.
 struct RecorderOptions {
-  int queue_capacity = 64;     // Frames buffered between the producer and the disk.
+  int queue_capacity = 64;       // Frames buffered between the producer and the disk.
   bool block_when_full = false;  // Wait for the disk instead of dropping (recorded sources).
-  int png_compression = 1;     // zlib level 0 (fast, large) to 9 (slow, small).
-  bool sync = true;            // fsync every image and index line (a pulled plug loses at most
-                               // the frame being written).
+  int png_compression = 1;       // zlib level 0 (fast, large) to 9 (slow, small).
+  bool sync = true;              // fsync every image and index line (a pulled plug loses at most
+                                 // the frame being written).
 
   bool IsValid(std::string* error) const;
   static OptionTable<RecorderOptions> Describe();
@@ -33,21 +33,21 @@ struct RecorderOptions {
 
 // Counters of a recording; a snapshot (see Recorder::stats()).
 struct RecorderStats {
-  uint64_t frames_offered = 0;   // Frames given to Push().
-  uint64_t frames_written = 0;   // Frames completely on disk and listed in the index.
-  uint64_t frames_dropped = 0;   // Offered but not written: queue full, out of order, or after
-                                 // a write error. offered = written + dropped + queued.
+  uint64_t frames_offered = 0;       // Frames given to Push().
+  uint64_t frames_written = 0;       // Frames completely on disk and listed in the index.
+  uint64_t frames_dropped = 0;       // Offered but not written: queue full, out of order, or after
+                                     // a write error. offered = written + dropped + queued.
   uint64_t frames_out_of_order = 0;  // Of the dropped: sensor time not after the previous one.
-  int64_t bytes_written = 0;     // Images and index lines.
-  double elapsed_s = 0;          // Since Start().
-  double write_mb_per_s = 0;     // bytes_written / elapsed_s / 1e6.
-  bool failed = false;           // A write failed; the recording stopped (see status()).
+  int64_t bytes_written = 0;         // Images and index lines.
+  double elapsed_s = 0;              // Since Start().
+  double write_mb_per_s = 0;         // bytes_written / elapsed_s / 1e6.
+  bool failed = false;               // A write failed; the recording stopped (see status()).
 };
 
 // One frame that reached the disk, for acknowledgements.
 struct WrittenFrame {
-  int64_t index = 0;        // Position in the recording, from 0.
-  FrameStamp stamp;         // As the source delivered it.
+  int64_t index = 0;  // Position in the recording, from 0.
+  FrameStamp stamp;   // As the source delivered it.
 };
 
 // Records frames of one source into DIR/<sensor>/ (frame_writers.h) on its own thread. Push()
@@ -99,7 +99,7 @@ class Recorder {
   mutable std::mutex mutex_;  // Guards everything below.
   Status status_;
   RecorderStats stats_;
-  uint64_t rejected_ = 0;      // Push() after stop or failure.
+  uint64_t rejected_ = 0;       // Push() after stop or failure.
   uint64_t lost_on_error_ = 0;  // Queued frames discarded after a write error.
   double last_time_s_ = 0;
   bool have_time_ = false;

@@ -36,7 +36,8 @@ struct AravisStereoOptions {
   std::string pair_clock =
       "device";  // "device" timestamps (synchronised cameras) or "host" arrival.
   // OpenCV stereo YAML (as `sightline-cli calibrate stereo` writes) that the source attaches to
-  // its SourceInfo, so stereo pipelines can rectify; "" = none. Also aravis://L,R?calibration_file=F.
+  // its SourceInfo, so stereo pipelines can rectify; "" = none. Also
+  // aravis://L,R?calibration_file=F.
   std::string calibration_file;
 
   bool IsValid(std::string* error) const;

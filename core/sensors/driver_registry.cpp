@@ -109,7 +109,8 @@ DriverInfo AravisDriver() {
     const size_t comma = ids.find(',');
     if (comma == std::string::npos) {
       if (!query.empty()) {
-        return InvalidArgument("'" + uri + "': only a stereo pair takes URI options "
+        return InvalidArgument("'" + uri +
+                               "': only a stereo pair takes URI options "
                                "(aravis://LEFT,RIGHT?calibration_file=FILE)");
       }
       return std::unique_ptr<Source>(std::make_unique<AravisSource>(ids, *options));
@@ -173,8 +174,7 @@ DriverInfo ReplayDriver() {
     if (!options.ok()) return options.status();
     auto parsed = ReplaySource::ParseUri(StripScheme(uri, kReplayScheme), *options);
     if (!parsed.ok()) return parsed.status();
-    return std::unique_ptr<Source>(
-        std::make_unique<ReplaySource>(parsed->first, parsed->second));
+    return std::unique_ptr<Source>(std::make_unique<ReplaySource>(parsed->first, parsed->second));
   };
   return d;
 }
@@ -200,8 +200,7 @@ Status DeclareSensorOptions(OptionSet* options) {
 
 bool IsSensorUri(const std::string& uri) {
   return StartsWith(uri, kOpenNi2Scheme) || StartsWith(uri, kAravisScheme) ||
-         StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) ||
-         OpenNi2IsRecording(uri);
+         StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) || OpenNi2IsRecording(uri);
 }
 
 StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const OptionSet& options) {
@@ -214,10 +213,10 @@ StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const Optio
   if (driver == nullptr) {
     const size_t scheme_end = uri.find("://");
     if (scheme_end != std::string::npos && uri.find('/') > scheme_end) {
-      return InvalidArgument("unknown source scheme '" + uri.substr(0, scheme_end + 3) + "' in '" +
-                             uri +
-                             "' (known: openni2://, aravis://, v4l2://, replay://, an .oni file or a "
-                             "dataset path)");
+      return InvalidArgument(
+          "unknown source scheme '" + uri.substr(0, scheme_end + 3) + "' in '" + uri +
+          "' (known: openni2://, aravis://, v4l2://, replay://, an .oni file or a "
+          "dataset path)");
     }
     return OpenDataset(uri);
   }

@@ -144,7 +144,7 @@ class LiveSource : public Source {
   std::thread thread_;
   std::mutex stop_mutex_;
   std::condition_variable stop_cv_;
-  bool stop_ = false;  // Guarded by stop_mutex_.
+  bool stop_ = false;               // Guarded by stop_mutex_.
   std::atomic<bool> ended_{false};  // The capture thread saw kOutOfRange (a paced recording).
 
   mutable std::mutex stats_mutex_;

@@ -91,11 +91,11 @@ Status ReplaySource::Connect(SourceInfo* info) {
   *info = recording_->info();
   // rate_hz keeps describing the timestamps (the recording's); fps only paces delivery.
   const double rate = info->rate_hz;
-  info->notes.push_back("replayed as a live camera: " + std::to_string(info->frame_count) +
-                        " " + info->format + " frames at " +
-                        (options_.fps > 0 ? std::to_string(options_.fps) + " Hz"
-                                          : std::string("the recorded rate")) +
-                        (options_.loop ? ", looping" : ""));
+  info->notes.push_back(
+      "replayed as a live camera: " + std::to_string(info->frame_count) + " " + info->format +
+      " frames at " +
+      (options_.fps > 0 ? std::to_string(options_.fps) + " Hz" : std::string("the recorded rate")) +
+      (options_.loop ? ", looping" : ""));
   info->format = "replayed " + info->format;
   info->live = true;
   info->seekable = false;
@@ -139,8 +139,8 @@ StatusOr<std::optional<CapturedFrame>> ReplaySource::ReadFrame(std::chrono::mill
     stamp.sensor_time_s += loop_offset_s_;
     const double offset_s = options_.fps > 0 ? static_cast<double>(delivered_) / options_.fps
                                              : stamp.sensor_time_s - first_time_s_;
-    due_ = start_ + std::chrono::duration_cast<Clock::duration>(
-                        std::chrono::duration<double>(offset_s));
+    due_ = start_ +
+           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(offset_s));
   }
   const Clock::time_point now = Clock::now();
   if (due_ - now > timeout) {

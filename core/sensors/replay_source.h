@@ -15,8 +15,8 @@ namespace sightline {
 // Settings of replayed recordings, keys `sensors.replay.*`; a URI's query (?fps=30&loop=1)
 // overrides them for one source.
 struct ReplayOptions {
-  double fps = 0;          // Delivery rate [Hz]; 0 = the recording's own timestamps.
-  bool loop = false;       // Start again at the end (times keep increasing) instead of ending.
+  double fps = 0;     // Delivery rate [Hz]; 0 = the recording's own timestamps.
+  bool loop = false;  // Start again at the end (times keep increasing) instead of ending.
   // Queueing; no stall detection (a starved machine reads slowly, and a reconnect would start
   // the recording over).
   LiveSourceOptions live = [] {
@@ -70,7 +70,7 @@ class ReplaySource : public LiveSource {
   double first_time_s_ = 0;
   double loop_offset_s_ = 0;
   double last_time_s_ = 0;  // Sensor time of the last delivered frame.
-  double period_s_ = 0;  // One frame at the nominal rate, for loop offsets.
+  double period_s_ = 0;     // One frame at the nominal rate, for loop offsets.
   int64_t delivered_ = 0;
 };
 

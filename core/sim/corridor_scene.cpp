@@ -48,9 +48,10 @@ class CorridorBuilder {
 
   StatusOr<Scene> Build() {
     const double hw = 0.5 * o_.corridor_width_m, lx = o_.loop_length_m, ly = o_.loop_width_m;
-    std::vector<FreeRect> rects = {
-        {-hw, -hw, lx + hw, hw}, {lx - hw, -hw, lx + hw, ly + hw},
-        {-hw, ly - hw, lx + hw, ly + hw}, {-hw, -hw, hw, ly + hw}};
+    std::vector<FreeRect> rects = {{-hw, -hw, lx + hw, hw},
+                                   {lx - hw, -hw, lx + hw, ly + hw},
+                                   {-hw, ly - hw, lx + hw, ly + hw},
+                                   {-hw, -hw, hw, ly + hw}};
     if (o_.branch_length_m > 0) {
       const double bx = std::round(0.45 * lx * 10) / 10, by = std::round(0.5 * ly * 10) / 10;
       rects.push_back({bx - hw, -hw - o_.branch_length_m, bx + hw, -hw});          // T off x.
@@ -79,14 +80,14 @@ class CorridorBuilder {
     // Beyond the walls too, so the floor runs under the recessed doors.
     const double margin = o_.door_recess_m + 0.1;
     x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
-    Material floor{TextureKind::kTiles, {0.62f, 0.6f, 0.56f}, {0.3f, 0.29f, 0.27f}, 0.5f,
-                   NextSeed(rng_)};
+    Material floor{
+        TextureKind::kTiles, {0.62f, 0.6f, 0.56f}, {0.3f, 0.29f, 0.27f}, 0.5f, NextSeed(rng_)};
     const int floor_object = scene_.AddObject(ObjectKind::kFloor, "floor", 0);
-    scene_.AddRectangle(floor_object, scene_.AddMaterial(floor), {x0, y0, 0}, {1, 0, 0},
-                        {0, 1, 0}, {x1 - x0, y1 - y0});
+    scene_.AddRectangle(floor_object, scene_.AddMaterial(floor), {x0, y0, 0}, {1, 0, 0}, {0, 1, 0},
+                        {x1 - x0, y1 - y0});
     scene_.regions.push_back({0, "floor", 0, 1, 0, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}});
-    Material ceiling{TextureKind::kTiles, {0.85f, 0.85f, 0.82f}, {0.55f, 0.55f, 0.55f}, 0.6f,
-                     NextSeed(rng_)};
+    Material ceiling{
+        TextureKind::kTiles, {0.85f, 0.85f, 0.82f}, {0.55f, 0.55f, 0.55f}, 0.6f, NextSeed(rng_)};
     const int ceiling_object = scene_.AddObject(ObjectKind::kCeiling, "ceiling");
     const double h = o_.height_m;
     scene_.AddRectangle(ceiling_object, scene_.AddMaterial(ceiling), {x0, y0, h}, {0, 1, 0},
@@ -98,8 +99,8 @@ class CorridorBuilder {
       const double length = along_x ? r.x1 - r.x0 : r.y1 - r.y0;
       for (double s = 1.2; s + 0.6 < length; s += 2.4) {
         const Eigen::Vector3d c = along_x
-            ? Eigen::Vector3d(r.x0 + s, 0.5 * (r.y0 + r.y1), h - 0.005)
-            : Eigen::Vector3d(0.5 * (r.x0 + r.x1), r.y0 + s, h - 0.005);
+                                      ? Eigen::Vector3d(r.x0 + s, 0.5 * (r.y0 + r.y1), h - 0.005)
+                                      : Eigen::Vector3d(0.5 * (r.x0 + r.x1), r.y0 + s, h - 0.005);
         const Eigen::Vector3d a = along_x ? Eigen::Vector3d(1.2, 0, 0) : Eigen::Vector3d(0, 1.2, 0);
         const Eigen::Vector3d b = along_x ? Eigen::Vector3d(0, 0.6, 0) : Eigen::Vector3d(0.6, 0, 0);
         AddFacingRectangle(&scene_, ceiling_object, light, c - 0.5 * a - 0.5 * b, a, b,
@@ -115,7 +116,10 @@ class CorridorBuilder {
     const double h = o_.height_m, door_h = std::min(2.1, h - 0.25);
     Material paint{TextureKind::kSpeckle,
                    JitterColor(rng_, {0.84f, 0.81f, 0.74f}, 0.06),
-                   JitterColor(rng_, {0.6f, 0.57f, 0.52f}, 0.08), 0.16f, NextSeed(rng_), 0.3f};
+                   JitterColor(rng_, {0.6f, 0.57f, 0.52f}, 0.08),
+                   0.16f,
+                   NextSeed(rng_),
+                   0.3f};
     const int material = scene_.AddMaterial(paint);
     const int object =
         scene_.AddObject(ObjectKind::kWall, "wall " + std::to_string(wall.id), wall.id);
@@ -123,8 +127,8 @@ class CorridorBuilder {
     const double usable = f.length - 2 * kEndMargin;
     const int slots = usable > kDoorWidth ? static_cast<int>(usable / o_.door_spacing_m) : 0;
     for (int k = 0; k < slots; ++k) {
-      const double center = kEndMargin + (k + 0.5) * usable / slots +
-                            Uniform(rng_, -0.2, 0.2) * o_.door_spacing_m;
+      const double center =
+          kEndMargin + (k + 0.5) * usable / slots + Uniform(rng_, -0.2, 0.2) * o_.door_spacing_m;
       if (Uniform(rng_, 0, 1) < 0.2) continue;
       const double a = center - 0.5 * kDoorWidth, b = center + 0.5 * kDoorWidth;
       if (a < kEndMargin || b > f.length - kEndMargin || !plan.high.IsFree(a - 0.2, b + 0.5)) {
@@ -155,21 +159,22 @@ class CorridorBuilder {
     const int object = scene_.AddObject(ObjectKind::kDoor, "door " + std::to_string(id), id);
     const double r = o_.door_recess_m, width = door.y() - door.x();
     const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
-    const int wood = scene_.AddMaterial(
-        {TextureKind::kSpeckle, JitterColor(rng_, {0.55f, 0.38f, 0.22f}, 0.08),
-         {0.32f, 0.2f, 0.1f}, 0.09f, NextSeed(rng_)});
+    const int wood = scene_.AddMaterial({TextureKind::kSpeckle,
+                                         JitterColor(rng_, {0.55f, 0.38f, 0.22f}, 0.08),
+                                         {0.32f, 0.2f, 0.1f},
+                                         0.09f,
+                                         NextSeed(rng_)});
     const int frame = scene_.AddMaterial(
         {TextureKind::kSpeckle, {0.45f, 0.45f, 0.48f}, {0.3f, 0.3f, 0.32f}, 0.05f, NextSeed(rng_)});
     scene_.AddRectangle(object, wood, f.At(door.x(), 0, -r), f.along, up, {width, door_h});
-    AddFacingRectangle(&scene_, object, frame, f.At(door.x(), 0, -r), r * f.normal,
-                       door_h * up, f.along);
-    AddFacingRectangle(&scene_, object, frame, f.At(door.y(), 0, -r), r * f.normal,
-                       door_h * up, -f.along);
+    AddFacingRectangle(&scene_, object, frame, f.At(door.x(), 0, -r), r * f.normal, door_h * up,
+                       f.along);
+    AddFacingRectangle(&scene_, object, frame, f.At(door.y(), 0, -r), r * f.normal, door_h * up,
+                       -f.along);
     AddFacingRectangle(&scene_, object, frame, f.At(door.x(), door_h, -r), width * f.along,
                        r * f.normal, -up);
     const double yaw = std::atan2(f.along.y(), f.along.x());
-    scene_.AddBox(object, frame, f.At(door.y() - 0.15, 0.98, -r + 0.025), {0.15, 0.05, 0.035},
-                  yaw);
+    scene_.AddBox(object, frame, f.At(door.y() - 0.15, 0.98, -r + 0.025), {0.15, 0.05, 0.035}, yaw);
     // A room sign beside the door.
     const std::string label = std::to_string(101 + id);
     const int image = scene_.AddImage(MakeButtonLabelImage(label, false, 96));
@@ -206,8 +211,8 @@ class CorridorBuilder {
     const WallFrame& f = plans_[wall].frame;
     const int object = scene_.AddObject(ObjectKind::kPoster, "poster " + std::to_string(i), i);
     Material m{TextureKind::kImage};
-    m.image = scene_.AddImage(MakePosterImage(NextSeed(rng_), static_cast<int>(w / 0.002),
-                                              static_cast<int>(h / 0.002)));
+    m.image = scene_.AddImage(
+        MakePosterImage(NextSeed(rng_), static_cast<int>(w / 0.002), static_cast<int>(h / 0.002)));
     m.image_size_m = {static_cast<float>(w), static_cast<float>(h)};
     // Seen from the corridor, +along points right: s along it and t up show it upright.
     scene_.AddRectangle(object, scene_.AddMaterial(m), f.At(s - 0.5 * w, 1.5 - 0.5 * h, 0.004),
@@ -222,12 +227,13 @@ class CorridorBuilder {
     if (wall < 0) return;
     const WallFrame& f = plans_[wall].frame;
     const int object = scene_.AddObject(ObjectKind::kBox, "box " + std::to_string(i), i);
-    const int cardboard = scene_.AddMaterial(
-        {TextureKind::kSpeckle, JitterColor(rng_, {0.66f, 0.5f, 0.32f}, 0.07),
-         {0.35f, 0.26f, 0.16f}, 0.07f, NextSeed(rng_)});
+    const int cardboard = scene_.AddMaterial({TextureKind::kSpeckle,
+                                              JitterColor(rng_, {0.66f, 0.5f, 0.32f}, 0.07),
+                                              {0.35f, 0.26f, 0.16f},
+                                              0.07f,
+                                              NextSeed(rng_)});
     const double yaw = std::atan2(f.along.y(), f.along.x());
-    scene_.AddBox(object, cardboard, f.At(s, 0, 0.5 * depth + 0.03), {length, depth, height},
-                  yaw);
+    scene_.AddBox(object, cardboard, f.At(s, 0, 0.5 * depth + 0.03), {length, depth, height}, yaw);
     if (Uniform(rng_, 0, 1) < 0.35) {  // A smaller box on top.
       scene_.AddBox(object, cardboard, f.At(s, height, 0.5 * depth + 0.03),
                     {0.7 * length, 0.7 * depth, 0.6 * height}, yaw + Uniform(rng_, -0.3, 0.3));
@@ -240,9 +246,11 @@ class CorridorBuilder {
     if (wall < 0) return;
     const WallFrame& f = plans_[wall].frame;
     const int object = scene_.AddObject(ObjectKind::kBin, "bin " + std::to_string(i), i);
-    const int plastic = scene_.AddMaterial(
-        {TextureKind::kSpeckle, JitterColor(rng_, {0.2f, 0.35f, 0.6f}, 0.1),
-         {0.1f, 0.15f, 0.3f}, 0.06f, NextSeed(rng_)});
+    const int plastic = scene_.AddMaterial({TextureKind::kSpeckle,
+                                            JitterColor(rng_, {0.2f, 0.35f, 0.6f}, 0.1),
+                                            {0.1f, 0.15f, 0.3f},
+                                            0.06f,
+                                            NextSeed(rng_)});
     scene_.AddUprightCylinder(object, plastic, f.At(s, 0, 0.22), 0.18, 0.55);
   }
 
@@ -253,15 +261,19 @@ class CorridorBuilder {
       WalkingPerson p;
       p.id = i;
       p.object = scene_.AddObject(ObjectKind::kPerson, "person " + std::to_string(i), i);
-      p.clothes_material = scene_.AddMaterial(
-          {TextureKind::kSpeckle, JitterColor(rng_, {0.5f, 0.3f, 0.3f}, 0.3),
-           JitterColor(rng_, {0.2f, 0.2f, 0.3f}, 0.15), 0.05f, NextSeed(rng_)});
-      p.trousers_material = scene_.AddMaterial(
-          {TextureKind::kSpeckle, JitterColor(rng_, {0.2f, 0.22f, 0.3f}, 0.1),
-           {0.1f, 0.1f, 0.12f}, 0.04f, NextSeed(rng_)});
-      p.skin_material = scene_.AddMaterial(
-          {TextureKind::kSpeckle, JitterColor(rng_, {0.8f, 0.62f, 0.5f}, 0.1),
-           {0.3f, 0.2f, 0.15f}, 0.03f, NextSeed(rng_)});
+      p.clothes_material =
+          scene_.AddMaterial({TextureKind::kSpeckle, JitterColor(rng_, {0.5f, 0.3f, 0.3f}, 0.3),
+                              JitterColor(rng_, {0.2f, 0.2f, 0.3f}, 0.15), 0.05f, NextSeed(rng_)});
+      p.trousers_material = scene_.AddMaterial({TextureKind::kSpeckle,
+                                                JitterColor(rng_, {0.2f, 0.22f, 0.3f}, 0.1),
+                                                {0.1f, 0.1f, 0.12f},
+                                                0.04f,
+                                                NextSeed(rng_)});
+      p.skin_material = scene_.AddMaterial({TextureKind::kSpeckle,
+                                            JitterColor(rng_, {0.8f, 0.62f, 0.5f}, 0.1),
+                                            {0.3f, 0.2f, 0.15f},
+                                            0.03f,
+                                            NextSeed(rng_)});
       p.height_m = Uniform(rng_, 1.62, 1.86);
       if (i == 0) {  // The leader walks the robot's route ahead of it.
         const double ly = o_.loop_width_m;
@@ -273,8 +285,7 @@ class CorridorBuilder {
         p.speed_mps = o_.people_speed_mps;
         p.lateral_m = 0.35;
       } else {  // A passer-by walking the first corridor to and fro, on the robot's right.
-        auto path = PlanarPath::Through({{lx - 1.5, 0}, {2.5, 0}}, 0,
-                                        PlanarPath::End::kPingPong);
+        auto path = PlanarPath::Through({{lx - 1.5, 0}, {2.5, 0}}, 0, PlanarPath::End::kPingPong);
         if (!path.ok()) continue;
         p.path = std::move(*path);
         p.speed_mps = 1.1;

@@ -52,7 +52,10 @@ std::vector<WallLine> BoundaryWalls(const std::vector<FreeRect>& rects) {
       if (left == right) continue;
       const Eigen::Vector2d a(xs[i], ys[j]), b(xs[i], ys[j + 1]);
       // The free side must be left of start -> end.
-      if (right) add(b, a); else add(a, b);
+      if (right)
+        add(b, a);
+      else
+        add(a, b);
     }
   }
   // Horizontal grid lines y = ys[j]: cells (i, j-1) below and (i, j) above.
@@ -61,7 +64,10 @@ std::vector<WallLine> BoundaryWalls(const std::vector<FreeRect>& rects) {
       const bool below = free(i, j - 1), above = free(i, j);
       if (below == above) continue;
       const Eigen::Vector2d a(xs[i], ys[j]), b(xs[i + 1], ys[j]);
-      if (above) add(a, b); else add(b, a);
+      if (above)
+        add(a, b);
+      else
+        add(b, a);
     }
   }
   for (size_t k = 0; k < walls.size(); ++k) walls[k].id = static_cast<int>(k);

@@ -91,9 +91,8 @@ Eigen::Vector3f SpeckleAlbedo(const Material& m, float s, float t, float inv_fp)
   const float wb = DetailWeight(cell, inv_fp);
   if (wb > 0 && Blob(x, y, m.density, m.seed ^ 0xA5A5u, &tone)) {
     // Blobs range from the accent colour to a lighter tint of the base colour.
-    const Eigen::Vector3f blob =
-        tone < 0.6f ? Eigen::Vector3f(m.accent * (0.7f + 0.5f * tone))
-                    : Eigen::Vector3f(m.color * (1.15f + 0.2f * tone));
+    const Eigen::Vector3f blob = tone < 0.6f ? Eigen::Vector3f(m.accent * (0.7f + 0.5f * tone))
+                                             : Eigen::Vector3f(m.color * (1.15f + 0.2f * tone));
     albedo += wb * (blob - albedo);
   }
   // A second, smaller blob layer breaks the regularity of the first.
@@ -135,7 +134,8 @@ Eigen::Vector3f BrushedAlbedo(const Material& m, float s, float t, float inv_fp)
   const uint32_t h = HashCell(FastFloor(t * (1.0f / kStripe)), 3, m.seed);
   float shade = 0.95f + 0.1f * DetailWeight(kStripe, inv_fp) * HashUnit(h);
   const float inv_cell = 1.0f / m.scale_m;
-  shade += 0.06f * DetailWeight(m.scale_m, inv_fp) * Speckle(s * inv_cell, t * inv_cell, m.seed ^ 0x55u);
+  shade +=
+      0.06f * DetailWeight(m.scale_m, inv_fp) * Speckle(s * inv_cell, t * inv_cell, m.seed ^ 0x55u);
   shade *= 0.92f + 0.16f * ValueNoise(20.0f * s, 20.0f * t, m.seed ^ 0x66u);
   return m.color * shade;
 }

@@ -34,12 +34,13 @@ struct Wobble {
 
 StatusOr<PlanarPath> RouteOf(const Scene& scene, const MotionOptions& motion) {
   if (scene.hints.route.size() < 2) {
-    return InvalidArgument("scene '" + scene.name() + "' has no route for a robot or handheld "
+    return InvalidArgument("scene '" + scene.name() +
+                           "' has no route for a robot or handheld "
                            "motion (MotionHints::route)");
   }
-  auto path = PlanarPath::Through(scene.hints.route, motion.turn_radius_m,
-                                  scene.hints.route_loops ? PlanarPath::End::kLoop
-                                                          : PlanarPath::End::kStop);
+  auto path = PlanarPath::Through(
+      scene.hints.route, motion.turn_radius_m,
+      scene.hints.route_loops ? PlanarPath::End::kLoop : PlanarPath::End::kStop);
   if (!path.ok()) return path.status().WithContext("sim.motion.turn_radius_m");
   return path;
 }
@@ -47,9 +48,7 @@ StatusOr<PlanarPath> RouteOf(const Scene& scene, const MotionOptions& motion) {
 Eigen::Isometry3d EndEffectorFromCamera(const ArmOptions& arm) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   // Columns: the camera's x (right), y (down), z (optical axis) in the end-effector frame.
-  t.linear() << 0, -1, 0,
-                1, 0, 0,
-                0, 0, 1;
+  t.linear() << 0, -1, 0, 1, 0, 0, 0, 0, 1;
   t.translation() = Eigen::Vector3d(arm.camera_offset_x_m, 0, arm.camera_offset_z_m);
   return t;
 }
@@ -66,7 +65,8 @@ bool MotionOptions::IsValid(std::string* error) const {
     return fail("kind = '" + kind + "': must be auto, robot, handheld, arm or static");
   }
   if (!(speed_mps >= 0 && speed_mps <= 5)) return fail("speed_mps must lie in [0, 5] m/s");
-  if (!(turn_radius_m >= 0 && turn_radius_m <= 5)) return fail("turn_radius_m must lie in [0, 5] m");
+  if (!(turn_radius_m >= 0 && turn_radius_m <= 5))
+    return fail("turn_radius_m must lie in [0, 5] m");
   if (!(camera_height_m >= 0.05 && camera_height_m <= 3)) {
     return fail("camera_height_m must lie in [0.05, 3] m");
   }
@@ -149,8 +149,7 @@ Eigen::Matrix3d BodyFromOptical(double tilt) {
 }
 
 StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
-                                const ArmOptions& arm, int frames, double rate_hz,
-                                uint64_t seed) {
+                                const ArmOptions& arm, int frames, double rate_hz, uint64_t seed) {
   std::string error;
   if (!motion.IsValid(&error) || !arm.IsValid(&error)) return InvalidArgument(error);
   if (frames < 1) return InvalidArgument("sim.frames must be at least 1");
@@ -158,8 +157,9 @@ StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
   MotionPlan plan;
   plan.kind = motion.kind;
   if (plan.kind == "auto") {
-    plan.kind = scene.hints.target_button >= 0 ? "arm"
-                : scene.hints.route.size() >= 2 ? "robot" : "static";
+    plan.kind = scene.hints.target_button >= 0  ? "arm"
+                : scene.hints.route.size() >= 2 ? "robot"
+                                                : "static";
   }
   for (int i = 0; i < frames; ++i) plan.times_s.push_back(i / rate_hz);
   const double tilt = motion.camera_tilt_deg * kDeg;
@@ -200,7 +200,8 @@ StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
   if (plan.kind != "arm") return InvalidArgument("sim.motion.kind '" + plan.kind + "' unknown");
   const int target = scene.hints.target_button;
   if (target < 0 || target >= static_cast<int>(scene.buttons.size())) {
-    return InvalidArgument("scene '" + scene.name() + "' has no target button for an arm "
+    return InvalidArgument("scene '" + scene.name() +
+                           "' has no target button for an arm "
                            "motion (MotionHints::target_button)");
   }
   const ButtonSpec& button = scene.buttons[target];
@@ -210,7 +211,8 @@ StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
   // The camera looks into the panel (along -normal) with the map's z up in the image.
   Eigen::Matrix3d world_from_optical;
   world_from_optical.col(2) = -button.normal.normalized();
-  world_from_optical.col(0) = world_from_optical.col(2).cross(Eigen::Vector3d::UnitZ()).normalized();
+  world_from_optical.col(0) =
+      world_from_optical.col(2).cross(Eigen::Vector3d::UnitZ()).normalized();
   world_from_optical.col(1) = world_from_optical.col(2).cross(world_from_optical.col(0));
   const double duration = frames > 1 ? plan.times_s.back() : 1.0;
   for (double t : plan.times_s) {

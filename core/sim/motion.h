@@ -18,14 +18,14 @@ namespace sightline::sim {
 
 // The motion of the sensor carrier.
 struct MotionOptions {
-  std::string kind = "auto";       // "auto" (from the scene), "robot", "handheld", "arm", "static".
-  double speed_mps = 0.5;          // Robot / walking speed along the route, m/s.
-  double turn_radius_m = 0.6;      // Radius of the route's turns, metres.
-  double camera_height_m = 0.8;    // Robot: optical centre above the floor; handheld: mean height.
-  double camera_tilt_deg = 10.0;   // Camera pitched down by this angle, degrees.
-  double camera_forward_m = 0.1;   // Robot: optical centre ahead of the base centre, metres.
-  double shake_m = 0.03;           // Handheld: amplitude of the positional wobble, metres.
-  double shake_deg = 2.0;          // Handheld: amplitude of the angular wobble, degrees.
+  std::string kind = "auto";      // "auto" (from the scene), "robot", "handheld", "arm", "static".
+  double speed_mps = 0.5;         // Robot / walking speed along the route, m/s.
+  double turn_radius_m = 0.6;     // Radius of the route's turns, metres.
+  double camera_height_m = 0.8;   // Robot: optical centre above the floor; handheld: mean height.
+  double camera_tilt_deg = 10.0;  // Camera pitched down by this angle, degrees.
+  double camera_forward_m = 0.1;  // Robot: optical centre ahead of the base centre, metres.
+  double shake_m = 0.03;          // Handheld: amplitude of the positional wobble, metres.
+  double shake_deg = 2.0;         // Handheld: amplitude of the angular wobble, degrees.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MotionOptions> Describe();
@@ -50,9 +50,9 @@ struct ArmOptions {
 
 // The sampled motion of one recording.
 struct MotionPlan {
-  std::string kind;                                    // Resolved: robot, handheld, arm, static.
-  std::vector<double> times_s;                         // One per frame.
-  std::vector<Eigen::Isometry3d> world_from_body;      // One per frame.
+  std::string kind;                                // Resolved: robot, handheld, arm, static.
+  std::vector<double> times_s;                     // One per frame.
+  std::vector<Eigen::Isometry3d> world_from_body;  // One per frame.
   Eigen::Isometry3d body_from_camera = Eigen::Isometry3d::Identity();  // Every camera's mount.
   // Arm: the base in the map frame (body = end effector).
   Eigen::Isometry3d world_from_arm_base = Eigen::Isometry3d::Identity();
@@ -71,7 +71,6 @@ Eigen::Matrix3d BodyFromOptical(double tilt_rad);
 // button, "robot" for scenes with a route, else "static". InvalidArgument when the kind needs
 // what the scene lacks (a route, a target button) or the route's turns do not fit.
 StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
-                                const ArmOptions& arm, int frames, double rate_hz,
-                                uint64_t seed);
+                                const ArmOptions& arm, int frames, double rate_hz, uint64_t seed);
 
 }  // namespace sightline::sim

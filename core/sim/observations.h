@@ -15,8 +15,8 @@ namespace sightline::sim {
 // A button's centre in one image.
 struct ButtonObservation {
   int frame = 0;
-  int button = 0;                                         // ButtonSpec::id.
-  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();        // Projection (u, v), pixels.
+  int button = 0;                                             // ButtonSpec::id.
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();            // Projection (u, v), pixels.
   Eigen::Vector3d center_in_world = Eigen::Vector3d::Zero();  // Map frame, metres.
   bool visible = false;  // In front of the camera, inside the image and not occluded.
 };

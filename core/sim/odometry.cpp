@@ -32,7 +32,8 @@ bool OdometryOptions::IsValid(std::string* error) const {
     return fail("heading_drift_deg_per_m must lie in [-45, 45] deg/m");
   }
   if (!(std::abs(scale_error) <= 0.5)) return fail("scale_error must lie in [-0.5, 0.5]");
-  if (!(distance_noise >= 0 && distance_noise <= 1)) return fail("distance_noise must lie in [0, 1]");
+  if (!(distance_noise >= 0 && distance_noise <= 1))
+    return fail("distance_noise must lie in [0, 1]");
   if (!(heading_noise_deg >= 0 && heading_noise_deg <= 45)) {
     return fail("heading_noise_deg must lie in [0, 45]");
   }
@@ -68,7 +69,8 @@ Trajectory SimulateWheelOdometry(const std::vector<double>& times_s,
     const double alpha = ds > 0 ? std::atan2(dy, dx) : 0.0;
     const double dtheta = Yaw(step);
     const double n_d = Normal(engine), n_h = Normal(engine);  // Always drawn: stable streams.
-    const double ds_odo = ds * (1 + options.scale_error) + options.distance_noise * std::sqrt(ds) * n_d;
+    const double ds_odo =
+        ds * (1 + options.scale_error) + options.distance_noise * std::sqrt(ds) * n_d;
     const double dtheta_odo = dtheta + options.heading_drift_deg_per_m * kDeg * ds +
                               options.heading_noise_deg * kDeg * std::sqrt(ds) * n_h;
     x += ds_odo * std::cos(yaw + alpha);

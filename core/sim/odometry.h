@@ -16,10 +16,10 @@ namespace sightline::sim {
 // Odometry error model. With all noise at zero, after driving L metres the heading error is
 // exactly heading_drift_deg_per_m * L and every distance is scaled by (1 + scale_error).
 struct OdometryOptions {
-  double heading_drift_deg_per_m = 0.5;       // Systematic heading drift, deg per metre driven.
-  double scale_error = 0.01;                  // Systematic distance error (0.01 = 1 % long).
-  double distance_noise = 0.01;               // Distance noise, m per sqrt(m) driven.
-  double heading_noise_deg = 0.2;             // Heading noise, deg per sqrt(m) driven.
+  double heading_drift_deg_per_m = 0.5;  // Systematic heading drift, deg per metre driven.
+  double scale_error = 0.01;             // Systematic distance error (0.01 = 1 % long).
+  double distance_noise = 0.01;          // Distance noise, m per sqrt(m) driven.
+  double heading_noise_deg = 0.2;        // Heading noise, deg per sqrt(m) driven.
 
   bool IsValid(std::string* error) const;
   static OptionTable<OdometryOptions> Describe();

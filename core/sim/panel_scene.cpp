@@ -75,26 +75,29 @@ StatusOr<Scene> BuildPanel(const PanelOptions& o, uint64_t seed) {
   const int wall_object = scene.AddObject(ObjectKind::kWall, "wall 0", 0);
   const int marble = scene.AddMaterial({TextureKind::kSpeckle,
                                         JitterColor(rng, {0.8f, 0.76f, 0.7f}, 0.04),
-                                        {0.6f, 0.56f, 0.5f}, 0.08f, NextSeed(rng), 0.35f});
+                                        {0.6f, 0.56f, 0.5f},
+                                        0.08f,
+                                        NextSeed(rng),
+                                        0.35f});
   // The wall has an opening for the elevator door (map y in [dy0, dy1], up to dh).
   const double dy0 = 0.35, dy1 = 1.45, dh = 2.1, recess = 0.05;
   AddFacingRectangle(&scene, wall_object, marble, {wall_x, -kWallHalfWidth, 0},
                      {0, dy0 + kWallHalfWidth, 0}, {0, 0, kWallHeight}, toward);
-  AddFacingRectangle(&scene, wall_object, marble, {wall_x, dy1, 0},
-                     {0, kWallHalfWidth - dy1, 0}, {0, 0, kWallHeight}, toward);
+  AddFacingRectangle(&scene, wall_object, marble, {wall_x, dy1, 0}, {0, kWallHalfWidth - dy1, 0},
+                     {0, 0, kWallHeight}, toward);
   AddFacingRectangle(&scene, wall_object, marble, {wall_x, dy0, dh}, {0, dy1 - dy0, 0},
                      {0, 0, kWallHeight - dh}, toward);
   scene.walls.push_back({0, {wall_x, -kWallHalfWidth}, {wall_x, kWallHalfWidth}});
   const int floor_object = scene.AddObject(ObjectKind::kFloor, "floor", 0);
-  const int tiles = scene.AddMaterial({TextureKind::kTiles, {0.5f, 0.5f, 0.52f},
-                                       {0.25f, 0.25f, 0.25f}, 0.4f, NextSeed(rng)});
+  const int tiles = scene.AddMaterial(
+      {TextureKind::kTiles, {0.5f, 0.5f, 0.52f}, {0.25f, 0.25f, 0.25f}, 0.4f, NextSeed(rng)});
   scene.AddRectangle(floor_object, tiles, {-1.5, -kWallHalfWidth, 0}, {1, 0, 0}, {0, 1, 0},
                      {wall_x + 1.5, 2 * kWallHalfWidth});
 
   // Elevator door left of the panel (map +y), recessed 5 cm.
   const int door_object = scene.AddObject(ObjectKind::kDoor, "elevator door", 0);
-  const int steel = scene.AddMaterial({TextureKind::kBrushed, {0.7f, 0.72f, 0.75f},
-                                       {0.4f, 0.4f, 0.4f}, 0.01f, NextSeed(rng)});
+  const int steel = scene.AddMaterial(
+      {TextureKind::kBrushed, {0.7f, 0.72f, 0.75f}, {0.4f, 0.4f, 0.4f}, 0.01f, NextSeed(rng)});
   AddFacingRectangle(&scene, door_object, steel, {wall_x + recess, dy0, 0}, {0, dy1 - dy0, 0},
                      {0, 0, dh}, toward);
   AddFacingRectangle(&scene, door_object, steel, {wall_x, dy0, 0}, {recess, 0, 0}, {0, 0, dh},
@@ -104,8 +107,9 @@ StatusOr<Scene> BuildPanel(const PanelOptions& o, uint64_t seed) {
   AddFacingRectangle(&scene, door_object, steel, {wall_x, dy0, dh}, {recess, 0, 0},
                      {0, dy1 - dy0, 0}, -up);
   const int gap = scene.AddMaterial({TextureKind::kPlain, {0.08f, 0.08f, 0.08f}});
-  AddFacingRectangle(&scene, door_object, gap, {wall_x + recess - 0.001, 0.5 * (dy0 + dy1) - 0.004, 0},
-                     {0, 0.008, 0}, {0, 0, dh}, toward);
+  AddFacingRectangle(&scene, door_object, gap,
+                     {wall_x + recess - 0.001, 0.5 * (dy0 + dy1) - 0.004, 0}, {0, 0.008, 0},
+                     {0, 0, dh}, toward);
 
   // The plate.
   const double grid_w = o.columns * o.pitch_m, grid_h = o.rows * o.pitch_m;
@@ -113,16 +117,15 @@ StatusOr<Scene> BuildPanel(const PanelOptions& o, uint64_t seed) {
   const double grid_z = o.center_height_m;
   const double plate_z0 = grid_z - 0.5 * grid_h - 0.03;
   const int plate_object = scene.AddObject(ObjectKind::kPlate, "panel plate", 0);
-  const int plate_material = scene.AddMaterial({TextureKind::kBrushed, {0.62f, 0.63f, 0.66f},
-                                                {0.4f, 0.4f, 0.4f}, 0.006f, NextSeed(rng)});
+  const int plate_material = scene.AddMaterial(
+      {TextureKind::kBrushed, {0.62f, 0.63f, 0.66f}, {0.4f, 0.4f, 0.4f}, 0.006f, NextSeed(rng)});
   scene.AddBox(plate_object, plate_material, {wall_x - 0.5 * kPlateThickness, 0, plate_z0},
                {kPlateThickness, plate_w, plate_h});
   const double face_x = wall_x - kPlateThickness;
   // Floor display above the buttons.
   Material display{TextureKind::kImage};
-  display.image = scene.AddImage(MakeDisplayImage(std::to_string(static_cast<int>(
-                                                      Uniform(rng, 0, o.rows * o.columns - 1))),
-                                                  160, 64));
+  display.image = scene.AddImage(MakeDisplayImage(
+      std::to_string(static_cast<int>(Uniform(rng, 0, o.rows * o.columns - 1))), 160, 64));
   const double disp_w = std::min(0.1, plate_w - 0.02), disp_h = 0.04;
   display.image_size_m = {static_cast<float>(disp_w), static_cast<float>(disp_h)};
   scene.AddRectangle(plate_object, scene.AddMaterial(display),
@@ -130,8 +133,8 @@ StatusOr<Scene> BuildPanel(const PanelOptions& o, uint64_t seed) {
                      {disp_w, disp_h});
 
   // Buttons, bottom left first as seen from the front (left = map +y).
-  const int rim = scene.AddMaterial({TextureKind::kBrushed, {0.5f, 0.5f, 0.52f},
-                                     {0.3f, 0.3f, 0.3f}, 0.004f, NextSeed(rng)});
+  const int rim = scene.AddMaterial(
+      {TextureKind::kBrushed, {0.5f, 0.5f, 0.52f}, {0.3f, 0.3f, 0.3f}, 0.004f, NextSeed(rng)});
   const double half = 0.5 * o.button_size_m, depth = o.button_depth_m;
   for (int r = 0; r < o.rows; ++r) {
     for (int c = 0; c < o.columns; ++c) {
@@ -158,7 +161,8 @@ StatusOr<Scene> BuildPanel(const PanelOptions& o, uint64_t seed) {
       scene.buttons.push_back({id, label, center, toward, half, object});
     }
   }
-  scene.hints.world_from_arm_base = Eigen::Translation3d(0, 0, 0.75) * Eigen::Isometry3d::Identity();
+  scene.hints.world_from_arm_base =
+      Eigen::Translation3d(0, 0, 0.75) * Eigen::Isometry3d::Identity();
   scene.hints.target_button = o.target_button;
   return scene;
 }

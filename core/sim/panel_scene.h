@@ -14,15 +14,15 @@ namespace sightline::sim {
 // The button panel: a metal plate on the wall with rows x columns numbered buttons and a floor
 // display above them.
 struct PanelOptions {
-  int rows = 6;                       // Button rows.
-  int columns = 2;                    // Button columns.
-  bool round_buttons = true;          // Round (true) or square buttons.
-  double button_size_m = 0.036;       // Diameter (round) or side (square), metres.
-  double pitch_m = 0.06;              // Distance between neighbouring button centres, metres.
-  double button_depth_m = 0.005;      // How far a button stands out of the plate, metres.
-  double center_height_m = 1.1;       // Height of the button grid's centre above the floor, m.
-  double wall_distance_m = 1.25;      // Map x of the wall (the arm's base is near the origin), m.
-  int target_button = 5;              // The button the arm approaches (id, see buttons.csv).
+  int rows = 6;                   // Button rows.
+  int columns = 2;                // Button columns.
+  bool round_buttons = true;      // Round (true) or square buttons.
+  double button_size_m = 0.036;   // Diameter (round) or side (square), metres.
+  double pitch_m = 0.06;          // Distance between neighbouring button centres, metres.
+  double button_depth_m = 0.005;  // How far a button stands out of the plate, metres.
+  double center_height_m = 1.1;   // Height of the button grid's centre above the floor, m.
+  double wall_distance_m = 1.25;  // Map x of the wall (the arm's base is near the origin), m.
+  int target_button = 5;          // The button the arm approaches (id, see buttons.csv).
 
   // Checks ranges and that the buttons fit their pitch; names the bad field.
   bool IsValid(std::string* error) const;

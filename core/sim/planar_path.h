@@ -43,8 +43,8 @@ class PlanarPath {
   struct Piece {
     double start_s = 0, length = 0;
     bool arc = false;
-    Eigen::Vector2d start = Eigen::Vector2d::Zero();  // Lines: start point.
-    double heading = 0;                               // Lines: direction; arcs: start heading.
+    Eigen::Vector2d start = Eigen::Vector2d::Zero();   // Lines: start point.
+    double heading = 0;                                // Lines: direction; arcs: start heading.
     Eigen::Vector2d center = Eigen::Vector2d::Zero();  // Arcs.
     double radius = 0;
     double turn = 0;  // Arcs: signed heading change (rad), positive = left.

@@ -37,8 +37,8 @@ struct PlanarPatch {
 // The side surface of a finite cylinder (people's bodies, bins); caps are separate discs.
 // Texture coordinates: s = arc length around the axis from ref, t = height along the axis.
 struct Cylinder {
-  Eigen::Vector3d base = Eigen::Vector3d::Zero();    // Centre of the bottom circle.
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   // Unit.
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();   // Centre of the bottom circle.
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // Unit.
   double radius = 0.2;
   double height = 1.0;
 };

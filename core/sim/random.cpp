@@ -28,8 +28,8 @@ std::mt19937 MakeEngine(uint64_t seed) {
 double Uniform(std::mt19937& engine, double lo, double hi) {
   // 53 random bits from two 32-bit draws: exact and identical on every platform.
   const uint64_t a = engine() >> 5, b = engine() >> 6;
-  const double u = (static_cast<double>(a) * 67108864.0 + static_cast<double>(b)) *
-                   (1.0 / 9007199254740992.0);
+  const double u =
+      (static_cast<double>(a) * 67108864.0 + static_cast<double>(b)) * (1.0 / 9007199254740992.0);
   return lo + (hi - lo) * u;
 }
 

@@ -82,9 +82,9 @@ StatusOr<std::unique_ptr<RecordingWriter>> RecordingWriter::Create(const Recordi
         w->OpenIndex("rgbd/depth.txt", &w->depth_txt_, header + "# timestamp filename\n"));
     SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex("rgbd/associations.txt", &w->associations_txt_,
                                            header + "# t_rgb rgb_file t_depth depth_file\n"));
-    SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex(
-        "rgbd/groundtruth.txt", &w->rgbd_gt_,
-        header + "# colour camera (optical frame) in the map frame\n# timestamp tx ty tz qx qy qz qw\n"));
+    SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex("rgbd/groundtruth.txt", &w->rgbd_gt_,
+                                           header + "# colour camera (optical frame) in the map "
+                                                    "frame\n# timestamp tx ty tz qx qy qz qw\n"));
   }
   if (setup.stereo_rig) {
     SIGHTLINE_RETURN_IF_ERROR(MakeDirs(JoinPath(dir, "stereo/image_0")));
@@ -100,15 +100,16 @@ StatusOr<std::unique_ptr<RecordingWriter>> RecordingWriter::Create(const Recordi
     SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex("stereo/poses.txt", &w->stereo_poses_, ""));
     SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex(
         "stereo/groundtruth.txt", &w->stereo_gt_,
-        header + "# left camera (optical frame) in the map frame\n# timestamp tx ty tz qx qy qz qw\n"));
+        header +
+            "# left camera (optical frame) in the map frame\n# timestamp tx ty tz qx qy qz qw\n"));
   }
   if (setup.mono_camera) {
     SIGHTLINE_RETURN_IF_ERROR(MakeDirs(JoinPath(dir, "mono")));
     CameraFile camera{*setup.mono_camera, std::nullopt, std::nullopt, setup.rate_hz};
     SIGHTLINE_RETURN_IF_ERROR(WriteCameraYaml(camera, JoinPath(dir, "mono/camera.yaml")));
     w->files_.push_back("mono/camera.yaml");
-    SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex("mono/times.txt", &w->mono_times_,
-                                           header + "# timestamp filename\n"));
+    SIGHTLINE_RETURN_IF_ERROR(
+        w->OpenIndex("mono/times.txt", &w->mono_times_, header + "# timestamp filename\n"));
     SIGHTLINE_RETURN_IF_ERROR(w->OpenIndex(
         "mono/groundtruth.txt", &w->mono_gt_,
         header + "# camera (optical frame) in the map frame\n# timestamp tx ty tz qx qy qz qw\n"));
@@ -128,7 +129,8 @@ Status RecordingWriter::OpenIndex(const std::string& relative, std::ofstream* ou
 
 Status RecordingWriter::Flush(std::ofstream* out, const std::string& relative) {
   out->flush();
-  if (!*out) return Unavailable("write to " + JoinPath(setup_.dir, relative) + " failed (disk full?)");
+  if (!*out)
+    return Unavailable("write to " + JoinPath(setup_.dir, relative) + " failed (disk full?)");
   return Status::Ok();
 }
 

@@ -26,7 +26,7 @@ namespace sightline::sim {
 
 // What a recording holds.
 struct RecordingSetup {
-  std::string dir;  // Created if missing.
+  std::string dir;                           // Created if missing.
   std::optional<PinholeCamera> rgbd_camera;  // Set to write DIR/rgbd.
   double rgbd_max_depth_m = 4.5;
   std::optional<StereoRig> stereo_rig;       // Set to write DIR/stereo.

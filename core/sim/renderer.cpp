@@ -141,10 +141,10 @@ Status Renderer::Render(const Scene& scene, const std::vector<Primitive>& dynami
           const double nd = item.normal.x() * rx + item.normal.y() * ry + item.normal.z();
           z = item.d / nd;
           inverse_z = static_cast<float>(nd * shade.inverse_d);
-          s = static_cast<float>(z * (item.axis_s.x() * rx + item.axis_s.y() * ry + item.axis_s.z()) -
-                                 item.s0);
-          t = static_cast<float>(z * (item.axis_t.x() * rx + item.axis_t.y() * ry + item.axis_t.z()) -
-                                 item.t0);
+          s = static_cast<float>(
+              z * (item.axis_s.x() * rx + item.axis_s.y() * ry + item.axis_s.z()) - item.s0);
+          t = static_cast<float>(
+              z * (item.axis_t.x() * rx + item.axis_t.y() * ry + item.axis_t.z()) - item.t0);
           cos_incidence = static_cast<float>(std::abs(nd)) * rays_.inverse_length[row_start + u];
           light_factor = shade.light;
         } else {

@@ -6,20 +6,34 @@ namespace sightline::sim {
 
 const char* ObjectKindName(ObjectKind kind) {
   switch (kind) {
-    case ObjectKind::kFloor: return "floor";
-    case ObjectKind::kCeiling: return "ceiling";
-    case ObjectKind::kWall: return "wall";
-    case ObjectKind::kDoor: return "door";
-    case ObjectKind::kBox: return "box";
-    case ObjectKind::kBin: return "bin";
-    case ObjectKind::kPoster: return "poster";
-    case ObjectKind::kPerson: return "person";
-    case ObjectKind::kRamp: return "ramp";
-    case ObjectKind::kStep: return "step";
-    case ObjectKind::kRough: return "rough";
-    case ObjectKind::kPlate: return "plate";
-    case ObjectKind::kButton: return "button";
-    case ObjectKind::kOther: return "other";
+    case ObjectKind::kFloor:
+      return "floor";
+    case ObjectKind::kCeiling:
+      return "ceiling";
+    case ObjectKind::kWall:
+      return "wall";
+    case ObjectKind::kDoor:
+      return "door";
+    case ObjectKind::kBox:
+      return "box";
+    case ObjectKind::kBin:
+      return "bin";
+    case ObjectKind::kPoster:
+      return "poster";
+    case ObjectKind::kPerson:
+      return "person";
+    case ObjectKind::kRamp:
+      return "ramp";
+    case ObjectKind::kStep:
+      return "step";
+    case ObjectKind::kRough:
+      return "rough";
+    case ObjectKind::kPlate:
+      return "plate";
+    case ObjectKind::kButton:
+      return "button";
+    case ObjectKind::kOther:
+      return "other";
   }
   return "other";
 }
@@ -97,13 +111,13 @@ void Scene::AddBox(int object, int material, const Eigen::Vector3d& c, const Eig
   const Eigen::Vector3d ex(std::cos(yaw), std::sin(yaw), 0), ey(-std::sin(yaw), std::cos(yaw), 0);
   const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
   const double l = size.x(), w = size.y(), h = size.z();
-  const Eigen::Vector3d lo = c - 0.5 * l * ex - 0.5 * w * ey;  // Bottom corner (-x, -y).
-  AddRectangle(object, material, lo + h * ez, ex, ey, {l, w});                // Top, +z.
-  AddRectangle(object, material, lo, ey, ex, {w, l});                         // Bottom, -z.
-  AddRectangle(object, material, lo + l * ex, ey, ez, {w, h});                // +x.
-  AddRectangle(object, material, lo + w * ey, -ey, ez, {w, h});               // -x.
-  AddRectangle(object, material, lo + l * ex + w * ey, -ex, ez, {l, h});      // +y.
-  AddRectangle(object, material, lo, ex, ez, {l, h});                         // -y.
+  const Eigen::Vector3d lo = c - 0.5 * l * ex - 0.5 * w * ey;             // Bottom corner (-x, -y).
+  AddRectangle(object, material, lo + h * ez, ex, ey, {l, w});            // Top, +z.
+  AddRectangle(object, material, lo, ey, ex, {w, l});                     // Bottom, -z.
+  AddRectangle(object, material, lo + l * ex, ey, ez, {w, h});            // +x.
+  AddRectangle(object, material, lo + w * ey, -ey, ez, {w, h});           // -x.
+  AddRectangle(object, material, lo + l * ex + w * ey, -ex, ez, {l, h});  // +y.
+  AddRectangle(object, material, lo, ex, ez, {l, h});                     // -y.
 }
 
 void Scene::AddUprightCylinder(int object, int material, const Eigen::Vector3d& bottom_center,
@@ -141,8 +155,8 @@ std::vector<Primitive> PersonPrimitives(const WalkingPerson& person, double t_s)
   auto limb = [&](const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius,
                   int material) {
     const Eigen::Vector3d axis = to - from;
-    out.push_back({Cylinder{from, axis.normalized(), radius, axis.norm()}, material,
-                   person.object});
+    out.push_back(
+        {Cylinder{from, axis.normalized(), radius, axis.norm()}, material, person.object});
   };
   auto disc = [&](const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double radius,
                   int material) {
@@ -165,12 +179,12 @@ std::vector<Primitive> PersonPrimitives(const WalkingPerson& person, double t_s)
     limb(hand, shoulder_point, 0.045 * k, person.clothes_material);
   }
   const double torso_radius = 0.17 * k;
-  out.push_back({Cylinder{p + hip * up, up, torso_radius, torso_top - hip},
-                 person.clothes_material, person.object});
+  out.push_back({Cylinder{p + hip * up, up, torso_radius, torso_top - hip}, person.clothes_material,
+                 person.object});
   disc(p + torso_top * up, up, torso_radius, person.clothes_material);
   disc(p + hip * up, -up, torso_radius, person.trousers_material);
-  out.push_back({Sphere{p + (torso_top + 0.035 * k + 0.1 * k) * up, 0.1 * k},
-                 person.skin_material, person.object});
+  out.push_back({Sphere{p + (torso_top + 0.035 * k + 0.1 * k) * up, 0.1 * k}, person.skin_material,
+                 person.object});
   return out;
 }
 

@@ -18,8 +18,20 @@ namespace sightline::sim {
 
 // What a group of primitives is.
 enum class ObjectKind {
-  kFloor, kCeiling, kWall, kDoor, kBox, kBin, kPoster, kPerson,
-  kRamp, kStep, kRough, kPlate, kButton, kOther,
+  kFloor,
+  kCeiling,
+  kWall,
+  kDoor,
+  kBox,
+  kBin,
+  kPoster,
+  kPerson,
+  kRamp,
+  kStep,
+  kRough,
+  kPlate,
+  kButton,
+  kOther,
 };
 
 // "floor", "ceiling", "wall", "door", ...
@@ -46,18 +58,18 @@ struct WallLine {
 // A terrain region with the properties the mobility map estimates.
 struct TerrainRegion {
   int id = 0;
-  std::string kind;        // "floor", "ramp", "platform", "step", "rough", "box", "wall".
-  double slope_deg = 0;    // Angle between the surface normal and the map's z axis.
-  double roughness = 1;    // Sum of 3D triangle areas / sum of their projected areas (>= 1).
-  double height_m = 0;     // Highest point above the floor.
+  std::string kind;      // "floor", "ramp", "platform", "step", "rough", "box", "wall".
+  double slope_deg = 0;  // Angle between the surface normal and the map's z axis.
+  double roughness = 1;  // Sum of 3D triangle areas / sum of their projected areas (>= 1).
+  double height_m = 0;   // Highest point above the floor.
   std::vector<Eigen::Vector2d> polygon;  // Footprint on the floor plan (map x, y), CCW.
 };
 
 // A push button: the centre of its front face.
 struct ButtonSpec {
   int id = 0;
-  std::string label;  // The printed text, e.g. "3".
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // Map frame.
+  std::string label;                                  // The printed text, e.g. "3".
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();   // Map frame.
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // Unit, out of the panel.
   double radius_m = 0.02;  // Round buttons: radius; square ones: half the side.
   int object = -1;         // Scene object index of the button.
@@ -66,11 +78,11 @@ struct ButtonSpec {
 // A person walking along a path; rendered as legs, torso, arms and head.
 struct WalkingPerson {
   int id = 0;
-  int object = -1;          // Scene object index.
+  int object = -1;  // Scene object index.
   PlanarPath path;
   double speed_mps = 1.0;
-  double start_m = 0;       // Arc length at time 0.
-  double lateral_m = 0;     // Offset to the left of the path.
+  double start_m = 0;    // Arc length at time 0.
+  double lateral_m = 0;  // Offset to the left of the path.
   double height_m = 1.7;
   int clothes_material = 0;
   int trousers_material = 0;

@@ -17,7 +17,7 @@ void ApplyDepthModel(const RenderedView& view, const RgbdSensorOptions& sensor,
   const float min_cos = static_cast<float>(std::cos(sensor.max_incidence_deg * M_PI / 180));
   // Float arithmetic: the output is float, and 1e-7 relative rounding is far below the noise.
   const float fb = static_cast<float>(sensor.focal_px * noise.ir_baseline_m);  // Native 640x480.
-  const float sigma_d = static_cast<float>(noise.depth_sigma_coeff) * fb;       // Pixels.
+  const float sigma_d = static_cast<float>(noise.depth_sigma_coeff) * fb;      // Pixels.
   const float step = static_cast<float>(noise.disparity_step_px);
   const float inverse_step = step > 0 ? 1.0f / step : 0.0f;
   const bool perturb = sigma_d > 0 || step > 0;
@@ -40,7 +40,8 @@ void ApplyDepthModel(const RenderedView& view, const RgbdSensorOptions& sensor,
       }
       float d = fb / z + sigma_d * n;
       // Round to the nearest step (d > 0 here; a cast is much cheaper than std::round).
-      if (step > 0 && d > 0) d = static_cast<float>(static_cast<int32_t>(d * inverse_step + 0.5f)) * step;
+      if (step > 0 && d > 0)
+        d = static_cast<float>(static_cast<int32_t>(d * inverse_step + 0.5f)) * step;
       out[u] = d > 0 ? fb / d : nan;
     }
   }

@@ -28,7 +28,8 @@ bool CheckSize(int width, int height, const std::string& prefix, std::string* er
 
 bool CheckFocal(double focal, const std::string& prefix, std::string* error) {
   if (!(focal >= 10 && focal <= 20000)) {
-    if (error) *error = prefix + ".focal_px = " + std::to_string(focal) + ": must lie in [10, 20000]";
+    if (error)
+      *error = prefix + ".focal_px = " + std::to_string(focal) + ": must lie in [10, 20000]";
     return false;
   }
   return true;
@@ -106,9 +107,7 @@ OptionTable<StereoSensorOptions> StereoSensorOptions::Describe() {
               "Distance between the optical centres (KITTI: 0.54).");
 }
 
-PinholeCamera MonoSensorOptions::Camera() const {
-  return CenteredCamera(width, height, focal_px);
-}
+PinholeCamera MonoSensorOptions::Camera() const { return CenteredCamera(width, height, focal_px); }
 
 bool MonoSensorOptions::IsValid(std::string* error) const {
   return CheckSize(width, height, "sim.mono", error) && CheckFocal(focal_px, "sim.mono", error);
@@ -148,7 +147,8 @@ bool NoiseOptions::IsValid(std::string* error) const {
   if (!(disparity_step_px >= 0 && disparity_step_px <= 2)) {
     return fail("disparity_step_px must lie in [0, 2] px");
   }
-  if (!(ir_baseline_m > 0.001 && ir_baseline_m <= 1)) return fail("ir_baseline_m must lie in (0.001, 1] m");
+  if (!(ir_baseline_m > 0.001 && ir_baseline_m <= 1))
+    return fail("ir_baseline_m must lie in (0.001, 1] m");
   if (!(color_sigma >= 0 && color_sigma <= 50)) return fail("color_sigma must lie in [0, 50]");
   if (!(grey_sigma >= 0 && grey_sigma <= 50)) return fail("grey_sigma must lie in [0, 50]");
   return true;

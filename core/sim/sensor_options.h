@@ -27,10 +27,10 @@ struct RgbdSensorOptions {
 // A rectified stereo pair with identical intrinsics; the right camera sits baseline_m along the
 // left camera's x axis. EuRoC-like by default; KITTI: 1241x376, focal 718.856, baseline 0.54.
 struct StereoSensorOptions {
-  int width = 752;             // Pixels.
-  int height = 480;            // Pixels.
-  double focal_px = 458.0;     // fx = fy, pixels.
-  double baseline_m = 0.11;    // Metres, > 0.
+  int width = 752;           // Pixels.
+  int height = 480;          // Pixels.
+  double focal_px = 458.0;   // fx = fy, pixels.
+  double baseline_m = 0.11;  // Metres, > 0.
 
   // The rig (rectified, right_from_left = translation (-baseline, 0, 0)).
   StereoRig Rig() const;
@@ -51,11 +51,11 @@ struct MonoSensorOptions {
 
 // The effective noise of one recording (after the profile is applied).
 struct NoiseModel {
-  double depth_sigma_coeff = 0;   // sigma_z = coeff * z^2 (1/m); 0 = exact depth.
-  double disparity_step_px = 0;   // Kinect disparity quantisation; 0 = none.
-  double ir_baseline_m = 0.075;   // Projector-camera baseline of the disparity model, metres.
-  double color_sigma = 0;         // Colour image noise, grey levels (0-255).
-  double grey_sigma = 0;          // Stereo and mono image noise, grey levels.
+  double depth_sigma_coeff = 0;  // sigma_z = coeff * z^2 (1/m); 0 = exact depth.
+  double disparity_step_px = 0;  // Kinect disparity quantisation; 0 = none.
+  double ir_baseline_m = 0.075;  // Projector-camera baseline of the disparity model, metres.
+  double color_sigma = 0;        // Colour image noise, grey levels (0-255).
+  double grey_sigma = 0;         // Stereo and mono image noise, grey levels.
 };
 
 // Noise profiles: "none" (exact depth, clean images), "kinect" (the model below; default) and
@@ -63,12 +63,12 @@ struct NoiseModel {
 // disparity d = f b / z with Gaussian noise of coeff * f * b pixels (so sigma_z = coeff * z^2),
 // quantised to 1/8 pixel as the Kinect does, then z = f b / d.
 struct NoiseOptions {
-  std::string profile = "kinect";     // "none", "kinect" or "noisy".
+  std::string profile = "kinect";       // "none", "kinect" or "noisy".
   double depth_sigma_coeff = 1.425e-3;  // 1/m, Khoshelham and Elberink (2012).
-  double disparity_step_px = 0.125;   // Pixels (at 640x480).
-  double ir_baseline_m = 0.075;       // Metres.
-  double color_sigma = 2.0;           // Grey levels.
-  double grey_sigma = 1.5;            // Grey levels.
+  double disparity_step_px = 0.125;     // Pixels (at 640x480).
+  double ir_baseline_m = 0.075;         // Metres.
+  double color_sigma = 2.0;             // Grey levels.
+  double grey_sigma = 1.5;              // Grey levels.
 
   // The model the profile selects.
   NoiseModel Effective() const;

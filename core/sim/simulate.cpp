@@ -14,8 +14,7 @@ namespace sightline::sim {
 namespace {
 
 double Now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 bool Has(const std::vector<std::string>& list, const std::string& name) {
@@ -54,16 +53,17 @@ StatusOr<SimulationSummary> Simulate(const SimulationOptions& options, const std
   record.sensors = sensors;
   record.motion = summary.motion;
   record.annotated_camera = Has(sensors, "mono") && scene.hints.target_button >= 0 ? "mono"
-                            : Has(sensors, "rgbd")                                ? "rgbd"
-                            : Has(sensors, "stereo")                              ? "stereo"
-                                                                                  : "mono";
+                            : Has(sensors, "rgbd")                                 ? "rgbd"
+                            : Has(sensors, "stereo")                               ? "stereo"
+                                                                                   : "mono";
   std::vector<std::string> files;
   auto add_file = [&](const std::string& name, Status status) -> Status {
     if (status.ok()) files.push_back(name);
     return status;
   };
   if (!scene.walls.empty()) {
-    SIGHTLINE_RETURN_IF_ERROR(add_file("walls.csv", WriteWallsCsv(scene, JoinPath(dir, "walls.csv"))));
+    SIGHTLINE_RETURN_IF_ERROR(
+        add_file("walls.csv", WriteWallsCsv(scene, JoinPath(dir, "walls.csv"))));
   }
   if (!scene.regions.empty()) {
     SIGHTLINE_RETURN_IF_ERROR(
@@ -122,9 +122,9 @@ StatusOr<SimulationSummary> Simulate(const SimulationOptions& options, const std
       }
     }
     if (annotated != nullptr) {
-      SIGHTLINE_RETURN_IF_ERROR(observations.Write(
-          ObserveButtons(scene, annotated_camera, annotated_pose, *annotated, i),
-          ObservePeople(scene, *annotated, i)));
+      SIGHTLINE_RETURN_IF_ERROR(
+          observations.Write(ObserveButtons(scene, annotated_camera, annotated_pose, *annotated, i),
+                             ObservePeople(scene, *annotated, i)));
     }
     ++done;
     if (callbacks.progress) callbacks.progress(done, sim.frames());
@@ -146,13 +146,13 @@ StatusOr<SimulationSummary> Simulate(const SimulationOptions& options, const std
         WriteTumTrajectory(truncated(sim.WheelOdometry()), JoinPath(dir, "odometry.txt"))));
   }
   if (sim.motion().is_arm()) {
-    SIGHTLINE_RETURN_IF_ERROR(add_file(
-        "arm_poses.txt",
-        WriteTumTrajectory(truncated(sim.ArmPoses()), JoinPath(dir, "arm_poses.txt"))));
-    SIGHTLINE_RETURN_IF_ERROR(add_file(
-        "hand_eye.yaml", WriteHandEyeYaml(sim.motion().body_from_camera,
-                                          sim.motion().world_from_arm_base,
-                                          JoinPath(dir, "hand_eye.yaml"))));
+    SIGHTLINE_RETURN_IF_ERROR(
+        add_file("arm_poses.txt",
+                 WriteTumTrajectory(truncated(sim.ArmPoses()), JoinPath(dir, "arm_poses.txt"))));
+    SIGHTLINE_RETURN_IF_ERROR(
+        add_file("hand_eye.yaml",
+                 WriteHandEyeYaml(sim.motion().body_from_camera, sim.motion().world_from_arm_base,
+                                  JoinPath(dir, "hand_eye.yaml"))));
   }
   record.frames_written = done;
   SIGHTLINE_RETURN_IF_ERROR(

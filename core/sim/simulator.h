@@ -17,8 +17,8 @@ namespace sightline::sim {
 
 // One RGB-D frame as the sensor reports it, with the exact render it came from.
 struct SimulatedRgbd {
-  cv::Mat color;    // CV_8UC3 BGR, with colour noise.
-  cv::Mat depth_m;  // CV_32FC1 metres, NaN = no reading (range, incidence, noise model).
+  cv::Mat color;      // CV_8UC3 BGR, with colour noise.
+  cv::Mat depth_m;    // CV_32FC1 metres, NaN = no reading (range, incidence, noise model).
   RenderedView view;  // Exact depth, objects and incidence; view.image is the clean colour.
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
 };

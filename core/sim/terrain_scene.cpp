@@ -37,7 +37,8 @@ struct Heightfield {
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i < nx; ++i) {
         const Eigen::Vector3d a = P(0, 0, i, j, amplitude), b = P(0, 0, i + 1, j, amplitude);
-        const Eigen::Vector3d c = P(0, 0, i + 1, j + 1, amplitude), d = P(0, 0, i, j + 1, amplitude);
+        const Eigen::Vector3d c = P(0, 0, i + 1, j + 1, amplitude),
+                              d = P(0, 0, i, j + 1, amplitude);
         area += 0.5 * (b - a).cross(c - a).norm() + 0.5 * (c - a).cross(d - a).norm();
       }
     }
@@ -55,8 +56,10 @@ bool TerrainOptions::IsValid(std::string* error) const {
   if (!(ramp_slope_deg >= 1 && ramp_slope_deg <= 60)) {
     return fail("ramp_slope_deg must lie in [1, 60] deg");
   }
-  if (!(ramp_rise_m >= 0.02 && ramp_rise_m <= 1.0)) return fail("ramp_rise_m must lie in [0.02, 1] m");
-  if (!(ramp_width_m >= 0.2 && ramp_width_m <= 2.0)) return fail("ramp_width_m must lie in [0.2, 2] m");
+  if (!(ramp_rise_m >= 0.02 && ramp_rise_m <= 1.0))
+    return fail("ramp_rise_m must lie in [0.02, 1] m");
+  if (!(ramp_width_m >= 0.2 && ramp_width_m <= 2.0))
+    return fail("ramp_width_m must lie in [0.2, 2] m");
   if (!(step_height_m >= 0.01 && step_height_m <= 1.0)) {
     return fail("step_height_m must lie in [0.01, 1] m");
   }
@@ -99,8 +102,8 @@ StatusOr<Scene> BuildTerrain(const TerrainOptions& o, uint64_t seed) {
   int region = 0;
   auto material = [&](Eigen::Vector3f color, Eigen::Vector3f accent, float scale,
                       float density = 0.6f) {
-    return scene.AddMaterial({TextureKind::kSpeckle, JitterColor(rng, color, 0.04), accent,
-                              scale, NextSeed(rng), density});
+    return scene.AddMaterial({TextureKind::kSpeckle, JitterColor(rng, color, 0.04), accent, scale,
+                              NextSeed(rng), density});
   };
 
   // Rough patch: random facet heights scaled until the roughness matches.
@@ -128,9 +131,9 @@ StatusOr<Scene> BuildTerrain(const TerrainOptions& o, uint64_t seed) {
   const double rx1 = kRoughX0 + field.nx * field.cell, ry1 = kRoughY0 + field.ny * field.cell;
   const int floor_object = scene.AddObject(ObjectKind::kFloor, "floor", region);
   const int concrete = material({0.6f, 0.6f, 0.58f}, {0.45f, 0.45f, 0.43f}, 0.12f, 0.35f);
-  for (const auto& r : {Eigen::Vector4d(fx0, fy0, fx1, kRoughY0), Eigen::Vector4d(fx0, ry1, fx1, fy1),
-                        Eigen::Vector4d(fx0, kRoughY0, kRoughX0, ry1),
-                        Eigen::Vector4d(rx1, kRoughY0, fx1, ry1)}) {
+  for (const auto& r :
+       {Eigen::Vector4d(fx0, fy0, fx1, kRoughY0), Eigen::Vector4d(fx0, ry1, fx1, fy1),
+        Eigen::Vector4d(fx0, kRoughY0, kRoughX0, ry1), Eigen::Vector4d(rx1, kRoughY0, fx1, ry1)}) {
     scene.AddRectangle(floor_object, concrete, {r[0], r[1], 0}, {1, 0, 0}, {0, 1, 0},
                        {r[2] - r[0], r[3] - r[1]});
   }
@@ -145,11 +148,9 @@ StatusOr<Scene> BuildTerrain(const TerrainOptions& o, uint64_t seed) {
                    {{kRampX, y0, 0}, {xe, y0, rise}, {xe, y1, rise}, {kRampX, y1, 0}});
   scene.AddPolygon(ramp_object, ramp_material, {{kRampX, y0, 0}, {xe, y0, 0}, {xe, y0, rise}});
   scene.AddPolygon(ramp_object, ramp_material, {{kRampX, y1, 0}, {xe, y1, rise}, {xe, y1, 0}});
-  scene.regions.push_back(
-      {region++, "ramp", o.ramp_slope_deg, 1, rise, Rect2(kRampX, y0, xe, y1)});
+  scene.regions.push_back({region++, "ramp", o.ramp_slope_deg, 1, rise, Rect2(kRampX, y0, xe, y1)});
   const int platform_object = scene.AddObject(ObjectKind::kRamp, "platform", region);
-  scene.AddBox(platform_object, ramp_material,
-               {xe + 0.5 * kPlatformLength, 0.5 * (y0 + y1), 0},
+  scene.AddBox(platform_object, ramp_material, {xe + 0.5 * kPlatformLength, 0.5 * (y0 + y1), 0},
                {kPlatformLength, o.ramp_width_m, rise});
   scene.regions.push_back(
       {region++, "platform", 0, 1, rise, Rect2(xe, y0, xe + kPlatformLength, y1)});

@@ -14,14 +14,14 @@ namespace sightline::sim {
 // The terrain's layout: ahead of the robot (map +x) a ramp on the left rises to a platform, a
 // step stands in the middle, a rough patch lies on the right, boxes and a wall behind.
 struct TerrainOptions {
-  double ramp_slope_deg = 20.0;   // Ramp inclination, degrees.
-  double ramp_rise_m = 0.25;      // Height the ramp climbs to (the platform's height), metres.
-  double ramp_width_m = 0.8;      // Metres.
-  double step_height_m = 0.12;    // Height of the step block, metres.
-  double roughness = 1.15;        // Target roughness of the rough patch (3D / projected area).
-  double rough_cell_m = 0.05;     // Facet size of the rough patch, metres.
-  int boxes = 2;                  // Boxes in front of the wall.
-  double wall_distance_m = 4.0;   // Map x of the wall, metres.
+  double ramp_slope_deg = 20.0;  // Ramp inclination, degrees.
+  double ramp_rise_m = 0.25;     // Height the ramp climbs to (the platform's height), metres.
+  double ramp_width_m = 0.8;     // Metres.
+  double step_height_m = 0.12;   // Height of the step block, metres.
+  double roughness = 1.15;       // Target roughness of the rough patch (3D / projected area).
+  double rough_cell_m = 0.05;    // Facet size of the rough patch, metres.
+  int boxes = 2;                 // Boxes in front of the wall.
+  double wall_distance_m = 4.0;  // Map x of the wall, metres.
 
   // Checks ranges and that everything fits before the wall; names the bad field.
   bool IsValid(std::string* error) const;

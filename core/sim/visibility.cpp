@@ -39,8 +39,7 @@ struct PixelRect {
 };
 
 // The pixels covered by the projection of the part of a box (8 corners) with z >= near.
-PixelRect ProjectedBoxRect(const Eigen::Vector3d* corners, const PinholeCamera& cam,
-                           double near) {
+PixelRect ProjectedBoxRect(const Eigen::Vector3d* corners, const PinholeCamera& cam, double near) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   bool any = false;
   auto add = [&](const Eigen::Vector3d& p) {
@@ -111,8 +110,8 @@ void RasterPlane(const ViewItem& item, int index, const PreparedView& view,
   const double c_inv = (n.z() - n.x() * cam.cx / cam.fx - n.y() * cam.cy / cam.fy) / item.d;
   const int v0 = static_cast<int>(
       std::ceil(std::clamp(y_min, 0.0, static_cast<double>(cam.height)) - kEdgeTolerancePx));
-  const int v1 = static_cast<int>(
-      std::floor(std::clamp(y_max, -1.0, cam.height - 1.0) + kEdgeTolerancePx));
+  const int v1 =
+      static_cast<int>(std::floor(std::clamp(y_max, -1.0, cam.height - 1.0) + kEdgeTolerancePx));
   const bool disc = item.kind == ViewItem::kDisc;
   const double r2 = item.radius * item.radius;
   for (int v = v0; v <= v1; ++v) {
@@ -203,8 +202,9 @@ void RasterCurved(const ViewItem& item, int index, const PreparedView& view,
     float* inv_row = inv + static_cast<size_t>(v) * cam.width;
     int32_t* id_row = ids + static_cast<size_t>(v) * cam.width;
     for (int u = r.u0; u <= r.u1; ++u) {
-      const double z = item.kind == ViewItem::kCylinder ? HitCylinder(item, rays.x[u], rays.y[v], near)
-                                                        : HitSphere(item, rays.x[u], rays.y[v], near);
+      const double z = item.kind == ViewItem::kCylinder
+                           ? HitCylinder(item, rays.x[u], rays.y[v], near)
+                           : HitSphere(item, rays.x[u], rays.y[v], near);
       if (z < 0) continue;
       const float w = static_cast<float>(1.0 / z);
       if (w > inv_row[u]) {

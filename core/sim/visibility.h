@@ -50,8 +50,8 @@ struct PreparedView {
 
 // Per-pixel ray directions (x/z and y/z of the ray through each pixel centre).
 struct RayTable {
-  std::vector<float> x;  // Per column: (u - cx) / fx.
-  std::vector<float> y;  // Per row: (v - cy) / fy.
+  std::vector<float> x;               // Per column: (u - cx) / fx.
+  std::vector<float> y;               // Per row: (v - cy) / fy.
   std::vector<float> inverse_length;  // Per pixel (row-major): 1 / |(x, y, 1)|.
 };
 

@@ -65,9 +65,14 @@ void MinEigenResponse(const cv::Mat& derivatives, const cv::Rect& region, int bl
   const float d_scale = 1.0f / (16.0f * static_cast<float>(block_size) * 255.0f);
   const float scale = d_scale * d_scale;
   switch (block_size) {
-    case 3: ResponseRows<3>(derivatives, valid, region, 3, scale, response); break;
-    case 5: ResponseRows<5>(derivatives, valid, region, 5, scale, response); break;
-    default: ResponseRows<0>(derivatives, valid, region, block_size, scale, response);
+    case 3:
+      ResponseRows<3>(derivatives, valid, region, 3, scale, response);
+      break;
+    case 5:
+      ResponseRows<5>(derivatives, valid, region, 5, scale, response);
+      break;
+    default:
+      ResponseRows<0>(derivatives, valid, region, block_size, scale, response);
   }
 }
 

@@ -12,20 +12,25 @@
 namespace sightline {
 
 using stereo_internal::Invalid;
+using stereo_internal::Skew;
 using stereo_internal::StereoHuberWeights;
 using stereo_internal::StereoResidual;
-using stereo_internal::Skew;
 
 bool DisparityOffsetOptions::IsValid(std::string* error) const {
-  if (!(prior_sigma_px > 0)) return Invalid(error, "stereo.disparity_offset.prior_sigma_px must be > 0");
-  if (!(max_offset_px >= 0)) return Invalid(error, "stereo.disparity_offset.max_offset_px must be >= 0");
+  if (!(prior_sigma_px > 0))
+    return Invalid(error, "stereo.disparity_offset.prior_sigma_px must be > 0");
+  if (!(max_offset_px >= 0))
+    return Invalid(error, "stereo.disparity_offset.max_offset_px must be >= 0");
   if (!(huber_px > 0)) return Invalid(error, "stereo.disparity_offset.huber_px must be > 0");
-  if (!(min_noise_px > 0)) return Invalid(error, "stereo.disparity_offset.min_noise_px must be > 0");
-  if (!(min_parallax >= 0)) return Invalid(error, "stereo.disparity_offset.min_parallax must be >= 0");
+  if (!(min_noise_px > 0))
+    return Invalid(error, "stereo.disparity_offset.min_noise_px must be > 0");
+  if (!(min_parallax >= 0))
+    return Invalid(error, "stereo.disparity_offset.min_parallax must be >= 0");
   if (max_span_frames < 1) {
     return Invalid(error, "stereo.disparity_offset.max_span_frames must be >= 1");
   }
-  if (!(min_applied_px >= 0)) return Invalid(error, "stereo.disparity_offset.min_applied_px must be >= 0");
+  if (!(min_applied_px >= 0))
+    return Invalid(error, "stereo.disparity_offset.min_applied_px must be >= 0");
   return true;
 }
 
@@ -112,19 +117,22 @@ DisparityOffsetMeasurement MeasureDisparityOffset(
     j1.leftCols<6>() = d1 * dy_dpose;
     j0(2, 6) = 1;
     j1(2, 6) = 1;
-    const Matrix7d htt = j0.transpose() * w0.asDiagonal() * j0 + j1.transpose() * w1.asDiagonal() * j1;
+    const Matrix7d htt =
+        j0.transpose() * w0.asDiagonal() * j0 + j1.transpose() * w1.asDiagonal() * j1;
     const Eigen::Matrix<double, 7, 3> htx =
         j0.transpose() * w0.asDiagonal() * a0 + j1.transpose() * w1.asDiagonal() * a1;
     const Eigen::Matrix3d hxx = a0.transpose() * w0.asDiagonal() * a0 +
                                 a1.transpose() * w1.asDiagonal() * a1 +
                                 1e-9 * Eigen::Matrix3d::Identity();
-    const Vector7d gt = j0.transpose() * w0.asDiagonal() * r0 + j1.transpose() * w1.asDiagonal() * r1;
+    const Vector7d gt =
+        j0.transpose() * w0.asDiagonal() * r0 + j1.transpose() * w1.asDiagonal() * r1;
     const Eigen::Vector3d gx =
         a0.transpose() * w0.asDiagonal() * r0 + a1.transpose() * w1.asDiagonal() * r1;
     const Eigen::Matrix3d hxx_inv = hxx.inverse();
     s += htt - htx * hxx_inv * htx.transpose();
     b += gt - htx * hxx_inv * gx;
-    weighted_sq += (w0.array() * r0.array().square()).sum() + (w1.array() * r1.array().square()).sum();
+    weighted_sq +=
+        (w0.array() * r0.array().square()).sum() + (w1.array() * r1.array().square()).sum();
     weight_sum += w0.sum() + w1.sum();
     ++m.points;
   }
@@ -219,8 +227,8 @@ void DisparityOffsetEstimator::Observe(const RectifiedStereoCamera& camera,
     return;
   }
   // The accumulated motion is close; refine it on the anchor pair's own inliers.
-  std::vector<int> inliers = MotionEstimator::Inliers(camera, correspondences, motion,
-                                                      2 * inlier_threshold_px);
+  std::vector<int> inliers =
+      MotionEstimator::Inliers(camera, correspondences, motion, 2 * inlier_threshold_px);
   if (inliers.size() >= kMinTracks) {
     refiner.Refine(camera, correspondences, inliers, &motion);
     inliers = MotionEstimator::Inliers(camera, correspondences, motion, inlier_threshold_px);

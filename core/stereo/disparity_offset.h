@@ -36,14 +36,14 @@ namespace sightline {
 
 // Keys "stereo.disparity_offset.*".
 struct DisparityOffsetOptions {
-  bool enabled = true;         // Estimate and apply the offset.
-  double prior_sigma_px = 0.1;  // Prior standard deviation of the offset around zero [px].
-  double max_offset_px = 1.0;  // The estimate is clamped to +-this [px].
-  double huber_px = 0.5;       // Huber threshold of the measurement's robust weights [px].
-  double min_noise_px = 0.1;   // Floor of the residual RMS that scales a measurement [px].
-  double min_parallax = 0.1;   // A pair is measured once the translation from the anchor reaches
-                               // this fraction of the common tracks' median depth ...
-  int max_span_frames = 8;     // ... within this many frames; else the anchor starts again.
+  bool enabled = true;           // Estimate and apply the offset.
+  double prior_sigma_px = 0.1;   // Prior standard deviation of the offset around zero [px].
+  double max_offset_px = 1.0;    // The estimate is clamped to +-this [px].
+  double huber_px = 0.5;         // Huber threshold of the measurement's robust weights [px].
+  double min_noise_px = 0.1;     // Floor of the residual RMS that scales a measurement [px].
+  double min_parallax = 0.1;     // A pair is measured once the translation from the anchor reaches
+                                 // this fraction of the common tracks' median depth ...
+  int max_span_frames = 8;       // ... within this many frames; else the anchor starts again.
   double min_applied_px = 0.05;  // Smaller estimates are not applied [px].
 
   bool IsValid(std::string* error) const;
@@ -107,7 +107,7 @@ class DisparityOffsetEstimator {
  private:
   DisparityOffsetOptions options_;
   double offset_px_ = 0;
-  double information_ = 0;  // Prior plus all measurements [1/px^2].
+  double information_ = 0;           // Prior plus all measurements [1/px^2].
   std::vector<OffsetTrack> anchor_;  // Sorted by id; empty = no anchor.
   Eigen::Isometry3d world_from_anchor_ = Eigen::Isometry3d::Identity();
   int frames_since_anchor_ = 0;

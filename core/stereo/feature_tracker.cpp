@@ -16,7 +16,8 @@ bool FeatureTrackerOptions::IsValid(std::string* error) const {
   if (max_features < 8) return Invalid(error, "stereo.tracking.max_features must be >= 8");
   if (bucket_size_px < 8) return Invalid(error, "stereo.tracking.bucket_size_px must be >= 8");
   if (!(min_eigenvalue > 0)) return Invalid(error, "stereo.tracking.min_eigenvalue must be > 0");
-  if (!(min_distance_px >= 1)) return Invalid(error, "stereo.tracking.min_distance_px must be >= 1");
+  if (!(min_distance_px >= 1))
+    return Invalid(error, "stereo.tracking.min_distance_px must be >= 1");
   if (block_size < 3 || block_size % 2 == 0) {
     return Invalid(error, "stereo.tracking.block_size must be odd and >= 3");
   }
@@ -74,7 +75,8 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
               "KLT stops when its update is smaller than this.")
       .Double("max_forward_backward_px", &O::max_forward_backward_px, "px", 0, 20, 0.1,
               "A track must return to its start within this when tracked backwards; 0 = no check.")
-      .Int("border_px", &O::border_px, "px", 0, 200, 1, "Features this close to the border are dropped.")
+      .Int("border_px", &O::border_px, "px", 0, 200, 1,
+           "Features this close to the border are dropped.")
       .Int("detection_level", &O::detection_level, "level", 0, 6, 1,
            "Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).")
       .Double("refill_fraction", &O::refill_fraction, "", 0.01, 1, 0.05,
@@ -133,14 +135,14 @@ void FeatureTracker::TrackPass(const ImagePyramid& previous, const ImagePyramid&
                                   options_.max_iterations, options_.epsilon_px);
   std::vector<float> error;
   std::vector<unsigned char> status;
-  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, error, window,
-                           levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, error, window, levels,
+                           criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   std::vector<unsigned char> back_status;
   std::vector<cv::Point2f> back;
   if (options_.max_forward_backward_px > 0) {
     back = from;
-    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, to, back, back_status, error,
-                             window, 1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, to, back, back_status, error, window,
+                             1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   }
   const float border = static_cast<float>(options_.border_px);
   const float max_x = current.image.cols - 1 - border, max_y = current.image.rows - 1 - border;
@@ -171,9 +173,8 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
   // Buckets and distances are in full-resolution pixels.
   const int bs = options_.bucket_size_px;
   const int cols = (pyramid.image.cols + bs - 1) / bs, rows = (pyramid.image.rows + bs - 1) / bs;
-  const int per_bucket =
-      std::max(1, static_cast<int>(std::ceil(static_cast<double>(options_.max_features) /
-                                             (cols * rows))));
+  const int per_bucket = std::max(
+      1, static_cast<int>(std::ceil(static_cast<double>(options_.max_features) / (cols * rows))));
   std::vector<std::vector<cv::Point2f>> in_bucket(static_cast<size_t>(cols * rows));
   for (const cv::Point2f& p : existing) {
     const int bx = std::clamp(static_cast<int>(p.x) / bs, 0, cols - 1);
@@ -198,93 +199,95 @@ std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
   cv::Mat eig;
   std::vector<std::pair<float, cv::Point>> candidates;
   // Buckets that need corners: fewer than refill_fraction of their share.
-  const int refill_below = std::max(
-      1, static_cast<int>(std::ceil(options_.refill_fraction * per_bucket)));
+  const int refill_below =
+      std::max(1, static_cast<int>(std::ceil(options_.refill_fraction * per_bucket)));
   auto needy = [&](int bx, int by) {
     return static_cast<int>(in_bucket[static_cast<size_t>(by * cols + bx)].size()) < refill_below;
   };
   for (int by = 0; by < rows && static_cast<int>(fresh.size()) < wanted; ++by) {
-   for (int run_start = 0; run_start < cols && static_cast<int>(fresh.size()) < wanted;) {
-    // One eigenvalue image per run of neighbouring buckets that need corners.
-    while (run_start < cols && !needy(run_start, by)) ++run_start;
-    if (run_start >= cols) break;
-    int run_end = run_start;
-    while (run_end + 1 < cols && needy(run_end + 1, by)) ++run_end;
-    const int first = run_start, last = run_end;
-    run_start = run_end + 1;
-    const cv::Rect span = cv::Rect(cvFloor(first * bs / scale), cvFloor(by * bs / scale),
-                                   cvCeil((last - first + 1) * bs / scale), cvCeil(bs / scale)) &
-                          inside;
-    if (span.width < 3 || span.height < 3) continue;
-    const cv::Rect ext = cv::Rect(span.x - margin, span.y - margin, span.width + 2 * margin,
-                                  span.height + 2 * margin) & cv::Rect(0, 0, image.cols, image.rows);
-    MinEigenResponse(pyramid.Derivatives(level), ext, options_.block_size, &eig);
-    for (int bx = first; bx <= last && static_cast<int>(fresh.size()) < wanted; ++bx) {
-      std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
-      const int need = per_bucket - static_cast<int>(here.size());
-      if (need <= 0) continue;
-      const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
-                                     cvCeil(bs / scale), cvCeil(bs / scale)) & span;
-      if (cell.width < 1 || cell.height < 1) continue;
-      // The strongest local maxima of the cell, strongest first. Only the best `limit` are
-      // kept (a min-heap), which skips most comparisons; if the distance test then leaves the
-      // cell short, it is scanned again without a limit.
-      auto collect = [&](size_t limit) {
-        candidates.clear();
-        const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
-        for (int y = cell.y; y < cell.y + cell.height; ++y) {
-          const int ey = y - ext.y;
-          if (ey < 1 || ey + 1 >= eig.rows) continue;
-          const float* up = eig.ptr<float>(ey - 1);
-          const float* row = eig.ptr<float>(ey);
-          const float* down = eig.ptr<float>(ey + 1);
-          for (int x = cell.x; x < cell.x + cell.width; ++x) {
-            const int ex = x - ext.x;
-            if (ex < 1 || ex + 1 >= eig.cols) continue;
-            const float v = row[ex];
-            if (v < options_.min_eigenvalue) continue;
-            if (limit > 0 && candidates.size() == limit && v <= candidates.front().first) continue;
-            if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
-                v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
-              continue;
-            }
-            candidates.emplace_back(v, cv::Point(x, y));
-            if (limit == 0) continue;
-            std::push_heap(candidates.begin(), candidates.end(), weaker);
-            if (candidates.size() > limit) {
-              std::pop_heap(candidates.begin(), candidates.end(), weaker);
-              candidates.pop_back();
+    for (int run_start = 0; run_start < cols && static_cast<int>(fresh.size()) < wanted;) {
+      // One eigenvalue image per run of neighbouring buckets that need corners.
+      while (run_start < cols && !needy(run_start, by)) ++run_start;
+      if (run_start >= cols) break;
+      int run_end = run_start;
+      while (run_end + 1 < cols && needy(run_end + 1, by)) ++run_end;
+      const int first = run_start, last = run_end;
+      run_start = run_end + 1;
+      const cv::Rect span = cv::Rect(cvFloor(first * bs / scale), cvFloor(by * bs / scale),
+                                     cvCeil((last - first + 1) * bs / scale), cvCeil(bs / scale)) &
+                            inside;
+      if (span.width < 3 || span.height < 3) continue;
+      const cv::Rect ext = cv::Rect(span.x - margin, span.y - margin, span.width + 2 * margin,
+                                    span.height + 2 * margin) &
+                           cv::Rect(0, 0, image.cols, image.rows);
+      MinEigenResponse(pyramid.Derivatives(level), ext, options_.block_size, &eig);
+      for (int bx = first; bx <= last && static_cast<int>(fresh.size()) < wanted; ++bx) {
+        std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
+        const int need = per_bucket - static_cast<int>(here.size());
+        if (need <= 0) continue;
+        const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
+                                       cvCeil(bs / scale), cvCeil(bs / scale)) &
+                              span;
+        if (cell.width < 1 || cell.height < 1) continue;
+        // The strongest local maxima of the cell, strongest first. Only the best `limit` are
+        // kept (a min-heap), which skips most comparisons; if the distance test then leaves the
+        // cell short, it is scanned again without a limit.
+        auto collect = [&](size_t limit) {
+          candidates.clear();
+          const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
+          for (int y = cell.y; y < cell.y + cell.height; ++y) {
+            const int ey = y - ext.y;
+            if (ey < 1 || ey + 1 >= eig.rows) continue;
+            const float* up = eig.ptr<float>(ey - 1);
+            const float* row = eig.ptr<float>(ey);
+            const float* down = eig.ptr<float>(ey + 1);
+            for (int x = cell.x; x < cell.x + cell.width; ++x) {
+              const int ex = x - ext.x;
+              if (ex < 1 || ex + 1 >= eig.cols) continue;
+              const float v = row[ex];
+              if (v < options_.min_eigenvalue) continue;
+              if (limit > 0 && candidates.size() == limit && v <= candidates.front().first)
+                continue;
+              if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
+                  v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
+                continue;
+              }
+              candidates.emplace_back(v, cv::Point(x, y));
+              if (limit == 0) continue;
+              std::push_heap(candidates.begin(), candidates.end(), weaker);
+              if (candidates.size() > limit) {
+                std::pop_heap(candidates.begin(), candidates.end(), weaker);
+                candidates.pop_back();
+              }
             }
           }
+          std::sort(candidates.begin(), candidates.end(), weaker);
+        };
+        auto take = [&]() {
+          int added = 0;
+          for (const auto& [value, pixel] : candidates) {
+            if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
+            const cv::Point2f p(pixel.x * scale, pixel.y * scale);
+            if (!far_from(p, bx, by)) continue;
+            here.push_back(p);
+            fresh.push_back(p);
+            ++added;
+          }
+          return added;
+        };
+        const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
+        collect(limit);
+        const size_t kept_before = here.size(), fresh_before = fresh.size();
+        const int added = take();
+        if (added < need && candidates.size() == limit && static_cast<int>(fresh.size()) < wanted) {
+          // Undo and take from the full list, so the result equals an unlimited scan.
+          here.resize(kept_before);
+          fresh.resize(fresh_before);
+          collect(0);
+          take();
         }
-        std::sort(candidates.begin(), candidates.end(), weaker);
-      };
-      auto take = [&]() {
-        int added = 0;
-        for (const auto& [value, pixel] : candidates) {
-          if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
-          const cv::Point2f p(pixel.x * scale, pixel.y * scale);
-          if (!far_from(p, bx, by)) continue;
-          here.push_back(p);
-          fresh.push_back(p);
-          ++added;
-        }
-        return added;
-      };
-      const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
-      collect(limit);
-      const size_t kept_before = here.size(), fresh_before = fresh.size();
-      const int added = take();
-      if (added < need && candidates.size() == limit &&
-          static_cast<int>(fresh.size()) < wanted) {
-        // Undo and take from the full list, so the result equals an unlimited scan.
-        here.resize(kept_before);
-        fresh.resize(fresh_before);
-        collect(0);
-        take();
       }
     }
-   }
   }
   if (level > 0 && !fresh.empty() && options_.refine_window_px > 0) {
     // Corners found on a reduced level sit up to a pixel off the full-resolution corner; move

@@ -14,30 +14,31 @@ namespace sightline {
 
 // Tracking and detection options. Keys "stereo.tracking.*".
 struct FeatureTrackerOptions {
-  int max_features = 1000;        // Features kept per frame (tracked + new).
-  int bucket_size_px = 48;        // Side of the square buckets of the detection grid [px].
-  double refill_fraction = 1.0;   // A bucket is refilled when it holds fewer than this fraction
-                                  // of its share of max_features (1 = whenever not full).
-  double min_eigenvalue = 5e-4;   // Shi-Tomasi: smallest accepted minimum eigenvalue of the
-                                  // gradient covariance (cv::cornerMinEigenVal units).
-  double min_distance_px = 7;     // Shi-Tomasi: minimum distance between corners [px].
-  int block_size = 3;             // Shi-Tomasi: window of the gradient covariance [px].
-  int window_px = 9;              // KLT window side [px] (odd).
-  int pyramid_levels = 3;         // KLT pyramid levels above full resolution.
+  int max_features = 1000;       // Features kept per frame (tracked + new).
+  int bucket_size_px = 48;       // Side of the square buckets of the detection grid [px].
+  double refill_fraction = 1.0;  // A bucket is refilled when it holds fewer than this fraction
+                                 // of its share of max_features (1 = whenever not full).
+  double min_eigenvalue = 5e-4;  // Shi-Tomasi: smallest accepted minimum eigenvalue of the
+                                 // gradient covariance (cv::cornerMinEigenVal units).
+  double min_distance_px = 7;    // Shi-Tomasi: minimum distance between corners [px].
+  int block_size = 3;            // Shi-Tomasi: window of the gradient covariance [px].
+  int window_px = 9;             // KLT window side [px] (odd).
+  int pyramid_levels = 3;        // KLT pyramid levels above full resolution.
   // When fewer than this fraction of the points track, relative to the fraction that tracked
   // in the previous frame (the motion prediction was poor: a turn begins, the first frames),
   // the lost ones are tracked again with retrack_pyramid_levels, which reaches about
   // 2^levels times further; 0 = never.
   double retrack_fraction = 0.6;
   int retrack_pyramid_levels = 5;  // Pyramid levels of that second attempt.
-  int max_iterations = 20;        // KLT iterations per level.
-  double epsilon_px = 0.01;       // KLT stops when the update is smaller [px].
-  double max_forward_backward_px = 0.5;  // Tracked back to the start within this [px]; 0 = no check.
-  int border_px = 8;              // Features closer to the image border are dropped [px].
-  int detection_level = 0;        // Pyramid level corners are detected on (0 = full
-                                  // resolution; fine corners track best with small windows).
-  int refine_window_px = 2;       // Half-size of the full-resolution sub-pixel corner refinement
-                                  // of corners detected on a reduced level [px]; 0 = none.
+  int max_iterations = 20;         // KLT iterations per level.
+  double epsilon_px = 0.01;        // KLT stops when the update is smaller [px].
+  double max_forward_backward_px =
+      0.5;                   // Tracked back to the start within this [px]; 0 = no check.
+  int border_px = 8;         // Features closer to the image border are dropped [px].
+  int detection_level = 0;   // Pyramid level corners are detected on (0 = full
+                             // resolution; fine corners track best with small windows).
+  int refine_window_px = 2;  // Half-size of the full-resolution sub-pixel corner refinement
+                             // of corners detected on a reduced level [px]; 0 = none.
 
   bool IsValid(std::string* error) const;
   static OptionTable<FeatureTrackerOptions> Describe();

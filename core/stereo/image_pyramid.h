@@ -9,9 +9,9 @@ namespace sightline {
 
 // The pyramid of one CV_8UC1 image with Scharr derivatives, as calcOpticalFlowPyrLK takes it.
 struct ImagePyramid {
-  cv::Mat image;               // Level 0 (the image itself).
+  cv::Mat image;                // Level 0 (the image itself).
   std::vector<cv::Mat> levels;  // buildOpticalFlowPyramid's output (image, derivative, ...).
-  int max_level = 0;           // Deepest level built.
+  int max_level = 0;            // Deepest level built.
 
   bool empty() const { return levels.empty(); }
   // The image at level l (0 = full resolution).

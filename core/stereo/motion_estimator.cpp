@@ -14,11 +14,15 @@ namespace sightline {
 using stereo_internal::Invalid;
 
 bool MotionEstimatorOptions::IsValid(std::string* error) const {
-  if (!(rigidity_tolerance_m > 0)) return Invalid(error, "stereo.ransac.rigidity_tolerance_m must be > 0");
+  if (!(rigidity_tolerance_m > 0))
+    return Invalid(error, "stereo.ransac.rigidity_tolerance_m must be > 0");
   if (!(rigidity_sigmas >= 0)) return Invalid(error, "stereo.ransac.rigidity_sigmas must be >= 0");
-  if (!(disparity_sigma_px >= 0)) return Invalid(error, "stereo.ransac.disparity_sigma_px must be >= 0");
-  if (max_rigidity_failures < 1) return Invalid(error, "stereo.ransac.max_rigidity_failures must be >= 1");
-  if (!(inlier_threshold_px > 0)) return Invalid(error, "stereo.ransac.inlier_threshold_px must be > 0");
+  if (!(disparity_sigma_px >= 0))
+    return Invalid(error, "stereo.ransac.disparity_sigma_px must be >= 0");
+  if (max_rigidity_failures < 1)
+    return Invalid(error, "stereo.ransac.max_rigidity_failures must be >= 1");
+  if (!(inlier_threshold_px > 0))
+    return Invalid(error, "stereo.ransac.inlier_threshold_px must be > 0");
   if (!(stop_inlier_fraction > 0 && stop_inlier_fraction <= 1)) {
     return Invalid(error, "stereo.ransac.stop_inlier_fraction must lie in (0, 1]");
   }
@@ -79,10 +83,13 @@ bool MotionEstimator::Rigid(const RectifiedStereoCamera& camera, const StereoCor
   const double d_cur = (a.x_current - b.x_current).norm();
   const double s = options_.disparity_sigma_px;
   // Each distance is off by about the depth errors of its two points (along the rays).
-  const double s1 = camera.DepthSigma(a.x_previous.z(), s), s2 = camera.DepthSigma(b.x_previous.z(), s),
-               s3 = camera.DepthSigma(a.x_current.z(), s), s4 = camera.DepthSigma(b.x_current.z(), s);
+  const double s1 = camera.DepthSigma(a.x_previous.z(), s),
+               s2 = camera.DepthSigma(b.x_previous.z(), s),
+               s3 = camera.DepthSigma(a.x_current.z(), s),
+               s4 = camera.DepthSigma(b.x_current.z(), s);
   const double sigma = std::sqrt(s1 * s1 + s2 * s2 + s3 * s3 + s4 * s4);
-  return std::abs(d_prev - d_cur) <= options_.rigidity_tolerance_m + options_.rigidity_sigmas * sigma;
+  return std::abs(d_prev - d_cur) <=
+         options_.rigidity_tolerance_m + options_.rigidity_sigmas * sigma;
 }
 
 std::vector<int> MotionEstimator::Inliers(const RectifiedStereoCamera& camera,
@@ -134,8 +141,8 @@ MotionHypothesis MotionEstimator::Estimate(
   const MotionRefiner refiner(sample_refine);
   const size_t stop_count = static_cast<size_t>(std::ceil(options_.stop_inlier_fraction * n));
   int needed = options_.max_iterations;  // Adaptive sample count for the best set so far.
-  while (best.iterations < std::min(options_.max_iterations,
-                                    std::max(options_.min_iterations, needed))) {
+  while (best.iterations <
+         std::min(options_.max_iterations, std::max(options_.min_iterations, needed))) {
     const int a = pick(rng), b = pick(rng), c = pick(rng);
     if (a == b || a == c || b == c) continue;
     const StereoCorrespondence &ca = correspondences[static_cast<size_t>(a)],

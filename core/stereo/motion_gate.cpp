@@ -14,13 +14,15 @@ bool MotionGateOptions::IsValid(std::string* error) const {
   if (!(max_angular_speed_deg_s > 0)) {
     return Invalid(error, "stereo.gate.max_angular_speed_deg_s must be > 0");
   }
-  if (!(max_acceleration_mps2 >= 0)) return Invalid(error, "stereo.gate.max_acceleration_mps2 must be >= 0");
+  if (!(max_acceleration_mps2 >= 0))
+    return Invalid(error, "stereo.gate.max_acceleration_mps2 must be >= 0");
   if (!(max_residual_px > 0)) return Invalid(error, "stereo.gate.max_residual_px must be > 0");
   if (min_inliers < 3) return Invalid(error, "stereo.gate.min_inliers must be >= 3");
   if (fallback != "constant_motion" && fallback != "hold") {
     return Invalid(error, "stereo.gate.fallback must be constant_motion or hold");
   }
-  if (max_fallback_frames < 0) return Invalid(error, "stereo.gate.max_fallback_frames must be >= 0");
+  if (max_fallback_frames < 0)
+    return Invalid(error, "stereo.gate.max_fallback_frames must be >= 0");
   return true;
 }
 
@@ -78,7 +80,8 @@ GateDecision MotionGate::Check(const MotionCandidate& candidate, double dt_s) {
   } else if (!candidate.current_from_previous.matrix().allFinite()) {
     std::snprintf(reason, sizeof(reason), "motion not finite");
   } else if (candidate.inliers < options_.min_inliers) {
-    std::snprintf(reason, sizeof(reason), "%d inliers < %d", candidate.inliers, options_.min_inliers);
+    std::snprintf(reason, sizeof(reason), "%d inliers < %d", candidate.inliers,
+                  options_.min_inliers);
   } else if (candidate.residual_px > options_.max_residual_px) {
     std::snprintf(reason, sizeof(reason), "residual %.2f px > %.2f px", candidate.residual_px,
                   options_.max_residual_px);

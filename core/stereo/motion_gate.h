@@ -15,13 +15,13 @@ namespace sightline {
 
 // Gate options. Keys "stereo.gate.*".
 struct MotionGateOptions {
-  double max_speed_mps = 40.0;              // Fastest plausible translation [m/s].
-  double max_angular_speed_deg_s = 120.0;   // Fastest plausible rotation [deg/s].
-  double max_acceleration_mps2 = 30.0;      // Largest change of velocity [m/s^2]; 0 = no check.
-  double max_residual_px = 1.5;             // Refined RMS reprojection error above this rejects [px].
-  int min_inliers = 20;                     // Fewer refined inliers rejects.
+  double max_speed_mps = 40.0;             // Fastest plausible translation [m/s].
+  double max_angular_speed_deg_s = 120.0;  // Fastest plausible rotation [deg/s].
+  double max_acceleration_mps2 = 30.0;     // Largest change of velocity [m/s^2]; 0 = no check.
+  double max_residual_px = 1.5;  // Refined RMS reprojection error above this rejects [px].
+  int min_inliers = 20;          // Fewer refined inliers rejects.
   std::string fallback = "constant_motion";  // constant_motion or hold.
-  int max_fallback_frames = 2;              // Consecutive constant-motion frames, then hold.
+  int max_fallback_frames = 2;               // Consecutive constant-motion frames, then hold.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MotionGateOptions> Describe();
@@ -29,10 +29,10 @@ struct MotionGateOptions {
 
 // An estimate offered to the gate.
 struct MotionCandidate {
-  bool estimated = false;          // False when RANSAC or matching failed.
-  std::string failure;             // Why not, when not estimated.
+  bool estimated = false;  // False when RANSAC or matching failed.
+  std::string failure;     // Why not, when not estimated.
   Eigen::Isometry3d current_from_previous = Eigen::Isometry3d::Identity();
-  double residual_px = 0;          // Refined RMS reprojection error [px].
+  double residual_px = 0;  // Refined RMS reprojection error [px].
   int inliers = 0;
 };
 

@@ -8,11 +8,11 @@
 
 namespace sightline {
 
+using stereo_internal::CenterWeight;
 using stereo_internal::Invalid;
+using stereo_internal::Skew;
 using stereo_internal::StereoHuberWeights;
 using stereo_internal::StereoResidual;
-using stereo_internal::Skew;
-using stereo_internal::CenterWeight;
 
 bool MotionRefinerOptions::IsValid(std::string* error) const {
   if (max_iterations < 0) return Invalid(error, "stereo.refine.max_iterations must be >= 0");
@@ -74,8 +74,8 @@ void AddTerm(const RectifiedStereoCamera& c, const Eigen::Vector3d& y,
   const double v = c.f * y.y() * iz + c.cy;
   const double r[4] = {ul - obs.u_left, v - obs.v, ur - obs.u_right, v - obs.v};
   Eigen::Matrix<double, 4, 3> dr_dy;
-  dr_dy << fx, 0, -fx * y.x() * iz,  //
-      0, fx, -fx * y.y() * iz,         //
+  dr_dy << fx, 0, -fx * y.x() * iz,              //
+      0, fx, -fx * y.y() * iz,                   //
       fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
       0, fx, -fx * y.y() * iz;
   const Eigen::Matrix<double, 4, 6> j = dr_dy * dy_ddelta;
@@ -104,7 +104,8 @@ RefinementSummary MotionRefiner::RefineJoint(
   if (indices.size() < 3) return summary;
   const size_t n = indices.size();
   std::vector<Eigen::Vector3d> points(n);
-  for (size_t k = 0; k < n; ++k) points[k] = correspondences[static_cast<size_t>(indices[k])].x_previous;
+  for (size_t k = 0; k < n; ++k)
+    points[k] = correspondences[static_cast<size_t>(indices[k])].x_previous;
   std::vector<Eigen::Matrix3d> hll_inv(n);
   std::vector<Eigen::Matrix<double, 6, 3>> hpl(n);
   std::vector<Eigen::Vector3d> gl(n);
@@ -138,8 +139,8 @@ RefinementSummary MotionRefiner::RefineJoint(
       const Eigen::Matrix<double, 6, 4> jpw = jp.transpose() * w1.asDiagonal();
       const Matrix6d hpp = jpw * jp;
       hpl[k] = jpw * jl;
-      Eigen::Matrix3d hll = a0.transpose() * w0.asDiagonal() * a0 +
-                            jl.transpose() * w1.asDiagonal() * jl;
+      Eigen::Matrix3d hll =
+          a0.transpose() * w0.asDiagonal() * a0 + jl.transpose() * w1.asDiagonal() * jl;
       hll += 1e-9 * Eigen::Matrix3d::Identity();
       const Vector6d gp = jpw * r1;
       gl[k] = a0.transpose() * w0.asDiagonal() * r0 + jl.transpose() * w1.asDiagonal() * r1;
@@ -204,7 +205,8 @@ RefinementSummary MotionRefiner::Refine(const RectifiedStereoCamera& camera,
                                         const std::vector<StereoCorrespondence>& correspondences,
                                         const std::vector<int>& indices,
                                         Eigen::Isometry3d* current_from_previous) const {
-  if (options_.joint_points) return RefineJoint(camera, correspondences, indices, current_from_previous);
+  if (options_.joint_points)
+    return RefineJoint(camera, correspondences, indices, current_from_previous);
   RefinementSummary summary;
   summary.initial_rms_px =
       RmsReprojectionPx(camera, correspondences, indices, *current_from_previous);

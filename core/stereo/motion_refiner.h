@@ -1,8 +1,9 @@
 // Non-linear least-squares refinement of a frame-to-frame motion: Gauss-Newton on the
 // reprojection error in both images of the rectified pair (as libviso2), with Huber weights,
 // seeded by the RANSAC estimate. By default the points are refined too (two-frame bundle
-// adjustment, reduced to the 6 motion parameters by the Schur complement). Optionally symmetric: previous points into the current images
-// and current points into the previous images, which uses both depth estimates.
+// adjustment, reduced to the 6 motion parameters by the Schur complement). Optionally symmetric:
+// previous points into the current images and current points into the previous images, which uses
+// both depth estimates.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -17,12 +18,12 @@ namespace sightline {
 
 // Refinement options. Keys "stereo.refine.*".
 struct MotionRefinerOptions {
-  int max_iterations = 5;       // Gauss-Newton iterations (per refinement round).
-  double huber_px = 0.3;        // Residuals beyond this get weight huber / |r| [px]; about
-                                // twice the typical residual, so that points on slowly moving
-                                // objects, which pass the 1 px inlier test, count less.
-  double min_step = 1e-6;       // Stop when the update (rad or m) is smaller.
-  bool symmetric = true;        // Also project the current points into the previous images.
+  int max_iterations = 5;  // Gauss-Newton iterations (per refinement round).
+  double huber_px = 0.3;   // Residuals beyond this get weight huber / |r| [px]; about
+                           // twice the typical residual, so that points on slowly moving
+                           // objects, which pass the 1 px inlier test, count less.
+  double min_step = 1e-6;  // Stop when the update (rad or m) is smaller.
+  bool symmetric = true;   // Also project the current points into the previous images.
   // Estimate the 3D points together with the motion (two-frame bundle adjustment, Schur
   // complement): removes the depth bias of triangulated points (E[1/d] > 1/E[d]) that makes
   // motion-only refinement overestimate translation. Replaces `symmetric` when on.

@@ -78,8 +78,7 @@ Status Rectifier::Configure(const StereoRig& rig) {
   const cv::Mat translation = (cv::Mat_<double>(3, 1) << t.x(), t.y(), t.z());
   cv::Mat r1, r2, p1, p2, q;
   cv::stereoRectify(ToCv(rig.left.K()), Distortion(rig.left), ToCv(rig.right.K()),
-                    Distortion(rig.right), size, ToCv(rotation),
-                    translation, r1, r2, p1, p2, q,
+                    Distortion(rig.right), size, ToCv(rotation), translation, r1, r2, p1, p2, q,
                     cv::CALIB_ZERO_DISPARITY, options_.alpha, size);
   cv::initUndistortRectifyMap(ToCv(rig.left.K()), Distortion(rig.left), r1, p1, size, CV_16SC2,
                               map_left_x_, map_left_y_);
@@ -104,8 +103,7 @@ Status Rectifier::Rectify(const StereoFrame& frame, cv::Mat* left, cv::Mat* righ
   if (gray_left.size() != gray_right.size()) {
     return InvalidArgument("the left and right images differ in size");
   }
-  if (camera_.width > 0 &&
-      (gray_left.cols != camera_.width || gray_left.rows != camera_.height)) {
+  if (camera_.width > 0 && (gray_left.cols != camera_.width || gray_left.rows != camera_.height)) {
     return InvalidArgument("image size " + std::to_string(gray_left.cols) + "x" +
                            std::to_string(gray_left.rows) + " differs from the calibration's " +
                            std::to_string(camera_.width) + "x" + std::to_string(camera_.height));

@@ -29,8 +29,8 @@ inline bool StereoResidual(const RectifiedStereoCamera& c, const Eigen::Vector3d
   const double v = c.f * y.y() * iz + c.cy;
   *r << c.f * y.x() * iz + c.cx - obs.u_left, v - obs.v,
       c.f * (y.x() - c.baseline_m) * iz + c.cx - obs.u_right, v - obs.v;
-  *dr_dy << fx, 0, -fx * y.x() * iz,  //
-      0, fx, -fx * y.y() * iz,          //
+  *dr_dy << fx, 0, -fx * y.x() * iz,             //
+      0, fx, -fx * y.y() * iz,                   //
       fx, 0, -fx * (y.x() - c.baseline_m) * iz,  //
       0, fx, -fx * y.y() * iz;
   return true;

@@ -12,9 +12,9 @@ namespace sightline {
 // A rectified pair: both images share fx = fy = f and (cx, cy); the right camera sits
 // baseline_m along the left camera's +x axis, so a point at depth Z has disparity f b / Z.
 struct RectifiedStereoCamera {
-  double f = 0;           // Focal length [px].
-  double cx = 0, cy = 0;  // Principal point [px].
-  double baseline_m = 0;  // Distance between optical centres [m], > 0.
+  double f = 0;               // Focal length [px].
+  double cx = 0, cy = 0;      // Principal point [px].
+  double baseline_m = 0;      // Distance between optical centres [m], > 0.
   int width = 0, height = 0;  // Image size [px].
 
   // From a rectified rig: checks that the right camera sits to the right of the left one

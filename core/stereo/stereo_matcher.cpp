@@ -13,16 +13,20 @@ namespace sightline {
 using stereo_internal::Invalid;
 
 bool StereoMatcherOptions::IsValid(std::string* error) const {
-  if (!(min_disparity_px >= 0)) return Invalid(error, "stereo.matching.min_disparity_px must be >= 0");
+  if (!(min_disparity_px >= 0))
+    return Invalid(error, "stereo.matching.min_disparity_px must be >= 0");
   if (!(max_disparity_px > min_disparity_px)) {
     return Invalid(error, "stereo.matching.max_disparity_px must exceed min_disparity_px");
   }
-  if (!(max_row_error_px > 0)) return Invalid(error, "stereo.matching.max_row_error_px must be > 0");
-  if (!(max_left_right_px >= 0)) return Invalid(error, "stereo.matching.max_left_right_px must be >= 0");
+  if (!(max_row_error_px > 0))
+    return Invalid(error, "stereo.matching.max_row_error_px must be > 0");
+  if (!(max_left_right_px >= 0))
+    return Invalid(error, "stereo.matching.max_left_right_px must be >= 0");
   if (window_px < 5 || window_px % 2 == 0) {
     return Invalid(error, "stereo.matching.window_px must be odd and >= 5");
   }
-  if (klt_levels < 0 || klt_levels > 6) return Invalid(error, "stereo.matching.klt_levels must lie in [0, 6]");
+  if (klt_levels < 0 || klt_levels > 6)
+    return Invalid(error, "stereo.matching.klt_levels must lie in [0, 6]");
   if (max_iterations < 1) return Invalid(error, "stereo.matching.max_iterations must be >= 1");
   if (coarse_level < 0 || coarse_level > 6) {
     return Invalid(error, "stereo.matching.coarse_level must lie in [0, 6]");
@@ -81,7 +85,8 @@ float StereoMatcher::CoarseDisparity(const cv::Mat& left, const cv::Mat& right, 
     }
   }
   const int n = (2 * h + 1) * (2 * h + 1);
-  if (best_d < 0 || best > options_.max_coarse_sad * n) return std::numeric_limits<float>::quiet_NaN();
+  if (best_d < 0 || best > options_.max_coarse_sad * n)
+    return std::numeric_limits<float>::quiet_NaN();
   return static_cast<float>(best_d * scale);
 }
 
@@ -103,8 +108,10 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
   from.reserve(n);
   to.reserve(n);
   for (size_t i = 0; i < n; ++i) {
-    float d = i < disparity_guess.size() ? disparity_guess[i] : std::numeric_limits<float>::quiet_NaN();
-    if (!std::isfinite(d)) d = CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
+    float d =
+        i < disparity_guess.size() ? disparity_guess[i] : std::numeric_limits<float>::quiet_NaN();
+    if (!std::isfinite(d))
+      d = CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
     if (!std::isfinite(d)) continue;
     index.push_back(i);
     from.push_back(left_points[i]);
@@ -132,7 +139,8 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
     const cv::Point2f& r = to[k];
     const cv::Point2f& l = from[k];
     const double disparity = l.x - r.x;
-    if (!(disparity >= options_.min_disparity_px && disparity <= options_.max_disparity_px)) continue;
+    if (!(disparity >= options_.min_disparity_px && disparity <= options_.max_disparity_px))
+      continue;
     if (!(std::abs(r.y - l.y) <= options_.max_row_error_px)) continue;
     if (r.x < 0 || r.x > right.image.cols - 1) continue;
     if (!back.empty()) {

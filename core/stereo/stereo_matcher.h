@@ -15,7 +15,7 @@ namespace sightline {
 
 // Matching options. Keys "stereo.matching.*".
 struct StereoMatcherOptions {
-  double min_disparity_px = 1.0;    // Smaller disparities (points too far to help) are rejected [px].
+  double min_disparity_px = 1.0;  // Smaller disparities (points too far to help) are rejected [px].
   double max_disparity_px = 160.0;  // Largest disparity searched and accepted [px].
   double max_row_error_px = 0.5;    // |v_right - v_left| above this rejects a match [px].
   double max_left_right_px = 0.5;   // Right-to-left KLT must return within this [px]; 0 = no check.
@@ -44,9 +44,8 @@ class StereoMatcher {
   // consistent match within the limits exists. The right point's row is set to the left one's
   // (rectified images), its column is sub-pixel.
   void Match(const ImagePyramid& left, const ImagePyramid& right,
-             const std::vector<cv::Point2f>& left_points,
-             const std::vector<float>& disparity_guess, std::vector<cv::Point2f>* right_points,
-             std::vector<unsigned char>* ok) const;
+             const std::vector<cv::Point2f>& left_points, const std::vector<float>& disparity_guess,
+             std::vector<cv::Point2f>* right_points, std::vector<unsigned char>* ok) const;
 
  private:
   // Best disparity along the row at the coarse level, NaN when no window fits or matches.

@@ -62,8 +62,8 @@ void Record(TimingStats* timing, const char* stage, double ms, double* field) {
 // Stereo observations for the window: the features marked in `use`, and every new one.
 template <typename Feature>
 std::vector<TrackObservation> Observations(const std::vector<Feature>& kept,
-                                            const std::vector<int>& kept_source,
-                                            const std::vector<unsigned char>& use) {
+                                           const std::vector<int>& kept_source,
+                                           const std::vector<unsigned char>& use) {
   std::vector<TrackObservation> out;
   out.reserve(kept.size());
   for (size_t k = 0; k < kept.size(); ++k) {
@@ -92,11 +92,10 @@ Status StereoOdometry::Configure(const StereoRig& rig) {
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   configured_ = false;
   SIGHTLINE_RETURN_IF_ERROR(rectifier_.Configure(rig));
-  pyramid_levels_ = std::max({options_.tracking.pyramid_levels, options_.matching.klt_levels,
-                              options_.matching.coarse_level,
-                              options_.tracking.retrack_fraction > 0
-                                  ? options_.tracking.retrack_pyramid_levels
-                                  : 0});
+  pyramid_levels_ = std::max(
+      {options_.tracking.pyramid_levels, options_.matching.klt_levels,
+       options_.matching.coarse_level,
+       options_.tracking.retrack_fraction > 0 ? options_.tracking.retrack_pyramid_levels : 0});
   pyramid_window_ = std::max(options_.tracking.window_px, options_.matching.window_px);
   Reset();
   configured_ = true;
@@ -346,8 +345,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       }
       Eigen::Isometry3d current_from_keyframe = world_from_current.inverse() * world_from_keyframe_;
       const int agree = RefineAgainstKeyframe(
-          cam, refiner_, from_keyframe, options_.ransac.inlier_threshold_px,
-          options_.refine_rounds, options_.keyframe.min_inliers, &current_from_keyframe);
+          cam, refiner_, from_keyframe, options_.ransac.inlier_threshold_px, options_.refine_rounds,
+          options_.keyframe.min_inliers, &current_from_keyframe);
       if (agree >= options_.keyframe.min_inliers) {
         world_from_current = world_from_keyframe_ * current_from_keyframe.inverse();
         result->current_from_previous = world_from_current.inverse() * world_from_camera_;
@@ -361,7 +360,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
       if (stats.gated) window_.Reset();
       std::vector<unsigned char> use(kept.size(), stats.gated ? 1 : 0);
       if (!stats.gated) {
-        for (int i : inliers) use[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
+        for (int i : inliers)
+          use[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
       }
       WindowBundleSummary summary;
       const Eigen::Isometry3d adjusted =
@@ -388,7 +388,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   // Features for views.
   std::vector<unsigned char> is_inlier(kept.size(), 0);
   if (!stats.gated) {
-    for (int i : inliers) is_inlier[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
+    for (int i : inliers)
+      is_inlier[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
   }
   result->features.reserve(kept.size());
   for (size_t k = 0; k < kept.size(); ++k) {
@@ -399,7 +400,8 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     t.age = kept[k].age;
     const int s = kept_source[k];
     t.previous_left = s >= 0 ? features_[static_cast<size_t>(s)].left : kept[k].left;
-    t.role = s < 0 ? FeatureRole::kNew : (is_inlier[k] ? FeatureRole::kInlier : FeatureRole::kOutlier);
+    t.role =
+        s < 0 ? FeatureRole::kNew : (is_inlier[k] ? FeatureRole::kInlier : FeatureRole::kOutlier);
     result->features.push_back(t);
   }
 

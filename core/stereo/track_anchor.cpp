@@ -21,7 +21,8 @@ bool TrackAnchorOptions::IsValid(std::string* error) const {
   if (!(max_scale_change > 0 && max_scale_change < 1)) {
     return Invalid(error, "stereo.anchor.max_scale_change must lie in (0, 1)");
   }
-  if (!(max_correction_px > 0)) return Invalid(error, "stereo.anchor.max_correction_px must be > 0");
+  if (!(max_correction_px > 0))
+    return Invalid(error, "stereo.anchor.max_correction_px must be > 0");
   if (!(min_zncc >= -1 && min_zncc <= 1)) {
     return Invalid(error, "stereo.anchor.min_zncc must lie in [-1, 1]");
   }
@@ -181,8 +182,10 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
 
   // The patch's warp from the anchor image to the current one: the Jacobian at the anchor of
   // "back-project at the anchor's depth, move, project".
-  const Eigen::Isometry3d current_from_anchor = world_from_current.inverse() * ref->world_from_camera;
-  const Eigen::Vector3d x_anchor = camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
+  const Eigen::Isometry3d current_from_anchor =
+      world_from_current.inverse() * ref->world_from_camera;
+  const Eigen::Vector3d x_anchor =
+      camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
   const Eigen::Vector3d y = current_from_anchor * x_anchor;
   if (y.z() < 0.05) return AnchorAlignment::kRenew;
   // Seen from too far aside for the warp (a surface guessed or fitted wrongly shows it most).
@@ -202,8 +205,10 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
   }
   const double along = normal.dot(ray);
   Eigen::Matrix<double, 3, 2> surface;  // d(point) / d(u, v) at the anchor.
-  surface.col(0) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
-  surface.col(1) = (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
+  surface.col(0) =
+      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
+  surface.col(1) =
+      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
   Eigen::Matrix<double, 2, 3> projection;
   projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
   const Eigen::Matrix2d warp =
@@ -240,7 +245,8 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
     for (int i = -h; i <= h; ++i, ++k) {
       const size_t c = static_cast<size_t>((j + h + 1) * side + (i + h + 1));
       const float gx = 0.5f * (templ[c + 1] - templ[c - 1]);
-      const float gy = 0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
+      const float gy =
+          0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
       jac[static_cast<size_t>(k)] = {gx, gy, -1.f};
       values[static_cast<size_t>(k)] = templ[c];
       const Eigen::Vector3d g(gx, gy, -1.0);

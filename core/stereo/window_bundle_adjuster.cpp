@@ -11,9 +11,9 @@
 
 namespace sightline {
 
+using stereo_internal::CenterWeight;
 using stereo_internal::Invalid;
 using stereo_internal::Skew;
-using stereo_internal::CenterWeight;
 
 bool WindowBundleOptions::IsValid(std::string* error) const {
   if (frames < 2 || frames > 30) return Invalid(error, "stereo.window.frames must lie in [2, 30]");
@@ -31,7 +31,8 @@ bool WindowBundleOptions::IsValid(std::string* error) const {
   }
   if (!(huber_px > 0)) return Invalid(error, "stereo.window.huber_px must be > 0");
   if (!(max_error_px > 0)) return Invalid(error, "stereo.window.max_error_px must be > 0");
-  if (!(min_disparity_px >= 0)) return Invalid(error, "stereo.window.min_disparity_px must be >= 0");
+  if (!(min_disparity_px >= 0))
+    return Invalid(error, "stereo.window.min_disparity_px must be >= 0");
   return true;
 }
 
@@ -70,11 +71,11 @@ namespace {
 
 // One usable observation of an adjusted point.
 struct Edge {
-  int frame;  // Window index.
-  int point;  // Adjusted point index.
+  int frame;                 // Window index.
+  int point;                 // Adjusted point index.
   Eigen::Vector3d measured;  // left u, v, right u.
-  int observation;  // Index into the frame's observations.
-  double weight;    // Of the squared error, before the robust weight.
+  int observation;           // Index into the frame's observations.
+  double weight;             // Of the squared error, before the robust weight.
 };
 
 using Matrix36 = Eigen::Matrix<double, 3, 6>;
@@ -159,7 +160,8 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   const int fixed = std::max(1, n - (options_.frames - 1));
   s.frames = std::min(n, options_.frames);
   s.fixed_frames = n - s.frames;
-  frames_.back().keep = n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
+  frames_.back().keep =
+      n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
   if (n < 2) return world_from_camera;
 
   // Points: tracks with at least two usable observations, one of them in an adjusted frame.
@@ -202,10 +204,9 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         points[static_cast<size_t>(it->second)] = world;
         best_disparity[static_cast<size_t>(it->second)] = disparity;
       }
-      const double weight =
-          options_.center_weighting ? CenterWeight(camera, o.left_u) : 1.0;
-      edges.push_back({fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u),
-                       static_cast<int>(i), weight});
+      const double weight = options_.center_weighting ? CenterWeight(camera, o.left_u) : 1.0;
+      edges.push_back(
+          {fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u), static_cast<int>(i), weight});
     }
   }
   s.points = static_cast<int>(points.size());
@@ -215,7 +216,8 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
 
   // Edges grouped by point, for the Schur complement.
   std::vector<std::vector<int>> edges_of(points.size());
-  for (size_t e = 0; e < edges.size(); ++e) edges_of[static_cast<size_t>(edges[e].point)].push_back(static_cast<int>(e));
+  for (size_t e = 0; e < edges.size(); ++e)
+    edges_of[static_cast<size_t>(edges[e].point)].push_back(static_cast<int>(e));
 
   std::vector<Eigen::Isometry3d> poses;
   for (const Frame& f : frames_) poses.push_back(f.camera_from_world);
@@ -358,7 +360,8 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
         for (int e : edges_of[pi]) {
           const Edge& edge = edges[static_cast<size_t>(e)];
           if (!active[static_cast<size_t>(e)] || edge.frame < fixed) continue;
-          g.noalias() -= coupling[static_cast<size_t>(e)].transpose() * dp.segment<6>(6 * (edge.frame - fixed));
+          g.noalias() -= coupling[static_cast<size_t>(e)].transpose() *
+                         dp.segment<6>(6 * (edge.frame - fixed));
         }
         new_points[pi] += inverse[pi] * g;
       }
@@ -380,10 +383,12 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   total_cost(poses, points, &s.final_rms_px);
 
   // Keep the refined poses and forget dropped observations for the frames to come.
-  for (int fi = 0; fi < n; ++fi) frames_[static_cast<size_t>(fi)].camera_from_world = poses[static_cast<size_t>(fi)];
+  for (int fi = 0; fi < n; ++fi)
+    frames_[static_cast<size_t>(fi)].camera_from_world = poses[static_cast<size_t>(fi)];
   for (size_t e = 0; e < edges.size(); ++e) {
     if (!active[e]) {
-      frames_[static_cast<size_t>(edges[e].frame)].usable[static_cast<size_t>(edges[e].observation)] = 0;
+      frames_[static_cast<size_t>(edges[e].frame)]
+          .usable[static_cast<size_t>(edges[e].observation)] = 0;
     }
   }
   s.adjusted = true;

@@ -19,8 +19,8 @@ namespace sightline {
 
 // Keys "stereo.window.*".
 struct WindowBundleOptions {
-  bool enabled = true;         // Refine each accepted pose in the window.
-  int frames = 6;              // Frames in the window (the oldest is held fixed).
+  bool enabled = true;  // Refine each accepted pose in the window.
+  int frames = 6;       // Frames in the window (the oldest is held fixed).
   // Frames that left the window stay this long as fixed observers: their poses are not changed,
   // but their observations still constrain the points, so the window's poses stay tied to
   // where the older frames saw the same tracks and its drift does not restart at every slide.
@@ -30,11 +30,12 @@ struct WindowBundleOptions {
   // next frame replaces it. So slow motion keeps enough parallax between window frames.
   double min_parallax = 0.05;
   double min_rotation_deg = 2.0;
-  int max_iterations = 4;      // Levenberg-Marquardt iterations per frame.
-  double huber_px = 0.5;       // Huber threshold of the robust weight [px].
-  double max_error_px = 2.0;   // Observations reprojecting worse after refinement are dropped.
+  int max_iterations = 4;         // Levenberg-Marquardt iterations per frame.
+  double huber_px = 0.5;          // Huber threshold of the robust weight [px].
+  double max_error_px = 2.0;      // Observations reprojecting worse after refinement are dropped.
   double min_disparity_px = 0.5;  // Observations with less disparity (no depth) are not used.
-  bool center_weighting = false;  // Weight by 1 / (|u - cx| / cx + 0.05) (see MotionRefinerOptions).
+  bool center_weighting =
+      false;  // Weight by 1 / (|u - cx| / cx + 0.05) (see MotionRefinerOptions).
 
   bool IsValid(std::string* error) const;
   static OptionTable<WindowBundleOptions> Describe();
@@ -48,15 +49,15 @@ struct TrackObservation {
 
 // What one adjustment did.
 struct WindowBundleSummary {
-  int frames = 0;            // Frames in the window.
-  int fixed_frames = 0;      // Older frames observing with fixed poses (options.fixed_frames).
-  int points = 0;            // Tracks seen in at least two of them (the adjusted points).
-  int observations = 0;      // Their observations.
-  int dropped = 0;           // Observations dropped as outliers.
-  int iterations = 0;        // Iterations run.
-  double initial_rms_px = 0; // RMS reprojection error before ...
-  double final_rms_px = 0;   // ... and after.
-  bool adjusted = false;     // False when the window held too little to adjust.
+  int frames = 0;             // Frames in the window.
+  int fixed_frames = 0;       // Older frames observing with fixed poses (options.fixed_frames).
+  int points = 0;             // Tracks seen in at least two of them (the adjusted points).
+  int observations = 0;       // Their observations.
+  int dropped = 0;            // Observations dropped as outliers.
+  int iterations = 0;         // Iterations run.
+  double initial_rms_px = 0;  // RMS reprojection error before ...
+  double final_rms_px = 0;    // ... and after.
+  bool adjusted = false;      // False when the window held too little to adjust.
 };
 
 // The window. Add() each accepted frame with its pose estimate and observations; it returns the

@@ -15,7 +15,9 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
 
 bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -24,15 +26,16 @@ bool Contains(const std::string& text, const std::string& part) {
 // Publishes a target every 20 ms until destroyed, so a listener started at any time sees some.
 class Publisher {
  public:
-  explicit Publisher(ArmServer* server) : thread_([this, server] {
-    ArmTarget t;
-    t.position_m = {0.5, 0.01, 0.3};
-    t.source_frames = {7};
-    while (!done_) {
-      server->PublishTarget(t);
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-  }) {}
+  explicit Publisher(ArmServer* server)
+      : thread_([this, server] {
+          ArmTarget t;
+          t.position_m = {0.5, 0.01, 0.3};
+          t.source_frames = {7};
+          while (!done_) {
+            server->PublishTarget(t);
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+          }
+        }) {}
   ~Publisher() {
     done_ = true;
     thread_.join();
@@ -98,9 +101,9 @@ TEST(ArmListenCli, PrintsAStop) {
 }
 
 TEST(ArmListenCli, BadArgumentsFailWithOneLine) {
-  for (const std::string& args : {"arm-listen", "arm-listen localhost", "arm-listen 127.0.0.1:0",
-                                  "arm-listen 127.0.0.1:1 --count 1 --timeout 1",
-                                  "arm-listen 127.0.0.1:5757 --count -2"}) {
+  for (const std::string& args :
+       {"arm-listen", "arm-listen localhost", "arm-listen 127.0.0.1:0",
+        "arm-listen 127.0.0.1:1 --count 1 --timeout 1", "arm-listen 127.0.0.1:5757 --count -2"}) {
     const auto r = Cli(args);
     EXPECT_NE(r.exit_code, 0) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;

@@ -54,8 +54,8 @@ std::string* ButtonCli::dir_ = nullptr;
 
 TEST_F(ButtonCli, SimulatedApproachIsWithinThreeMillimetresWithTheMlScale) {
   const std::string out = testing::TempDir("button_cli_run");
-  const testing::ProcessResult r =
-      testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " + out);
+  const testing::ProcessResult r = testing::RunProcess(kCli + " run button " + *dir_ + " --tap " +
+                                                       TapOnTarget() + " --out " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   std::printf("%s", r.out.c_str());
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
@@ -71,7 +71,8 @@ TEST_F(ButtonCli, SimulatedApproachIsWithinThreeMillimetresWithTheMlScale) {
   EXPECT_LT(*track_max_px, 3.0);  // Within 3 px over the whole approach.
   EXPECT_GT(*targets, 0);
   EXPECT_TRUE(testing::JsonNumber(metrics, "tracking", "median").has_value()) << metrics;
-  EXPECT_TRUE(testing::JsonNumber(metrics, "counts", "tap_to_first_target_frames").has_value()) << metrics;
+  EXPECT_TRUE(testing::JsonNumber(metrics, "counts", "tap_to_first_target_frames").has_value())
+      << metrics;
   EXPECT_EQ(testing::JsonNumber(metrics, "counts", "true_button").value_or(-1), 5);
   const std::string csv = testing::ReadTextFile(out + "/button.csv");
   EXPECT_EQ(csv.rfind("frame,time_s,state,gate,u_px,v_px", 0), 0u) << csv.substr(0, 200);
@@ -91,8 +92,9 @@ TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
   const std::string out = testing::TempDir("button_cli_serve");
   testing::ProcessResult run;
   std::thread runner([&] {
-    run = testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " + out +
-                              " --serve " + address + " --set button.run.wait_clients=2");
+    run =
+        testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " +
+                            out + " --serve " + address + " --set button.run.wait_clients=2");
   });
   // An in-process client first (it also tells when the server is up) ...
   std::optional<ArmClient> client;
@@ -106,8 +108,8 @@ TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
   }
   ASSERT_TRUE(client.has_value()) << "the button run never served " << address;
   // ... then sightline-cli arm-listen, the second client the run waits for.
-  const testing::ProcessResult listen =
-      testing::RunProcess(kCli + " arm-listen " + address + " --count 1 --timeout 120 --no-heartbeats");
+  const testing::ProcessResult listen = testing::RunProcess(
+      kCli + " arm-listen " + address + " --count 1 --timeout 120 --no-heartbeats");
   bool target = false;
   for (int i = 0; i < 10000 && !target; ++i) {
     StatusOr<std::string> line = client->ReadLine(60000);
@@ -131,10 +133,12 @@ TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {
       testing::RunProcess(kCli + " run button " + *dir_ + " --tap 8,8@0 --out " + out);
   EXPECT_NE(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("no button here"), std::string::npos) << r.out;
-  const testing::ProcessResult bad = testing::RunProcess(kCli + " run button " + *dir_ + " --tap 1x2 --out " + out);
+  const testing::ProcessResult bad =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --tap 1x2 --out " + out);
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.out.find("button.run.tap"), std::string::npos) << bad.out;
-  const testing::ProcessResult none = testing::RunProcess(kCli + " run button " + *dir_ + " --out " + out);
+  const testing::ProcessResult none =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --out " + out);
   EXPECT_NE(none.exit_code, 0);
   EXPECT_NE(none.out.find("--tap"), std::string::npos) << none.out;
 }

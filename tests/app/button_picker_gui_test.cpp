@@ -3,11 +3,10 @@
 // go out to a TCP client on loopback, press STOP and see the stop arrive and no target after it.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <cstdio>
 
 #include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/main_window.h"
@@ -64,8 +63,10 @@ TEST(ButtonPickerPresenter, TapConfirmTargetSentAndStopOnTheSimulatedPanel) {
   std::optional<ArmClient> client;
   for (int attempt = 0; attempt < 100 && !client; ++attempt) {
     auto c = ArmClient::Connect("127.0.0.1", port, "", 1000);
-    if (c.ok()) client.emplace(std::move(*c));
-    else QTest::qWait(50);
+    if (c.ok())
+      client.emplace(std::move(*c));
+    else
+      QTest::qWait(50);
   }
   ASSERT_TRUE(client.has_value()) << "the picker does not serve on port " << port;
 
@@ -80,7 +81,8 @@ TEST(ButtonPickerPresenter, TapConfirmTargetSentAndStopOnTheSimulatedPanel) {
   while (picker->last_state() != PickerState::kTargetSent && frames < 140) ASSERT_TRUE(step());
   ASSERT_EQ(picker->last_state(), PickerState::kTargetSent) << "frame " << frames;
   EXPECT_EQ(picker->panel()->state(), OperatorState::kTargetSent);
-  std::printf("scale converged at frame %d (tap), target sent at frame %d\n", tap_frame, frames - 1);
+  std::printf("scale converged at frame %d (tap), target sent at frame %d\n", tap_frame,
+              frames - 1);
   bool got_target = false;
   for (int i = 0; i < 1000 && !got_target; ++i) {
     StatusOr<std::string> line = client->ReadLine(5000);

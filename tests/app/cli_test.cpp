@@ -12,7 +12,9 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path);

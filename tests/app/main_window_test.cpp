@@ -7,27 +7,27 @@
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSignalSpy>
+#include <QTest>
 #include <fstream>
 #include <iomanip>
 #include <iterator>
 #include <sstream>
-#include <QSignalSpy>
-#include <QTest>
 
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/mono_slam_presenter.h"
+#include "app/sightline/playback_controller.h"
 #include "app/sightline/stereo_vo_presenter.h"
-#include "widgets/time_series_plot.h"
 #include "core/io/dataset.h"
 #include "core/sim/simulate.h"
-#include "widgets/parameter_panel.h"
-#include "app/sightline/playback_controller.h"
 #include "tests/app/process.h"
 #include "tests/support/test_data.h"
 #include "widgets/image_view.h"
+#include "widgets/parameter_panel.h"
 #include "widgets/scene_view.h"
+#include "widgets/time_series_plot.h"
 
 namespace sightline {
 namespace {
@@ -42,7 +42,8 @@ int ForegroundPixels(const QImage& image, QRect region = QRect()) {
     for (int x = region.left(); x <= region.right(); x += 2) {
       const QColor c = image.pixelColor(x, y);
       if (std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
-              std::abs(c.blue() - background.blue()) > 60) {
+              std::abs(c.blue() - background.blue()) >
+          60) {
         ++count;
       }
     }
@@ -251,7 +252,8 @@ TEST(MainWindow, SensorsMenuListsEveryDriverWithItsAvailability) {
     }
     if (action->toolTip().contains("/dev/video")) webcam_checked = !action->isEnabled();
   }
-  if (!QDir("/dev").entryList({"video*"}, QDir::System).isEmpty()) GTEST_SKIP() << "a webcam exists";
+  if (!QDir("/dev").entryList({"video*"}, QDir::System).isEmpty())
+    GTEST_SKIP() << "a webcam exists";
   EXPECT_TRUE(webcam_checked);
 }
 
@@ -313,7 +315,8 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
   window.playback()->Step();
   ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() > stepped; }, 20000));
   bool calibrating = false;
-  for (const auto& m : messages) calibrating |= m.at(1).toString().contains("calibrating the floor (1 of");
+  for (const auto& m : messages)
+    calibrating |= m.at(1).toString().contains("calibrating the floor (1 of");
   EXPECT_TRUE(calibrating);
 }
 
@@ -347,7 +350,8 @@ TEST(StereoVoPresenter, DrawsTracksAndATrajectoryThatFollowsKittiGroundTruth) {
   auto gt = OpenDataset(dir, SourceKind::kStereo);
   ASSERT_TRUE(gt.ok());
   Trajectory truth;
-  for (int i = 0; i < kFrames; ++i) truth.mutable_poses().push_back((*gt)->ground_truth()->poses()[i]);
+  for (int i = 0; i < kFrames; ++i)
+    truth.mutable_poses().push_back((*gt)->ground_truth()->poses()[i]);
   EXPECT_NEAR(vo->estimate().LengthM(), truth.LengthM(), 0.05 * truth.LengthM());
   // The 3D view follows the growing trajectory: re-fitted as it left the fitted box (the car
   // covers about 6 m, more than the first fit's margin), and the last fit holds every pose.

@@ -16,7 +16,9 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
 
 bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -28,10 +30,11 @@ class MappingCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::string(testing::TempDir("mapping_cli") + "/corridor");
-    const auto r = Cli("simulate corridor --out " + *dir_ +
-                       " --frames 100 --seed 3 --sensors rgbd --quiet"
-                       " --set sim.rgbd.resolution=320x240 --set sim.rate_hz=5"
-                       " --set sim.motion.speed_mps=1 --set sim.odometry.heading_drift_deg_per_m=2");
+    const auto r =
+        Cli("simulate corridor --out " + *dir_ +
+            " --frames 100 --seed 3 --sensors rgbd --quiet"
+            " --set sim.rgbd.resolution=320x240 --set sim.rate_hz=5"
+            " --set sim.motion.speed_mps=1 --set sim.odometry.heading_drift_deg_per_m=2");
     ASSERT_EQ(r.exit_code, 0) << r.out;
   }
   static void TearDownTestSuite() {
@@ -81,7 +84,8 @@ TEST_F(MappingCli, RunWritesTrajectoryLinesMapAndMetrics) {
   std::string header, first;
   std::getline(lines, header);
   std::getline(lines, first);
-  EXPECT_TRUE(Contains(header, "frame,time_s,line,x1_m,y1_m,x2_m,y2_m,angle_deg,inliers")) << header;
+  EXPECT_TRUE(Contains(header, "frame,time_s,line,x1_m,y1_m,x2_m,y2_m,angle_deg,inliers"))
+      << header;
   EXPECT_EQ(std::count(first.begin(), first.end(), ','), 10) << first;
   // map.yaml in the ROS map_server convention.
   const std::string yaml = testing::ReadTextFile(out + "/map.yaml");
@@ -113,10 +117,13 @@ TEST_F(MappingCli, FloorCalibrationFileIsWrittenAndUsed) {
   const std::string yaml = testing::ReadTextFile(out + "/floor.yaml");
   EXPECT_TRUE(Contains(yaml, "camera_height_m: 0.80")) << yaml;
   EXPECT_TRUE(Contains(yaml, "pitch_down_deg: 10.0")) << yaml;  // Tilted 10 deg down.
-  const auto run = Cli("run mapping " + *dir_ + " --out " + out + "/run --set mapping.run.max_frames=10"
-                       " --set mapping.run.floor_file=" + out + "/floor.yaml");
+  const auto run = Cli("run mapping " + *dir_ + " --out " + out +
+                       "/run --set mapping.run.max_frames=10"
+                       " --set mapping.run.floor_file=" +
+                       out + "/floor.yaml");
   ASSERT_EQ(run.exit_code, 0) << run.out;
-  EXPECT_TRUE(Contains(testing::ReadTextFile(out + "/run/mapping_log.txt"), "floor: " + out + "/floor.yaml"));
+  EXPECT_TRUE(Contains(testing::ReadTextFile(out + "/run/mapping_log.txt"),
+                       "floor: " + out + "/floor.yaml"));
 }
 
 TEST(MappingCliErrors, ClearMessages) {

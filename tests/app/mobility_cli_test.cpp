@@ -16,7 +16,9 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
 
 TEST(MobilityCli, Office1WritesScoredCloudSegmentsAndTiming) {
   SIGHTLINE_REQUIRE_DATA(path, "pcl_clouds/office1.pcd");
@@ -29,7 +31,9 @@ TEST(MobilityCli, Office1WritesScoredCloudSegmentsAndTiming) {
   }
   const std::string csv = testing::ReadTextFile(out + "/segments.csv");
   EXPECT_EQ(csv.rfind("frame,segment,is_ground,points,slope_deg,roughness,area_m2,height_m,"
-                      "score_rule,score_gpr\n", 0), 0u);
+                      "score_rule,score_gpr\n",
+                      0),
+            0u);
   EXPECT_NE(csv.find("\n0,0,1,"), std::string::npos) << "the ground is row 0";
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   const auto height = testing::JsonNumber(metrics, "accuracy", "ground_height_m");
@@ -38,7 +42,8 @@ TEST(MobilityCli, Office1WritesScoredCloudSegmentsAndTiming) {
   for (const char* stage : {"downsample", "range_cut", "denoise", "normals", "rgbn", "ground",
                             "segmentation", "surface", "mobility", "maps"}) {
     EXPECT_TRUE(testing::JsonNumber(metrics, stage, "median").has_value()) << stage;
-    EXPECT_TRUE(testing::JsonNumber(metrics, "counts", std::string("points_") + stage).has_value()) << stage;
+    EXPECT_TRUE(testing::JsonNumber(metrics, "counts", std::string("points_") + stage).has_value())
+        << stage;
   }
 }
 
@@ -46,7 +51,8 @@ TEST(MobilityCli, TerrainReportsSlopeAndRoughnessAccuracy) {
   const std::string dir = testing::TempDir("mobility_terrain") + "/terrain";
   ASSERT_EQ(Cli("simulate terrain --out " + dir + " --frames 3 --quiet").exit_code, 0);
   const std::string out = dir + "_run";
-  const auto r = Cli("run mobility " + dir + " --out " + out + " --set mobility.run.cloud_format=ply");
+  const auto r =
+      Cli("run mobility " + dir + " --out " + out + " --set mobility.run.cloud_format=ply");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(std::filesystem::exists(out + "/000002_cloud.ply"));
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
@@ -62,18 +68,21 @@ TEST(MobilityCli, TerrainReportsSlopeAndRoughnessAccuracy) {
 TEST(MobilityCli, OniRecordingWithoutVisibleFloorSaysSoPerFrame) {
   SIGHTLINE_REQUIRE_DATA(path, "oni_livingroom/test.oni");
   const std::string out = testing::TempDir("mobility_oni");
-  const auto r = Cli("run mobility " + path + " --out " + out + " --set mobility.run.cloud_format=none");
+  const auto r =
+      Cli("run mobility " + path + " --out " + out + " --set mobility.run.cloud_format=none");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   EXPECT_EQ(testing::JsonNumber(metrics, "counts", "frames_without_map").value_or(-1), 12);
-  EXPECT_NE(testing::ReadTextFile(out + "/mobility_log.txt").find("no ground plane"), std::string::npos);
+  EXPECT_NE(testing::ReadTextFile(out + "/mobility_log.txt").find("no ground plane"),
+            std::string::npos);
 }
 
 TEST(MobilityCli, BadInputSaysWhy) {
-  const auto missing = Cli("run mobility /nonexistent/cloud.pcd --out " + testing::TempDir("mobility_bad"));
+  const auto missing =
+      Cli("run mobility /nonexistent/cloud.pcd --out " + testing::TempDir("mobility_bad"));
   EXPECT_NE(missing.exit_code, 0);
-  const auto bad_option = Cli("run mobility /nonexistent --out " + testing::TempDir("mobility_bad2") +
-                              " --set mobility.grid_stride=0");
+  const auto bad_option = Cli("run mobility /nonexistent --out " +
+                              testing::TempDir("mobility_bad2") + " --set mobility.grid_stride=0");
   EXPECT_NE(bad_option.exit_code, 0);
 }
 

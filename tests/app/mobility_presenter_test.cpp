@@ -1,5 +1,7 @@
 // The mobility map in the main window under an X server: play real RGB-D frames, look at the
 // projection's pixels, the timing table and the 3D layers, and re-run a frame on an option change.
+#include "app/sightline/mobility_presenter.h"
+
 #include <gtest/gtest.h>
 
 #include <QSignalSpy>
@@ -7,7 +9,6 @@
 #include <QTest>
 
 #include "app/sightline/main_window.h"
-#include "app/sightline/mobility_presenter.h"
 #include "app/sightline/mobility_views.h"
 #include "app/sightline/playback_controller.h"
 #include "tests/support/test_data.h"

@@ -17,8 +17,9 @@ const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 TEST(MonoSlamCli, RunWritesTrajectoryMapKeyframesScaleAndMetrics) {
   SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
   const std::string out = testing::TempDir("mono_slam_cli_run");
-  const testing::ProcessResult r = testing::RunProcess(
-      kCli + " run mono-slam " + kitti + " --out " + out + " --set mono.run.metric_source=ground_truth");
+  const testing::ProcessResult r =
+      testing::RunProcess(kCli + " run mono-slam " + kitti + " --out " + out +
+                          " --set mono.run.metric_source=ground_truth");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("accuracy.ate_rmse_pct_of_path"), std::string::npos) << r.out;
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
@@ -44,7 +45,8 @@ TEST(MonoSlamCli, FailuresAreOneLine) {
   testing::ProcessResult r = testing::RunProcess(kCli + " run mono-slam /nonexistent --out /tmp/x");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.out.find("/nonexistent"), std::string::npos) << r.out;
-  r = testing::RunProcess(kCli + " run mono-slam /nonexistent --out /tmp/x --set mono.run.metric_source=ruler");
+  r = testing::RunProcess(
+      kCli + " run mono-slam /nonexistent --out /tmp/x --set mono.run.metric_source=ruler");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.out.find("metric_source"), std::string::npos) << r.out;
 }

@@ -90,8 +90,8 @@ bool IsAck(const std::string& line) { return line.rfind("written ", 0) == 0; }
 
 TEST(RecordCli, KilledHalfWayKeepsEveryAcknowledgedFrameReadable) {
   const std::string out = testing::TempDir("record_cli_kill") + "/rec";
-  CliChild child({"record", "replay://" + Corridor() + "?fps=100", "--out", out, "--ack",
-                  "--set", "record.queue_capacity=512"});
+  CliChild child({"record", "replay://" + Corridor() + "?fps=100", "--out", out, "--ack", "--set",
+                  "record.queue_capacity=512"});
   ASSERT_TRUE(child.started());
   int acknowledged = 0;
   std::string line;
@@ -146,11 +146,11 @@ TEST(RecordCli, FullDiskGivesAClearErrorAndAReadablePartialRecording) {
   const std::string base = testing::TempDir("record_cli_full");
   const std::string mount = base + "/disk", copy = base + "/copy";
   const std::string flag = getuid() == 0 ? "-m" : "-rm";
-  const std::string script =
-      "mkdir -p " + mount + " && mount -t tmpfs -o size=3m tmpfs " + mount + " && " + kCli +
-      " record 'replay://" + Corridor() + "?fps=1000' --out " + mount +
-      "/rec --set record.queue_capacity=512; rc=\\$?; cp -a " + mount + "/rec " + copy +
-      "; exit \\$rc";
+  const std::string script = "mkdir -p " + mount + " && mount -t tmpfs -o size=3m tmpfs " + mount +
+                             " && " + kCli + " record 'replay://" + Corridor() +
+                             "?fps=1000' --out " + mount +
+                             "/rec --set record.queue_capacity=512; rc=\\$?; cp -a " + mount +
+                             "/rec " + copy + "; exit \\$rc";
   const auto r = testing::RunProcess("unshare " + flag + " sh -c \"" + script + "\"");
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.out.find("No space left on device"), std::string::npos) << r.out;

@@ -92,8 +92,8 @@ TEST(Recording, RecordsTheLiveSourceFromTheWindowAndReadsBackExactly) {
   EXPECT_TRUE(recording->stop_action()->isEnabled());
   ASSERT_TRUE(QTest::qWaitFor([&] { return recording->stats().frames_written >= 15; }, 30000));
   ASSERT_GE(progress.count(), 1);
-  EXPECT_TRUE(progress.last().at(0).toString().contains("written")) <<
-      progress.last().at(0).toString().toStdString();
+  EXPECT_TRUE(progress.last().at(0).toString().contains("written"))
+      << progress.last().at(0).toString().toStdString();
   recording->Stop();
   ASSERT_EQ(finished.count(), 1);
   EXPECT_TRUE(finished.at(0).at(0).toString().contains("Recorded"));
@@ -123,9 +123,9 @@ TEST(Recording, ARecordedDatasetIsCopiedWithoutDrops) {
   window.recording()->Stop();
   EXPECT_EQ(window.recording()->stats().frames_written, 9u);
   EXPECT_EQ(window.recording()->stats().frames_dropped, 0u);
-  EXPECT_EQ(testing::ExpectRecordedFramesMatch(testing::ReadAllFrames(tum),
-                                               testing::ReadAllFrames(out)),
-            9);
+  EXPECT_EQ(
+      testing::ExpectRecordedFramesMatch(testing::ReadAllFrames(tum), testing::ReadAllFrames(out)),
+      9);
 }
 
 TEST(Recording, NothingOpenIsReportedNotFatal) {
@@ -156,7 +156,9 @@ TEST(SightlineExecutable, StreamsTheAravisGigEFakeCamera) {
   const std::string script =
       "ip link set lo up && { arv-fake-gv-camera-0.8 -i 127.0.0.1 -s GUI1 >/dev/null 2>&1 & } "
       "&& camera=\\$! && i=0; "
-      "until " + bin + "/sightline-cli info aravis://Aravis-Fake-GUI1 >/dev/null 2>&1; do "
+      "until " +
+      bin +
+      "/sightline-cli info aravis://Aravis-Fake-GUI1 >/dev/null 2>&1; do "
       "i=\\$((i+1)); [ \\$i -gt 60 ] && break; done; " +
       bin + "/sightline --open aravis://Aravis-Fake-GUI1 --screenshot " + shot +
       " --frames 5 --timeout 60; rc=\\$?; kill \\$camera; exit \\$rc";

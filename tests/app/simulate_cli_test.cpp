@@ -14,7 +14,9 @@ namespace {
 
 const std::string kCli = std::string(SIGHTLINE_BIN_DIR) + "/sightline-cli";
 
-testing::ProcessResult Cli(const std::string& args) { return testing::RunProcess(kCli + " " + args); }
+testing::ProcessResult Cli(const std::string& args) {
+  return testing::RunProcess(kCli + " " + args);
+}
 
 bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

@@ -63,10 +63,10 @@ TEST(StereoVoCli, RunWritesTrajectoryFramesAndAccuracy) {
   const testing::ProcessResult r = Cli("run stereo-vo " + kitti + " --out " + out + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
-  for (const char* key : {"\"length_error_pct\"", "\"endpoint_error_pct\"", "\"ate_rmse_m\"",
-                          "\"rpe_trans_pct\"", "\"rpe_rot_deg_per_m\"", "\"kitti_t_err_pct\"",
-                          "\"kitti_r_err_deg_per_100m\"", "\"tracking\"", "\"matching\"",
-                          "\"ransac\"", "\"refine\""}) {
+  for (const char* key :
+       {"\"length_error_pct\"", "\"endpoint_error_pct\"", "\"ate_rmse_m\"", "\"rpe_trans_pct\"",
+        "\"rpe_rot_deg_per_m\"", "\"kitti_t_err_pct\"", "\"kitti_r_err_deg_per_100m\"",
+        "\"tracking\"", "\"matching\"", "\"ransac\"", "\"refine\""}) {
     EXPECT_NE(metrics.find(key), std::string::npos) << key;
   }
   const std::string frames = testing::ReadTextFile(out + "/frames.csv");
@@ -94,13 +94,15 @@ TEST(StereoVoCli, SubsampleAndKittiFormatFlags) {
   int fields = 0;
   for (double v; values >> v;) ++fields;
   EXPECT_EQ(fields, 12);  // KITTI: 3x4 matrix.
-  EXPECT_NE(testing::ReadTextFile(out + "/metrics.json").find("\"stereo.subsample\": 5"), std::string::npos);
+  EXPECT_NE(testing::ReadTextFile(out + "/metrics.json").find("\"stereo.subsample\": 5"),
+            std::string::npos);
 }
 
 TEST(StereoVoCli, SweepPrintsTheTableAndWritesAPlot) {
   SIGHTLINE_REQUIRE_DATA(kitti, "kitti_clip1");
   const std::string out = testing::TempDir("stereo_vo_cli_sweep");
-  const testing::ProcessResult r = Cli("sweep stereo-vo " + kitti + " --subsample 1..3 --out " + out);
+  const testing::ProcessResult r =
+      Cli("sweep stereo-vo " + kitti + " --subsample 1..3 --out " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("factor"), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(out + "/sweep.png"));

@@ -110,7 +110,8 @@ std::vector<Eigen::Vector3d> MapPoints(const Approach& a, size_t f) {
   for (int k = 0; k < 300; ++k) {
     const double rho = 3 * r * std::sqrt(unit(rng)), phi = 2 * M_PI * unit(rng);
     const int u = int(c.x + rho * std::cos(phi)), v = int(c.y + rho * std::sin(phi));
-    const float z = a.frames[f].view.depth_m.at<float>(std::clamp(v, 0, 479), std::clamp(u, 0, 639));
+    const float z =
+        a.frames[f].view.depth_m.at<float>(std::clamp(v, 0, 479), std::clamp(u, 0, 639));
     if (!std::isfinite(z)) continue;
     Eigen::Vector3d x = a.camera.Unproject(u, v, z);
     if (unit(rng) < 0.2) x *= 0.8;

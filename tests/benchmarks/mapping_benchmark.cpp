@@ -55,7 +55,8 @@ const CorridorFrames& Frames() {
       pose.y += forward * std::sin(pose.heading_rad);
       input.odometry = pose;
       std::vector<PersonBox> people;
-      for (const sim::PersonObservation& p : sim::ObservePeople(simulator->scene(), frame.view, k)) {
+      for (const sim::PersonObservation& p :
+           sim::ObservePeople(simulator->scene(), frame.view, k)) {
         if (p.pixels == 0) continue;
         PersonBox box;
         box.id = p.person;
@@ -102,7 +103,8 @@ void BM_MappingFrame(benchmark::State& state) {
     const auto start = std::chrono::steady_clock::now();
     StatusOr<std::shared_ptr<const MappingFrameResult>> r = processor.Process(frames.inputs[i++]);
     total_ms.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
     if (!r.ok()) {
       state.SkipWithError("process");
       return;

@@ -7,16 +7,16 @@
 // tracking_cpu_ms the tracking thread's own CPU time (the difference is time the tracker was
 // not running: another thread or process had the core); cpus is the cores the run may use.
 // The setting, tracking on one core and mapping on the other:
-//   taskset -c 0,1 build/bin/bench_mono --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   taskset -c 0,1 build/bin/bench_mono --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
-
 #include <sched.h>
 
 #include <chrono>
 #include <cstdlib>
-#include <thread>
 #include <opencv2/core/utility.hpp>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/common/timing.h"
@@ -92,8 +92,8 @@ void RunClip(benchmark::State& state, const Clip* clip, bool threaded, bool live
     const auto start = std::chrono::steady_clock::now();
     for (const MonoFrame& frame : clip->frames) {
       if (live) {
-        std::this_thread::sleep_until(start + std::chrono::duration<double>(
-                                                  frame.stamp.sensor_time_s -
+        std::this_thread::sleep_until(
+            start + std::chrono::duration<double>(frame.stamp.sensor_time_s -
                                                   clip->frames.front().stamp.sensor_time_s));
       }
       auto result = slam.Process(frame);
@@ -111,7 +111,9 @@ void RunClip(benchmark::State& state, const Clip* clip, bool threaded, bool live
 
 void BM_MonoSlamPanel(benchmark::State& state) { RunClip(state, PanelClip(), false); }
 void BM_MonoSlamPanelThreaded(benchmark::State& state) { RunClip(state, PanelClip(), true); }
-void BM_MonoSlamPanelThreadedLive(benchmark::State& state) { RunClip(state, PanelClip(), true, true); }
+void BM_MonoSlamPanelThreadedLive(benchmark::State& state) {
+  RunClip(state, PanelClip(), true, true);
+}
 void BM_MonoSlamKittiClip(benchmark::State& state) { RunClip(state, KittiClip(), false); }
 
 BENCHMARK(BM_MonoSlamPanel)->Unit(benchmark::kMillisecond)->Iterations(1);

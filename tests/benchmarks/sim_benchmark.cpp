@@ -34,13 +34,11 @@ void BM_CorridorRgbd(benchmark::State& state, const std::string& resolution) {
     benchmark::DoNotOptimize(frame.depth_m.data);
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                             benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_CorridorRgbd, 640x480, std::string("640x480"))
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CorridorRgbd, 320x240, std::string("320x240"))
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CorridorRgbd, 640x480, std::string("640x480"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CorridorRgbd, 320x240, std::string("320x240"))->Unit(benchmark::kMillisecond);
 
 // One KITTI-sized rectified stereo pair (two grey renders and image noise).
 void BM_CorridorStereoKitti(benchmark::State& state) {
@@ -51,8 +49,8 @@ void BM_CorridorStereoKitti(benchmark::State& state) {
     if (!sim.RenderStereo((i += 37) % sim.frames(), &frame).ok()) state.SkipWithError("render");
     benchmark::DoNotOptimize(frame.right.data);
   }
-  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                             benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CorridorStereoKitti)->Unit(benchmark::kMillisecond);
 

@@ -19,10 +19,10 @@ std::string TempDir(const std::string& name);
 }  // namespace sightline::testing
 
 // Skips the current test, saying which data is missing and how to provide it.
-#define SIGHTLINE_REQUIRE_DATA(var, relative)                                              \
-  const std::string var = ::sightline::testing::DataPath(relative);                        \
-  if (var.empty()) {                                                                       \
-    GTEST_SKIP() << "recorded data '" << (relative) << "' not found in "                   \
-                 << ::sightline::testing::DataDir()                                        \
-                 << " (set SIGHTLINE_DATA_DIR to the folder holding ../shared/data)";      \
+#define SIGHTLINE_REQUIRE_DATA(var, relative)                                         \
+  const std::string var = ::sightline::testing::DataPath(relative);                   \
+  if (var.empty()) {                                                                  \
+    GTEST_SKIP() << "recorded data '" << (relative) << "' not found in "              \
+                 << ::sightline::testing::DataDir()                                   \
+                 << " (set SIGHTLINE_DATA_DIR to the folder holding ../shared/data)"; \
   }

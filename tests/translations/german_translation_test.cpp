@@ -94,8 +94,8 @@ TEST(GermanTs, EveryMessageIsTranslatedWithItsPlaceholdersAndAccelerators) {
   const std::vector<TsMessage> messages = GermanMessages();
   ASSERT_GT(messages.size(), 200u);
   for (const TsMessage& m : messages) {
-    const std::string where = (m.context + " \"" + m.source + "\" -> \"" + m.translation + "\"")
-                                  .toStdString();
+    const std::string where =
+        (m.context + " \"" + m.source + "\" -> \"" + m.translation + "\"").toStdString();
     EXPECT_TRUE(m.type.isEmpty()) << where << " is " << m.type.toStdString();
     EXPECT_FALSE(m.translation.trimmed().isEmpty()) << where;
     EXPECT_EQ(Placeholders(m.translation), Placeholders(m.source)) << where;

@@ -96,10 +96,10 @@ TEST_F(OperatorPanelTest, TapConfirmTrackAndStop) {
 }
 
 TEST_F(OperatorPanelTest, StopIsVisibleAndWorksInEveryState) {
-  for (OperatorState s : {OperatorState::kIdle, OperatorState::kConfirm, OperatorState::kNoButton,
-                          OperatorState::kSearching, OperatorState::kTracking,
-                          OperatorState::kLocating, OperatorState::kTargetSent,
-                          OperatorState::kLost}) {
+  for (OperatorState s :
+       {OperatorState::kIdle, OperatorState::kConfirm, OperatorState::kNoButton,
+        OperatorState::kSearching, OperatorState::kTracking, OperatorState::kLocating,
+        OperatorState::kTargetSent, OperatorState::kLost}) {
     if (panel_.state() == OperatorState::kStopped) {
       QTest::mouseClick(panel_.start_button(), Qt::LeftButton);
     }

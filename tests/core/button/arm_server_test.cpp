@@ -111,7 +111,8 @@ TEST(ArmServer, SeveralClientsEachReceiveEverything) {
   ASSERT_TRUE(WaitForClients(*server, 4));
   for (int k = 0; k < 5; ++k) server->PublishTarget(Target());
   for (ArmClient& c : clients) {
-    for (int k = 0; k < 5; ++k) EXPECT_NE(NextMessage(c).find("\"type\":\"target\""), std::string::npos);
+    for (int k = 0; k < 5; ++k)
+      EXPECT_NE(NextMessage(c).find("\"type\":\"target\""), std::string::npos);
   }
 }
 
@@ -163,8 +164,9 @@ TEST(ArmServer, ADeadClientDoesNotStallPublishingOrOthers) {
   for (int k = 0; k < 400; ++k) {
     const auto before = Clock::now();
     server->PublishTarget(big);
-    slowest_publish_ms = std::max(
-        slowest_publish_ms, std::chrono::duration<double, std::milli>(Clock::now() - before).count());
+    slowest_publish_ms =
+        std::max(slowest_publish_ms,
+                 std::chrono::duration<double, std::milli>(Clock::now() - before).count());
     while (true) {  // The live client keeps up.
       auto line = live.ReadLine(0);
       if (!line.ok()) break;

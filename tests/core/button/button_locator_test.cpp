@@ -63,8 +63,9 @@ TEST(ButtonLocator, AFewFacePointsMoveThePanelPlaneOntoTheButton) {
   // A plate at 0.5 m and a button face 5 mm proud of it, with only 4 points on the face.
   auto points = PlanePoints(60, 0.5, 0.05, 0.0005, 8);
   std::erase_if(points, [](const Eigen::Vector3d& x) { return x.head<2>().norm() < 0.012; });
-  for (const Eigen::Vector2d& xy : {Eigen::Vector2d(0.003, 0.002), Eigen::Vector2d(-0.004, 0.001),
-                                    Eigen::Vector2d(0.001, -0.005), Eigen::Vector2d(-0.002, -0.003)}) {
+  for (const Eigen::Vector2d& xy :
+       {Eigen::Vector2d(0.003, 0.002), Eigen::Vector2d(-0.004, 0.001),
+        Eigen::Vector2d(0.001, -0.005), Eigen::Vector2d(-0.002, -0.003)}) {
     points.emplace_back(xy.x(), xy.y(), 0.495);
   }
   LocatorInput in;
@@ -97,7 +98,8 @@ TEST(ButtonLocator, TooFewPointsIsNotFound) {
 TEST(ButtonLocator, GuardsNearParallelRays) {
   // A plane containing the optical axis (x = 0.001): the centre ray grazes it.
   std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < 30; ++i) points.emplace_back(0.001, 0.01 * (i % 5) - 0.02, 0.4 + 0.02 * (i / 5));
+  for (int i = 0; i < 30; ++i)
+    points.emplace_back(0.001, 0.01 * (i % 5) - 0.02, 0.4 + 0.02 * (i / 5));
   LocatorInput in;
   in.camera = testing::VgaCamera();
   in.points_in_world = &points;
@@ -122,7 +124,8 @@ TEST(ButtonLocator, FewPointsMakeAnUnsoundPlane) {
 TEST(ButtonLocator, RejectsInvalidInput) {
   LocatorInput in;
   in.camera = testing::VgaCamera();
-  EXPECT_EQ(ButtonLocator().Locate(in).status().code(), StatusCode::kInvalidArgument);  // No points.
+  EXPECT_EQ(ButtonLocator().Locate(in).status().code(),
+            StatusCode::kInvalidArgument);  // No points.
   ButtonLocatorOptions bad;
   bad.min_points = 2;
   std::string error;
@@ -135,9 +138,11 @@ TEST(ButtonLocator, BaseFromCameraComposesTheHandEye) {
   Eigen::Isometry3d base_from_ee = Eigen::Isometry3d::Identity();
   base_from_ee.translation() = Eigen::Vector3d(0.5, 0, 0.2);
   Eigen::Isometry3d ee_from_camera = Eigen::Isometry3d::Identity();
-  ee_from_camera.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  ee_from_camera.linear() =
+      Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   ee_from_camera.translation() = Eigen::Vector3d(0.06, 0, -0.03);
-  const Eigen::Vector3d x_in_base = BaseFromCamera(base_from_ee, ee_from_camera) * Eigen::Vector3d(1, 0, 0);
+  const Eigen::Vector3d x_in_base =
+      BaseFromCamera(base_from_ee, ee_from_camera) * Eigen::Vector3d(1, 0, 0);
   EXPECT_LT((x_in_base - Eigen::Vector3d(0.56, 1, 0.17)).norm(), 1e-12);
 }
 
@@ -164,8 +169,8 @@ TEST(ButtonLocator, FindsTheSimulatedButtonWithinThreeMillimetres) {
       if (u < 0 || v < 0 || u >= frame.depth_m.cols || v >= frame.depth_m.rows) continue;
       const float z = frame.depth_m.at<float>(v, u);
       if (!std::isfinite(z)) continue;
-      Eigen::Vector3d x = a.camera.Unproject(u, v, z) +
-                          Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+      Eigen::Vector3d x =
+          a.camera.Unproject(u, v, z) + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
       if (unit(rng) < 0.2) x *= 0.7 + 0.6 * unit(rng);  // Outlier along the ray.
       points_in_world.push_back(frame.world_from_camera * x);
     }
@@ -184,7 +189,8 @@ TEST(ButtonLocator, FindsTheSimulatedButtonWithinThreeMillimetres) {
     worst_mm = std::max(worst_mm, err_mm);
     EXPECT_LT(err_mm, 3.0) << "frame " << f * 30;
     // The approach direction is the panel's inward normal (+x in the map).
-    const Eigen::Vector3d approach_in_world = frame.world_from_camera.linear() * at->approach_in_camera;
+    const Eigen::Vector3d approach_in_world =
+        frame.world_from_camera.linear() * at->approach_in_camera;
     EXPECT_GT(approach_in_world.dot(-a.buttons[b].normal), 0.99);
   }
   std::printf("locator on the simulated panel: worst 3D error %.2f mm over %zu frames\n", worst_mm,

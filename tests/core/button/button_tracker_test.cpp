@@ -4,9 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include <opencv2/imgproc.hpp>
+#include <random>
 
 #include "core/button/button_detector.h"
 
@@ -32,7 +31,8 @@ cv::Mat TexturedPanel() {
 }
 
 // Warps the image; *centre goes in as a still-frame point and comes out where it moved.
-cv::Mat Warp(const cv::Mat& image, double scale, double angle_deg, cv::Point2d shift, cv::Point2d* centre) {
+cv::Mat Warp(const cv::Mat& image, double scale, double angle_deg, cv::Point2d shift,
+             cv::Point2d* centre) {
   cv::Mat m = cv::getRotationMatrix2D(cv::Point2f(320, 240), angle_deg, scale);
   m.at<double>(0, 2) += shift.x;
   m.at<double>(1, 2) += shift.y;
@@ -118,7 +118,8 @@ TEST(ButtonTracker, BadInputIsAClearStatus) {
   EXPECT_EQ(tracker.Track(cv::Mat()).status().code(), StatusCode::kInvalidArgument);
   ButtonTrackerOptions o;
   o.ratio = 1.5;
-  EXPECT_EQ(ButtonTracker(*model, o).Track(TexturedPanel()).status().code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(ButtonTracker(*model, o).Track(TexturedPanel()).status().code(),
+            StatusCode::kInvalidArgument);
   ButtonTracker empty(nullptr);
   EXPECT_EQ(empty.Track(TexturedPanel()).status().code(), StatusCode::kFailedPrecondition);
 }

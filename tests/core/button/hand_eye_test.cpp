@@ -13,7 +13,8 @@ namespace {
 
 TEST(HandEye, ReadsWhatTheSimulatorWrites) {
   Eigen::Isometry3d ee_from_camera = Eigen::Isometry3d::Identity();
-  ee_from_camera.linear() = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  ee_from_camera.linear() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   ee_from_camera.translation() = Eigen::Vector3d(0.06, 0.0, -0.03);
   Eigen::Isometry3d world_from_base = Eigen::Isometry3d::Identity();
   world_from_base.translation() = Eigen::Vector3d(0, 0, 0.75);
@@ -33,7 +34,8 @@ TEST(HandEye, MalformedFilesNameTheProblem) {
   auto bad = ReadHandEyeFile(path);
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.status().message().find("line 2"), std::string::npos) << bad.status().message();
-  std::ofstream(path) << "world_from_base:\n  translation: [0, 0, 0.75]\n  quaternion_xyzw: [0, 0, 0, 1]\n";
+  std::ofstream(path)
+      << "world_from_base:\n  translation: [0, 0, 0.75]\n  quaternion_xyzw: [0, 0, 0, 1]\n";
   auto missing = ReadHandEyeFile(path);
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.status().message().find("end_effector_from_camera"), std::string::npos);

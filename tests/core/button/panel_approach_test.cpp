@@ -50,8 +50,9 @@ TEST(PanelApproach, TapAnywhereOnAButtonSelectsIt) {
       // The centre and four points at 60 % of the radius.
       for (int k = 0; k < 5; ++k) {
         const double ang = k * M_PI / 2 + 0.3;
-        const cv::Point2d tap = k == 4 ? Pt(c) : cv::Point2d(c.x() + 0.6 * r * std::cos(ang),
-                                                             c.y() + 0.6 * r * std::sin(ang));
+        const cv::Point2d tap =
+            k == 4 ? Pt(c)
+                   : cv::Point2d(c.x() + 0.6 * r * std::cos(ang), c.y() + 0.6 * r * std::sin(ang));
         ++taps;
         auto region = detector.FindRegion(a.frames[frame].image, tap);
         if (!region.ok()) {
@@ -59,8 +60,8 @@ TEST(PanelApproach, TapAnywhereOnAButtonSelectsIt) {
                         << region.status().ToString();
           continue;
         }
-        const bool ok = NearestButton(a, frame, region->center) == b &&
-                        cv::norm(region->center - Pt(c)) < r;
+        const bool ok =
+            NearestButton(a, frame, region->center) == b && cv::norm(region->center - Pt(c)) < r;
         selected += ok ? 1 : 0;
         EXPECT_TRUE(ok) << "frame " << frame << " button " << b << " tap " << tap
                         << " region centre " << region->center << " true " << Pt(c);
@@ -77,7 +78,8 @@ TEST(PanelApproach, TrackedCentreStaysWithinThreePixels) {
   ASSERT_GE(b, 0);
   auto model = ButtonDetector().Detect(a.frames[0].image, Pt(a.Project(0, b)));
   ASSERT_TRUE(model.ok()) << model.status().ToString();
-  std::printf("model: %zu keypoints, radius %.1f px\n", (*model)->keypoints.size(), (*model)->RadiusPx());
+  std::printf("model: %zu keypoints, radius %.1f px\n", (*model)->keypoints.size(),
+              (*model)->RadiusPx());
   ButtonTracker tracker(*model);
   std::vector<double> errors;
   for (size_t f = 1; f < a.frames.size(); ++f) {
@@ -89,7 +91,10 @@ TEST(PanelApproach, TrackedCentreStaysWithinThreePixels) {
     p.scale = a.RadiusPx(int(f), b) / a.RadiusPx(0, b);
     auto t = tracker.Track(a.frames[f].image, p);
     ASSERT_TRUE(t.ok()) << t.status().ToString();
-    if (std::getenv("VERBOSE")) std::printf("frame %zu: kp %d matches %d inliers %d conf %.2f scale %.2f model %d err %.2f\n", f, t->keypoints, t->matches, t->inliers, t->confidence, t->scale, tracker.model_keypoints(), cv::norm(t->center - Pt(a.Project(int(f), b))));
+    if (std::getenv("VERBOSE"))
+      std::printf("frame %zu: kp %d matches %d inliers %d conf %.2f scale %.2f model %d err %.2f\n",
+                  f, t->keypoints, t->matches, t->inliers, t->confidence, t->scale,
+                  tracker.model_keypoints(), cv::norm(t->center - Pt(a.Project(int(f), b))));
     ASSERT_TRUE(t->found) << "frame " << f << ": " << t->reason;
     errors.push_back(cv::norm(t->center - Pt(a.Project(int(f), b))));
   }
@@ -114,7 +119,8 @@ std::shared_ptr<const std::vector<Eigen::Vector3d>> StandInMap(const PanelApproa
       const int u = int(unit(rng) * depth.cols), v = int(unit(rng) * depth.rows);
       const float z = depth.at<float>(v, u);
       if (!std::isfinite(z)) continue;
-      Eigen::Vector3d x = a.camera.Unproject(u, v, z) + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+      Eigen::Vector3d x =
+          a.camera.Unproject(u, v, z) + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
       if (unit(rng) < 0.1) x *= 0.7 + 0.6 * unit(rng);
       points->push_back(a.frames[f].world_from_camera * x);
     }
@@ -131,7 +137,8 @@ struct ApproachRun {
 };
 
 // Tap at frame 0 on the target button, Yes, then every frame with the true pose as the SLAM's.
-ApproachRun RunApproach(const PanelApproach& a, bool scale_converged, double age_s, int stop_at = -1) {
+ApproachRun RunApproach(const PanelApproach& a, bool scale_converged, double age_s,
+                        int stop_at = -1) {
   ApproachRun run;
   const int b = a.target_button;
   ButtonPicker picker;
@@ -147,12 +154,15 @@ ApproachRun RunApproach(const PanelApproach& a, bool scale_converged, double age
   for (size_t f = 1; f < a.frames.size(); ++f) {
     if (int(f) == stop_at) picker.Stop();
     slam.camera_from_world = a.frames[f].world_from_camera.inverse();
-    const Eigen::Isometry3d base_from_camera = a.world_from_base.inverse() * a.frames[f].world_from_camera;
+    const Eigen::Isometry3d base_from_camera =
+        a.world_from_base.inverse() * a.frames[f].world_from_camera;
     const double stamp = f / 30.0;
-    const PickerFrame out = picker.Process(int64_t(f), stamp, a.frames[f].image, slam, base_from_camera,
-                                           stamp + age_s);
+    const PickerFrame out =
+        picker.Process(int64_t(f), stamp, a.frames[f].image, slam, base_from_camera, stamp + age_s);
     run.reasons.push_back(GateReasonKey(out.verdict.reason));
-    if (std::getenv("VERBOSE") && f % 20 == 1) std::printf("frame %zu: %s (%s)\n", f, out.verdict.message.c_str(), PickerStateKey(out.state));
+    if (std::getenv("VERBOSE") && f % 20 == 1)
+      std::printf("frame %zu: %s (%s)\n", f, out.verdict.message.c_str(),
+                  PickerStateKey(out.state));
     run.lost += out.track.found ? 0 : 1;
     if (out.target) {
       ++run.targets;
@@ -168,9 +178,10 @@ ApproachRun RunApproach(const PanelApproach& a, bool scale_converged, double age
 TEST(PanelApproach, TheChainSendsTargetsWithinThreeMillimetresWithTheTruePose) {
   const PanelApproach& a = Approach();
   const ApproachRun run = RunApproach(a, true, 0.03);
-  std::printf("picker on the simulated approach: %d targets in %zu frames, first at frame %d after "
-              "the tap, final 3D error %.2f mm in the arm base frame\n",
-              run.targets, a.frames.size() - 1, run.first_target_frame, run.final_error_mm);
+  std::printf(
+      "picker on the simulated approach: %d targets in %zu frames, first at frame %d after "
+      "the tap, final 3D error %.2f mm in the arm base frame\n",
+      run.targets, a.frames.size() - 1, run.first_target_frame, run.final_error_mm);
   EXPECT_EQ(run.lost, 0);
   EXPECT_EQ(run.first_target_frame, 1);
   EXPECT_GT(run.targets, int(a.frames.size()) * 9 / 10);
@@ -188,7 +199,8 @@ TEST(PanelApproach, NoTargetWithoutScaleWhenStaleOrAfterStop) {
   EXPECT_EQ(stale.reasons[10], "stale");
   const ApproachRun stopped = RunApproach(a, true, 0.03, 50);
   // reasons[i] is frame i + 1: frames 1..49 before STOP, 50.. after.
-  const int sent_before = int(std::count(stopped.reasons.begin(), stopped.reasons.begin() + 49, "send"));
+  const int sent_before =
+      int(std::count(stopped.reasons.begin(), stopped.reasons.begin() + 49, "send"));
   EXPECT_GT(sent_before, 40);
   EXPECT_EQ(stopped.targets, sent_before);
   for (size_t i = 49; i < stopped.reasons.size(); ++i) EXPECT_EQ(stopped.reasons[i], "stopped");

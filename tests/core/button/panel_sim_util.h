@@ -2,10 +2,9 @@
 // true button centres projected into every frame.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "core/common/camera.h"
 #include "core/sim/scene.h"
@@ -13,14 +12,14 @@
 namespace sightline::testing {
 
 struct PanelFrame {
-  cv::Mat image;                                 // BGR with the mono sensor's noise.
-  cv::Mat depth_m;                               // Exact z depth (NaN = nothing).
+  cv::Mat image;    // BGR with the mono sensor's noise.
+  cv::Mat depth_m;  // Exact z depth (NaN = nothing).
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
 };
 
 struct PanelApproach {
   PinholeCamera camera;
-  std::vector<sim::ButtonSpec> buttons;          // Map frame.
+  std::vector<sim::ButtonSpec> buttons;  // Map frame.
   int target_button = -1;
   std::vector<PanelFrame> frames;
   Eigen::Isometry3d world_from_base = Eigen::Isometry3d::Identity();

@@ -6,9 +6,8 @@
 
 #include <fstream>
 #include <map>
-#include <sstream>
-
 #include <opencv2/imgcodecs.hpp>
+#include <sstream>
 
 #include "core/button/button_detector.h"
 #include "tests/support/test_data.h"
@@ -18,8 +17,8 @@ namespace {
 
 struct Label {
   std::string file, kind, name;
-  cv::Rect2d box;    // Buttons.
-  cv::Point2d tap;   // Blank taps; the box centre for buttons.
+  cv::Rect2d box;   // Buttons.
+  cv::Point2d tap;  // Blank taps; the box centre for buttons.
 };
 
 std::vector<Label> ReadLabels(const std::string& path) {
@@ -39,7 +38,8 @@ std::vector<Label> ReadLabels(const std::string& path) {
     Label l;
     l.file = f[0], l.kind = f[1], l.name = f[6];
     if (l.kind == "button") {
-      const double x0 = std::stod(f[2]), y0 = std::stod(f[3]), x1 = std::stod(f[4]), y1 = std::stod(f[5]);
+      const double x0 = std::stod(f[2]), y0 = std::stod(f[3]), x1 = std::stod(f[4]),
+                   y1 = std::stod(f[5]);
       l.box = cv::Rect2d(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
       l.tap = {0.5 * (x0 + x1), 0.5 * (y0 + y1)};
     } else if (l.kind == "blank") {
@@ -76,11 +76,13 @@ TEST(RealPanels, TapAtAButtonCentreSelectsThatButton) {
       std::printf("  miss %s '%s' tap (%.0f, %.0f): %s\n", l.file.c_str(), l.name.c_str(), l.tap.x,
                   l.tap.y,
                   model.ok() ? ("centroid (" + std::to_string(int((*model)->center.x)) + ", " +
-                                std::to_string(int((*model)->center.y)) + ") outside the box").c_str()
+                                std::to_string(int((*model)->center.y)) + ") outside the box")
+                                   .c_str()
                              : model.status().message().c_str());
     }
   }
-  for (const auto& [file, n] : photo_taps) std::printf("  %s: %d / %d\n", file.c_str(), photo_hits[file], n);
+  for (const auto& [file, n] : photo_taps)
+    std::printf("  %s: %d / %d\n", file.c_str(), photo_hits[file], n);
   const double rate = double(hits) / std::max(1, taps);
   std::printf("real panels: %d of %d taps (%.1f %%) on %zu photos select the tapped button\n", hits,
               taps, 100 * rate, photos.size());

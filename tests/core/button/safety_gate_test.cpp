@@ -37,7 +37,8 @@ TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
   };
   const std::vector<Case> cases = {
       {"stop", [](SafetyState& s) { s.stopped = true; }, GateReason::kStopped},
-      {"unconfirmed", [](SafetyState& s) { s.operator_confirmed = false; }, GateReason::kNotConfirmed},
+      {"unconfirmed", [](SafetyState& s) { s.operator_confirmed = false; },
+       GateReason::kNotConfirmed},
       {"lost", [](SafetyState& s) { s.tracking = false; }, GateReason::kTrackingLost},
       {"weak", [](SafetyState& s) { s.tracking_confidence = 0.1; }, GateReason::kTrackingPoor},
       {"none", [](SafetyState& s) { s.has_estimate = false; }, GateReason::kNoEstimate},
@@ -46,9 +47,12 @@ TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
       {"scale", [](SafetyState& s) { s.scale_converged = false; }, GateReason::kScaleNotConverged},
       {"plane", [](SafetyState& s) { s.plane_sound = false; }, GateReason::kPlaneUnsound},
       {"uncertain", [](SafetyState& s) { s.uncertainty_m = 0.05; }, GateReason::kUncertain},
-      {"outside x", [](SafetyState& s) { s.target_in_base.x() = 2.0; }, GateReason::kOutsideWorkspace},
-      {"outside z", [](SafetyState& s) { s.target_in_base.z() = -1.0; }, GateReason::kOutsideWorkspace},
-      {"nan", [](SafetyState& s) { s.target_in_base.y() = std::nan(""); }, GateReason::kOutsideWorkspace},
+      {"outside x", [](SafetyState& s) { s.target_in_base.x() = 2.0; },
+       GateReason::kOutsideWorkspace},
+      {"outside z", [](SafetyState& s) { s.target_in_base.z() = -1.0; },
+       GateReason::kOutsideWorkspace},
+      {"nan", [](SafetyState& s) { s.target_in_base.y() = std::nan(""); },
+       GateReason::kOutsideWorkspace},
   };
   for (const Case& c : cases) {
     SafetyState s = Good();

@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "board_renderer.h"
-#include "tests/support/test_data.h"
 #include "tests/support/test_camera.h"
+#include "tests/support/test_data.h"
 
 namespace sightline {
 namespace {

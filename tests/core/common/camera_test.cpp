@@ -1,7 +1,8 @@
 #include "core/common/camera.h"
-#include "tests/support/test_camera.h"
 
 #include <gtest/gtest.h>
+
+#include "tests/support/test_camera.h"
 
 namespace sightline {
 namespace {

@@ -21,8 +21,8 @@ TEST(DepthToCloud, BackProjectsAndKeepsInvalidAsNan) {
   const PointCloud cloud = DepthToCloud(depth, color, cam);
   ASSERT_EQ(cloud.size(), 8u);
   EXPECT_TRUE(cloud.organized());
-  EXPECT_FALSE(cloud.points[0].allFinite());  // Zero depth.
-  EXPECT_FALSE(cloud.points[7].allFinite());  // NaN depth.
+  EXPECT_FALSE(cloud.points[0].allFinite());          // Zero depth.
+  EXPECT_FALSE(cloud.points[7].allFinite());          // NaN depth.
   const Eigen::Vector3f p = cloud.points[1 * 4 + 0];  // u=0, v=1, z=2.
   EXPECT_FLOAT_EQ(p.x(), (0 - 1.5f) * 2 / 2);
   EXPECT_FLOAT_EQ(p.y(), (1 - 0.5f) * 2 / 2);

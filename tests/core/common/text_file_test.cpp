@@ -28,9 +28,7 @@ TEST(TextFile, NonNumberNamesFieldAndLine) {
   EXPECT_EQ(r.status().message(), "f.txt line 7: field 3 'x3' is not a number");
 }
 
-TEST(TextFile, InfinityIsRejected) {
-  EXPECT_FALSE(ParseNumbers({1, "1 inf"}, 2, "f").ok());
-}
+TEST(TextFile, InfinityIsRejected) { EXPECT_FALSE(ParseNumbers({1, "1 inf"}, 2, "f").ok()); }
 
 }  // namespace
 }  // namespace sightline

@@ -42,8 +42,11 @@ TEST(Trajectory, KittiRoundTripIsExactToPrintedPrecision) {
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   ASSERT_EQ(back->size(), 15u);
   for (size_t i = 0; i < t.size(); ++i) {
-    EXPECT_LT((back->poses()[i].world_from_sensor.matrix() - t.poses()[i].world_from_sensor.matrix())
-                  .cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT(
+        (back->poses()[i].world_from_sensor.matrix() - t.poses()[i].world_from_sensor.matrix())
+            .cwiseAbs()
+            .maxCoeff(),
+        1e-9);
     EXPECT_DOUBLE_EQ(back->poses()[i].time_s, 0.1 * i);  // Synthesized 10 Hz.
   }
 }

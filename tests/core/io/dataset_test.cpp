@@ -2,11 +2,10 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <filesystem>
 #include <yaml-cpp/yaml.h>
 
 #include <cctype>
+#include <filesystem>
 
 #include "tests/core/io/io_test_util.h"
 #include "tests/support/test_data.h"

@@ -41,7 +41,8 @@ std::vector<TrueWall> TrueObstacleOutlines(const sim::Scene& scene, double min_h
       double z_lo = 1e9, z_hi = -1e9;
       Eigen::Vector2d lo(1e9, 1e9), hi(-1e9, -1e9);
       // The footprint of a vertical patch is the segment spanned by its corners' (x, y).
-      const Eigen::Vector3d along = Eigen::Vector3d(patch->normal().y(), -patch->normal().x(), 0).normalized();
+      const Eigen::Vector3d along =
+          Eigen::Vector3d(patch->normal().y(), -patch->normal().x(), 0).normalized();
       double t_lo = 1e9, t_hi = -1e9;
       Eigen::Vector3d base = patch->At(outline[0].x(), outline[0].y());
       for (const Eigen::Vector2d& st : outline) {
@@ -58,14 +59,16 @@ std::vector<TrueWall> TrueObstacleOutlines(const sim::Scene& scene, double min_h
       const Eigen::Vector3d a = base + t_lo * along, b = base + t_hi * along;
       outlines.push_back({id++, a.head<2>(), b.head<2>()});
     } else if (const auto* cylinder = std::get_if<sim::Cylinder>(&primitive.shape)) {
-      if (cylinder->base.z() > max_height_m || cylinder->base.z() + cylinder->height < min_height_m) {
+      if (cylinder->base.z() > max_height_m ||
+          cylinder->base.z() + cylinder->height < min_height_m) {
         continue;
       }
       const int sides = 16;
       for (int k = 0; k < sides; ++k) {
         const double a0 = 2 * M_PI * k / sides, a1 = 2 * M_PI * (k + 1) / sides;
         const Eigen::Vector2d c = cylinder->base.head<2>();
-        outlines.push_back({id++, c + cylinder->radius * Eigen::Vector2d(std::cos(a0), std::sin(a0)),
+        outlines.push_back({id++,
+                            c + cylinder->radius * Eigen::Vector2d(std::cos(a0), std::sin(a0)),
                             c + cylinder->radius * Eigen::Vector2d(std::cos(a1), std::sin(a1))});
       }
     }
@@ -149,12 +152,14 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
       if (!r.ok()) return r.status().WithContext("frame " + std::to_string(k));
       CorridorScore& score = scores[c];
       score.frame_ms.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count());
       score.statuses.push_back((*r)->status);
       // Lines against the true walls, placed with the true pose.
       std::vector<int> matched;
       for (const WallSegment& line : (*r)->lines.lines) {
-        const Eigen::Vector3d a = world_from_base * Eigen::Vector3d(line.start.x(), line.start.y(), 0);
+        const Eigen::Vector3d a =
+            world_from_base * Eigen::Vector3d(line.start.x(), line.start.y(), 0);
         const Eigen::Vector3d b = world_from_base * Eigen::Vector3d(line.end.x(), line.end.y(), 0);
         auto match = MatchSegmentToWalls(a.head<2>(), b.head<2>(), walls);
         if (!match) continue;

@@ -16,19 +16,19 @@ namespace sightline::testing {
 
 // What one mapping configuration achieved on the corridor.
 struct CorridorScore {
-  HeadingErrors heading;               // Relative to the first frame [deg].
+  HeadingErrors heading;  // Relative to the first frame [deg].
   double wall_angle_error_deg_median = 0;
   std::vector<double> wall_angle_errors_deg;
-  int visible_walls = 0;               // (frame, wall) pairs visible to the scan.
-  int found_walls = 0;                 // ... of which a line matched the wall.
-  std::vector<std::string> missed;     // "frame 12: wall 3 (1.8 m, 62 rays)".
-  MapAgreement map;                    // Against the wall faces (walls.csv).
-  MapAgreement map_all_obstacles;      // Against every static obstacle a scan can see: walls,
-                                       // recessed doors, boxes, bins (TrueObstacleOutlines).
+  int visible_walls = 0;            // (frame, wall) pairs visible to the scan.
+  int found_walls = 0;              // ... of which a line matched the wall.
+  std::vector<std::string> missed;  // "frame 12: wall 3 (1.8 m, 62 rays)".
+  MapAgreement map;                 // Against the wall faces (walls.csv).
+  MapAgreement map_all_obstacles;   // Against every static obstacle a scan can see: walls,
+                                    // recessed doors, boxes, bins (TrueObstacleOutlines).
   int resets = 0;
   int frames = 0;
-  std::vector<double> frame_ms;        // Per-frame mapping time (occupancy .. stitch).
-  std::vector<std::string> statuses;   // Per frame.
+  std::vector<double> frame_ms;       // Per-frame mapping time (occupancy .. stitch).
+  std::vector<std::string> statuses;  // Per frame.
 };
 
 // The simulation: a corridor drive of `metres` at `speed_mps` sampled at `rate_hz`, 320x240

@@ -20,7 +20,7 @@ namespace {
 using testing::CorridorScore;
 
 constexpr double kMetres = 100.0;
-constexpr double kRateHz = 5.0;   // 0.2 m between frames at 1 m/s.
+constexpr double kRateHz = 5.0;  // 0.2 m between frames at 1 m/s.
 constexpr double kSpeedMps = 1.0;
 constexpr double kDriftDegPerM = 2.0;
 
@@ -36,18 +36,19 @@ TEST(CorridorAccuracy, OneHundredMetreLoopWithFourTurns) {
   dead_reckoning_options.rotation.enabled = false;
   MappingOptions split_options = manhattan_options;
   split_options.extractor = "split_and_merge";
-  StatusOr<std::vector<CorridorScore>> run = testing::RunCorridor(
-      simulation, {manhattan_options, dead_reckoning_options, split_options});
+  StatusOr<std::vector<CorridorScore>> run =
+      testing::RunCorridor(simulation, {manhattan_options, dead_reckoning_options, split_options});
   ASSERT_TRUE(run.ok()) << run.status().ToString();
   const char* names[] = {"manhattan", "dead reckoning", "split-and-merge"};
   for (size_t i = 0; i < run->size(); ++i) {
     const CorridorScore& s = (*run)[i];
-    std::printf("[ corridor ] %-16s heading mean %.3f max %.3f deg | wall angle median %.3f deg "
-                "(%zu lines) | walls found %d / %d | map IoU %.3f (walls only %.3f) | "
-                "resets %d\n",
-                names[i], s.heading.mean_deg, s.heading.max_deg, s.wall_angle_error_deg_median,
-                s.wall_angle_errors_deg.size(), s.found_walls, s.visible_walls,
-                s.map_all_obstacles.iou, s.map.iou, s.resets);
+    std::printf(
+        "[ corridor ] %-16s heading mean %.3f max %.3f deg | wall angle median %.3f deg "
+        "(%zu lines) | walls found %d / %d | map IoU %.3f (walls only %.3f) | "
+        "resets %d\n",
+        names[i], s.heading.mean_deg, s.heading.max_deg, s.wall_angle_error_deg_median,
+        s.wall_angle_errors_deg.size(), s.found_walls, s.visible_walls, s.map_all_obstacles.iou,
+        s.map.iou, s.resets);
   }
   const CorridorScore& manhattan = run->at(0);
   const CorridorScore& dead_reckoning = run->at(1);
@@ -80,8 +81,8 @@ TEST(CorridorAccuracy, OneHundredMetreLoopWithFourTurns) {
     // ratio_min).
     ASSERT_GT(manhattan.visible_walls, 500);
     EXPECT_GE(static_cast<double>(manhattan.found_walls) / manhattan.visible_walls, 0.99)
-        << manhattan.found_walls << " of " << manhattan.visible_walls << "; first miss: "
-        << (manhattan.missed.empty() ? "" : manhattan.missed.front());
+        << manhattan.found_walls << " of " << manhattan.visible_walls
+        << "; first miss: " << (manhattan.missed.empty() ? "" : manhattan.missed.front());
   }
   {
     SCOPED_TRACE("wall angles");
@@ -121,8 +122,10 @@ TEST(CorridorOdometry, OdometryScaleErrorBendsTheMap) {
   StatusOr<std::vector<CorridorScore>> run = testing::RunCorridor(simulation, {MappingOptions()});
   ASSERT_TRUE(run.ok()) << run.status().ToString();
   EXPECT_LT(run->at(0).heading.max_deg, 1.0);  // The heading is still right.
-  std::printf("[ corridor ] 40 m with 1 %% odometry scale error: heading max %.3f deg, map IoU "
-              "%.3f\n", run->at(0).heading.max_deg, run->at(0).map_all_obstacles.iou);
+  std::printf(
+      "[ corridor ] 40 m with 1 %% odometry scale error: heading max %.3f deg, map IoU "
+      "%.3f\n",
+      run->at(0).heading.max_deg, run->at(0).map_all_obstacles.iou);
 }
 
 }  // namespace

@@ -58,9 +58,8 @@ TEST(ManhattanAngle, MedianAndTrimDropAWallMergedWithADoor) {
   // Two true walls at 0 deg and a 1.3 m line at -5.9 deg (a wall merged with a recessed door):
   // the weighted median is 0 and the tilted line is trimmed.
   const ManhattanRotationOptions options;
-  const ManhattanMeasurement m =
-      MeasureManhattanAngle({Line(0.2, 1.0), Line(-0.2, 0.6), Line(89.8, 0.6), Line(-5.9, 1.3)},
-                            options);
+  const ManhattanMeasurement m = MeasureManhattanAngle(
+      {Line(0.2, 1.0), Line(-0.2, 0.6), Line(89.8, 0.6), Line(-5.9, 1.3)}, options);
   ASSERT_TRUE(m.valid);
   EXPECT_NEAR(RadToDeg(m.angle_rad), 0.0, 0.1);
   EXPECT_EQ(m.voting_lines, 3);
@@ -99,8 +98,8 @@ struct DriveResult {
   int resets = 0;
 };
 
-DriveResult Drive(const ManhattanRotationOptions& options, double drift_deg_per_frame,
-                  int frames, bool walls_every_frame) {
+DriveResult Drive(const ManhattanRotationOptions& options, double drift_deg_per_frame, int frames,
+                  bool walls_every_frame) {
   ManhattanRotation rotation(options);
   const double alpha = DegToRad(12);
   rotation.Restart(0.3);

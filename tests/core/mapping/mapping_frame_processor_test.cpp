@@ -36,7 +36,8 @@ class MappingFrameProcessorTest : public ::testing::Test {
     MappingInput input;
     input.stamp.sequence_id = index;
     input.stamp.sensor_time_s = 0.2 * index;
-    input.depth_m = RenderDepth(camera_, view, testing::Corridor(-5, 60, 2.0), true, 8.0, 0.001, index);
+    input.depth_m =
+        RenderDepth(camera_, view, testing::Corridor(-5, 60, 2.0), true, 8.0, 0.001, index);
     input.odometry = Pose2d{x, 0, DegToRad(heading_deg)};
     input.people = std::vector<PersonBox>();
     return input;
@@ -47,7 +48,8 @@ class MappingFrameProcessorTest : public ::testing::Test {
 
 TEST_F(MappingFrameProcessorTest, CorridorFrameGivesWallsAlongTheCorridor) {
   TimingStats timing;
-  StatusOr<std::shared_ptr<const MappingFrameResult>> r = processor_.Process(CorridorFrame(0, 0), &timing);
+  StatusOr<std::shared_ptr<const MappingFrameResult>> r =
+      processor_.Process(CorridorFrame(0, 0), &timing);
   ASSERT_TRUE(r.ok()) << r.status().ToString();
   const MappingFrameResult& result = **r;
   EXPECT_EQ(result.status, "ok");
@@ -88,12 +90,14 @@ TEST_F(MappingFrameProcessorTest, DegenerateInputGivesAClearStatusAndNoResetStor
   up.pitch_down_rad = DegToRad(-25);  // Looking up at a wall: no floor in view.
   const cv::Mat no_floor = RenderDepth(camera_, up, {{{1.2, -3}, {1.2, 3}, 3.0}}, true);
   // A person right in front of the camera, filling the view.
-  const cv::Mat person_depth = RenderDepth(camera_, SyntheticView(), {{{0.7, -2}, {0.7, 2}, 2.0}}, true);
+  const cv::Mat person_depth =
+      RenderDepth(camera_, SyntheticView(), {{{0.7, -2}, {0.7, 2}, 2.0}}, true);
   PersonBox everywhere;
   everywhere.box = cv::Rect2d(0, 0, 320, 240);
   everywhere.image_size = cv::Size(320, 240);
   // A single wall across the view, 2.5 m ahead.
-  const cv::Mat single_wall = RenderDepth(camera_, SyntheticView(), {{{2.5, -4}, {2.5, 4}, 2.0}}, true);
+  const cv::Mat single_wall =
+      RenderDepth(camera_, SyntheticView(), {{{2.5, -4}, {2.5, 4}, 2.0}}, true);
 
   struct Case {
     cv::Mat depth;
@@ -139,7 +143,8 @@ TEST_F(MappingFrameProcessorTest, WrongDepthTypeIsAnError) {
 
 TEST_F(MappingFrameProcessorTest, ResultsStayValidAfterLaterFrames) {
   // The GUI keeps results while the worker goes on: a result must not change afterwards.
-  StatusOr<std::shared_ptr<const MappingFrameResult>> first = processor_.Process(CorridorFrame(0, 0));
+  StatusOr<std::shared_ptr<const MappingFrameResult>> first =
+      processor_.Process(CorridorFrame(0, 0));
   ASSERT_TRUE(first.ok());
   const cv::Mat copy = (*first)->occupancy.cells.clone();
   for (int k = 1; k < 5; ++k) ASSERT_TRUE(processor_.Process(CorridorFrame(k, 0.3 * k)).ok());
@@ -152,7 +157,8 @@ TEST_F(MappingFrameProcessorTest, MapImageEveryNFrames) {
   MappingFrameProcessor processor(options);
   ASSERT_TRUE(processor.Configure(PlaneOf(SyntheticView()), camera_).ok());
   for (int k = 0; k < 7; ++k) {
-    StatusOr<std::shared_ptr<const MappingFrameResult>> r = processor.Process(CorridorFrame(k, 0.2 * k));
+    StatusOr<std::shared_ptr<const MappingFrameResult>> r =
+        processor.Process(CorridorFrame(k, 0.2 * k));
     ASSERT_TRUE(r.ok());
     EXPECT_EQ((*r)->map_image != nullptr, k % 3 == 0) << k;
     if ((*r)->map_image) {
@@ -172,11 +178,11 @@ TEST(MappingOptions, KeysAndValidation) {
     }
     return false;
   };
-  for (const char* key : {"mapping.extractor", "mapping.floor.epsilon_m",
-                          "mapping.occupancy.cell_size_m", "mapping.scan.resolution_deg",
-                          "mapping.ransac.max_iterations", "mapping.ransac.error_threshold_cells",
-                          "mapping.split_merge.max_gap_m", "mapping.rotation.enabled",
-                          "mapping.stitch.resolution_m", "mapping.people.source"}) {
+  for (const char* key :
+       {"mapping.extractor", "mapping.floor.epsilon_m", "mapping.occupancy.cell_size_m",
+        "mapping.scan.resolution_deg", "mapping.ransac.max_iterations",
+        "mapping.ransac.error_threshold_cells", "mapping.split_merge.max_gap_m",
+        "mapping.rotation.enabled", "mapping.stitch.resolution_m", "mapping.people.source"}) {
     EXPECT_TRUE(has(key)) << key;
   }
   MappingOptions bad;

@@ -37,9 +37,7 @@ const WallSegment* Match(const LineExtraction& lines, const ScanWall& wall) {
 }
 
 // A room corner 3 m ahead (bearing 5.7 deg): one wall at 20 deg, a perpendicular one at 110 deg.
-std::vector<ScanWall> Corner() {
-  return {{{3.0, 0.3}, DegToRad(110)}, {{3.0, 0.3}, DegToRad(20)}};
-}
+std::vector<ScanWall> Corner() { return {{{3.0, 0.3}, DegToRad(110)}, {{3.0, 0.3}, DegToRad(20)}}; }
 
 TEST(MultiLineRansac, FindsTwoPerpendicularWallsWithOutliers) {
   ScanFixtureOptions fixture;
@@ -107,8 +105,8 @@ TEST(MultiLineRansac, StopsAtEightyPercentAssigned) {
 TEST(MultiLineRansac, FixedCountRunsTwoHundredFiftyHypotheses) {
   // A corridor: the end wall 4 m ahead holds about 47 % of the points and each side wall about
   // 26 %, so the first line never exceeds ratio_max = 0.5 and all 250 hypotheses run.
-  const std::vector<ScanWall> walls = {{{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0},
-                                       {{0.0, -1.0}, 0.0}};
+  const std::vector<ScanWall> walls = {
+      {{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0}, {{0.0, -1.0}, 0.0}};
   const std::vector<Eigen::Vector2d> points = ScanOfWalls(walls, ScanFixtureOptions());
   MultiLineRansac ransac;
   StatusOr<LineExtraction> lines = ransac.ExtractPoints(points, 0.02);
@@ -136,8 +134,8 @@ TEST(MultiLineRansac, AdaptiveModeFindsTheSameWallsWithFewerHypotheses) {
   // The corridor of FixedCountRunsTwoHundredFiftyHypotheses: no early exit for the first line,
   // so the fixed count runs 250 hypotheses where the adaptive one stops at
   // log(0.01) / log(1 - w^2) with w the best inlier ratio found (about 0.47: 19).
-  const std::vector<ScanWall> walls = {{{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0},
-                                       {{0.0, -1.0}, 0.0}};
+  const std::vector<ScanWall> walls = {
+      {{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0}, {{0.0, -1.0}, 0.0}};
   ScanFixtureOptions fixture;
   fixture.outlier_ratio = 0.1;
   const std::vector<Eigen::Vector2d> points = ScanOfWalls(walls, fixture);

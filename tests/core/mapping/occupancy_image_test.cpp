@@ -58,7 +58,7 @@ TEST_F(OccupancyFloorAndWall, WallCellsAreOccupiedFloorIsFree) {
   // The wall spans the field of view: 2 * 3 m * tan(31.4 deg) = 3.66 m = 183 cells.
   EXPECT_GT(occupied, 170);
   // Floor between the robot and the wall: free; beyond the wall: unknown.
-  EXPECT_EQ(image->At(200, 300), OccupancyCell::kFree);  // x = 2 m, y = 0.
+  EXPECT_EQ(image->At(200, 300), OccupancyCell::kFree);     // x = 2 m, y = 0.
   EXPECT_EQ(image->At(200, 200), OccupancyCell::kUnknown);  // x = 4 m, behind the wall.
   EXPECT_GT(Count(*image, OccupancyCell::kFree), 5000);
   EXPECT_EQ(image->invalid_pixels, 0);

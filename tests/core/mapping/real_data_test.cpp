@@ -50,9 +50,10 @@ TEST(MappingRealData, LinesFromTumFr1DeskDepth) {
     }
   }
   EXPECT_GE(frames_with_lines, 1);
-  std::printf("[ tum_fr1_desk ] camera %.3f m above the floor, pitched %.1f deg down; lines in "
-              "%d of 9 frames\n", floor->plane.CameraHeightM(), floor->plane.PitchDownDeg(),
-              frames_with_lines);
+  std::printf(
+      "[ tum_fr1_desk ] camera %.3f m above the floor, pitched %.1f deg down; lines in "
+      "%d of 9 frames\n",
+      floor->plane.CameraHeightM(), floor->plane.PitchDownDeg(), frames_with_lines);
   EXPECT_TRUE(processor.reset_log().empty());
 }
 

@@ -21,9 +21,9 @@ struct ScanWall {
 struct ScanFixtureOptions {
   double fov_deg = 60;
   double resolution_deg = 0.2;
-  double noise_m = 0.01;           // Gaussian, perpendicular to the wall.
-  double cell_m = 0.02;            // Points snap to cell centres (0 = no snapping).
-  double outlier_ratio = 0.0;      // Rays replaced by a random range.
+  double noise_m = 0.01;       // Gaussian, perpendicular to the wall.
+  double cell_m = 0.02;        // Points snap to cell centres (0 = no snapping).
+  double outlier_ratio = 0.0;  // Rays replaced by a random range.
   double max_range_m = 8.0;
   unsigned seed = 3;
 };

@@ -31,9 +31,7 @@ const WallSegment* Match(const LineExtraction& lines, const ScanWall& wall) {
 }
 
 // A room corner 3 m ahead (bearing 5.7 deg): one wall at 20 deg, a perpendicular one at 110 deg.
-std::vector<ScanWall> Corner() {
-  return {{{3.0, 0.3}, DegToRad(110)}, {{3.0, 0.3}, DegToRad(20)}};
-}
+std::vector<ScanWall> Corner() { return {{{3.0, 0.3}, DegToRad(110)}, {{3.0, 0.3}, DegToRad(20)}}; }
 
 TEST(SplitAndMerge, FindsTwoPerpendicularWallsWithOutliers) {
   ScanFixtureOptions fixture;
@@ -52,8 +50,8 @@ TEST(SplitAndMerge, FindsTwoPerpendicularWallsWithOutliers) {
 }
 
 TEST(SplitAndMerge, AgreesWithRansacOnACorridor) {
-  const std::vector<ScanWall> walls = {{{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0},
-                                       {{0.0, -1.0}, 0.0}};
+  const std::vector<ScanWall> walls = {
+      {{4.0, 0.0}, DegToRad(90)}, {{0.0, 1.0}, 0.0}, {{0.0, -1.0}, 0.0}};
   const std::vector<Eigen::Vector2d> points = ScanOfWalls(walls, ScanFixtureOptions());
   SplitAndMerge split;
   MultiLineRansac ransac;

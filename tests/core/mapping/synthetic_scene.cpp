@@ -44,8 +44,8 @@ cv::Mat RenderDepth(const PinholeCamera& camera, const SyntheticView& view,
   for (int v = 0; v < camera.height; ++v) {
     for (int u = 0; u < camera.width; ++u) {
       // Ray with camera z = 1, so the ray parameter is the depth.
-      const Eigen::Vector3d d = r * Eigen::Vector3d((u - camera.cx) / camera.fx,
-                                                    (v - camera.cy) / camera.fy, 1.0);
+      const Eigen::Vector3d d =
+          r * Eigen::Vector3d((u - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1.0);
       double best = std::numeric_limits<double>::infinity();
       if (with_floor && d.z() < -1e-9) best = -origin.z() / d.z();
       for (const SyntheticWall& wall : walls) {

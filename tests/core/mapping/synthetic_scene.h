@@ -21,10 +21,10 @@ struct SyntheticWall {
 // A depth camera on a robot: position on the floor, heading, height and downward pitch.
 struct SyntheticView {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // World x, y [m].
-  double heading_rad = 0;                               // CCW from world x.
-  double height_m = 0.8;                                // Camera above the floor [m].
-  double pitch_down_rad = 0.1;                          // Optical axis below horizontal.
-  double roll_rad = 0;                                  // About the optical axis.
+  double heading_rad = 0;                              // CCW from world x.
+  double height_m = 0.8;                               // Camera above the floor [m].
+  double pitch_down_rad = 0.1;                         // Optical axis below horizontal.
+  double roll_rad = 0;                                 // About the optical axis.
 };
 
 // A 640 x 480 Kinect-like camera (fx = fy = 525), scaled to width x height.

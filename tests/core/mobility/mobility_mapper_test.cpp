@@ -40,7 +40,8 @@ std::shared_ptr<PointCloud> RayCast(const std::vector<Patch>& patches) {
           best = t;
         }
       }
-      cloud->points.push_back(std::isfinite(best) ? Eigen::Vector3f(best * ray) : Eigen::Vector3f(nan, nan, nan));
+      cloud->points.push_back(std::isfinite(best) ? Eigen::Vector3f(best * ray)
+                                                  : Eigen::Vector3f(nan, nan, nan));
     }
   }
   return cloud;
@@ -177,8 +178,9 @@ TEST(MobilityMapper, ReportsEveryStageWithItsPoints) {
   auto result = mapper.Process(Input(RayCast({Floor(), Wall(3.0f)})));
   std::vector<std::string> names;
   for (const StageReport& s : result->stages) names.push_back(s.name);
-  const std::vector<std::string> expected = {"downsample", "range_cut", "denoise", "normals", "rgbn",
-                                             "ground", "segmentation", "surface", "mobility", "maps"};
+  const std::vector<std::string> expected = {"downsample", "range_cut", "denoise",      "normals",
+                                             "rgbn",       "ground",    "segmentation", "surface",
+                                             "mobility",   "maps"};
   EXPECT_EQ(names, expected);
   EXPECT_EQ(result->stages[0].points, 640 * 480);
   EXPECT_FALSE(result->projection.empty());

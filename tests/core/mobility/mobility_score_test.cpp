@@ -7,10 +7,9 @@ namespace {
 
 TEST(RuleScore, ReproducesTableOne) {
   // Rows of Table I (roughness bands), columns slope 0-10 ... > 40.
-  const double table[7][5] = {{1, 0.75, 0.5, 0.25, 0}, {0.75, 0.5, 0.25, 0, 0},
-                              {0.5, 0.25, 0, 0, 0},    {0.25, 0, 0, 0, 0},
-                              {0, 0, 0, 0, 0},         {0, 0, 0, 0, 0},
-                              {0, 0, 0, 0, 0}};
+  const double table[7][5] = {
+      {1, 0.75, 0.5, 0.25, 0}, {0.75, 0.5, 0.25, 0, 0}, {0.5, 0.25, 0, 0, 0}, {0.25, 0, 0, 0, 0},
+      {0, 0, 0, 0, 0},         {0, 0, 0, 0, 0},         {0, 0, 0, 0, 0}};
   for (int r = 0; r < 7; ++r) {
     for (int s = 0; s < 5; ++s) {
       EXPECT_DOUBLE_EQ(RuleScore(5 + 10 * s, 1.1 + 0.2 * r), table[r][s]) << r << " " << s;
@@ -20,7 +19,7 @@ TEST(RuleScore, ReproducesTableOne) {
 
 TEST(RuleScore, LowerBandEdgeIsInclusive) {
   EXPECT_DOUBLE_EQ(RuleScore(0, 1.0), 1.0);
-  EXPECT_DOUBLE_EQ(RuleScore(10, 1.0), 0.75);   // 10 deg belongs to 10-20.
+  EXPECT_DOUBLE_EQ(RuleScore(10, 1.0), 0.75);    // 10 deg belongs to 10-20.
   EXPECT_DOUBLE_EQ(RuleScore(9.99, 1.2), 0.75);  // 1.2 belongs to 1.2-1.4.
   EXPECT_DOUBLE_EQ(RuleScore(90, 1.0), 0.0);
 }

@@ -47,10 +47,11 @@ void ExpectFloorGreenRestRed(const CloudCheck& c) {
   EXPECT_GE(r.segments[0].score_rule, 0.9);
   EXPECT_GE(r.segments[0].score_gpr, 0.9);
   ASSERT_GT(c.high_points, 100);
-  std::printf("camera %.3f m above the ground; ground score rule %.2f gpr %.2f; %.0f of %.0f "
-              "points > 10 cm above it score <= 0.25\n",
-              r.ground.d, r.segments[0].score_rule, r.segments[0].score_gpr, c.high_scored_low,
-              c.high_points);
+  std::printf(
+      "camera %.3f m above the ground; ground score rule %.2f gpr %.2f; %.0f of %.0f "
+      "points > 10 cm above it score <= 0.25\n",
+      r.ground.d, r.segments[0].score_rule, r.segments[0].score_gpr, c.high_scored_low,
+      c.high_points);
   EXPECT_GE(c.high_scored_low / c.high_points, 0.97) << c.high_points << " points above the floor";
 }
 

@@ -16,7 +16,8 @@ std::vector<Eigen::Vector3f> Surface(double size, double step, double tilt_deg,
   std::vector<Eigen::Vector3f> points;
   for (double x = 0; x < size; x += step) {
     for (double y = 0; y < size; y += step) {
-      points.push_back((tilt * Eigen::Vector3d(x, y, height(x, y)) + Eigen::Vector3d(0, 0, 2)).cast<float>());
+      points.push_back(
+          (tilt * Eigen::Vector3d(x, y, height(x, y)) + Eigen::Vector3d(0, 0, 2)).cast<float>());
     }
   }
   return points;
@@ -71,7 +72,8 @@ TEST(Roughness, NeverBelowOneAndOrdered) {
   std::normal_distribution<double> noise(0, 1);
   double previous = 1.0;
   for (double amplitude : {0.002, 0.01, 0.03}) {
-    const auto points = Surface(0.8, 0.01, 10, [&](double, double) { return amplitude * noise(rng); });
+    const auto points =
+        Surface(0.8, 0.01, 10, [&](double, double) { return amplitude * noise(rng); });
     StatusOr<SegmentProperties> s = MeasureSegment(1, false, points, Ground(), Options());
     ASSERT_TRUE(s.ok());
     EXPECT_GE(s->roughness, 1.0);

@@ -69,7 +69,8 @@ TerrainFrame RunTerrain(double ramp_slope_deg, const std::string& mode, int fram
     if (m.region < 0 || m.fraction < 0.8) continue;
     const SegmentProperties& s = out.result->segments[m.segment];
     const std::string& kind = regions[m.region].kind;
-    if (out.by_kind.count(kind) == 0 || out.by_kind[kind]->points < s.points) out.by_kind[kind] = &s;
+    if (out.by_kind.count(kind) == 0 || out.by_kind[kind]->points < s.points)
+      out.by_kind[kind] = &s;
   }
   return out;
 }
@@ -134,7 +135,8 @@ TEST_P(TerrainAccuracy, RoughPatchIsRougherThanTheFloor) {
   std::vector<size_t> flat;
   for (size_t i : PointsOver(t, "floor", -0.05, 0.05)) {
     const Eigen::Vector3d& w = t.world_points[i];
-    if (w.x() > 0.5 && w.x() < 1.15 && w.y() > -1.35 && w.y() < -0.55) flat.push_back(i);  // In front of it.
+    if (w.x() > 0.5 && w.x() < 1.15 && w.y() > -1.35 && w.y() < -0.55)
+      flat.push_back(i);  // In front of it.
   }
   const std::vector<size_t> rough_points = PointsOver(t, "rough", -0.05);
   ASSERT_GT(rough_points.size(), 200u);

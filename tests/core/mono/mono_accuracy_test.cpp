@@ -93,8 +93,8 @@ TEST(MonoAccuracy, ThreadedMappingStopsCleanlyWithComparableAccuracy) {
   slam.Stop();  // Idempotent.
   EXPECT_GE(estimate.size(), 130u);
   const double ate = testing::Sim3AteRmse(estimate, panel->ground_truth);
-  std::cout << "  threaded_ate_rmse_m = " << ate << ", keyframes = "
-            << slam.Snapshot()->keyframes.size() << "\n";
+  std::cout << "  threaded_ate_rmse_m = " << ate
+            << ", keyframes = " << slam.Snapshot()->keyframes.size() << "\n";
   EXPECT_LT(ate, 0.015);
   EXPECT_GT(slam.Snapshot()->keyframes.size(), 5u);
   EXPECT_GT(timing.Summary("mapping").count, 3u);

@@ -43,7 +43,8 @@ TEST(MonoSlam, PureRotationDoesNotInitialise) {
   ASSERT_TRUE(slam.Configure(panel->camera).ok());
   for (int i = 0; i < 15; ++i) {
     // The camera turns about its vertical axis by 0.4 deg per frame without moving.
-    const Eigen::Matrix3d R = Eigen::AngleAxisd(i * 0.4 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    const Eigen::Matrix3d R =
+        Eigen::AngleAxisd(i * 0.4 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
     const Eigen::Matrix3d H = K * R * K.inverse();
     cv::Mat h(3, 3, CV_64F);
     for (int r = 0; r < 3; ++r) {
@@ -128,7 +129,8 @@ TEST_F(MonoSlamOnPanel, SuddenJumpIsLostThenRelocalisedAtTheRightPlace) {
       centre_at_20 = r->map_from_camera.translation();
     }
   }
-  const Eigen::Vector3d centre_at_109 = slam_.Snapshot()->keyframes.back().map_from_camera.translation();
+  const Eigen::Vector3d centre_at_109 =
+      slam_.Snapshot()->keyframes.back().map_from_camera.translation();
   // Jump back to the start of the approach (about 0.5 m further from the wall).
   MonoFrame jumped = panel_.frames[20];
   jumped.stamp.sequence_id = 110;
@@ -156,8 +158,9 @@ TEST_F(MonoSlamOnPanel, ResetStartsOverAndInitialisesAgain) {
 
 TEST(MonoSlam, MisuseIsAnErrorNotACrash) {
   MonoSlam unconfigured;
-  EXPECT_EQ(unconfigured.Process(Frame(0, cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)))).status().code(),
-            StatusCode::kFailedPrecondition);
+  EXPECT_EQ(
+      unconfigured.Process(Frame(0, cv::Mat(480, 640, CV_8UC1, cv::Scalar(0)))).status().code(),
+      StatusCode::kFailedPrecondition);
   MonoSlam slam;
   ASSERT_TRUE(slam.Configure(testing::VgaCamera()).ok());
   auto wrong = slam.Process(Frame(0, cv::Mat(240, 320, CV_8UC1, cv::Scalar(0))));

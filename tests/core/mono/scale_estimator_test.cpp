@@ -11,8 +11,8 @@ namespace {
 
 // Random true displacements mu_i of length in [min_m, max_m] and pairs x = lambda mu + n_x,
 // y = mu + n_y.
-std::vector<ScalePair> MakePairs(int n, double lambda, double sigma_x, double sigma_y,
-                                 double min_m, double max_m, std::mt19937* rng) {
+std::vector<ScalePair> MakePairs(int n, double lambda, double sigma_x, double sigma_y, double min_m,
+                                 double max_m, std::mt19937* rng) {
   std::normal_distribution<double> gauss(0, 1);
   std::uniform_real_distribution<double> length(min_m, max_m);
   std::vector<ScalePair> pairs;
@@ -20,7 +20,8 @@ std::vector<ScalePair> MakePairs(int n, double lambda, double sigma_x, double si
     const Eigen::Vector3d mu =
         Eigen::Vector3d(gauss(*rng), gauss(*rng), gauss(*rng)).normalized() * length(*rng);
     ScalePair p;
-    p.map_displacement = lambda * mu + sigma_x * Eigen::Vector3d(gauss(*rng), gauss(*rng), gauss(*rng));
+    p.map_displacement =
+        lambda * mu + sigma_x * Eigen::Vector3d(gauss(*rng), gauss(*rng), gauss(*rng));
     p.metric_displacement = mu + sigma_y * Eigen::Vector3d(gauss(*rng), gauss(*rng), gauss(*rng));
     pairs.push_back(p);
   }
@@ -114,7 +115,7 @@ TEST(ScaleEstimator, DropsShortPairsAndOutliersAndKeepsItsHistory) {
   ASSERT_EQ(scale.history().size(), 22u);
   EXPECT_EQ(scale.history()[0].max_likelihood, 0);  // Fewer than min_pairs.
   EXPECT_GT(scale.history()[5].max_likelihood, 0);
-  EXPECT_EQ(scale.history()[20].pair_ratio, 0);      // The dropped pair.
+  EXPECT_EQ(scale.history()[20].pair_ratio, 0);  // The dropped pair.
 }
 
 TEST(ScaleEstimator, OptionsAreChecked) {

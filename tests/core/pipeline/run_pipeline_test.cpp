@@ -1,10 +1,9 @@
-#include "core/pipeline/pipeline_registry.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
+#include "core/pipeline/pipeline_registry.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {

@@ -36,8 +36,10 @@ TEST(StageWorker, ProcessesEveryQueuedInputOnItsThreadAndTurnsThrowsIntoStatus) 
   std::vector<std::string> errors;
   StageWorker<int, int> worker(&stage, &inputs, &timing, [&](StatusOr<int> r) {
     std::lock_guard<std::mutex> lock(mutex);
-    if (r.ok()) outputs.push_back(*r);
-    else errors.push_back(r.status().message());
+    if (r.ok())
+      outputs.push_back(*r);
+    else
+      errors.push_back(r.status().message());
   });
   worker.Start();
   for (int i : {1, 2, -3, 13, 4}) ASSERT_TRUE(inputs.Push(i));

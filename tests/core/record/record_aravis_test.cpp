@@ -44,8 +44,8 @@ TEST(RecordAravis, RecordsTheGigEFakeCameraAndReadsItBackExactly) {
   if (!NamespaceStatus().ok()) {
     GTEST_SKIP() << "needs a private network namespace: " << NamespaceStatus().message();
   }
-  auto camera = testing::ChildProcess::Start(
-      {SIGHTLINE_ARV_FAKE_GV_CAMERA, "-i", "127.0.0.1", "-s", "REC1"});
+  auto camera =
+      testing::ChildProcess::Start({SIGHTLINE_ARV_FAKE_GV_CAMERA, "-i", "127.0.0.1", "-s", "REC1"});
   ASSERT_TRUE(camera.ok()) << camera.status().ToString();
   OptionSet options;
   ASSERT_TRUE(DeclareSensorOptions(&options).ok());

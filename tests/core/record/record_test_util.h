@@ -79,7 +79,8 @@ inline int ExpectRecordedFramesMatch(const std::vector<Frame>& original,
   for (size_t i = 0; i < recorded.size(); ++i) {
     const double t = StampOf(recorded[i]).sensor_time_s;
     auto it = by_time_us.find(std::llround(t * 1e6));
-    EXPECT_NE(it, by_time_us.end()) << "recorded frame " << i << " at " << t << " s has no original";
+    EXPECT_NE(it, by_time_us.end())
+        << "recorded frame " << i << " at " << t << " s has no original";
     if (it == by_time_us.end()) continue;
     EXPECT_NEAR(StampOf(original[it->second]).sensor_time_s, t, time_tolerance_s);
     EXPECT_TRUE(SamePixels(original[it->second], recorded[i])) << "recorded frame " << i;

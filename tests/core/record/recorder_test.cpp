@@ -213,7 +213,8 @@ TEST(Recorder, AFullDiskStopsWithAClearErrorAndLeavesAReadablePartialRecording) 
   }
   ASSERT_FALSE(stopped.ok());
   EXPECT_EQ(stopped.code(), StatusCode::kUnavailable);
-  EXPECT_NE(stopped.message().find(out + "/mono/times.txt"), std::string::npos) << stopped.message();
+  EXPECT_NE(stopped.message().find(out + "/mono/times.txt"), std::string::npos)
+      << stopped.message();
   EXPECT_NE(stopped.message().find("file size limit"), std::string::npos) << stopped.message();
   const RecorderStats stats = (*recorder)->stats();
   EXPECT_TRUE(stats.failed);

@@ -282,9 +282,9 @@ TEST_F(AravisStereoVo, LivePairTracksTheServedCorridorDrive) {
   }
   double estimated_length = 0;
   for (size_t i = 1; i < estimate.size(); ++i) {
-    estimated_length +=
-        (estimate[i].world_from_sensor.translation() - estimate[i - 1].world_from_sensor.translation())
-            .norm();
+    estimated_length += (estimate[i].world_from_sensor.translation() -
+                         estimate[i - 1].world_from_sensor.translation())
+                            .norm();
   }
   std::cout << "served path " << true_length << " m, estimated " << estimated_length
             << " m; largest position error " << position_error << " m, angle error " << angle_error

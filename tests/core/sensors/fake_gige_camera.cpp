@@ -34,7 +34,8 @@ const Status& PrivateNetworkStatus() { return MutableStatus(); }
 
 std::string FakeCameraDeviceId(const std::string& serial) { return "Aravis-Fake-" + serial; }
 
-std::unique_ptr<ChildProcess> StartFakeCamera(const std::string& address, const std::string& serial) {
+std::unique_ptr<ChildProcess> StartFakeCamera(const std::string& address,
+                                              const std::string& serial) {
   StatusOr<std::unique_ptr<ChildProcess>> camera =
       ChildProcess::Start({SIGHTLINE_ARV_FAKE_GV_CAMERA, "-i", address, "-s", serial});
   EXPECT_TRUE(camera.ok()) << camera.status().ToString();

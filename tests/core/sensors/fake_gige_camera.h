@@ -3,12 +3,12 @@
 // the target's SIGHTLINE_ARV_FAKE_GV_CAMERA definition.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "core/common/status.h"
 #include "tests/core/sensors/child_process.h"
@@ -26,15 +26,16 @@ const Status& PrivateNetworkStatus();
 std::string FakeCameraDeviceId(const std::string& serial);
 
 // Starts a fake camera serving `address`; null (and a test failure) when it cannot start.
-std::unique_ptr<ChildProcess> StartFakeCamera(const std::string& address, const std::string& serial);
+std::unique_ptr<ChildProcess> StartFakeCamera(const std::string& address,
+                                              const std::string& serial);
 
 // Waits (bounded) until Aravis discovery finds the camera.
 bool WaitFakeCameraDiscoverable(const std::string& serial, std::chrono::seconds limit);
 
 }  // namespace sightline::testing
 
-#define SIGHTLINE_REQUIRE_PRIVATE_NETWORK()                                                 \
-  if (!::sightline::testing::PrivateNetworkStatus().ok()) {                                 \
-    GTEST_SKIP() << "needs a private network namespace: "                                   \
-                 << ::sightline::testing::PrivateNetworkStatus().message();                 \
+#define SIGHTLINE_REQUIRE_PRIVATE_NETWORK()                                 \
+  if (!::sightline::testing::PrivateNetworkStatus().ok()) {                 \
+    GTEST_SKIP() << "needs a private network namespace: "                   \
+                 << ::sightline::testing::PrivateNetworkStatus().message(); \
   }

@@ -76,8 +76,8 @@ TEST(Features, SiftFindsKeypointsOnTheButtonPanel) {
   EXPECT_GE(keypoints.size(), 100u);
   // Some keypoints sit on the target button.
   const ButtonSpec& target = sim->scene().buttons[sim->scene().hints.target_button];
-  const Eigen::Vector2d center = sim->mono_camera().Project(
-      mono.world_from_camera.inverse() * target.center);
+  const Eigen::Vector2d center =
+      sim->mono_camera().Project(mono.world_from_camera.inverse() * target.center);
   int on_button = 0;
   for (const cv::KeyPoint& k : keypoints) {
     on_button += (Eigen::Vector2d(k.pt.x, k.pt.y) - center).norm() < 40;

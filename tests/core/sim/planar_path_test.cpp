@@ -35,8 +35,8 @@ TEST(PlanarPath, RightAngleTurnIsAQuarterCircle) {
 }
 
 TEST(PlanarPath, LoopWrapsAndPingPongWalksBack) {
-  auto loop = PlanarPath::Through({{1, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}}, 0.5,
-                                  PlanarPath::End::kLoop);
+  auto loop =
+      PlanarPath::Through({{1, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}}, 0.5, PlanarPath::End::kLoop);
   ASSERT_TRUE(loop.ok());
   const PathPose a = loop->At(0.3), b = loop->At(0.3 + loop->LengthM());
   EXPECT_NEAR((a.position - b.position).norm(), 0, 1e-9);

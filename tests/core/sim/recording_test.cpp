@@ -1,7 +1,5 @@
 // Readers read what the simulator writes (TUM RGB-D, KITTI stereo, image folder), and the same
 // seed writes byte-identical recordings.
-#include "core/sim/simulate.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +9,7 @@
 
 #include "core/common/text_file.h"
 #include "core/io/dataset.h"
+#include "core/sim/simulate.h"
 #include "core/sim/simulator.h"
 #include "tests/support/test_data.h"
 
@@ -117,8 +116,8 @@ TEST(Recording, ReadersReadEverySensorTheSimulatorWrites) {
   SimulatedStereo s0, s3;
   ASSERT_TRUE(sim->RenderStereo(0, &s0).ok());
   ASSERT_TRUE(sim->RenderStereo(3, &s3).ok());
-  EXPECT_TRUE(poses[3].world_from_sensor.isApprox(
-      s0.world_from_left.inverse() * s3.world_from_left, 1e-6));
+  EXPECT_TRUE(
+      poses[3].world_from_sensor.isApprox(s0.world_from_left.inverse() * s3.world_from_left, 1e-6));
   EXPECT_NEAR(poses[3].time_s, 0.1, 1e-6);
   ASSERT_TRUE((*stereo)->Grab().ok());
   auto pair = (*stereo)->Retrieve();
@@ -135,8 +134,8 @@ TEST(Recording, ReadersReadEverySensorTheSimulatorWrites) {
   EXPECT_EQ((*mono)->info().width, 320);
 
   // Ground truth beside the sensors.
-  for (const char* file : {"scene.yaml", "walls.csv", "regions.csv", "people.csv",
-                           "odometry.txt", "body_groundtruth.txt"}) {
+  for (const char* file : {"scene.yaml", "walls.csv", "regions.csv", "people.csv", "odometry.txt",
+                           "body_groundtruth.txt"}) {
     EXPECT_TRUE(FileExists(dir + "/" + file)) << file;
   }
   const auto walls = ReadCsv(dir + "/walls.csv");
@@ -167,8 +166,8 @@ TEST(Recording, SameSeedWritesByteIdenticalFilesOtherSeedDiffers) {
   const auto a = HashFiles(base + "/a"), b = HashFiles(base + "/b"), c = HashFiles(base + "/c");
   ASSERT_GT(a.size(), 15u);
   EXPECT_EQ(a, b);
-  for (const char* image : {"rgbd/rgb/000001.png", "rgbd/depth/000001.png",
-                            "stereo/image_0/000000.png"}) {
+  for (const char* image :
+       {"rgbd/rgb/000001.png", "rgbd/depth/000001.png", "stereo/image_0/000000.png"}) {
     ASSERT_TRUE(a.count(image)) << image;
     EXPECT_NE(a.at(image), c.at(image)) << image;
   }
@@ -237,7 +236,9 @@ TEST(Recording, CancelStopsWithReadableFiles) {
   std::atomic<bool> cancel{false};
   SimulationCallbacks callbacks;
   callbacks.cancel = &cancel;
-  callbacks.progress = [&](int64_t done, int64_t) { if (done == 2) cancel = true; };
+  callbacks.progress = [&](int64_t done, int64_t) {
+    if (done == 2) cancel = true;
+  };
   SimulationOptions options = SimulationOptions::ForScene("terrain");
   options.frames = 50;
   options.rgbd.resolution = "320x240";

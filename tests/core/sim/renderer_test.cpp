@@ -39,16 +39,16 @@ TEST(Renderer, DepthEqualsAnalyticDistanceToAWallExactly) {
         const Eigen::Vector3d ray = pose.linear() * Eigen::Vector3d((u - camera.cx) / camera.fx,
                                                                     (v - camera.cy) / camera.fy, 1);
         const double z = (3.0 - pose.translation().x()) / ray.x();
-        ASSERT_NEAR(view.depth_m.at<float>(v, u), z, 2e-6 * z) << u << "," << v << " yaw "
-                                                                << yaw_deg;
+        ASSERT_NEAR(view.depth_m.at<float>(v, u), z, 2e-6 * z)
+            << u << "," << v << " yaw " << yaw_deg;
         EXPECT_EQ(view.object.at<int32_t>(v, u), 0);
         ++checked;
       }
     }
     EXPECT_GT(checked, 5000);
     // Incidence: cos = |n . ray| / |ray| with n = -x.
-    const Eigen::Vector3d ray0 = pose.linear() * Eigen::Vector3d(-camera.cx / camera.fx,
-                                                                 -camera.cy / camera.fy, 1);
+    const Eigen::Vector3d ray0 =
+        pose.linear() * Eigen::Vector3d(-camera.cx / camera.fx, -camera.cy / camera.fy, 1);
     EXPECT_NEAR(view.incidence_cos.at<float>(0, 0), std::abs(ray0.x()) / ray0.norm(), 1e-6);
   }
 }
@@ -64,13 +64,15 @@ TEST(Renderer, CurvedPrimitivesAndOcclusion) {
   Renderer renderer;
   RenderedView view;
   // Looking along +x from height 0.5: the centre ray hits the cylinder side at x = 1.75.
-  ASSERT_TRUE(renderer.Render(scene, {}, camera, LookHorizontally({0, 0, 0.5}, 0),
-                              ImageKind::kGrey, &view).ok());
+  ASSERT_TRUE(
+      renderer.Render(scene, {}, camera, LookHorizontally({0, 0, 0.5}, 0), ImageKind::kGrey, &view)
+          .ok());
   EXPECT_NEAR(view.depth_m.at<float>(240, 320), 1.75, 1e-5);
   EXPECT_EQ(view.object.at<int32_t>(240, 320), bin);
   // From height 1.5 the centre ray meets the sphere at x = 2.3.
-  ASSERT_TRUE(renderer.Render(scene, {}, camera, LookHorizontally({0, 0, 1.5}, 0),
-                              ImageKind::kGrey, &view).ok());
+  ASSERT_TRUE(
+      renderer.Render(scene, {}, camera, LookHorizontally({0, 0, 1.5}, 0), ImageKind::kGrey, &view)
+          .ok());
   EXPECT_NEAR(view.depth_m.at<float>(240, 320), 2.3, 1e-5);
   EXPECT_EQ(view.object.at<int32_t>(240, 320), head);
   EXPECT_EQ(view.image.type(), CV_8UC1);
@@ -82,8 +84,9 @@ TEST(Renderer, NothingHitIsNanAndBackground) {
   const PinholeCamera camera = MakeCamera(64, 48, 50);
   Renderer renderer;
   RenderedView view;
-  ASSERT_TRUE(renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kColor,
-                              &view).ok());
+  ASSERT_TRUE(
+      renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kColor, &view)
+          .ok());
   EXPECT_TRUE(std::isnan(view.depth_m.at<float>(10, 10)));
   EXPECT_EQ(view.object.at<int32_t>(10, 10), -1);
 }
@@ -94,13 +97,14 @@ TEST(Renderer, RejectsInvalidAndDistortedCameras) {
   RenderedView view;
   PinholeCamera camera = MakeCamera(64, 48, 50);
   camera.distortion[0] = 0.1;
-  Status s = renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kNone,
-                             &view);
+  Status s =
+      renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kNone, &view);
   EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
   EXPECT_NE(s.message().find("distortion"), std::string::npos);
   camera = MakeCamera(0, 48, 50);
-  EXPECT_FALSE(renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kNone,
-                               &view).ok());
+  EXPECT_FALSE(
+      renderer.Render(scene, {}, camera, Eigen::Isometry3d::Identity(), ImageKind::kNone, &view)
+          .ok());
 }
 
 // The rendered button faces are centred where the camera model projects the button centres.

@@ -66,9 +66,9 @@ TEST(CorridorScene, HasJunctionsDoorsPeopleAndNormalisedWalls) {
   EXPECT_GE(scene->walls.size(), 14u);
   std::set<ObjectKind> kinds;
   for (const SceneObject& o : scene->objects()) kinds.insert(o.kind);
-  for (ObjectKind k : {ObjectKind::kFloor, ObjectKind::kCeiling, ObjectKind::kWall,
-                       ObjectKind::kDoor, ObjectKind::kBox, ObjectKind::kBin, ObjectKind::kPoster,
-                       ObjectKind::kPerson}) {
+  for (ObjectKind k :
+       {ObjectKind::kFloor, ObjectKind::kCeiling, ObjectKind::kWall, ObjectKind::kDoor,
+        ObjectKind::kBox, ObjectKind::kBin, ObjectKind::kPoster, ObjectKind::kPerson}) {
     EXPECT_TRUE(kinds.count(k)) << ObjectKindName(k);
   }
   EXPECT_EQ(scene->people.size(), 2u);

@@ -22,9 +22,10 @@ RenderedView RenderTiltedWall() {
   scene.AddRectangle(floor, grey, {-5, -10, 0}, {1, 0, 0}, {0, 1, 0}, {8, 20});
   Renderer renderer;
   RenderedView view;
-  EXPECT_TRUE(renderer.Render(scene, {}, RgbdSensorOptions().Camera(),
-                              LookHorizontally({0, 0, 1.0}, 25 * M_PI / 180), ImageKind::kNone,
-                              &view).ok());
+  EXPECT_TRUE(renderer
+                  .Render(scene, {}, RgbdSensorOptions().Camera(),
+                          LookHorizontally({0, 0, 1.0}, 25 * M_PI / 180), ImageKind::kNone, &view)
+                  .ok());
   return view;
 }
 
@@ -53,8 +54,8 @@ TEST(DepthModel, NoNoiseKeepsExactDepthInsideTheSensorLimits) {
     }
   }
   EXPECT_GT(exact, 100000);
-  EXPECT_GT(dropped_range, 1000);    // The far part of the wall lies beyond 4.5 m.
-  EXPECT_GT(dropped_grazing, 100);   // The floor far ahead is seen at grazing angles.
+  EXPECT_GT(dropped_range, 1000);   // The far part of the wall lies beyond 4.5 m.
+  EXPECT_GT(dropped_grazing, 100);  // The floor far ahead is seen at grazing angles.
 }
 
 TEST(DepthModel, KinectNoiseFollowsTheQuadraticModel) {

@@ -59,7 +59,8 @@ TEST(CornerResponse, ZeroOnUniformImagesAndAtTheBorder) {
   cv::Mat response;
   MinEigenResponse(flat.Derivatives(0), cv::Rect(0, 0, 160, 120), 3, &response);
   EXPECT_EQ(cv::countNonZero(response), 0);
-  const ImagePyramid textured = BuildImagePyramid(testing::TexturedImage(cv::Size(160, 120), 3), 15, 1);
+  const ImagePyramid textured =
+      BuildImagePyramid(testing::TexturedImage(cv::Size(160, 120), 3), 15, 1);
   MinEigenResponse(textured.Derivatives(0), cv::Rect(0, 0, 160, 120), 5, &response);
   EXPECT_EQ(cv::countNonZero(response.row(0)), 0);
   EXPECT_EQ(cv::countNonZero(response.col(159)), 0);

@@ -74,7 +74,8 @@ TEST(DisparityOffset, StaysAtZeroWithoutParallaxAndWithoutOffset) {
   still.Reset();
   const auto static_pairs =
       testing::SyntheticCorrespondences(camera, Eigen::Isometry3d::Identity(), 200, 0, 0.2, 12);
-  for (int i = 0; i < 3; ++i) Step(camera, Biased(static_pairs, 0.3), Eigen::Isometry3d::Identity(), &still);
+  for (int i = 0; i < 3; ++i)
+    Step(camera, Biased(static_pairs, 0.3), Eigen::Isometry3d::Identity(), &still);
   EXPECT_EQ(still.offset_px(), 0.0);
   // Fast motion, exact disparities: the estimate stays near zero.
   DisparityOffsetEstimator exact_rig;
@@ -107,7 +108,8 @@ std::vector<OffsetTrack> TracksAt(const RectifiedStereoCamera& camera,
     const Eigen::Vector3d x = world_from_camera.inverse() * world;
     if (!(x.z() > 1)) continue;
     const Eigen::Vector2d l = camera.ProjectLeft(x), r = camera.ProjectRight(x);
-    if (l.x() < 0 || l.y() < 0 || r.x() < 0 || l.x() >= camera.width || l.y() >= camera.height) continue;
+    if (l.x() < 0 || l.y() < 0 || r.x() < 0 || l.x() >= camera.width || l.y() >= camera.height)
+      continue;
     OffsetTrack t;
     t.id = i;
     t.observation = {l.x() + noise(noise_rng), l.y(), r.x() + offset_px + noise(noise_rng)};

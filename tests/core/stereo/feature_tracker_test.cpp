@@ -39,10 +39,12 @@ TEST(FeatureTracker, BucketingSpreadsFeaturesAndRespectsExisting) {
   const std::vector<cv::Point2f> corners = tracker.Detect(BuildImagePyramid(image, 15, 3), {});
   ASSERT_LE(corners.size(), 300u);
   std::set<int> buckets;
-  for (const cv::Point2f& p : corners) buckets.insert(static_cast<int>(p.y) / 80 * 8 + static_cast<int>(p.x) / 80);
+  for (const cv::Point2f& p : corners)
+    buckets.insert(static_cast<int>(p.y) / 80 * 8 + static_cast<int>(p.x) / 80);
   EXPECT_GE(buckets.size(), 40u);  // A bucket may lack texture.
   // With 250 features given, at most 50 new ones, none on top of the given ones.
-  std::vector<cv::Point2f> existing(corners.begin(), corners.begin() + std::min<size_t>(250, corners.size()));
+  std::vector<cv::Point2f> existing(corners.begin(),
+                                    corners.begin() + std::min<size_t>(250, corners.size()));
   const std::vector<cv::Point2f> more = tracker.Detect(BuildImagePyramid(image, 15, 3), existing);
   EXPECT_LE(more.size() + existing.size(), 300u);
   for (const cv::Point2f& p : more) {
@@ -52,7 +54,8 @@ TEST(FeatureTracker, BucketingSpreadsFeaturesAndRespectsExisting) {
 
 TEST(FeatureTracker, FindsNothingOnABlackImage) {
   FeatureTracker tracker;
-  EXPECT_TRUE(tracker.Detect(BuildImagePyramid(cv::Mat::zeros(480, 640, CV_8UC1), 15, 3), {}).empty());
+  EXPECT_TRUE(
+      tracker.Detect(BuildImagePyramid(cv::Mat::zeros(480, 640, CV_8UC1), 15, 3), {}).empty());
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ TEST(MotionEstimator, FailsClearlyWithTooFewPointsOrNoRigidSample) {
 
   MotionEstimatorOptions options;
   options.max_rigidity_failures = 50;
-  const auto garbage = testing::SyntheticCorrespondences(camera, testing::TestMotion(), 100, 100, 0, 4);
+  const auto garbage =
+      testing::SyntheticCorrespondences(camera, testing::TestMotion(), 100, 100, 0, 4);
   h = MotionEstimator(options).Estimate(camera, garbage);
   EXPECT_FALSE(h.ok);
 }

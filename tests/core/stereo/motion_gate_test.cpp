@@ -60,7 +60,8 @@ TEST(MotionGate, HoldFallbackNeverMoves) {
   options.fallback = "hold";
   MotionGate gate(options);
   ASSERT_TRUE(gate.Check(Forward(1.0), 0.1).accepted);
-  EXPECT_TRUE(gate.Check(Forward(100.0), 0.1).current_from_previous.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_TRUE(gate.Check(Forward(100.0), 0.1)
+                  .current_from_previous.isApprox(Eigen::Isometry3d::Identity()));
 }
 
 }  // namespace

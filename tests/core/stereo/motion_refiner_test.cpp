@@ -26,7 +26,8 @@ TEST(MotionRefiner, ReducesErrorOfAPerturbedSeed) {
   const RefinementSummary s = MotionRefiner().Refine(camera, correspondences, all, &refined);
   EXPECT_LT(s.final_rms_px, s.initial_rms_px);
   // As good as the true motion on noisy data (the least-squares optimum lies next to it).
-  EXPECT_LT(s.final_rms_px, 1.05 * MotionRefiner::RmsReprojectionPx(camera, correspondences, all, truth));
+  EXPECT_LT(s.final_rms_px,
+            1.05 * MotionRefiner::RmsReprojectionPx(camera, correspondences, all, truth));
   EXPECT_LT(TranslationErrorM(refined, truth), 0.01);
   EXPECT_LT(RotationErrorDeg(refined, truth), 0.05);
   EXPECT_LT(TranslationErrorM(refined, truth), TranslationErrorM(seed, truth) / 5);
@@ -52,7 +53,8 @@ TEST(MotionRefiner, BeatsAbsoluteOrientationOnNoisyDepth) {
 
 TEST(MotionRefiner, LeavesMotionUnchangedWithTooFewPoints) {
   const RectifiedStereoCamera camera = testing::TestCamera();
-  const auto correspondences = testing::SyntheticCorrespondences(camera, testing::TestMotion(), 2, 0, 0, 7);
+  const auto correspondences =
+      testing::SyntheticCorrespondences(camera, testing::TestMotion(), 2, 0, 0, 7);
   Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
   MotionRefiner().Refine(camera, correspondences, {0, 1}, &m);
   EXPECT_TRUE(m.isApprox(Eigen::Isometry3d::Identity()));

@@ -88,8 +88,10 @@ TEST(Rectifier, UndistortsAndAlignsRowsOfARawRig) {
   frame.left = cv::Mat::zeros(480, 640, CV_8UC1);
   frame.right = cv::Mat::zeros(480, 640, CV_8UC1);
   for (size_t i = 0; i < x.size(); ++i) {
-    cv::circle(frame.left, cv::Point(cvRound(in_left[i].x), cvRound(in_left[i].y)), 3, 255, cv::FILLED);
-    cv::circle(frame.right, cv::Point(cvRound(in_right[i].x), cvRound(in_right[i].y)), 3, 255, cv::FILLED);
+    cv::circle(frame.left, cv::Point(cvRound(in_left[i].x), cvRound(in_left[i].y)), 3, 255,
+               cv::FILLED);
+    cv::circle(frame.right, cv::Point(cvRound(in_right[i].x), cvRound(in_right[i].y)), 3, 255,
+               cv::FILLED);
   }
   cv::Mat l, r;
   ASSERT_TRUE(rectifier.Rectify(frame, &l, &r).ok());
@@ -100,8 +102,10 @@ TEST(Rectifier, UndistortsAndAlignsRowsOfARawRig) {
   ASSERT_EQ(cl.size(), 2u);
   ASSERT_EQ(cr.size(), 2u);
   std::vector<double> rows_l, rows_r;
-  for (const auto& c : cl) rows_l.push_back(cv::boundingRect(c).y + cv::boundingRect(c).height / 2.0);
-  for (const auto& c : cr) rows_r.push_back(cv::boundingRect(c).y + cv::boundingRect(c).height / 2.0);
+  for (const auto& c : cl)
+    rows_l.push_back(cv::boundingRect(c).y + cv::boundingRect(c).height / 2.0);
+  for (const auto& c : cr)
+    rows_r.push_back(cv::boundingRect(c).y + cv::boundingRect(c).height / 2.0);
   std::sort(rows_l.begin(), rows_l.end());
   std::sort(rows_r.begin(), rows_r.end());
   for (size_t i = 0; i < 2; ++i) EXPECT_NEAR(rows_l[i], rows_r[i], 1.5);

@@ -54,7 +54,8 @@ void ExpectHeld(const std::vector<StereoFrame>& frames, const std::string& statu
 TEST(StereoOdometry, BlackFramesHoldThePose) {
   std::vector<StereoFrame> frames;
   for (int i = 0; i < 4; ++i) {
-    frames.push_back(MakeFrame(i, cv::Mat::zeros(480, 640, CV_8UC1), cv::Mat::zeros(480, 640, CV_8UC1)));
+    frames.push_back(
+        MakeFrame(i, cv::Mat::zeros(480, 640, CV_8UC1), cv::Mat::zeros(480, 640, CV_8UC1)));
   }
   ExpectHeld(frames, "no stereo matches");
 }
@@ -81,7 +82,8 @@ TEST(StereoOdometry, LensCapHoldsThePose) {
 TEST(StereoOdometry, IdenticalLeftAndRightHoldThePose) {
   std::vector<StereoFrame> frames;
   for (int i = 0; i < 4; ++i) {
-    const cv::Mat image = testing::Shifted(testing::TexturedImage(cv::Size(640, 480), 9), -2.0 * i, 0);
+    const cv::Mat image =
+        testing::Shifted(testing::TexturedImage(cv::Size(640, 480), 9), -2.0 * i, 0);
     frames.push_back(MakeFrame(i, image, image.clone()));
   }
   ExpectHeld(frames, "no stereo matches");
@@ -113,10 +115,10 @@ TEST(StereoOdometry, InvalidOptionsNameTheKey) {
 TEST(StereoOdometry, DescribeCoversEveryStage) {
   OptionSet set;
   ASSERT_TRUE(set.Declare(StereoOdometryOptions::Describe()).ok());
-  for (const char* key : {"stereo.tracking.max_features", "stereo.matching.max_left_right_px",
-                          "stereo.ransac.rigidity_tolerance_m", "stereo.ransac.max_iterations",
-                          "stereo.refine.huber_px", "stereo.gate.max_speed_mps",
-                          "stereo.rectify.alpha"}) {
+  for (const char* key :
+       {"stereo.tracking.max_features", "stereo.matching.max_left_right_px",
+        "stereo.ransac.rigidity_tolerance_m", "stereo.ransac.max_iterations",
+        "stereo.refine.huber_px", "stereo.gate.max_speed_mps", "stereo.rectify.alpha"}) {
     EXPECT_TRUE(set.Has(key)) << key;
   }
 }
@@ -135,7 +137,7 @@ TEST(StereoOdometry, RecoversAfterBadFramesOnRealData) {
     auto frame = (*source)->Retrieve();
     ASSERT_TRUE(frame.ok());
     StereoFrame f = std::get<StereoFrame>(*frame);
-    if (i == 6) continue;  // Dropped: the next frame is tracked over two frame periods.
+    if (i == 6) continue;            // Dropped: the next frame is tracked over two frame periods.
     if (i == 4) f.left = cv::Mat();  // Missing image.
     if (i == 8) f.left = f.right = cv::Mat::zeros(f.left.size(), CV_8UC1);  // Black.
     auto r = vo.Process(f);

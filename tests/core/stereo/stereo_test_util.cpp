@@ -19,14 +19,15 @@ RectifiedStereoCamera TestCamera() {
 
 Eigen::Isometry3d TestMotion() {
   Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
-  m.linear() = Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.2, 1.0, 0.1).normalized()).toRotationMatrix();
+  m.linear() =
+      Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.2, 1.0, 0.1).normalized()).toRotationMatrix();
   m.translation() = Eigen::Vector3d(0.1, -0.03, -0.8);
   return m;
 }
 
 std::vector<StereoCorrespondence> SyntheticCorrespondences(
-    const RectifiedStereoCamera& camera, const Eigen::Isometry3d& current_from_previous,
-    int count, int outlier_count, double noise_px, unsigned seed) {
+    const RectifiedStereoCamera& camera, const Eigen::Isometry3d& current_from_previous, int count,
+    int outlier_count, double noise_px, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> ux(-8, 8), uy(-3, 3), uz(3, 30), uu(0, 640), uvv(0, 480),
       ud(2, 40);

@@ -20,8 +20,8 @@ Eigen::Isometry3d TestMotion();
 // `count` points 3..30 m ahead observed before and after `current_from_previous`, with Gaussian
 // pixel noise; the first outlier_count correspondences get a random current observation.
 std::vector<StereoCorrespondence> SyntheticCorrespondences(
-    const RectifiedStereoCamera& camera, const Eigen::Isometry3d& current_from_previous,
-    int count, int outlier_count, double noise_px, unsigned seed);
+    const RectifiedStereoCamera& camera, const Eigen::Isometry3d& current_from_previous, int count,
+    int outlier_count, double noise_px, unsigned seed);
 
 // A CV_8UC1 image of random blurred blobs (good corners everywhere).
 cv::Mat TexturedImage(cv::Size size, unsigned seed);

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <opencv2/imgproc.hpp>
+#include <random>
 
 #include "stereo_test_util.h"
 
@@ -62,8 +62,9 @@ TEST(TrackAnchors, AlignsTracksToTheirAnchorThroughAScaleChange) {
       if (anchors.Align(a.camera, anchor, 2, a.current_image, Eigen::Isometry3d::Identity(),
                         &unwarped) == AnchorAlignment::kAligned) {
         ++aligned_unwarped;
-        worst_unwarped = std::max(worst_unwarped, static_cast<double>(std::hypot(
-                                                      unwarped.x - truth.x, unwarped.y - truth.y)));
+        worst_unwarped =
+            std::max(worst_unwarped,
+                     static_cast<double>(std::hypot(unwarped.x - truth.x, unwarped.y - truth.y)));
       }
       if (result != AnchorAlignment::kAligned) continue;
       ++aligned;
@@ -76,9 +77,9 @@ TEST(TrackAnchors, AlignsTracksToTheirAnchorThroughAScaleChange) {
   ASSERT_FALSE(errors.empty());
   EXPECT_LT(errors[errors.size() / 2], 0.04) << "px from the truth after aligning from 0.5 px off";
   EXPECT_LT(worst, 0.15);
-  std::cout << aligned << " aligned, median " << errors[errors.size() / 2] << " px, worst "
-            << worst << " px; unwarped: " << aligned_unwarped << " aligned, worst "
-            << worst_unwarped << " px\n";
+  std::cout << aligned << " aligned, median " << errors[errors.size() / 2] << " px, worst " << worst
+            << " px; unwarped: " << aligned_unwarped << " aligned, worst " << worst_unwarped
+            << " px\n";
 }
 
 TEST(TrackAnchors, TheAnchorImageIsCopiedNotShared) {
@@ -229,11 +230,10 @@ TEST(TrackAnchors, AWarpOnTheFittedSurfaceFollowsASlantedFloor) {
   std::sort(fitted_errors.begin(), fitted_errors.end());
   std::sort(facing_errors.begin(), facing_errors.end());
   const double fitted_median = fitted_errors[fitted_errors.size() / 2];
-  const double facing_median =
-      facing_errors.empty() ? 99 : facing_errors[facing_errors.size() / 2];
-  std::cout << fitted_errors.size() << " aligned on the fitted floor, median "
-            << fitted_median << " px; " << facing_errors.size()
-            << " assuming the patch faces the camera, median " << facing_median << " px\n";
+  const double facing_median = facing_errors.empty() ? 99 : facing_errors[facing_errors.size() / 2];
+  std::cout << fitted_errors.size() << " aligned on the fitted floor, median " << fitted_median
+            << " px; " << facing_errors.size() << " assuming the patch faces the camera, median "
+            << facing_median << " px\n";
   EXPECT_LT(fitted_median, 0.08);
   EXPECT_LT(2 * fitted_median, facing_median);
 }

@@ -119,7 +119,8 @@ double DriftAfterLongDrive(int fixed_frames, unsigned seed) {
   for (int i = 0; i < frames; ++i) {
     const Eigen::Isometry3d& truth = drive.world_from_camera[static_cast<size_t>(i)];
     if (i > 0) {
-      Eigen::Isometry3d noisy = drive.world_from_camera[static_cast<size_t>(i - 1)].inverse() * truth;
+      Eigen::Isometry3d noisy =
+          drive.world_from_camera[static_cast<size_t>(i - 1)].inverse() * truth;
       noisy.linear() = noisy.linear() *
                        Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitY()).toRotationMatrix() *
                        Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -170,12 +171,13 @@ TEST(WindowBundleAdjuster, TooFewSharedTracksLeavesThePoseAsGiven) {
   const Drive drive = MakeDrive(2, 10, 11);
   WindowBundleAdjuster window;
   std::mt19937 rng(1);
-  window.Add(camera, drive.world_from_camera[0], Observe(camera, drive.world_from_camera[0],
-                                                          drive.points, 0.1, &rng));
+  window.Add(camera, drive.world_from_camera[0],
+             Observe(camera, drive.world_from_camera[0], drive.points, 0.1, &rng));
   const Eigen::Isometry3d input = Perturbed(drive.world_from_camera[1], 1);
   WindowBundleSummary summary;
-  const Eigen::Isometry3d out = window.Add(
-      camera, input, Observe(camera, drive.world_from_camera[1], drive.points, 0.1, &rng), &summary);
+  const Eigen::Isometry3d out =
+      window.Add(camera, input,
+                 Observe(camera, drive.world_from_camera[1], drive.points, 0.1, &rng), &summary);
   EXPECT_FALSE(summary.adjusted);
   EXPECT_EQ(summary.points, 10);
   EXPECT_LT(TranslationErrorM(out, input), 1e-12);
