@@ -21,7 +21,7 @@ namespace {
 // The mono presenter's processor, then the picker on its result.
 class ButtonPickerProcessor : public FrameProcessor {
  public:
-  ButtonPickerProcessor(SourceInfo info, PinholeCamera camera, std::unique_ptr<FrameProcessor> mono,
+  ButtonPickerProcessor(SourceInfo info, PinholeCamera camera, std::unique_ptr<Pipeline> mono,
                         std::shared_ptr<ButtonPickerControls> controls)
       : info_(std::move(info)),
         camera_(camera),
@@ -55,9 +55,10 @@ class ButtonPickerProcessor : public FrameProcessor {
     return Status::Ok();
   }
 
-  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
     const auto start = std::chrono::steady_clock::now();
-    std::shared_ptr<const PipelineFrameResult> base = mono_->Process(frame);
+    StatusOr<std::shared_ptr<const PipelineResult>> processed = mono_->Process(frame);
+    std::shared_ptr<const PipelineFrameResult> base = processed.ok() ? *processed : nullptr;
     const auto* mono = dynamic_cast<const MonoViewResult*>(base.get());
     if (mono == nullptr || !mono->slam || !picker_) return base;
     auto out = std::make_shared<ButtonViewResult>();
@@ -100,8 +101,8 @@ class ButtonPickerProcessor : public FrameProcessor {
     return out;
   }
 
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
-    return Process(frame);
+  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
+    return ProcessFrame(frame);
   }
 
   void Reset() override {
@@ -112,7 +113,7 @@ class ButtonPickerProcessor : public FrameProcessor {
  private:
   SourceInfo info_;
   PinholeCamera camera_;
-  std::unique_ptr<FrameProcessor> mono_;
+  std::unique_ptr<Pipeline> mono_;
   std::shared_ptr<ButtonPickerControls> controls_;
   std::unique_ptr<ButtonPicker> picker_;
   std::unique_ptr<MetricSlamView> metric_;
@@ -192,8 +193,9 @@ Status ButtonPickerPresenter::DeclareOptions(OptionSet* options) const {
 
 bool ButtonPickerPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kMono; }
 
-std::unique_ptr<FrameProcessor> ButtonPickerPresenter::CreateProcessor(const SourceInfo& info) {
-  std::unique_ptr<FrameProcessor> mono = MonoSlamPresenter::CreateProcessor(info);
+std::unique_ptr<Pipeline> ButtonPickerPresenter::CreateProcessor(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
+  std::unique_ptr<Pipeline> mono = MonoSlamPresenter::CreateProcessor(source);
   if (!mono || !info.camera) return nullptr;
   return std::make_unique<ButtonPickerProcessor>(info, *info.camera, std::move(mono), controls_);
 }

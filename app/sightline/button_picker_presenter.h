@@ -52,7 +52,7 @@ class ButtonPickerPresenter : public MonoSlamPresenter {
   const char* TitleSource() const override;
   Status DeclareOptions(OptionSet* options) const override;
   bool Accepts(SourceKind kind) const override;
-  std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) override;
+  std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) override;
   void Attach(QMainWindow* window) override;
   void Detach() override;
   void Show(const PlaybackResult& result) override;

@@ -302,9 +302,9 @@ bool MainWindow::ActivatePipeline(const QString& title) {
   next->Attach(this);
   QPointer<PipelinePresenter> presenter(next);
   playback_->SetProcessorFactory(
-      [presenter](const SourceInfo& info) -> std::unique_ptr<FrameProcessor> {
-        if (!presenter || !presenter->Accepts(info.kind)) return nullptr;
-        return presenter->CreateProcessor(info);
+      [presenter](const PipelineSource& source) -> std::unique_ptr<Pipeline> {
+        if (!presenter || !presenter->Accepts(source.info.kind)) return nullptr;
+        return presenter->CreateProcessor(source);
       },
       options_);
   log_panel_->AddMessage(LogPanel::Severity::kInfo, tr("Pipeline: %1").arg(next->Title()));

@@ -52,11 +52,11 @@ class MappingProcessor : public FrameProcessor {
     return Status::Ok();
   }
 
-  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
     return Run(frame);
   }
 
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
     if (processor_ && floor_) processor_->Restart();
     return Run(frame);
   }
@@ -216,7 +216,8 @@ Status MappingPresenter::DeclareOptions(OptionSet* options) const {
 
 bool MappingPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kRgbd; }
 
-std::unique_ptr<FrameProcessor> MappingPresenter::CreateProcessor(const SourceInfo& info) {
+std::unique_ptr<Pipeline> MappingPresenter::CreateProcessor(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
   return std::make_unique<MappingProcessor>(info, recalibrations_);
 }
 

@@ -47,7 +47,7 @@ class MobilityProcessor : public FrameProcessor {
     return mapper_.Configure(parsed);
   }
 
-  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
     auto result = std::make_shared<MobilityViewResult>();
     result->stamp = StampOf(frame);
     MobilityInput input;
@@ -94,8 +94,8 @@ class MobilityProcessor : public FrameProcessor {
     return result;
   }
 
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
-    return Process(frame);
+  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
+    return ProcessFrame(frame);
   }
   void Reset() override {}
 
@@ -118,7 +118,8 @@ bool MobilityPresenter::Accepts(SourceKind kind) const {
   return kind == SourceKind::kRgbd || kind == SourceKind::kCloud;
 }
 
-std::unique_ptr<FrameProcessor> MobilityPresenter::CreateProcessor(const SourceInfo& info) {
+std::unique_ptr<Pipeline> MobilityPresenter::CreateProcessor(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
   return std::make_unique<MobilityProcessor>(info);
 }
 

@@ -98,7 +98,7 @@ class MonoSlamProcessor : public FrameProcessor {
     return Status::Ok();
   }
 
-  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
     auto result = std::make_shared<MonoViewResult>();
     result->stamp = StampOf(frame);
     MonoFrame mono;
@@ -140,8 +140,8 @@ class MonoSlamProcessor : public FrameProcessor {
     return result;
   }
 
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
-    return Process(frame);  // SLAM state advances; a still frame simply tracks again.
+  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
+    return ProcessFrame(frame);  // SLAM state advances; a still frame simply tracks again.
   }
 
   void Reset() override {
@@ -227,7 +227,8 @@ bool MonoSlamPresenter::Accepts(SourceKind kind) const {
   return kind == SourceKind::kMono || kind == SourceKind::kStereo;
 }
 
-std::unique_ptr<FrameProcessor> MonoSlamPresenter::CreateProcessor(const SourceInfo& info) {
+std::unique_ptr<Pipeline> MonoSlamPresenter::CreateProcessor(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
   PinholeCamera camera;
   if (info.camera) {
     camera = *info.camera;

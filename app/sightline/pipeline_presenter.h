@@ -11,6 +11,7 @@
 #include "app/sightline/playback_result.h"
 #include "core/io/source.h"
 #include "core/options/option_set.h"
+#include "core/pipeline/pipeline_registry.h"
 
 class QMainWindow;
 
@@ -22,7 +23,14 @@ class PipelinePresenter : public QObject {
 
  public:
   using QObject::QObject;
+  // A presenter of the registry's pipeline `info`: its options, kinds and object come from
+  // there, so the GUI runs exactly what `sightline-cli run` runs.
+  explicit PipelinePresenter(PipelineInfo info, QObject* parent = nullptr)
+      : QObject(parent), info_(std::move(info)) {}
   ~PipelinePresenter() override = default;
+
+  // The registry's entry (empty name for a presenter made without one).
+  const PipelineInfo& info() const { return info_; }
 
   // Menu title in English, marked with QT_TR_NOOP so lupdate files it under the presenter's
   // class, e.g. "Indoor mapping". `sightline --pipeline WORD` matches it in any language.
@@ -32,12 +40,17 @@ class PipelinePresenter : public QObject {
     return QCoreApplication::translate(metaObject()->className(), TitleSource());
   }
   // Declares the pipeline's options (its Describe() tables) into the window's option set.
-  virtual Status DeclareOptions(OptionSet* options) const = 0;
+  virtual Status DeclareOptions(OptionSet* options) const {
+    return info_.declare_options ? info_.declare_options(options) : Status::Ok();
+  }
   // Whether the pipeline can run on frames of this kind.
-  virtual bool Accepts(SourceKind kind) const = 0;
-  // A processor for an opened source, or nullptr when the source lacks what it needs (then
+  virtual bool Accepts(SourceKind kind) const { return info_.Accepts(kind); }
+  // The pipeline object for an opened source (its info and ground truth), or nullptr when the source lacks what it needs (then
   // Message says why).
-  virtual std::unique_ptr<FrameProcessor> CreateProcessor(const SourceInfo& info) = 0;
+  virtual std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) {
+    if (!info_.create || !info_.Accepts(source.info.kind)) return nullptr;
+    return info_.create();
+  }
   // Adds the pipeline's views to the window / removes them again.
   virtual void Attach(QMainWindow* window) = 0;
   virtual void Detach() = 0;
@@ -47,6 +60,9 @@ class PipelinePresenter : public QObject {
  signals:
   // Something the user should read in the log (severity 0 info, 1 warning, 2 error).
   void Message(int severity, const QString& text);
+
+ private:
+  PipelineInfo info_;
 };
 
 }  // namespace sightline

@@ -126,10 +126,19 @@ void PlaybackController::SetProcessorFactory(ProcessorFactory factory, const Opt
 }
 
 void PlaybackController::RebuildProcessor() {
-  std::unique_ptr<FrameProcessor> processor;
-  if (processor_factory_ && info_) processor = processor_factory_(*info_);
+  std::unique_ptr<Pipeline> processor;
+  PipelineSource source;
+  if (info_) {
+    source.info = *info_;
+    if (const Trajectory* gt = ground_truth(); gt != nullptr && !gt->empty()) {
+      source.ground_truth = std::make_shared<const Trajectory>(*gt);
+    }
+  }
+  if (processor_factory_ && info_) processor = processor_factory_(source);
   std::lock_guard<std::mutex> lock(processor_mutex_);
   processor_ = std::move(processor);
+  processor_source_ = std::move(source);
+  processor_opened_ = false;
   processor_options_dirty_ = true;
   last_processed_id_ = -1;
 }
@@ -163,19 +172,33 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
   if (processor_options_dirty_) {
     processor_options_dirty_ = false;
     const Status configured = processor_->Configure(processor_options_);
-    if (!configured.ok()) {
-      auto failed = std::make_shared<PipelineFrameResult>();
-      failed->stamp = StampOf(frame);
-      failed->status = configured;
-      return failed;
-    }
+    if (!configured.ok()) return FailedResult(frame, configured);
+  }
+  if (!processor_opened_) {
+    const Status opened = processor_->Open(processor_source_);
+    if (!opened.ok()) return FailedResult(frame, opened);
+    processor_opened_ = true;
   }
   const int64_t id = StampOf(frame).sequence_id;
-  if (replay) return processor_->Reprocess(frame);
-  // A seek or a loop breaks the sequence: the pipeline starts over.
-  if (last_processed_id_ >= 0 && id != last_processed_id_ + 1) processor_->Reset();
-  last_processed_id_ = id;
-  return processor_->Process(frame);
+  StatusOr<std::shared_ptr<const PipelineResult>> result = Internal("not run");
+  if (replay) {
+    result = processor_->Reprocess(frame);
+  } else {
+    // A seek or a loop breaks the sequence: the pipeline starts over.
+    if (last_processed_id_ >= 0 && id != last_processed_id_ + 1) processor_->Reset();
+    last_processed_id_ = id;
+    result = processor_->Process(frame);
+  }
+  if (!result.ok()) return FailedResult(frame, result.status());
+  return *result;
+}
+
+std::shared_ptr<const PipelineFrameResult> PlaybackController::FailedResult(const Frame& frame,
+                                                                            Status status) {
+  auto failed = std::make_shared<PipelineFrameResult>();
+  failed->stamp = StampOf(frame);
+  failed->status = std::move(status);
+  return failed;
 }
 
 void PlaybackController::StartWorker(std::unique_ptr<Player> player) {

@@ -49,8 +49,8 @@ class PlaybackController : public QObject {
   // New view options, applied to the next frame and to the current one at once.
   void SetViewOptions(const ViewOptions& options);
 
-  // Makes a pipeline's processor for an opened source (its calibration and folder).
-  using ProcessorFactory = std::function<std::unique_ptr<FrameProcessor>(const SourceInfo& info)>;
+  // Makes a pipeline's object for an opened source (its calibration, folder and ground truth).
+  using ProcessorFactory = std::function<std::unique_ptr<Pipeline>(const PipelineSource& source)>;
   // Runs a pipeline on every frame from now on (nullptr: none). Also made anew on each Open.
   void SetProcessorFactory(ProcessorFactory factory, const OptionSet& options);
   // New pipeline options: applied before the next frame, and the current frame is run again.
@@ -89,6 +89,8 @@ class PlaybackController : public QObject {
   void RebuildProcessor();
   // Runs the processor on a frame (any thread; serialised by processor_mutex_).
   std::shared_ptr<const PipelineFrameResult> RunProcessor(const Frame& frame, bool replay);
+  // A result that says why a frame gave none.
+  static std::shared_ptr<const PipelineFrameResult> FailedResult(const Frame& frame, Status status);
   // Keeps a background task's future so the destructor can wait for it.
   void Track(QFuture<void> future);
 
@@ -104,7 +106,9 @@ class PlaybackController : public QObject {
   ProcessorFactory processor_factory_;  // GUI thread only.
 
   std::mutex processor_mutex_;  // Guards the processor and its bookkeeping.
-  std::unique_ptr<FrameProcessor> processor_;
+  std::unique_ptr<Pipeline> processor_;
+  PipelineSource processor_source_;  // What processor_ is opened on.
+  bool processor_opened_ = false;
   OptionSet processor_options_;
   bool processor_options_dirty_ = false;
   int64_t last_processed_id_ = -1;

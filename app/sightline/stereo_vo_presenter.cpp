@@ -43,7 +43,7 @@ class StereoVoProcessor : public FrameProcessor {
     return Status::Ok();
   }
 
-  std::shared_ptr<const PipelineFrameResult> Process(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
     auto result = std::make_shared<StereoViewResult>();
     result->stamp = StampOf(frame);
     const auto* stereo = std::get_if<StereoFrame>(&frame);
@@ -73,9 +73,9 @@ class StereoVoProcessor : public FrameProcessor {
   }
 
   // Odometry integrates motion: a re-run restarts it from the current frame.
-  std::shared_ptr<const PipelineFrameResult> Reprocess(const Frame& frame) override {
+  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
     Reset();
-    return Process(frame);
+    return ProcessFrame(frame);
   }
 
   void Reset() override {
@@ -118,7 +118,8 @@ Status StereoVoPresenter::DeclareOptions(OptionSet* options) const {
 
 bool StereoVoPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kStereo; }
 
-std::unique_ptr<FrameProcessor> StereoVoPresenter::CreateProcessor(const SourceInfo& info) {
+std::unique_ptr<Pipeline> StereoVoPresenter::CreateProcessor(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
   // The recording's ground truth, if any, to draw beside the estimate.
   std::shared_ptr<const Trajectory> ground_truth;
   if (info.has_ground_truth && !info.live) {

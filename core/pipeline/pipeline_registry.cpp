@@ -1,6 +1,7 @@
 #include "core/pipeline/pipeline_registry.h"
 
 #include <filesystem>
+#include <optional>
 
 #include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/inspect_pipeline.h"
@@ -8,11 +9,101 @@
 #include "core/pipeline/mobility_pipeline.h"
 #include "core/pipeline/mono_slam_pipeline.h"
 #include "core/pipeline/stereo_vo_pipeline.h"
+#include "core/sensors/driver_registry.h"
 
 namespace sightline {
 
+bool PipelineInfo::Accepts(SourceKind kind) const {
+  if (accepts.empty()) return true;
+  for (SourceKind k : accepts) {
+    if (k == kind) return true;
+  }
+  return false;
+}
+
+namespace {
+
+// The timing stage of an "ms" statistic: "vo/rectify_ms" -> "rectify".
+std::string TimingStage(const std::string& key) {
+  std::string stage = key.substr(key.find('/') + 1);
+  if (stage.size() > 3 && stage.compare(stage.size() - 3, 3, "_ms") == 0) {
+    stage.resize(stage.size() - 3);
+  }
+  return stage;
+}
+
+// Opens `path` as the first kind `info` accepts that the recording has.
+StatusOr<std::unique_ptr<Source>> OpenForPipeline(const PipelineInfo& info, const std::string& path,
+                                                  const OptionSet& options) {
+  if (IsSensorUri(path)) return OpenSource(path, options);
+  if (info.accepts.empty()) return OpenSource(path, options);
+  std::optional<Status> first_error;
+  for (SourceKind kind : info.accepts) {
+    StatusOr<std::unique_ptr<Source>> opened = OpenDataset(path, kind);
+    if (opened.ok()) return opened;
+    if (!first_error) first_error = opened.status();
+  }
+  return *first_error;
+}
+
+}  // namespace
+
+StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context) {
+  if (!info.create) return Internal("pipeline '" + info.name + "' has no object to run");
+  StatusOr<std::unique_ptr<Source>> opened =
+      OpenForPipeline(info, context.dataset_path, context.options);
+  if (!opened.ok()) return opened.status();
+  Source& source = **opened;
+  if (!info.Accepts(source.info().kind)) {
+    return InvalidArgument(context.dataset_path + " is a " + SourceKindName(source.info().kind) +
+                           " source; " + info.name + " does not run on it");
+  }
+  std::unique_ptr<Pipeline> pipeline = info.create();
+  SIGHTLINE_RETURN_IF_ERROR(pipeline->Configure(context.options));
+  SIGHTLINE_RETURN_IF_ERROR(pipeline->Open(PipelineSource::From(source)));
+  const StatisticTable& table = pipeline->Statistics();
+
+  int64_t total = source.info().frame_count;
+  const int64_t limit = pipeline->FrameLimit();
+  if (limit > 0 && (total < 0 || total > limit)) total = limit;
+  int64_t processed = 0;
+  for (int64_t index = 0; total < 0 || index < total; ++index) {
+    if (context.Cancelled()) {
+      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
+    }
+    const double read_start = HostTimeS();
+    const Status grabbed = source.Grab();
+    if (grabbed.code() == StatusCode::kOutOfRange) break;
+    if (!grabbed.ok()) return grabbed;
+    if (!pipeline->Wants(index)) continue;  // Grabbed but not decoded.
+    StatusOr<Frame> frame = source.Retrieve();
+    if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
+    const double process_start = HostTimeS();
+    StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline->Process(*frame);
+    const double end = HostTimeS();
+    if (!result.ok()) return result.status();
+    ++processed;
+    if (context.timing != nullptr) {
+      context.timing->Add("read", (process_start - read_start) * 1000.0);
+      for (const auto& [key, value] : (*result)->stats) {
+        const StatisticInfo* stat = FindStatistic(table, key);
+        if (stat != nullptr && stat->unit == "ms") context.timing->Add(TimingStage(key), value);
+      }
+      context.timing->Add("total", (end - process_start) * 1000.0);
+    }
+    if (context.progress) context.progress(index + 1, total);
+  }
+  if (processed == 0) return OutOfRange(context.dataset_path + " gave no frame to process");
+  StatusOr<RunResult> result = pipeline->Finish(context.out_dir);
+  if (!result.ok()) return result.status();
+  if (result->dataset_format.empty()) result->dataset_format = source.info().format;
+  return result;
+}
+
 Status PipelineRegistry::Register(PipelineInfo info) {
-  if (info.name.empty() || !info.run) return InvalidArgument("a pipeline needs a name and a run");
+  if (info.name.empty() || (!info.run && !info.create)) {
+    return InvalidArgument("a pipeline needs a name and an object or a run");
+  }
   if (Find(info.name) != nullptr) {
     return InvalidArgument("pipeline '" + info.name + "' is registered twice");
   }
@@ -70,7 +161,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
 
   RunReport report;
   const double start_s = HostTimeS();
-  StatusOr<RunResult> result = pipeline->run(context);
+  StatusOr<RunResult> result =
+      pipeline->create ? RunHeadless(*pipeline, context) : pipeline->run(context);
   if (!result.ok()) return result.status();
   report.result = std::move(*result);
   const double wall_s = HostTimeS() - start_s;

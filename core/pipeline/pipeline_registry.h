@@ -12,6 +12,7 @@
 #include "core/common/timing.h"
 #include "core/options/option_set.h"
 #include "core/pipeline/metrics.h"
+#include "core/pipeline/pipeline.h"
 
 namespace sightline {
 
@@ -30,22 +31,31 @@ struct RunContext {
   bool Cancelled() const { return cancel != nullptr && cancel->load(); }
 };
 
-// What a headless pipeline run returns besides its own output files.
-struct RunResult {
-  std::string dataset_format;  // As the source reported it.
-  int64_t frames = 0;
-  std::vector<std::pair<std::string, double>> accuracy;  // Keys as documented per pipeline.
-  std::vector<std::pair<std::string, double>> counts;
-  std::vector<std::string> outputs;  // Files written, relative to out_dir.
+// One pipeline: its name, its options, the kinds of source it takes and its object. Every
+// front end (CLI, GUI, node) takes pipelines from the registry and runs `create()`'s object.
+struct PipelineInfo {
+  std::string name;     // e.g. "mapping", "stereo-vo": the CLI's word and the profiles' name.
+  std::string title;    // English title for menus, e.g. "Indoor mapping".
+  std::string summary;  // One line for `--help`: what it does.
+  // Kinds of source it runs on, the preferred first (a recording with several sensors opens
+  // the first of these it has). Empty: any kind.
+  std::vector<SourceKind> accepts;
+  std::function<Status(OptionSet*)> declare_options;
+  // The pipeline object, run by RunHeadless and by the GUI's worker.
+  std::function<std::unique_ptr<Pipeline>()> create;
+  // A headless run of its own, for a pipeline not yet an object (`create` is preferred).
+  std::function<StatusOr<RunResult>(const RunContext&)> run;
+
+  // Whether it runs on sources of this kind.
+  bool Accepts(SourceKind kind) const;
 };
 
-// One pipeline: its name, its options and its headless run.
-struct PipelineInfo {
-  std::string name;     // e.g. "mapping", "stereo-vo".
-  std::string summary;  // One line for `--help`.
-  std::function<Status(OptionSet*)> declare_options;
-  std::function<StatusOr<RunResult>(const RunContext&)> run;
-};
+// The one headless loop: opens context.dataset_path (a dataset or a sensor URI) as the kind the
+// pipeline prefers, configures and opens the pipeline, feeds it every wanted frame, adds the
+// per-frame "read" and "total" timing and every "ms" statistic to context.timing, and calls
+// Finish(context.out_dir). Stops at the end of the source, at options' frame limits applied by
+// the pipeline, on cancel (an error saying after how many frames), or on a pipeline error.
+StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context);
 
 // A set of pipelines, built explicitly (no global registration).
 class PipelineRegistry {
