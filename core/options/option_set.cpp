@@ -134,9 +134,10 @@ Status OptionSet::LoadYaml(const std::string& path) {
 }
 
 std::string OptionSet::ToYaml() const {
-  YAML::Emitter out;
-  out << YAML::BeginMap;
-  // Specs are grouped by their dotted path; emit nested maps following declaration order.
+  // Written by hand rather than by YAML::Emitter, whose comments land after the previous key:
+  // here each description stands on its own key's line. Scalars are still quoted by the
+  // emitter so that every value reads back as written.
+  std::string text;
   std::vector<std::string> open;  // Currently open path components.
   for (const OptionSpec& spec : specs_) {
     std::vector<std::string> parts;
@@ -146,25 +147,23 @@ std::string OptionSet::ToYaml() const {
     while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common]) {
       ++common;
     }
-    while (open.size() > common) {
-      out << YAML::EndMap;
-      open.pop_back();
-    }
+    open.resize(common);
     for (size_t i = common; i + 1 < parts.size(); ++i) {
-      out << YAML::Key << parts[i] << YAML::Value << YAML::BeginMap;
+      text += std::string(2 * open.size(), ' ') + parts[i] + ":\n";
       open.push_back(parts[i]);
     }
+    YAML::Emitter scalar;
+    scalar << FormatOptionValue(values_.at(spec.key));
     std::string comment = spec.description;
     if (!spec.unit.empty()) comment += " [" + spec.unit + "]";
-    out << YAML::Comment(comment);
-    out << YAML::Key << parts.back() << YAML::Value << FormatOptionValue(values_.at(spec.key));
+    for (char& c : comment) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    text += std::string(2 * open.size(), ' ') + parts.back() + ": " + scalar.c_str();
+    if (!comment.empty()) text += "  # " + comment;
+    text += "\n";
   }
-  while (!open.empty()) {
-    out << YAML::EndMap;
-    open.pop_back();
-  }
-  out << YAML::EndMap;
-  return std::string(out.c_str()) + "\n";
+  return text;
 }
 
 Status OptionSet::SaveYaml(const std::string& path) const {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "tests/support/test_data.h"
 
@@ -74,6 +75,23 @@ TEST(OptionSet, YamlRoundTrip) {
   for (const OptionSpec& spec : set.specs()) {
     EXPECT_EQ(FormatOptionValue(*loaded.Get(spec.key)), FormatOptionValue(*set.Get(spec.key)))
         << spec.key;
+  }
+}
+
+TEST(OptionSet, YamlCommentStandsOnItsOwnKeysLine) {
+  OptionSet set = MakeSet();
+  ASSERT_TRUE(set.Set("mapping.extractor", std::string("split_merge")).ok());
+  const std::string yaml = set.ToYaml();
+  EXPECT_NE(yaml.find("  cell_size_m: 0.025  # Cell size. [m]\n"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("  extractor: split_merge  # Extractor.\n"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("    max_iterations: 250  # Iterations.\n"), std::string::npos) << yaml;
+  // No line holds a comment alone or a comment belonging to another key.
+  std::stringstream lines(yaml);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t hash = line.find('#');
+    if (hash == std::string::npos) continue;
+    EXPECT_NE(line.find(':'), std::string::npos) << "comment without a key: " << line;
+    EXPECT_LT(line.find(':'), hash) << line;
   }
 }
 
