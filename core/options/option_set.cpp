@@ -133,6 +133,16 @@ Status OptionSet::LoadYaml(const std::string& path) {
   return LoadYamlText(text.str(), path);
 }
 
+OptionSet OptionSet::Without(const std::string& prefix) const {
+  OptionSet subset;
+  for (const OptionSpec& spec : specs_) {
+    if (spec.key.compare(0, prefix.size(), prefix) == 0) continue;
+    subset.specs_.push_back(spec);
+    subset.values_[spec.key] = values_.at(spec.key);
+  }
+  return subset;
+}
+
 std::string OptionSet::ToYaml() const {
   // Written by hand rather than by YAML::Emitter, whose comments land after the previous key:
   // here each description stands on its own key's line. Scalars are still quoted by the
