@@ -155,3 +155,83 @@ TEST(OptionSet, ResetRestoresDefaults) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// Hostile profiles: each is refused with a message naming the file and the cause, quickly and
+// without allocating more than the file's size.
+class HostileProfile : public ::testing::Test {
+ protected:
+  Status Load(const std::string& text) {
+    const std::string path = testing::TempDir("options") + "/hostile.yaml";
+    std::ofstream(path, std::ios::binary) << text;
+    path_ = path;
+    return set_.LoadYaml(path);
+  }
+  OptionSet set_ = MakeSet();
+  std::string path_;
+};
+
+TEST_F(HostileProfile, SequenceOrMapAsKeyIsRefused) {
+  Status s = Load("[a, b]: 1\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("line 1"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("key must be a word"), std::string::npos) << s.message();
+  s = Load("mapping:\n  {x: 1}: 2\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("line 2"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, NestedAliasesDoNotExpand) {
+  // Nine levels of maps holding ten aliases of the level below would be 10^10 values.
+  auto level = [](int i) {
+    std::string map = "a" + std::to_string(i) + ": &a" + std::to_string(i) + " {";
+    for (int k = 0; k < 10; ++k) {
+      map += (k ? ", k" : "k") + std::to_string(k) + ": " +
+             (i == 0 ? std::string("1") : "*a" + std::to_string(i - 1));
+    }
+    return map + "}\n";
+  };
+  std::string text;
+  for (int i = 0; i <= 9; ++i) text += level(i);
+  const Status s = Load(text);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.code(), StatusCode::kParseError) << s.ToString();
+  EXPECT_NE(s.message().find("more than 10000 values"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, DeepNestingIsRefusedBeforeParsing) {
+  const Status s = Load("mapping: " + std::string(100000, '[') + "\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("nest deeper"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, DuplicateKeysAreRefusedNamingBothLines) {
+  Status s = Load("mapping:\n  cell_size_m: 0.05\n  cell_size_m: 0.07\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("given twice"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("line 2"), std::string::npos) << s.message();
+  s = Load("mapping:\n  cell_size_m: 0.05\nmapping.cell_size_m: 0.07\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("mapping.cell_size_m"), std::string::npos) << s.message();
+  EXPECT_DOUBLE_EQ(std::get<double>(*set_.Get("mapping.cell_size_m")), 0.025);
+}
+
+TEST_F(HostileProfile, FolderDeviceAndHugeFilesSayWhatTheyAre) {
+  Status s = set_.LoadYaml(testing::TempDir("options"));
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("is a folder"), std::string::npos) << s.message();
+  s = set_.LoadYaml("/dev/zero");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("not a regular file"), std::string::npos) << s.message();
+  s = set_.LoadYaml(testing::TempDir("options") + "/missing.yaml");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("no such file"), std::string::npos) << s.message();
+  s = Load("# " + std::string(2 << 20, 'x') + "\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("bytes"), std::string::npos) << s.message();
+}
+
+}  // namespace
+}  // namespace sightline
