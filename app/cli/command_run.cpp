@@ -28,6 +28,10 @@ int RunCommand(const std::vector<std::string>& args) {
       "--format kitti (= --set stereo.output_format=kitti) writes trajectory.txt as KITTI poses.\n"
       "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
       "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol).\n"
+      "\nExit codes: 0 results written; 1 an error (the line on stderr says which file,\n"
+      "field or option); 3 the run completed but achieved nothing (no frame tracked, never\n"
+      "initialised, every frame gated): its first line says why and metrics.json has\n"
+      "\"failure\".\n"
       "\nPipelines:\n";
   for (const PipelineInfo& p : registry.pipelines())
     help += "  " + p.name + "  " + p.summary + "\n";
@@ -73,15 +77,21 @@ int RunCommand(const std::vector<std::string>& args) {
   if (!report.ok()) return Fail("run " + request.pipeline + ": " + report.status().ToString());
 
   const RunMetrics& m = report->metrics;
+  if (!report->result.nothing_achieved.empty()) {
+    std::fprintf(stderr, "sightline-cli: run %s achieved nothing: %s (files in %s)\n",
+                 request.pipeline.c_str(), report->result.nothing_achieved.c_str(),
+                 request.out_dir.c_str());
+  }
   if (!parsed->Has("--quiet")) {
     std::printf("%s on %s (%s): %lld frames\n", m.pipeline.c_str(), m.dataset.c_str(),
                 report->result.dataset_format.c_str(), static_cast<long long>(m.frames));
     std::fputs(FormatTimingTable(m.timing_ms).c_str(), stdout);
     for (const auto& [key, value] : m.accuracy)
       std::printf("accuracy.%s = %.6g\n", key.c_str(), value);
+    for (const std::string& note : report->result.notes) std::printf("note: %s\n", note.c_str());
     std::printf("wrote %s\n", report->metrics_path.c_str());
   }
-  return 0;
+  return report->result.nothing_achieved.empty() ? 0 : kExitNothingAchieved;
 }
 
 }  // namespace sightline::cli

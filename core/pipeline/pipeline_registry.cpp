@@ -124,6 +124,7 @@ RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& datase
   metrics.counts.emplace_back("wall_time_s", wall_s);
   if (wall_s > 0) metrics.counts.emplace_back("frames_per_second", result.frames / wall_s);
   metrics.options = options;
+  metrics.failure = result.nothing_achieved;
   return metrics;
 }
 
