@@ -11,7 +11,8 @@ namespace sightline {
 
 std::vector<PipelinePresenter*> MakeBuiltinPresenters() {
   std::vector<PipelinePresenter*> presenters;
-  for (const PipelineInfo& info : BuiltinPipelines().pipelines()) {
+  const PipelineRegistry registry = BuiltinPipelines();
+  for (const PipelineInfo& info : registry.pipelines()) {
     if (info.name == "mapping") {
       presenters.push_back(new MappingPresenter());
     } else if (info.name == "stereo-vo") {

@@ -141,19 +141,19 @@ TEST(PcdSourceTest, GarbageFileIsParseErrorNamingTheFile) {
   EXPECT_THAT(status.message(), HasSubstr("broken.pcd"));
 }
 
-TEST(PcdSourceTest, TruncatedDataIsParseErrorAtRetrieve) {
+TEST(PcdSourceTest, TruncatedCompressedDataIsParseErrorWhenOpening) {
   SIGHTLINE_REQUIRE_DATA(office, "pcl_clouds/office1.pcd");
   const std::string dir = TempDir("pcd_truncated");
   std::ifstream in(office, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(bytes.size(), 100000u);
   WriteText(dir + "/cut.pcd", bytes.substr(0, bytes.size() / 3));
-  PcdSource source(dir + "/cut.pcd");
-  ASSERT_TRUE(source.Open().ok());  // The header is intact.
-  ASSERT_TRUE(source.Grab().ok());
-  const Status status = source.Retrieve().status();
+  // The compressed block's size, in front of it, no longer fits the file: refused at once.
+  const Status status = PcdSource(dir + "/cut.pcd").Open();
   EXPECT_EQ(status.code(), StatusCode::kParseError);
   EXPECT_THAT(status.message(), HasSubstr("cut.pcd"));
+  EXPECT_THAT(status.message(), HasSubstr("does not fit in the file"));
+  EXPECT_EQ(ReadPcdFile(dir + "/cut.pcd").status().code(), StatusCode::kParseError);
 }
 
 TEST(PcdSourceTest, TruncatedBinaryIsParseErrorWhenOpening) {
@@ -219,7 +219,10 @@ TEST_F(HostilePcd, CompressedHeaderWithAZeroBodyIsRefused) {
       "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH 64\n"
       "HEIGHT 48\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3072\nDATA binary_compressed\n";
   WriteText(dir_ + "/zeros.pcd", text + std::string(308, '\0'));
-  ExpectRefused(dir_ + "/zeros.pcd", "binary_compressed block of 0 bytes");
+  ExpectRefused(dir_ + "/zeros.pcd", "cannot fit in 308 bytes");
+  // A body long enough to pass the size bound still declares an empty block.
+  WriteText(dir_ + "/zeros_long.pcd", text + std::string(400, '\0'));
+  ExpectRefused(dir_ + "/zeros_long.pcd", "binary_compressed block of 0 bytes");
 }
 
 TEST_F(HostilePcd, RealCompressedCloudWithTenTimesThePointsIsRefused) {

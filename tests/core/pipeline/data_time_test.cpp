@@ -203,7 +203,8 @@ INSTANTIATE_TEST_SUITE_P(EveryPipeline, DataTime, ::testing::ValuesIn(Cases()),
                          });
 
 TEST(DataTimeCases, CoverTheRegistry) {
-  for (const PipelineInfo& info : BuiltinPipelines().pipelines()) {
+  const PipelineRegistry registry = BuiltinPipelines();
+  for (const PipelineInfo& info : registry.pipelines()) {
     bool found = false;
     for (const Case& c : Cases()) found = found || c.pipeline == info.name;
     EXPECT_TRUE(found) << info.name << " has no data-time case";
