@@ -139,6 +139,47 @@ class StereoOdometry {
     cv::Point2f keyframe_left, keyframe_right;  // ... there.
     TrackAnchor anchor;                         // What its position is aligned against.
   };
+  struct FrameState;  // One frame's working data, passed between the steps of Process().
+
+  // The steps of Process(), in order (stereo_odometry.cpp).
+  // An unusable frame: the gate's motion; the state stays at the last good frame.
+  void RejectInput(const std::string& why, FrameState* s);
+  // Tracks the features into the new left image (KLT from a constant-motion prediction, then
+  // anchor alignment); fills s->points, guesses, source and alignment.
+  void TrackFeatures(FrameState* s);
+  // Where the features should land under constant motion (empty when there is no motion
+  // history); returns the predicted current_from_previous.
+  Eigen::Isometry3d PredictMotion(double dt, std::vector<cv::Point2f>* predicted,
+                                  std::vector<float>* predicted_disparity) const;
+  // Refines the tracked positions against their anchors; fills s->alignment.
+  void AlignToAnchors(const Eigen::Isometry3d& predicted_motion,
+                      const std::vector<unsigned char>& tracked_ok,
+                      std::vector<cv::Point2f>* tracked, FrameState* s);
+  // Adds new corners where tracks are missing.
+  void DetectFeatures(FrameState* s);
+  // Matches every feature in the right image; fills s->kept and the correspondences.
+  void MatchFeatures(FrameState* s);
+  // The first frame: nothing to measure, the window starts.
+  void StartFirstFrame(FrameState* s);
+  // Measures, gates and applies the motion. False when the frame holds the pose (nothing to
+  // track from) and Process() ends without updating the state.
+  bool EstimateMotion(FrameState* s);
+  // RANSAC and refinement rounds over the correspondences; sets s->inliers.
+  MotionCandidate MeasureMotion(FrameState* s);
+  // Re-estimates *world_from_current against the keyframe; returns whether a new keyframe is due.
+  bool AlignToKeyframe(FrameState* s, Eigen::Isometry3d* world_from_current);
+  // Sliding-window adjustment of *world_from_current.
+  void AdjustWindow(FrameState* s, Eigen::Isometry3d* world_from_current);
+  // The kept features with their roles, for views.
+  void PublishFeatures(FrameState* s) const;
+  // Feeds the disparity offset estimator with the kept features.
+  void ObserveDisparityOffset(const FrameState& s);
+  // Anchors new tracks and those whose anchor failed or expires; keeps the frame's image.
+  void RenewAnchors(const cv::Mat& left_image);
+  // Makes this frame the keyframe when none is set.
+  void SetKeyframeIfNeeded();
+  // Records the total time and hands out the result.
+  std::shared_ptr<const StereoOdometryResult> FinishFrame(FrameState* s) const;
 
   StereoOdometryOptions options_;
   Rectifier rectifier_;
