@@ -126,7 +126,7 @@ Status StereoVoPipeline::Configure(const StereoOdometryOptions& odometry,
   const StereoVoRunOptions previous_run = run_options_;
   odometry_options_ = odometry;
   run_options_ = run;
-  if (!rig_) return Status::Ok();
+  if (!source_info_) return Status::Ok();
   // Opened: the odometry starts over with the new options (the old one stays on an error).
   const Status started = StartOdometry();
   if (!started.ok()) {
@@ -142,22 +142,27 @@ Status StereoVoPipeline::Open(const PipelineSource& source) {
     return InvalidArgument(info.path + " is a " + SourceKindName(info.kind) +
                            " source; stereo-vo needs stereo pairs");
   }
-  StatusOr<StereoRig> rig = RigFor(info, run_options_.calibration_file);
-  if (!rig.ok()) return rig.status();
-  rig_ = *rig;
-  source_path_ = info.path;
+  source_info_ = info;
   ground_truth_.reset();
   if (source.ground_truth != nullptr && !source.ground_truth->empty()) {
     ground_truth_ = source.ground_truth;
   }
   run_ = StereoVoRun();
   run_.dataset_format = info.format;
-  return StartOdometry();
+  const Status started = StartOdometry();  // Also starts the run.
+  if (!started.ok()) {
+    source_info_.reset();
+    odometry_.reset();
+  }
+  return started;
 }
 
 Status StereoVoPipeline::StartOdometry() {
+  // The rig is looked up again each time, so a changed stereo.calibration_file applies at once.
+  StatusOr<StereoRig> rig = RigFor(*source_info_, run_options_.calibration_file);
+  if (!rig.ok()) return rig.status();
   auto odometry = std::make_unique<StereoOdometry>(odometry_options_);
-  SIGHTLINE_RETURN_IF_ERROR(odometry->Configure(*rig_).WithContext(source_path_));
+  SIGHTLINE_RETURN_IF_ERROR(odometry->Configure(*rig).WithContext(source_info_->path));
   odometry_ = std::move(odometry);
   Reset();
   return Status::Ok();
@@ -186,7 +191,8 @@ std::optional<Eigen::Isometry3d> StereoVoPipeline::GroundTruthAt(double time_s) 
 StatusOr<std::shared_ptr<const PipelineResult>> StereoVoPipeline::Process(const Frame& frame) {
   if (!odometry_) return FailedPrecondition("stereo-vo: a frame before the source was opened");
   const StereoFrame* stereo = std::get_if<StereoFrame>(&frame);
-  if (stereo == nullptr) return InvalidArgument(source_path_ + " does not give stereo frames");
+  if (stereo == nullptr)
+    return InvalidArgument(source_info_->path + " does not give stereo frames");
   TimingStats ran;
   StatusOr<std::shared_ptr<const StereoOdometryResult>> odometry =
       odometry_->Process(*stereo, &ran);

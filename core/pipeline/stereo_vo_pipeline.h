@@ -68,15 +68,15 @@ class StereoVoPipeline : public Pipeline {
   const StereoVoRun& run() const { return run_; }
 
  private:
-  // Builds the odometry for the opened rig with the current options.
+  // Builds the odometry for the opened source's rig (or stereo.calibration_file's) with the
+  // current options, and starts the run over.
   Status StartOdometry();
   // The ground-truth pose of a frame at `time_s`, relative to the run's first matched one.
   std::optional<Eigen::Isometry3d> GroundTruthAt(double time_s);
 
   StereoOdometryOptions odometry_options_;
   StereoVoRunOptions run_options_;
-  std::optional<StereoRig> rig_;  // Set by Open.
-  std::string source_path_;
+  std::optional<SourceInfo> source_info_;  // Set by Open.
   std::shared_ptr<const Trajectory> ground_truth_;
   std::unique_ptr<StereoOdometry> odometry_;
   std::optional<Eigen::Isometry3d> first_ground_truth_;  // world_from_camera of the first match.

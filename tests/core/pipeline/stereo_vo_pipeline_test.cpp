@@ -109,7 +109,8 @@ struct Driven {
 };
 
 Driven Drive(const std::string& dir, const PipelineSource& source,
-             const std::vector<std::string>& overrides, int frames) {
+             const std::vector<std::string>& overrides, int frames,
+             const std::vector<std::string>& after_open = {}) {
   Driven out;
   const PipelineInfo& info = *BuiltinPipelines().Find("stereo-vo");
   OptionSet options;
@@ -118,6 +119,9 @@ Driven Drive(const std::string& dir, const PipelineSource& source,
   std::unique_ptr<Pipeline> pipeline = info.create();
   out.status = pipeline->Configure(options);
   if (out.status.ok()) out.status = pipeline->Open(source);
+  // Options changed once the source is open, as the GUI's parameter panel does.
+  for (const std::string& o : after_open) EXPECT_TRUE(options.ApplyOverride(o).ok()) << o;
+  if (out.status.ok() && !after_open.empty()) out.status = pipeline->Configure(options);
   if (!out.status.ok()) return out;
   StatusOr<std::unique_ptr<Source>> frames_source = OpenDataset(dir, SourceKind::kStereo);
   EXPECT_TRUE(frames_source.ok());
@@ -180,6 +184,14 @@ TEST(StereoVoPipeline, TheGuiObjectHonoursTheCalibrationFile) {
   ASSERT_EQ(from_file.results.size(), static_cast<size_t>(kFrames));
   EXPECT_NEAR(from_file.Estimate().LengthM(), 2.0 * own.Estimate().LengthM(),
               0.05 * 2.0 * own.Estimate().LengthM());
+
+  // Set while the source is open, the file replaces the source's rig at once.
+  const Driven changed =
+      Drive(kitti, kitti_source, {}, kFrames, {"stereo.calibration_file=" + file});
+  ASSERT_TRUE(changed.status.ok()) << changed.status.ToString();
+  ASSERT_EQ(changed.results.size(), static_cast<size_t>(kFrames));
+  EXPECT_NEAR(changed.Estimate().LengthM(), from_file.Estimate().LengthM(),
+              0.02 * from_file.Estimate().LengthM());
 
   // A file for another image size is refused, naming both sizes.
   StereoRig other = wide;
