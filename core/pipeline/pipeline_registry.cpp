@@ -178,7 +178,7 @@ PipelineRegistry BuiltinPipelines() {
   PipelineRegistry registry;
   Status s = registry.Register(InspectPipeline());
   s = registry.Register(MappingPipeline());
-  s = registry.Register(StereoVoPipeline());
+  s = registry.Register(StereoVoPipelineInfo());
   s = registry.Register(MobilityPipeline());
   s = registry.Register(MonoSlamPipeline());
   s = registry.Register(ButtonPipeline());
