@@ -91,6 +91,12 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
     report.metrics.counts.emplace_back("frames_per_second", report.result.frames / wall_s);
   }
   report.metrics.options = context.options;
+  // The arm server's token is a secret: metrics.json only says that one was set.
+  if (StatusOr<OptionValue> token = report.metrics.options.Get("button.arm.token");
+      token.ok() && !FormatOptionValue(*token).empty()) {
+    (void)report.metrics.options.Set("button.arm.token", std::string("(set, not shown)"),
+                                     "redacted");
+  }
   report.metrics_path = (std::filesystem::path(request.out_dir) / "metrics.json").string();
   SIGHTLINE_RETURN_IF_ERROR(WriteMetricsJson(report.metrics, report.metrics_path));
   return report;
