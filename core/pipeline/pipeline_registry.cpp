@@ -124,6 +124,11 @@ RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& datase
   metrics.counts.emplace_back("wall_time_s", wall_s);
   if (wall_s > 0) metrics.counts.emplace_back("frames_per_second", result.frames / wall_s);
   metrics.options = options;
+  // The arm server's token is a secret: metrics.json only says that one was set.
+  if (StatusOr<OptionValue> token = metrics.options.Get("button.arm.token");
+      token.ok() && !FormatOptionValue(*token).empty()) {
+    (void)metrics.options.Set("button.arm.token", std::string("(set, not shown)"), "redacted");
+  }
   metrics.failure = result.nothing_achieved;
   return metrics;
 }
