@@ -139,7 +139,7 @@ Status MappingPipeline::State::StartChain() {
   record.Clear();
   chain = std::make_unique<MappingFrameProcessor>(options);
   const Status configured = chain->Configure(floor->plane, recording.camera);
-  if (!configured.ok()) chain.reset();
+  if (!configured.ok()) ForgetFloor();  // The next frames calibrate a usable one.
   return configured;
 }
 
@@ -297,7 +297,9 @@ StatusOr<RunResult> MappingPipeline::Finish(const std::string& out_dir) {
     StatusOr<std::shared_ptr<const MappingResult>> mapped = s.CalibrateAndMapPending();
     if (!mapped.ok()) return mapped.status();
   }
-  if (!s.floor) return FailedPrecondition("mapping: no floor calibration yet, nothing to save");
+  if (!s.floor || !s.chain) {
+    return FailedPrecondition("mapping: no floor calibration yet, nothing to save");
+  }
   return FinishMappingRun(s, out_dir);
 }
 
