@@ -7,7 +7,7 @@
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
 #include "core/options/option_set.h"
-#include "core/pipeline/mapping_pipeline.h"
+#include "core/pipeline/floor_calibration.h"
 
 namespace sightline::cli {
 

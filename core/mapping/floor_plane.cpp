@@ -428,4 +428,42 @@ StatusOr<FloorCalibration> ReadFloorCalibration(const std::string& path) {
   return calibration;
 }
 
+void FloorCalibrator::AddDepth(const cv::Mat& depth_m, const PinholeCamera& camera) {
+  AppendDepthPoints(depth_m, camera, estimator_.options().max_depth_m, 2, &points_);
+  ++frames_;
+}
+
+void FloorCalibrator::AddCloud(const std::vector<Eigen::Vector3f>& points) {
+  points_.insert(points_.end(), points.begin(), points.end());
+  ++frames_;
+}
+
+StatusOr<FloorFitResult> FloorCalibrator::Fit() const { return estimator_.Fit(points_); }
+
+StatusOr<FloorCalibration> FloorCalibrator::Calibrate(const std::string& source) const {
+  StatusOr<FloorFitResult> fit = Fit();
+  if (!fit.ok()) return fit.status();
+  FloorCalibration calibration;
+  calibration.plane = fit->plane;
+  calibration.inlier_ratio = fit->inlier_ratio;
+  calibration.frames = frames_;
+  calibration.source = source;
+  return calibration;
+}
+
+void FloorCalibrator::Clear() {
+  points_.clear();
+  frames_ = 0;
+}
+
+std::string DescribeFloorCalibration(const FloorCalibration& calibration) {
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "calibrated from %d frames: camera %.3f m above the floor, pitched %.1f deg "
+                "down, %.0f %% inliers",
+                calibration.frames, calibration.plane.CameraHeightM(),
+                calibration.plane.PitchDownDeg(), 100 * calibration.inlier_ratio);
+  return text;
+}
+
 }  // namespace sightline

@@ -181,10 +181,10 @@ const PipelineInfo* PipelineRegistry::Find(const std::string& name) const {
 
 PipelineRegistry BuiltinPipelines() {
   PipelineRegistry registry;
-  Status s = registry.Register(InspectPipeline());
-  s = registry.Register(MappingPipeline());
+  Status s = registry.Register(InspectPipelineInfo());
+  s = registry.Register(MappingPipelineInfo());
   s = registry.Register(StereoVoPipelineInfo());
-  s = registry.Register(MobilityPipeline());
+  s = registry.Register(MobilityPipelineInfo());
   s = registry.Register(MonoSlamPipeline());
   s = registry.Register(ButtonPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
