@@ -1,12 +1,13 @@
 // Button detection from a tap (the seed's plan phase): outlines of the still frame's edges,
 // each closed by its convex hull, the one that best fits the tap, its region, and SIFT
 // features on it. Two methods:
-//  - multiscale (default): in a window around the tap, contours of the edges at two blurs and
+//  - multiscale (opt-in for now): in a window around the tap, contours of the edges at two blurs
+//  and
 //    two Canny threshold pairs plus Hough circles confirmed by edges along their rim (round
 //    buttons with a thin ring); the region that contains the tap with its centroid nearest
 //    the tap relative to its radius (at most max_centre_offset radii away; size_bias_px favours
 //    the button's outline over a glyph on it), skipping regions that hold other buttons.
-//  - seed: the seed's rule, contours at one scale and the centroid nearest the tap within
+//  - seed (default): the seed's rule, contours at one scale and the centroid nearest the tap within
 //    max_tap_distance_px.
 // No region fits the tap: "no button here", the operator is asked to tap again.
 #pragma once
@@ -24,18 +25,18 @@ namespace sightline {
 // Detector options. Keys "button.detect.*". Pixel sizes refer to the working image, the still
 // frame scaled so its longer side is at most working_size_px.
 struct ButtonDetectorOptions {
-  std::string method = "multiscale";  // multiscale or seed (see the file comment).
-  int working_size_px = 960;          // Longer image side the contours are searched at [px].
-  double blur_sigma_px = 1.2;         // Gaussian blur before edge detection [px].
-  double canny_low = 30;              // Canny lower hysteresis threshold [grey levels].
-  double canny_high = 90;             // Canny upper hysteresis threshold [grey levels].
-  int close_px = 3;                   // Morphological closing of the edge map (0 = none) [px].
-  double min_area_px = 150;           // Smallest region area [px^2].
-  double max_area_fraction = 0.08;    // Largest region area as a fraction of the image.
-  double min_coverage = 0.75;         // Fraction of directions (16 sectors) around a region's
-                                      // centre in which its outline lies.
-  double max_aspect = 3.0;            // Longest / shortest side of the rotated bounding box.
-  double max_tap_distance_px = 35;    // seed: centroid farther from the tap: not this button [px].
+  std::string method = "seed";      // seed or multiscale (see the file comment).
+  int working_size_px = 960;        // Longer image side the contours are searched at [px].
+  double blur_sigma_px = 1.2;       // Gaussian blur before edge detection [px].
+  double canny_low = 30;            // Canny lower hysteresis threshold [grey levels].
+  double canny_high = 90;           // Canny upper hysteresis threshold [grey levels].
+  int close_px = 3;                 // Morphological closing of the edge map (0 = none) [px].
+  double min_area_px = 150;         // Smallest region area [px^2].
+  double max_area_fraction = 0.08;  // Largest region area as a fraction of the image.
+  double min_coverage = 0.75;       // Fraction of directions (16 sectors) around a region's
+                                    // centre in which its outline lies.
+  double max_aspect = 3.0;          // Longest / shortest side of the rotated bounding box.
+  double max_tap_distance_px = 35;  // seed: centroid farther from the tap: not this button [px].
   // multiscale only:
   double search_radius_px = 200;    // Half size of the window around the tap searched [px].
   double second_blur = 2.0;         // The second scale's blur, times blur_sigma_px.

@@ -48,7 +48,11 @@ void ExpectTapsSelectButtons(const ButtonDetectorOptions& options) {
   }
 }
 
-TEST(ButtonDetector, TapOnAButtonSelectsIt) { ExpectTapsSelectButtons(ButtonDetectorOptions{}); }
+TEST(ButtonDetector, TapOnAButtonSelectsIt) {
+  ButtonDetectorOptions multiscale;
+  multiscale.method = "multiscale";
+  ExpectTapsSelectButtons(multiscale);
+}
 
 TEST(ButtonDetector, SeedRuleTapOnAButtonSelectsIt) {
   ButtonDetectorOptions seed;

@@ -72,7 +72,9 @@ void RunCase(const std::string& dir, const Case& c) {
     if (f.finger) DrawFinger(view, centre - cv::Point2d(f.offset), 1.3 * half);
     return view;
   };
-  ButtonDetector detector;
+  ButtonDetectorOptions options;
+  options.method = "multiscale";
+  ButtonDetector detector(options);
   auto model = detector.Detect(view_of(frames[0]), centre - cv::Point2d(frames[0].offset));
   ASSERT_TRUE(model.ok()) << model.status().ToString();
   ASSERT_LT(cv::norm((*model)->center - (centre - cv::Point2d(frames[0].offset))), 0.5 * half);

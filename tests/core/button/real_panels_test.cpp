@@ -162,9 +162,15 @@ Figures Evaluate(const ButtonDetectorOptions& options, bool print) {
   return all;
 }
 
+ButtonDetectorOptions Multiscale() {
+  ButtonDetectorOptions o;
+  o.method = "multiscale";
+  return o;
+}
+
 TEST(RealPanels, TapAtAButtonCentreSelectsThatButton) {
   SIGHTLINE_REQUIRE_DATA(dir, "button_panels/test_panels");
-  const Figures f = Evaluate(ButtonDetectorOptions{}, true);
+  const Figures f = Evaluate(Multiscale(), true);
   EXPECT_GE(f.button_taps, 380);
   EXPECT_GE(f.label_taps, 130);
   const double rate = double(f.right) / std::max(1, f.button_taps);
@@ -175,7 +181,7 @@ TEST(RealPanels, TapAtAButtonCentreSelectsThatButton) {
 
 TEST(RealPanels, TapOnAPrintedLabelIsNoButtonHere) {
   SIGHTLINE_REQUIRE_DATA(dir, "button_panels/test_panels");
-  const Figures f = Evaluate(ButtonDetectorOptions{}, false);
+  const Figures f = Evaluate(Multiscale(), false);
   const double rate = double(f.label_selected) / std::max(1, f.label_taps);
   std::printf(
       "label taps: %d of %d (%.1f %%) select a region that is not a button holding the "
@@ -196,7 +202,7 @@ TEST(RealPanels, SeedRuleStaysAvailable) {
 TEST(RealPanels, TapOnBlankWallIsNoButtonHere) {
   SIGHTLINE_REQUIRE_DATA(dir, "button_panels/test_panels");
   const std::vector<Label> labels = ReadLabels(SIGHTLINE_BUTTON_LABELS);
-  ButtonDetector detector;
+  ButtonDetector detector(Multiscale());
   int blanks = 0;
   for (const Label& l : labels) {
     if (l.kind != "blank") continue;
