@@ -202,7 +202,8 @@ TEST_F(MobilityObjects, HonoursTheFloorFile) {
   floor.plane.d = 1.0;
   ASSERT_TRUE(WriteFloorCalibration(floor, dir + "/floor.yaml").ok());
 
-  const PipelineInfo* info = BuiltinPipelines().Find("mobility");
+  const PipelineRegistry registry = BuiltinPipelines();
+  const PipelineInfo* info = registry.Find("mobility");
   ASSERT_NE(info, nullptr);
   ASSERT_TRUE(info->create);
   EXPECT_TRUE(info->Accepts(SourceKind::kRgbd));
