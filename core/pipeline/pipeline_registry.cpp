@@ -124,8 +124,8 @@ PipelineRegistry BuiltinPipelines() {
   s = registry.Register(MappingPipeline());
   s = registry.Register(StereoVoPipeline());
   s = registry.Register(MobilityPipeline());
-  s = registry.Register(MonoSlamPipeline());
-  s = registry.Register(ButtonPipeline());
+  s = registry.Register(MonoSlamPipelineInfo());
+  s = registry.Register(ButtonPipelineInfo());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }
