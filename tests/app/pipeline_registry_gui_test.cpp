@@ -2,7 +2,6 @@
 // saved by either front end loads in the other, for every pipeline.
 #include <gtest/gtest.h>
 
-
 #include "app/sightline/builtin_presenters.h"
 #include "app/sightline/main_window.h"
 #include "core/pipeline/pipeline_registry.h"
