@@ -4,73 +4,73 @@
 <context>
     <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="38"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="120"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
         <source>Waiting for Yes</source>
         <translation>Warte auf Ja</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
         <source>Button lost</source>
         <translation>Knopf verloren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="44"/>
         <source>Button unclear</source>
         <translation>Knopf unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="46"/>
         <source>Measuring the button</source>
         <translation>Knopf wird vermessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="124"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="48"/>
         <source>Measuring again</source>
         <translation>Neue Messung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="125"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="50"/>
         <source>Measuring the distance</source>
         <translation>Abstand wird gemessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="52"/>
         <source>Panel unclear</source>
         <translation>Tastenfeld unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="54"/>
         <source>Position not sure yet</source>
         <translation>Position noch unsicher</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="128"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="56"/>
         <source>Button out of reach</source>
         <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="153"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="101"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="178"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="210"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="133"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="172"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
@@ -287,12 +287,12 @@
 <context>
     <name>sightline::DemoGenerator</name>
     <message>
-        <location filename="../app/sightline/demo_generator.cpp" line="46"/>
+        <location filename="../app/sightline/demo_generator.cpp" line="48"/>
         <source>cannot create the demo folder %1</source>
         <translation>Demo-Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/demo_generator.cpp" line="84"/>
+        <location filename="../app/sightline/demo_generator.cpp" line="87"/>
         <source>cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
@@ -300,107 +300,117 @@
 <context>
     <name>sightline::EvaluationPanel</name>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="73"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="74"/>
         <source>estimated trajectory (TUM or KITTI file)</source>
         <translation>geschätzte Trajektorie (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="75"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="76"/>
         <source>ground truth (TUM or KITTI file)</source>
         <translation>Ground Truth (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="79"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="80"/>
         <source>Browse...</source>
         <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="88"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="89"/>
         <source>SE(3): rotation and translation</source>
         <translation>SE(3): Rotation und Translation</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="89"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
         <source>Sim(3): also scale (monocular)</source>
         <translation>Sim(3): auch Maßstab (monokular)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="92"/>
         <source>Evaluate</source>
         <translation>Auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
         <source>Estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="98"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
         <source>Estimated trajectory</source>
         <translation>Geschätzte Trajektorie</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
         <source>Ground truth</source>
         <translation>Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="101"/>
         <source>Alignment</source>
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="102"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="103"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
         <source>Figure</source>
         <translation>Kennzahl</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="105"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="115"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="116"/>
         <source>Figures</source>
         <translation>Kennzahlen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="116"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
         <source>Top view</source>
         <translation>Draufsicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="118"/>
         <source>Error over time</source>
         <translation>Fehler im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="130"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="131"/>
         <source>Trajectories (*.txt *.csv);;All files (*)</source>
         <translation>Trajektorien (*.txt *.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="138"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="139"/>
         <source>Evaluating...</source>
         <translation>Auswertung läuft...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="162"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="163"/>
         <source>Evaluation failed: %1</source>
         <translation>Auswertung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="172"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
     </message>
@@ -423,22 +433,22 @@
 <context>
     <name>sightline::LiveStatusWidget</name>
     <message>
-        <location filename="../app/sightline/live_status_widget.cpp" line="24"/>
+        <location filename="../app/sightline/live_status_widget.cpp" line="25"/>
         <source>closed</source>
         <translation>geschlossen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/live_status_widget.cpp" line="25"/>
+        <location filename="../app/sightline/live_status_widget.cpp" line="27"/>
         <source>streaming</source>
         <translation>läuft</translation>
     </message>
     <message>
-        <location filename="../app/sightline/live_status_widget.cpp" line="26"/>
+        <location filename="../app/sightline/live_status_widget.cpp" line="29"/>
         <source>disconnected</source>
         <translation>getrennt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/live_status_widget.cpp" line="37"/>
+        <location filename="../app/sightline/live_status_widget.cpp" line="40"/>
         <source>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;dropped %4 &amp;nbsp;latency %5 ms</source>
         <translation>&lt;span style=&apos;color:%1&apos;&gt;&amp;#9679;&lt;/span&gt; %2 &amp;nbsp;%3 fps &amp;nbsp;verworfen %4 &amp;nbsp;Latenz %5 ms</translation>
     </message>
@@ -454,263 +464,273 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="43"/>
+        <location filename="../app/sightline/main_window.cpp" line="44"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="73"/>
-        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <location filename="../app/sightline/main_window.cpp" line="74"/>
+        <location filename="../app/sightline/main_window.cpp" line="351"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="74"/>
-        <location filename="../app/sightline/main_window.cpp" line="342"/>
+        <location filename="../app/sightline/main_window.cpp" line="75"/>
+        <location filename="../app/sightline/main_window.cpp" line="352"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="78"/>
+        <location filename="../app/sightline/main_window.cpp" line="80"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="80"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="85"/>
         <source>Evaluation</source>
         <translation>Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="91"/>
+        <location filename="../app/sightline/main_window.cpp" line="93"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="101"/>
+        <location filename="../app/sightline/main_window.cpp" line="103"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="102"/>
+        <location filename="../app/sightline/main_window.cpp" line="104"/>
         <source>&amp;Open dataset folder...</source>
         <translation>Datensatz-Ordner &amp;öffnen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="105"/>
+        <location filename="../app/sightline/main_window.cpp" line="107"/>
         <source>Open dataset folder</source>
         <translation>Datensatz-Ordner öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="112"/>
         <source>Open point cloud</source>
         <translation>Punktwolke öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="108"/>
+        <location filename="../app/sightline/main_window.cpp" line="110"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <location filename="../app/sightline/main_window.cpp" line="113"/>
         <source>Recordings (*.pcd *.oni)</source>
         <translation>Aufnahmen (*.pcd *.oni)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <location filename="../app/sightline/main_window.cpp" line="116"/>
         <source>Open &amp;recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="121"/>
+        <location filename="../app/sightline/main_window.cpp" line="125"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <location filename="../app/sightline/main_window.cpp" line="127"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="130"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <location filename="../app/sightline/main_window.cpp" line="140"/>
         <source> (unavailable)</source>
         <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="139"/>
+        <location filename="../app/sightline/main_window.cpp" line="145"/>
         <source>Connect to the first %1 device</source>
         <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <location filename="../app/sightline/main_window.cpp" line="151"/>
         <source>Replay recording</source>
         <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="152"/>
+        <location filename="../app/sightline/main_window.cpp" line="157"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="154"/>
-        <location filename="../app/sightline/main_window.cpp" line="279"/>
+        <location filename="../app/sightline/main_window.cpp" line="159"/>
+        <location filename="../app/sightline/main_window.cpp" line="289"/>
         <source>None (show frames only)</source>
         <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="161"/>
+        <location filename="../app/sightline/main_window.cpp" line="166"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <location filename="../app/sightline/main_window.cpp" line="167"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>Trajektorie &amp;auswerten...</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="172"/>
+        <source>Evaluate &amp;current run</source>
+        <translation>&amp;Aktuellen Lauf auswerten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
+        <translation>Vergleicht die Trajektorie der laufenden Pipeline mit der Referenz des Datensatzes.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="181"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <location filename="../app/sightline/main_window.cpp" line="182"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="183"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <location filename="../app/sightline/main_window.cpp" line="184"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
 Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="187"/>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <location filename="../app/sightline/main_window.cpp" line="197"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <location filename="../app/sightline/main_window.cpp" line="205"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="220"/>
+        <location filename="../app/sightline/main_window.cpp" line="229"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="227"/>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="236"/>
+        <location filename="../app/sightline/main_window.cpp" line="245"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="242"/>
+        <location filename="../app/sightline/main_window.cpp" line="252"/>
         <source>The demo could not be made: %1</source>
         <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="297"/>
+        <location filename="../app/sightline/main_window.cpp" line="307"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="308"/>
+        <location filename="../app/sightline/main_window.cpp" line="318"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="312"/>
+        <location filename="../app/sightline/main_window.cpp" line="322"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="329"/>
-        <location filename="../app/sightline/main_window.cpp" line="330"/>
+        <location filename="../app/sightline/main_window.cpp" line="339"/>
+        <location filename="../app/sightline/main_window.cpp" line="340"/>
         <source>Opening %1 ...</source>
         <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <location filename="../app/sightline/main_window.cpp" line="351"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="341"/>
+        <location filename="../app/sightline/main_window.cpp" line="351"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="342"/>
+        <location filename="../app/sightline/main_window.cpp" line="352"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="348"/>
+        <location filename="../app/sightline/main_window.cpp" line="358"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="353"/>
+        <location filename="../app/sightline/main_window.cpp" line="363"/>
         <source>, ground truth</source>
         <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="355"/>
+        <location filename="../app/sightline/main_window.cpp" line="365"/>
         <source>Opened %1</source>
         <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="360"/>
+        <location filename="../app/sightline/main_window.cpp" line="370"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="395"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>frame %1, read in %2 ms</source>
         <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="417"/>
+        <location filename="../app/sightline/main_window.cpp" line="427"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="419"/>
+        <location filename="../app/sightline/main_window.cpp" line="429"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="176"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
@@ -724,66 +744,111 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <source>Recording: %1</source>
         <translation>Aufnahme: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="35"/>
+        <source>&amp;Save results...</source>
+        <translation>Ergebnisse &amp;speichern...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="38"/>
+        <source>Writes the running pipeline&apos;s results as sightline-cli run does: metrics.json, trajectory, maps, clouds and tables.</source>
+        <translation>Schreibt die Ergebnisse der laufenden Pipeline wie sightline-cli run: metrics.json, Trajektorie, Karten, Punktwolken und Tabellen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="44"/>
+        <source>Save results into folder</source>
+        <translation>Ergebnisse in Ordner speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="55"/>
+        <source>Saved %1 in %2</source>
+        <translation>%1 in %2 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="56"/>
+        <source>Results saved in %1</source>
+        <translation>Ergebnisse in %1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="61"/>
+        <source>Could not save results: %1</source>
+        <translation>Ergebnisse konnten nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="75"/>
+        <source>Evaluate current run needs a running pipeline on a dataset with ground truth; choose two trajectory files instead.</source>
+        <translation>Zum Auswerten des aktuellen Laufs muss eine Pipeline auf einem Datensatz mit Referenz laufen; wählen Sie sonst zwei Trajektoriendateien.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="82"/>
+        <source>Could not make a temporary folder for the evaluation.</source>
+        <translation>Für die Auswertung konnte kein temporärer Ordner angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_results.cpp" line="94"/>
+        <source>%1 writes no trajectory to evaluate.</source>
+        <translation>%1 schreibt keine Trajektorie, die sich auswerten ließe.</translation>
+    </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="90"/>
         <source>Indoor mapping (Manhattan walls)</source>
         <translation>Innenraumkartierung (Manhattan-Wände)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="97"/>
         <source>Occupancy, scan and walls</source>
         <translation>Belegung, Scan und Wände</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="103"/>
         <source>Calibrate floor</source>
         <translation>Boden kalibrieren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="105"/>
         <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
         <translation>Die Bodenebene aus den nächsten Bildern neu schätzen (der Roboter sollte freien Boden sehen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="225"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="108"/>
         <source>Save floor...</source>
         <translation>Boden speichern...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="226"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="110"/>
         <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
         <translation>Die verwendete Bodenkalibrierung speichern, für mapping.run.floor_file oder `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="229"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="113"/>
         <source>Save floor calibration</source>
         <translation>Bodenkalibrierung speichern</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="230"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="114"/>
         <source>YAML (*.yaml)</source>
         <translation>YAML (*.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="239"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="126"/>
         <source>Stitched map</source>
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="297"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="185"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="313"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="201"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="325"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="214"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
@@ -791,17 +856,17 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityImagePanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="65"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="72"/>
         <source>Projection</source>
         <translation>Projektion</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="66"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
         <source>Top view</source>
         <translation>Draufsicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="67"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
         <source>GPR surface</source>
         <translation>GPR-Fläche</translation>
     </message>
@@ -809,17 +874,17 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityPresenter</name>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="26"/>
         <source>Mobility map</source>
         <translation>Befahrbarkeitskarte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="130"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="36"/>
         <source>Mobility map (red 0, green 1)</source>
         <translation>Befahrbarkeitskarte (rot 0, grün 1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="134"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="40"/>
         <source>Mobility stages (Table II)</source>
         <translation>Befahrbarkeitskarte: Stufen (Tabelle II)</translation>
     </message>
@@ -862,17 +927,17 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Punkte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="47"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="50"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="55"/>
         <source>%1 mode, %2 segments</source>
         <translation>Modus %1, %2 Segmente</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="59"/>
         <source>, camera %1 m above the ground</source>
         <translation>, Kamera %1 m über dem Boden</translation>
     </message>
@@ -880,62 +945,57 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MonoSlamPresenter</name>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="179"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="85"/>
         <source>the arm&apos;s poses</source>
         <translation>Armposen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="86"/>
         <source>the ground truth</source>
         <translation>Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="87"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="125"/>
         <source>Monocular SLAM (PTAM point cloud)</source>
         <translation>Monokulares SLAM (PTAM-Punktwolke)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="225"/>
-        <source>Monocular SLAM needs a camera calibration (camera.yaml)</source>
-        <translation>Monokulares SLAM braucht eine Kamerakalibrierung (camera.yaml)</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="241"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="137"/>
         <source>Reset map</source>
         <translation>Karte zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="138"/>
         <source>Pause mapping</source>
         <translation>Kartierung anhalten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="255"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="151"/>
         <source>Tracked features (inliers green, outliers red)</source>
         <translation>Verfolgte Merkmale (Inlier grün, Outlier rot)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="266"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="162"/>
         <source>Metric scale (ML solid, single ratio dashed)</source>
         <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="310"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="207"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="320"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="217"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="326"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="223"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
     </message>
@@ -943,72 +1003,72 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="180"/>
+        <location filename="../widgets/operator_panel.cpp" line="190"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="185"/>
+        <location filename="../widgets/operator_panel.cpp" line="195"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="159"/>
+        <location filename="../widgets/operator_panel.cpp" line="166"/>
         <source>Locating</source>
         <translation>Position wird gemessen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="161"/>
+        <location filename="../widgets/operator_panel.cpp" line="170"/>
         <source>Lost - hold still</source>
         <translation>Verloren - still halten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="156"/>
+        <location filename="../widgets/operator_panel.cpp" line="160"/>
         <source>No button here - tap again</source>
         <translation>Kein Knopf hier - nochmal tippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="155"/>
+        <location filename="../widgets/operator_panel.cpp" line="158"/>
         <source>Press this button?</source>
         <translation>Diesen Knopf drücken?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="186"/>
+        <location filename="../widgets/operator_panel.cpp" line="196"/>
         <source>STOP</source>
         <translation>STOPP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="157"/>
+        <location filename="../widgets/operator_panel.cpp" line="162"/>
         <source>Searching</source>
         <translation>Suche läuft</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="187"/>
+        <location filename="../widgets/operator_panel.cpp" line="197"/>
         <source>Start again</source>
         <translation>Neu starten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="162"/>
+        <location filename="../widgets/operator_panel.cpp" line="172"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="154"/>
+        <location filename="../widgets/operator_panel.cpp" line="156"/>
         <source>Tap a button</source>
         <translation>Knopf antippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="160"/>
+        <location filename="../widgets/operator_panel.cpp" line="168"/>
         <source>Target sent</source>
         <translation>Ziel gesendet</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="158"/>
+        <location filename="../widgets/operator_panel.cpp" line="164"/>
         <source>Tracking</source>
         <translation>Knopf im Blick</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="184"/>
+        <location filename="../widgets/operator_panel.cpp" line="194"/>
         <source>Yes</source>
         <translation>Ja</translation>
     </message>
@@ -1069,27 +1129,27 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="175"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="182"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="182"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="189"/>
+        <location filename="../widgets/parameter_panel.cpp" line="191"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <location filename="../widgets/parameter_panel.cpp" line="192"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>
@@ -1155,12 +1215,12 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Nichts aufzunehmen: zuerst einen Sensor oder eine Aufnahme öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="90"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="89"/>
         <source>Recorded %1 frames into %2 (%3 dropped by the recorder), %4 MB at %5 MB/s</source>
         <translation>%1 Bilder in %2 aufgenommen (%3 vom Rekorder verworfen), %4 MB mit %5 MB/s</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="110"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="109"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
         <translation>REC %1 geschrieben, %2 verworfen, %3 MB/s</translation>
     </message>
@@ -1168,135 +1228,168 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::ScalePlot</name>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="45"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="44"/>
         <source>scale: waiting for displacement pairs</source>
         <translation>Maßstab: warte auf Verschiebungspaare</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="59"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="58"/>
         <source>pairs (map units per metre)</source>
         <translation>Paare (Karteneinheiten pro Meter)</translation>
     </message>
 </context>
 <context>
+    <name>sightline::StatisticsPresenter</name>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <source>Statistic</source>
+        <translation>Kennzahl</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="27"/>
+        <source>Statistics: %1</source>
+        <translation>Kennzahlen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="51"/>
+        <source>status</source>
+        <translation>Status</translation>
+    </message>
+</context>
+<context>
     <name>sightline::StereoVoPresenter</name>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="89"/>
         <source>Stereo visual odometry</source>
         <translation>Visuelle Stereo-Odometrie</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="138"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="99"/>
         <source>Tracks (inliers green, outliers red, new blue)</source>
         <translation>Tracks (Inlier grün, Outlier rot, neu blau)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="142"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="103"/>
         <source>Stereo matches (right image)</source>
         <translation>Stereo-Zuordnungen (rechtes Bild)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="148"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="110"/>
         <source>per frame [%1]</source>
         <translation>pro Bild [%1]</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="149"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="111"/>
         <source>%1 per stage</source>
         <translation>%1 pro Stufe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="150"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="113"/>
         <source>residual [%1]; red: gated</source>
         <translation>Residuum [%1]; rot: gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="155"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="118"/>
         <source>Statistics over time</source>
         <translation>Statistik im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="202"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="212"/>
         <source>, GATED: pose held</source>
         <translation>, GESPERRT: Pose gehalten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="42"/>
         <source>tracks</source>
         <translation>Tracks</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="243"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="44"/>
         <source>anchored</source>
         <translation>verankert</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="244"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="46"/>
         <source>stereo</source>
         <translation>Stereo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="245"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="48"/>
         <source>inliers</source>
         <translation>Inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="246"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="50"/>
         <source>RANSAC it.</source>
         <translation>RANSAC-It.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="54"/>
         <source>rectify</source>
         <translation>Rektifizierung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="56"/>
         <source>pyramid</source>
         <translation>Pyramide</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="58"/>
         <source>tracking</source>
         <translation>Tracking</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="60"/>
         <source>detection</source>
         <translation>Detektion</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="62"/>
         <source>matching</source>
         <translation>Matching</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="250"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="64"/>
         <source>RANSAC</source>
         <translation>RANSAC</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="66"/>
         <source>refine</source>
         <translation>Verfeinerung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="251"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="68"/>
         <source>window BA</source>
         <translation>Fenster-BA</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="252"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="70"/>
         <source>total</source>
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="259"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="221"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>

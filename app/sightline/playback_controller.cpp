@@ -45,6 +45,8 @@ void PlaybackController::Open(const QString& path) {
             std::lock_guard<std::mutex> lock(self->mutex_);
             self->info_ = std::make_shared<SourceInfo>((**opened)->info());
           }
+          // The pipeline is made before the player takes the source: keep its ground truth.
+          self->source_ground_truth_ = PipelineSource::From(***opened).ground_truth;
           self->RebuildProcessor();
           self->live_ = dynamic_cast<const LiveSource*>(opened->value().get());
           self->StartWorker(std::make_unique<Player>(std::move(**opened)));
@@ -68,6 +70,7 @@ void PlaybackController::Close() {
     std::lock_guard<std::mutex> lock(mutex_);
     info_.reset();
   }
+  source_ground_truth_.reset();
   RebuildProcessor();
 }
 
@@ -131,9 +134,7 @@ void PlaybackController::RebuildProcessor() {
   PipelineSource source;
   if (info_) {
     source.info = *info_;
-    if (const Trajectory* gt = ground_truth(); gt != nullptr && !gt->empty()) {
-      source.ground_truth = std::make_shared<const Trajectory>(*gt);
-    }
+    source.ground_truth = source_ground_truth_;
   }
   if (processor_factory_ && info_) processor = processor_factory_(source);
   std::lock_guard<std::mutex> lock(processor_mutex_);

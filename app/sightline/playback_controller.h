@@ -113,7 +113,8 @@ class PlaybackController : public QObject {
   uint64_t open_generation_ = 0;
   std::vector<QFuture<void>> background_;  // GUI thread only.
 
-  ProcessorFactory processor_factory_;  // GUI thread only.
+  ProcessorFactory processor_factory_;                     // GUI thread only.
+  std::shared_ptr<const Trajectory> source_ground_truth_;  // The open source's; GUI thread only.
 
   std::mutex processor_mutex_;  // Guards the processor and its bookkeeping.
   std::unique_ptr<Pipeline> processor_;

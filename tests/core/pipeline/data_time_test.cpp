@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <ostream>
 #include <sstream>
 #include <thread>
 
@@ -115,6 +116,9 @@ struct Case {
   std::string scene;
   std::vector<std::string> overrides;
 };
+
+// Test names and failure messages print a case as its pipeline's name.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.pipeline << " on " << c.scene; }
 
 class DataTime : public ::testing::TestWithParam<Case> {
  protected:
