@@ -2,7 +2,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 namespace sightline::testing {
@@ -46,6 +48,13 @@ std::string TempDir(const std::string& name) {
   if (made == nullptr) return "";
   g_dirs->push_back(made);
   return made;
+}
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace sightline::testing

@@ -16,6 +16,9 @@ std::string DataPath(const std::string& relative);
 // A fresh empty temporary folder for one test, removed at process exit.
 std::string TempDir(const std::string& name);
 
+// The whole content of a file, byte for byte ("" when it cannot be read).
+std::string ReadAll(const std::string& path);
+
 }  // namespace sightline::testing
 
 // Skips the current test, saying which data is missing and how to provide it.

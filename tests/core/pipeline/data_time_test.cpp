@@ -46,11 +46,6 @@ class CpuHog {
   std::vector<std::thread> threads_;
 };
 
-std::string ReadAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // A CSV without its timing columns (headers ending in "_ms").
 std::string WithoutTimingColumns(const std::string& csv) {
   std::stringstream in(csv);
@@ -98,7 +93,7 @@ std::map<std::string, std::string> Outputs(const std::string& dir) {
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (!entry.is_regular_file()) continue;
     const std::string name = fs::relative(entry.path(), dir).string();
-    std::string text = ReadAll(entry.path());
+    std::string text = testing::ReadAll(entry.path().string());
     if (name == "metrics.json") {
       text = Figures(text);
     } else if (entry.path().extension() == ".csv") {

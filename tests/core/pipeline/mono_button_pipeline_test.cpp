@@ -19,12 +19,7 @@
 namespace sightline {
 namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::ReadAll;
 
 std::map<std::string, double> Figures(const RunReport& report) {
   std::map<std::string, double> m;

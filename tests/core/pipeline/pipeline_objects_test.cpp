@@ -19,12 +19,7 @@
 namespace sightline {
 namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::ReadAll;
 
 double Figure(const std::vector<std::pair<std::string, double>>& figures, const std::string& key) {
   for (const auto& [name, value] : figures) {

@@ -9,12 +9,7 @@
 namespace sightline {
 namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::ReadAll;
 
 TEST(RunPipeline, InspectOnTumWritesMetricsInTheCommonShape) {
   SIGHTLINE_REQUIRE_DATA(dir, "tum_fr1_desk");

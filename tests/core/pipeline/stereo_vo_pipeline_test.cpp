@@ -16,12 +16,7 @@
 namespace sightline {
 namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::ReadAll;
 
 const TimingSummary* Stage(const RunMetrics& metrics, const std::string& stage) {
   for (const auto& [name, summary] : metrics.timing_ms) {
