@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "core/button/option_check.h"
 
@@ -163,6 +164,26 @@ double AngularCoverage(const std::vector<cv::Point>& contour, cv::Point2d centre
   return double(n) / kSectors;
 }
 
+// The convex hull of `contour` as a candidate when its area lies in [min_area, max_area] and
+// its bounding rectangle is no longer than `max_aspect` times its width; nullopt otherwise.
+std::optional<Candidate> CompactHull(const std::vector<cv::Point>& contour, double min_area,
+                                     double max_area, double max_aspect) {
+  std::vector<cv::Point> hull;
+  cv::convexHull(contour, hull);
+  const cv::Moments m = cv::moments(hull);
+  const double area = m.m00;
+  if (area < min_area || area > max_area) return std::nullopt;
+  const cv::RotatedRect box = cv::minAreaRect(hull);
+  const double lo = std::min(box.size.width, box.size.height);
+  const double hi = std::max(box.size.width, box.size.height);
+  if (lo <= 0 || hi / lo > max_aspect) return std::nullopt;
+  Candidate c;
+  c.centroid = {m.m10 / area, m.m01 / area};
+  c.area = area;
+  c.contour = std::move(hull);
+  return c;
+}
+
 // Button-like regions of the edge map, in working-image pixels: the convex hull of every
 // contour that is compact and surrounds its own centre.
 std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptions& o) {
@@ -180,23 +201,11 @@ std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptio
   const double max_area = o.max_area_fraction * grey.cols * grey.rows;
   std::vector<Candidate> out;
   for (const auto& contour : contours) {
-    std::vector<cv::Point> hull;
-    cv::convexHull(contour, hull);
-    const cv::Moments m = cv::moments(hull);
-    const double area = m.m00;
-    if (area < o.min_area_px || area > max_area) continue;
-    const cv::RotatedRect box = cv::minAreaRect(hull);
-    const double lo = std::min(box.size.width, box.size.height);
-    const double hi = std::max(box.size.width, box.size.height);
-    if (lo <= 0 || hi / lo > o.max_aspect) continue;
-    const cv::Point2d centroid(m.m10 / area, m.m01 / area);
-    const double radius = std::sqrt(area / M_PI);
-    if (AngularCoverage(contour, centroid, 0.5 * radius) < o.min_coverage) continue;
-    Candidate c;
-    c.centroid = centroid;
-    c.area = area;
-    c.contour = std::move(hull);
-    out.push_back(std::move(c));
+    std::optional<Candidate> c = CompactHull(contour, o.min_area_px, max_area, o.max_aspect);
+    if (!c) continue;
+    const double radius = std::sqrt(c->area / M_PI);
+    if (AngularCoverage(contour, c->centroid, 0.5 * radius) < o.min_coverage) continue;
+    out.push_back(std::move(*c));
   }
   return out;
 }
@@ -268,20 +277,9 @@ std::vector<Candidate> MultiScaleCandidates(const cv::Mat& work, cv::Rect window
       cv::findContours(edges, contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE, offset);
       for (const auto& contour : contours) {
         if (contour.size() < 5) continue;
-        std::vector<cv::Point> hull;
-        cv::convexHull(contour, hull);
-        const cv::Moments m = cv::moments(hull);
-        const double area = m.m00;
-        if (area < o.min_area_px || area > max_area) continue;
-        const cv::RotatedRect box = cv::minAreaRect(hull);
-        const double lo = std::min(box.size.width, box.size.height);
-        const double hi = std::max(box.size.width, box.size.height);
-        if (lo <= 0 || hi / lo > o.region_max_aspect) continue;
-        Candidate c;
-        c.centroid = {m.m10 / area, m.m01 / area};
-        c.area = area;
-        c.contour = std::move(hull);
-        out.push_back(std::move(c));
+        std::optional<Candidate> c =
+            CompactHull(contour, o.min_area_px, max_area, o.region_max_aspect);
+        if (c) out.push_back(std::move(*c));
       }
     }
   }
