@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 #include <cstdio>
 
+#include "core/io/floor_file.h"
 #include "core/mapping/mapping_frame_processor.h"
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mapping_recording.h"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "app/sightline/pipeline_presenter.h"
-#include "core/mapping/floor_plane.h"
+#include "core/common/floor.h"
 
 class QDockWidget;
 

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "core/button/arm_server.h"
-#include "core/button/hand_eye.h"
+#include "core/io/hand_eye_file.h"
 #include "core/pipeline/metric_slam_view.h"
 #include "core/pipeline/mono_inputs.h"
 

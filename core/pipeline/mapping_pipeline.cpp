@@ -13,6 +13,7 @@
 #include "core/common/timing.h"
 #include "core/eval/evaluation.h"
 #include "core/io/dataset.h"
+#include "core/io/floor_file.h"
 #include "core/mapping/mapping_accuracy.h"
 #include "core/mapping/mapping_frame_processor.h"
 #include "core/mapping/option_check.h"

@@ -10,6 +10,7 @@
 
 #include "core/common/text_file.h"
 #include "core/io/dataset.h"
+#include "core/io/floor_file.h"
 #include "core/mapping/floor_plane.h"
 #include "core/mobility/mobility_map.h"
 #include "core/mobility/terrain_truth.h"

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/calib/calibration_file.h"
 #include "core/eval/evaluation.h"
 #include "core/io/dataset.h"
+#include "core/io/stereo_calibration_file.h"
 #include "core/sensors/driver_registry.h"
 
 namespace sightline {
