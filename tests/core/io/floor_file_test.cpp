@@ -44,13 +44,13 @@ TEST(FloorFile, ReadsTheEarlierLayout) {
             "# Sightline floor plane: a x + b y + c z + d = 0 in the camera frame (x right,\n"
             "# y down, z forward, metres); (a, b, c) is the unit normal pointing up, so d is\n"
             "# the camera height. A point is floor when |a x + b y + c z + d| <= epsilon_m.\n"
-            "a: 0.010000000\nb: -0.953939201\nc: -0.299953081\nd: 0.812345678\n"
+            "a: 0.010037207\nb: -0.953534629\nc: -0.301116199\nd: 0.812345678\n"
             "epsilon_m: 0.040000\ncamera_height_m: 0.812346\npitch_down_deg: 17.4542\n"
             "inlier_ratio: 0.6100\nframes: 5\nsource: \"rec/rgbd\"\n");
   StatusOr<FloorCalibration> read = ReadFloorCalibration(path);
   ASSERT_TRUE(read.ok()) << read.status().ToString();
   EXPECT_NEAR(read->plane.normal.norm(), 1.0, 1e-15);
-  EXPECT_NEAR(read->plane.normal.y(), -0.953939201, 1e-8);
+  EXPECT_NEAR(read->plane.normal.y(), -0.953534629, 1e-8);
   EXPECT_NEAR(read->plane.d, 0.812345678, 1e-8);
   EXPECT_EQ(read->source, "rec/rgbd");
   EXPECT_EQ(read->frames, 5);
