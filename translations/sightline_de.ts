@@ -1197,18 +1197,18 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="148"/>
-        <source>per frame: counts</source>
-        <translation>pro Bild: Anzahlen</translation>
+        <source>per frame [%1]</source>
+        <translation>pro Bild [%1]</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="149"/>
-        <source>ms per stage</source>
-        <translation>ms pro Stufe</translation>
+        <source>%1 per stage</source>
+        <translation>%1 pro Stufe</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="150"/>
-        <source>residual [px]; red: gated</source>
-        <translation>Residuum [px]; rot: gesperrt</translation>
+        <source>residual [%1]; red: gated</source>
+        <translation>Residuum [%1]; rot: gesperrt</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="155"/>
@@ -1217,8 +1217,8 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
-        <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 px, %7 ms%8</source>
-        <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 px, %7 ms%8</translation>
+        <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
+        <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 %7, %8 %9%10</translation>
     </message>
     <message>
         <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>

@@ -168,7 +168,9 @@ Status ParameterPanel::LoadProfile(const QString& path) {
 }
 
 Status ParameterPanel::SaveProfile(const QString& path) {
-  const Status status = options_.SaveYaml(path.toStdString());
+  const Status status =
+      (profile_exclusion_.empty() ? options_ : options_.Without(profile_exclusion_))
+          .SaveYaml(path.toStdString());
   if (!status.ok()) {
     ShowMessage(QString::fromStdString(status.ToString()), true);
   } else {

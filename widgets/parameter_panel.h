@@ -42,8 +42,12 @@ class ParameterPanel : public QWidget {
   // Loads a YAML profile into the set (all or nothing); on success emits OptionsChanged.
   // Errors are returned and shown in the message area.
   Status LoadProfile(const QString& path);
-  // Writes the current values as a YAML profile; errors are returned and shown.
+  // Writes the current values as a YAML profile, without the options under the prefix set by
+  // SetProfileExclusion; errors are returned and shown.
   Status SaveProfile(const QString& path);
+  // Options whose keys start with `prefix` (e.g. the window's own "view.") stay out of saved
+  // profiles, so a profile holds what `sightline-cli run --profile` reads.
+  void SetProfileExclusion(const std::string& prefix) { profile_exclusion_ = prefix; }
   // Restores every default and emits OptionsChanged.
   void ResetAll();
   // Shows only options whose key contains `text` (case-insensitive); empty shows all.
@@ -66,6 +70,8 @@ class ParameterPanel : public QWidget {
     QLabel* label = nullptr;
     QGroupBox* group = nullptr;
   };
+
+  std::string profile_exclusion_;
 
   void Rebuild();
   void RefreshValues();

@@ -15,7 +15,7 @@ namespace {
 
 const char kHelp[] =
     "usage: sightline-cli arm-listen HOST:PORT [--token T] [--count N] [--timeout S]\n"
-    "                                [--no-heartbeats]\n"
+    "                                [--no-heartbeats] [--max-line-bytes B]\n"
     "\n"
     "Connects to Sightline's arm-target server and prints every JSON line it sends (targets,\n"
     "heartbeats, stops), one per line, as they arrive. See core/button/PROTOCOL.md.\n"
@@ -23,7 +23,11 @@ const char kHelp[] =
     "  --token T         present this token first (needed when the server has one)\n"
     "  --count N         exit after N printed messages\n"
     "  --timeout S       exit with an error when nothing is printed for S seconds\n"
-    "  --no-heartbeats   do not print (or count) heartbeat messages\n";
+    "  --no-heartbeats   do not print (or count) heartbeat messages\n"
+    "  --max-line-bytes B  longer lines are dropped and reported on stderr (default 65536)\n"
+    "\n"
+    "Exits 0 after --count messages, or when the server closes the stream after a stop line;\n"
+    "a stream that ends without a stop (the arm would not know to stop) exits 1.\n";
 
 bool ParsePositive(const std::string& text, double* value) {
   char* end = nullptr;
@@ -34,8 +38,8 @@ bool ParsePositive(const std::string& text, double* value) {
 }  // namespace
 
 int ArmListenCommand(const std::vector<std::string>& argv) {
-  auto parsed =
-      CliArgs::Parse(argv, {"--token", "--count", "--timeout"}, {"--help", "--no-heartbeats"});
+  auto parsed = CliArgs::Parse(argv, {"--token", "--count", "--timeout", "--max-line-bytes"},
+                               {"--help", "--no-heartbeats"});
   if (!parsed.ok()) return Fail("arm-listen: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(kHelp, stdout);
@@ -53,12 +57,18 @@ int ArmListenCommand(const std::vector<std::string>& argv) {
   if (auto v = parsed->Value("--timeout"); v && !ParsePositive(*v, &timeout_s)) {
     return Fail("arm-listen: --timeout must be a positive number of seconds");
   }
+  double max_line_bytes = 65536;
+  if (auto v = parsed->Value("--max-line-bytes"); v && !ParsePositive(*v, &max_line_bytes)) {
+    return Fail("arm-listen: --max-line-bytes must be a positive number");
+  }
   auto client = ArmClient::Connect(host, port, parsed->Value("--token").value_or(""));
   if (!client.ok()) return Fail("arm-listen: " + client.status().message());
+  client->set_max_line_bytes(size_t(max_line_bytes));
   const bool heartbeats = !parsed->Has("--no-heartbeats");
   using Clock = std::chrono::steady_clock;
   auto last_printed = Clock::now();
   long printed = 0;
+  bool stopped = false;  // The last message that was not a heartbeat is a stop.
   while (count <= 0 || printed < long(count)) {
     int wait_ms = 1000;
     if (timeout_s > 0) {
@@ -73,11 +83,21 @@ int ArmListenCommand(const std::vector<std::string>& argv) {
     StatusOr<std::string> line = client->ReadLine(wait_ms);
     if (!line.ok()) {
       if (line.status().code() == StatusCode::kOutOfRange) continue;  // Deadline checked above.
-      if (count > 0) return Fail("arm-listen: " + line.status().message());
-      std::fprintf(stderr, "sightline-cli: arm-listen: %s\n", line.status().message().c_str());
-      return 0;  // The server closed the stream.
+      if (line.status().code() == StatusCode::kParseError) {          // Over-long: dropped, go on.
+        std::fprintf(stderr, "sightline-cli: arm-listen: %s\n", line.status().message().c_str());
+        continue;
+      }
+      if (count > 0 || !stopped) {
+        return Fail("arm-listen: " + line.status().message() +
+                    (stopped ? "" : " without a stop line"));
+      }
+      std::fprintf(stderr, "sightline-cli: arm-listen: %s after a stop line\n",
+                   line.status().message().c_str());
+      return 0;  // The server closed the stream after telling the arm to stop.
     }
-    if (!heartbeats && line->find("\"type\":\"heartbeat\"") != std::string::npos) continue;
+    const bool heartbeat = line->find("\"type\":\"heartbeat\"") != std::string::npos;
+    if (!heartbeat) stopped = line->find("\"type\":\"stop\"") != std::string::npos;
+    if (!heartbeats && heartbeat) continue;
     std::printf("%s\n", line->c_str());
     std::fflush(stdout);
     ++printed;

@@ -8,7 +8,7 @@
 #include "app/cli/commands.h"
 #include "core/io/floor_file.h"
 #include "core/options/option_set.h"
-#include "core/pipeline/mapping_pipeline.h"
+#include "core/pipeline/floor_calibration.h"
 
 namespace sightline::cli {
 

@@ -1,3 +1,6 @@
+#include <signal.h>
+
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 
@@ -10,8 +13,21 @@ namespace sightline::cli {
 
 namespace {
 
+// Set by SIGINT/SIGTERM (lock-free, so async-signal-safe); the pipeline checks it between
+// frames, and the button pipeline then sends its arm clients a stop line before it returns.
 std::atomic<bool> g_interrupted{false};
-void OnInterrupt(int) { g_interrupted = true; }
+static_assert(std::atomic<bool>::is_always_lock_free);
+void OnInterrupt(int) { g_interrupted.store(true); }
+
+// SA_RESETHAND: a second Ctrl-C ends a run that does not stop by itself.
+void InstallInterruptHandlers() {
+  struct sigaction action {};
+  action.sa_handler = OnInterrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
 
 }  // namespace
 
@@ -23,11 +39,17 @@ int RunCommand(const std::vector<std::string>& args) {
       "Runs PIPELINE on the dataset at PATH without a GUI and writes its outputs and\n"
       "DIR/metrics.json (frames, per-stage timing median/p95 in ms, accuracy when the dataset\n"
       "has ground truth, and the effective options). --profile loads a YAML options profile;\n"
-      "--set overrides one option (see 'sightline-cli options PIPELINE'). Ctrl-C stops the run.\n"
+      "--set overrides one option (see 'sightline-cli options PIPELINE'). Ctrl-C or SIGTERM\n"
+      "stops the run (with --serve the arm clients get a stop line first).\n"
       "stereo-vo: --subsample K (= --set stereo.subsample=K) processes every K-th frame;\n"
       "--format kitti (= --set stereo.output_format=kitti) writes trajectory.txt as KITTI poses.\n"
       "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
-      "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol).\n"
+      "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol; a HOST\n"
+      "other than 127.x.x.x needs --set button.arm.token=...).\n"
+      "\nExit codes: 0 results written; 1 an error (the line on stderr says which file,\n"
+      "field or option); 3 the run completed but achieved nothing (no frame tracked, never\n"
+      "initialised, every frame gated): its first line says why and metrics.json has\n"
+      "\"failure\".\n"
       "\nPipelines:\n";
   for (const PipelineInfo& p : registry.pipelines())
     help += "  " + p.name + "  " + p.summary + "\n";
@@ -66,22 +88,28 @@ int RunCommand(const std::vector<std::string>& args) {
   ProgressLine progress(request.pipeline);
   request.progress = [&progress](int64_t done, int64_t total) { progress.Update(done, total); };
   request.cancel = &g_interrupted;
-  std::signal(SIGINT, OnInterrupt);
+  InstallInterruptHandlers();
 
   StatusOr<RunReport> report = RunPipeline(registry, request);
   progress.Finish();
   if (!report.ok()) return Fail("run " + request.pipeline + ": " + report.status().ToString());
 
   const RunMetrics& m = report->metrics;
+  if (!report->result.nothing_achieved.empty()) {
+    std::fprintf(stderr, "sightline-cli: run %s achieved nothing: %s (files in %s)\n",
+                 request.pipeline.c_str(), report->result.nothing_achieved.c_str(),
+                 request.out_dir.c_str());
+  }
   if (!parsed->Has("--quiet")) {
     std::printf("%s on %s (%s): %lld frames\n", m.pipeline.c_str(), m.dataset.c_str(),
                 report->result.dataset_format.c_str(), static_cast<long long>(m.frames));
     std::fputs(FormatTimingTable(m.timing_ms).c_str(), stdout);
     for (const auto& [key, value] : m.accuracy)
       std::printf("accuracy.%s = %.6g\n", key.c_str(), value);
+    for (const std::string& note : report->result.notes) std::printf("note: %s\n", note.c_str());
     std::printf("wrote %s\n", report->metrics_path.c_str());
   }
-  return 0;
+  return report->result.nothing_achieved.empty() ? 0 : kExitNothingAchieved;
 }
 
 }  // namespace sightline::cli

@@ -12,7 +12,8 @@
 #include "core/eval/plot_canvas.h"
 #include "core/eval/subsample_sweep.h"
 #include "core/options/option_set.h"
-#include "core/pipeline/stereo_vo_pipeline.h"
+#include "core/pipeline/pipeline_registry.h"
+#include "core/pipeline/stereo_vo_sweep.h"
 
 namespace sightline::cli {
 
@@ -81,32 +82,19 @@ int SweepCommand(const std::vector<std::string>& args) {
                 "'");
   }
 
+  // The pipeline's own option set, as `sightline-cli run stereo-vo` and the GUI declare it.
+  const PipelineRegistry registry = BuiltinPipelines();
   OptionSet options;
-  Status s = options.Declare(StereoOdometryOptions::Describe());
-  if (s.ok()) s = options.Declare(StereoVoRunOptions::Describe());
+  Status s = registry.Find("stereo-vo")->declare_options(&options);
   if (s.ok() && parsed->Value("--profile")) s = options.LoadYaml(*parsed->Value("--profile"));
   for (const std::string& assignment : parsed->Values("--set")) {
     if (s.ok()) s = options.ApplyOverride(assignment);
   }
   if (!s.ok()) return Fail("sweep: " + s.ToString());
-  const StereoOdometryOptions odometry = options.Extract(StereoOdometryOptions::Describe());
-  StereoVoRunOptions run = options.Extract(StereoVoRunOptions::Describe());
 
-  std::vector<SubsampleEstimate> estimates;
-  std::optional<Trajectory> ground_truth;
-  for (int k = first; k <= last; ++k) {
-    run.subsample = k;
-    std::fprintf(stderr, "sweep: k = %d\n", k);
-    StatusOr<StereoVoRun> result = RunStereoOdometry(path, odometry, run);
-    if (!result.ok())
-      return Fail("sweep k = " + std::to_string(k) + ": " + result.status().ToString());
-    if (!result->ground_truth) return Fail("sweep: " + path + " has no ground truth");
-    ground_truth = result->ground_truth;
-    estimates.push_back({k, std::move(result->estimate)});
-  }
-  StatusOr<std::vector<SubsampleRow>> rows =
-      EvaluateSubsampleSweep(estimates, *ground_truth, run.gt_tolerance_s);
-  if (!rows.ok()) return Fail("sweep: " + rows.status().ToString());
+  StatusOr<std::vector<SubsampleRow>> rows = SweepStereoVo(
+      path, options, first, last, [](int k) { std::fprintf(stderr, "sweep: k = %d\n", k); });
+  if (!rows.ok()) return Fail("sweep: " + rows.status().message());
   const std::string table = FormatSubsampleTable(*rows);
   std::fputs(table.c_str(), stdout);
 

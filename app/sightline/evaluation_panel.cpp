@@ -16,6 +16,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/eval/error_report.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/trajectory_file.h"
 #include "core/eval/trajectory_plot.h"
@@ -101,8 +102,8 @@ EvaluationPanel::EvaluationPanel(QWidget* parent) : QWidget(parent) {
 
   summary_label_ = new QLabel(tr("Choose two trajectory files and press Evaluate."), this);
   summary_label_->setWordWrap(true);
-  figures_ = new QStandardItemModel(0, 2, this);
-  figures_->setHorizontalHeaderLabels({tr("Figure"), tr("Value")});
+  figures_ = new QStandardItemModel(0, 4, this);
+  figures_->setHorizontalHeaderLabels({tr("Figure"), tr("Value"), tr("Unit"), tr("Meaning")});
   table_ = new QTableView(this);
   table_->setModel(figures_);
   table_->horizontalHeader()->setStretchLastSection(true);
@@ -166,8 +167,11 @@ void EvaluationPanel::Show(std::shared_ptr<const EvaluationOutcome> outcome) {
     return;
   }
   for (const auto& [key, value] : outcome->figures) {
+    const AccuracyFigureInfo info = DescribeAccuracyFigure(key);
     figures_->appendRow({new QStandardItem(QString::fromStdString(key)),
-                         new QStandardItem(QString::number(value, 'g', 6))});
+                         new QStandardItem(QString::number(value, 'g', 6)),
+                         new QStandardItem(QString::fromStdString(info.unit)),
+                         new QStandardItem(QString::fromStdString(info.meaning))});
   }
   QString summary = tr("%1 associated poses, ground-truth path %2 m.")
                         .arg(outcome->pairs)

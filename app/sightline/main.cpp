@@ -5,15 +5,12 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "app/sightline/button_picker_presenter.h"
+#include "app/sightline/builtin_presenters.h"
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
-#include "app/sightline/mobility_presenter.h"
-#include "app/sightline/mono_slam_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
-#include "app/sightline/stereo_vo_presenter.h"
 #include "app/sightline/translation.h"
 #include "widgets/vtk_gl_widget.h"
 
@@ -49,12 +46,12 @@ int main(int argc, char** argv) {
   parser.process(app);
 
   sightline::MainWindow window;
-  auto* mapping = new sightline::MappingPresenter();
-  window.AddPipeline(mapping);
-  window.AddPipeline(new sightline::StereoVoPresenter());
-  window.AddPipeline(new sightline::MobilityPresenter());
-  window.AddPipeline(new sightline::MonoSlamPresenter());
-  window.AddPipeline(new sightline::ButtonPickerPresenter());
+  // The Pipeline menu lists the core registry's pipelines, as `sightline-cli run` does.
+  sightline::PipelinePresenter* mapping = nullptr;
+  for (sightline::PipelinePresenter* presenter : sightline::MakeBuiltinPresenters()) {
+    if (qobject_cast<sightline::MappingPresenter*>(presenter) != nullptr) mapping = presenter;
+    window.AddPipeline(presenter);
+  }
   window.show();
   if (parser.isSet(pipeline_option) &&
       !window.ActivatePipelineByWord(parser.value(pipeline_option))) {
@@ -91,7 +88,7 @@ int main(int argc, char** argv) {
                        window.OpenPath(corridor);
                      });
     // The demo shows the pipelines that run on its corridor drive.
-    window.ActivatePipeline(mapping->Title());
+    if (mapping != nullptr) window.ActivatePipeline(mapping->Title());
     demo->Start();
   } else if (parser.isSet(open_option)) {
     const QString path = parser.value(open_option);

@@ -16,6 +16,7 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QToolBar>
 
@@ -74,6 +75,7 @@ void MainWindow::BuildViews() {
   secondary_dock_ = add_dock(secondary_view_, tr("Depth"), "depth_dock", Qt::LeftDockWidgetArea);
 
   parameter_panel_ = new ParameterPanel(this);
+  parameter_panel_->SetProfileExclusion("view.");  // Profiles hold pipeline options only.
   parameter_panel_->SetOptions(options_);
   add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
   log_panel_ = new LogPanel(this);
@@ -113,6 +115,8 @@ void MainWindow::BuildMenus() {
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));
   RebuildRecentMenu();
+  file->addSeparator();
+  BuildResults(file);
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"));
   quit->setShortcut(QKeySequence::Quit);
@@ -165,6 +169,10 @@ void MainWindow::BuildMenus() {
     evaluation_dock_->show();
     evaluation_dock_->raise();
   });
+  QAction* evaluate_run = tools->addAction(tr("Evaluate &current run"));
+  evaluate_run->setToolTip(
+      tr("Compares the running pipeline's trajectory with the dataset's ground truth."));
+  connect(evaluate_run, &QAction::triggered, this, &MainWindow::EvaluateCurrentRun);
   connect(tools->addAction(tr("&Calibrate camera...")), &QAction::triggered, this, [this] {
     const SourceInfo* info = playback_->info();
     OpenCalibrationDialog(this, info ? QString::fromStdString(info->path) : QString());

@@ -15,6 +15,7 @@ class QActionGroup;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QTemporaryDir;
 
 namespace sightline {
 
@@ -60,6 +61,12 @@ class MainWindow : public QMainWindow {
   // Sensors > Record / Stop recording, and the status bar's live-sensor indicator.
   RecordingController* recording() const { return recording_; }
   LiveStatusWidget* live_status() const { return live_status_; }
+  // File > Save results: writes the running pipeline's results into `folder` as `sightline-cli
+  // run` does (background; ResultsSaved or ResultsSaveFailed follows).
+  void SaveResultsTo(const QString& folder);
+  // Tools > Evaluate current run: the run's trajectory against the dataset's ground truth, in
+  // the evaluation dock.
+  void EvaluateCurrentRun();
   // Frames shown since the last open.
   int64_t frames_shown() const { return frames_shown_; }
 
@@ -68,6 +75,8 @@ class MainWindow : public QMainWindow {
   void FrameShown(int64_t sequence_id);
   void DatasetOpened(const QString& path);
   void DatasetFailed(const QString& message);
+  void ResultsSaved(const QString& folder);
+  void ResultsSaveFailed(const QString& message);
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -80,6 +89,9 @@ class MainWindow : public QMainWindow {
   // Record / Stop actions (menu and toolbar), recording progress and the live status
   // (main_window_recording.cpp).
   void BuildRecording(QMenu* sensors);
+  // File > Save results (main_window_results.cpp).
+  void BuildResults(QMenu* file);
+  void EvaluateSavedRun(const QString& folder);
   void ConnectPlayback();
   void ShowFrame(std::shared_ptr<const PlaybackResult> result);
   void OnOpened(const QString& path);
@@ -111,6 +123,7 @@ class MainWindow : public QMainWindow {
   OptionSet options_;
   int64_t frames_shown_ = 0;
   bool first_cloud_ = true;
+  std::unique_ptr<QTemporaryDir> evaluation_folder_;  // Where Evaluate current run saves.
 };
 
 }  // namespace sightline

@@ -3,142 +3,22 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QMainWindow>
 #include <QPainter>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <cstdio>
 
+#include "app/sightline/statistics_text.h"
 #include "core/io/floor_file.h"
-#include "core/mapping/mapping_frame_processor.h"
 #include "core/pipeline/mapping_pipeline.h"
-#include "core/pipeline/mapping_recording.h"
 #include "widgets/image_view.h"
 #include "widgets/scene_view.h"
 
 namespace sightline {
 
 namespace {
-
-// What the mapping processor hands the GUI for one frame.
-struct MappingViewResult : PipelineFrameResult {
-  std::shared_ptr<const MappingFrameResult> mapping;
-  std::optional<FloorPlane> floor;  // The floor calibration in use.
-  Eigen::Isometry3d base_from_camera = Eigen::Isometry3d::Identity();
-  std::string note;  // E.g. "calibrating the floor (2 of 5 frames)".
-};
-
-// Runs MappingFrameProcessor on the playback worker. The floor is calibrated from the first
-// frames, as the headless pipeline does; a threshold change restarts the map from the current
-// frame so that its effect shows at once.
-class MappingProcessor : public FrameProcessor {
- public:
-  MappingProcessor(SourceInfo info, std::shared_ptr<const std::atomic<int>> recalibrations)
-      : info_(std::move(info)),
-        recalibrations_(std::move(recalibrations)),
-        recalibrations_seen_(recalibrations_->load()) {}
-
-  Status Configure(const OptionSet& options) override {
-    MappingOptions mapping = options.Extract(MappingOptions::Describe());
-    MappingRunOptions run = options.Extract(MappingRunOptions::Describe());
-    std::string error;
-    if (!mapping.IsValid(&error) || !run.IsValid(&error)) return InvalidArgument(error);
-    StatusOr<MappingRecording> recording = LoadMappingRecording(info_, run);
-    if (!recording.ok()) return recording.status();
-    recording_ = std::move(*recording);
-    options_ = mapping;
-    run_ = run;
-    processor_ = std::make_unique<MappingFrameProcessor>(options_);
-    if (floor_) return processor_->Configure(*floor_, recording_.camera);
-    return Status::Ok();
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
-    return Run(frame);
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
-    if (processor_ && floor_) processor_->Restart();
-    return Run(frame);
-  }
-
-  void Reset() override {
-    if (processor_ && floor_) processor_->Restart();
-  }
-
- private:
-  std::shared_ptr<const PipelineFrameResult> Run(const Frame& frame) {
-    auto result = std::make_shared<MappingViewResult>();
-    result->stamp = StampOf(frame);
-    const auto* rgbd = std::get_if<RgbdFrame>(&frame);
-    if (rgbd == nullptr || !processor_) {
-      result->status = FailedPrecondition("mapping needs RGB-D frames");
-      return result;
-    }
-    if (const int requested = recalibrations_->load(); requested != recalibrations_seen_) {
-      recalibrations_seen_ = requested;  // The operator asked for a new floor calibration.
-      floor_.reset();
-      floor_points_.clear();
-      floor_frames_ = 0;
-    }
-    if (!floor_) {
-      // Calibrate the floor from the first frames, as `sightline-cli run mapping` does.
-      AppendDepthPoints(rgbd->depth_m, recording_.camera, options_.floor.max_depth_m, 2,
-                        &floor_points_);
-      if (++floor_frames_ < run_.floor_frames) {
-        char note[96];
-        std::snprintf(note, sizeof(note), "calibrating the floor (%d of %d frames)", floor_frames_,
-                      run_.floor_frames);
-        result->note = note;
-        return result;
-      }
-      StatusOr<FloorFitResult> fit = FloorPlaneEstimator(options_.floor).Fit(floor_points_);
-      floor_points_.clear();
-      floor_frames_ = 0;
-      if (!fit.ok()) {
-        result->status = fit.status().WithContext("floor calibration");
-        return result;
-      }
-      floor_ = fit->plane;
-      const Status configured = processor_->Configure(*floor_, recording_.camera);
-      if (!configured.ok()) {
-        result->status = configured;
-        floor_.reset();
-        return result;
-      }
-      char note[128];
-      std::snprintf(note, sizeof(note), "floor: camera %.3f m above it, pitched %.1f deg down",
-                    floor_->CameraHeightM(), floor_->PitchDownDeg());
-      result->note = note;
-    }
-    StatusOr<std::shared_ptr<const MappingFrameResult>> mapped =
-        processor_->Process(recording_.MakeInput(*rgbd, run_.gt_tolerance_s));
-    if (!mapped.ok()) {
-      result->status = mapped.status();
-      return result;
-    }
-    result->mapping = *mapped;
-    result->floor = floor_;
-    result->base_from_camera = processor_->base_from_camera();
-    const MappingStageTimes& t = (*mapped)->times;
-    result->stats = {
-        {"mapping/occupancy_ms", t.occupancy_ms}, {"mapping/scan_ms", t.scan_ms},
-        {"mapping/lines_ms", t.lines_ms},         {"mapping/rotation_ms", t.rotation_ms},
-        {"mapping/stitch_ms", t.stitch_ms},       {"mapping/total_ms", t.total_ms}};
-    return result;
-  }
-
-  SourceInfo info_;
-  std::shared_ptr<const std::atomic<int>> recalibrations_;
-  int recalibrations_seen_ = 0;
-  MappingOptions options_;
-  MappingRunOptions run_;
-  MappingRecording recording_;
-  std::unique_ptr<MappingFrameProcessor> processor_;
-  std::optional<FloorPlane> floor_;
-  std::vector<Eigen::Vector3f> floor_points_;
-  int floor_frames_ = 0;
-};
 
 // Free cells green, occupied red, people white, unknown dark grey (the seed's Fig. 4.19).
 cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
@@ -201,25 +81,14 @@ constexpr const char* kFloorLayer = "mapping/floor";
 
 }  // namespace
 
-MappingPresenter::MappingPresenter(QObject* parent) : PipelinePresenter(parent) {}
+MappingPresenter::MappingPresenter(QObject* parent)
+    : MappingPresenter(std::make_shared<MappingRequests>(), parent) {}
+
+MappingPresenter::MappingPresenter(std::shared_ptr<MappingRequests> requests, QObject* parent)
+    : PipelinePresenter(MappingPipelineInfo(requests), parent), requests_(std::move(requests)) {}
 
 const char* MappingPresenter::TitleSource() const {
   return QT_TR_NOOP("Indoor mapping (Manhattan walls)");
-}
-
-Status MappingPresenter::DeclareOptions(OptionSet* options) const {
-  // Headless runs never render the map per frame; the GUI shows it growing.
-  MappingOptions defaults;
-  defaults.stitch.render_every_n = 10;
-  SIGHTLINE_RETURN_IF_ERROR(options->Declare(MappingOptions::Describe(), defaults));
-  return options->Declare(MappingRunOptions::Describe());
-}
-
-bool MappingPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kRgbd; }
-
-std::unique_ptr<Pipeline> MappingPresenter::CreateProcessor(const PipelineSource& source) {
-  const SourceInfo& info = source.info;
-  return std::make_unique<MappingProcessor>(info, recalibrations_);
 }
 
 void MappingPresenter::Attach(QMainWindow* window) {
@@ -251,6 +120,9 @@ void MappingPresenter::Attach(QMainWindow* window) {
     buttons->addStretch();
     layout->addLayout(buttons);
     layout->addWidget(occupancy_view_, 1);
+    figures_ = new QLabel(panel);
+    figures_->setWordWrap(true);
+    layout->addWidget(figures_);
     occupancy_dock_->setWidget(panel);
     map_dock_ = new QDockWidget(tr("Stitched map"), window);
     map_dock_->setObjectName("mapping_map_dock");
@@ -273,11 +145,12 @@ void MappingPresenter::Detach() {
 }
 
 void MappingPresenter::Show(const PlaybackResult& result) {
-  const auto* view = dynamic_cast<const MappingViewResult*>(result.pipeline.get());
+  const auto* view = dynamic_cast<const MappingResult*>(result.pipeline.get());
   if (view == nullptr || occupancy_view_ == nullptr) return;
   if (!view->note.empty()) emit Message(0, QString::fromStdString(view->note));
   if (!view->mapping) return;
   floor_ = view->floor;
+  figures_->setText(StatisticsText(*view, MappingStatistics()));
   const std::shared_ptr<const MappingFrameResult> mapping = view->mapping;
   occupancy_view_->SetImage(OccupancyToBgr(mapping->occupancy));
   // Rays from the robot to each scan point, and the wall lines by Manhattan direction.
@@ -325,7 +198,7 @@ std::vector<std::string> MappingPresenter::SceneLayers() {
 }
 
 void MappingPresenter::RecalibrateFloor() {
-  recalibrations_->fetch_add(1);
+  requests_->floor_calibrations.fetch_add(1);
   emit Message(0, tr("Calibrating the floor again from the next frames."));
 }
 

@@ -2,22 +2,26 @@
 // (coloured by Manhattan direction), and the stitched map growing with the trajectory.
 #pragma once
 
-#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/sightline/pipeline_presenter.h"
 #include "core/common/floor.h"
+#include "core/pipeline/mapping_result.h"
 
 class QDockWidget;
+class QLabel;
 
 namespace sightline {
 
 class ImageView;
 class SceneView;
 
-// Presenter of the "mapping" pipeline (seed 000). Needs RGB-D frames.
+// Presenter of the "mapping" pipeline (seed 000): draws the results of the registry's
+// MappingPipeline (core/pipeline/mapping_pipeline.h), the object `sightline-cli run mapping`
+// runs. Needs RGB-D frames.
 class MappingPresenter : public PipelinePresenter {
   Q_OBJECT
 
@@ -25,9 +29,6 @@ class MappingPresenter : public PipelinePresenter {
   explicit MappingPresenter(QObject* parent = nullptr);
 
   const char* TitleSource() const override;
-  Status DeclareOptions(OptionSet* options) const override;
-  bool Accepts(SourceKind kind) const override;
-  std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) override;
   void Attach(QMainWindow* window) override;
   void Detach() override;
   void Show(const PlaybackResult& result) override;
@@ -44,14 +45,17 @@ class MappingPresenter : public PipelinePresenter {
   static std::vector<std::string> SceneLayers();
 
  private:
+  MappingPresenter(std::shared_ptr<MappingRequests> requests, QObject* parent);
+
   QDockWidget* occupancy_dock_ = nullptr;
   QDockWidget* map_dock_ = nullptr;
   ImageView* occupancy_view_ = nullptr;
   ImageView* map_view_ = nullptr;
+  QLabel* figures_ = nullptr;   // The frame's statistics with their units.
   SceneView* scene_ = nullptr;  // The window's 3D view: walls and floor beside the cloud.
   std::string last_status_ = "ok";
-  // Shared with the processor on the worker thread: bumped to ask for a new floor fit.
-  std::shared_ptr<std::atomic<int>> recalibrations_ = std::make_shared<std::atomic<int>>(0);
+  // Shared with the pipeline on the worker thread ("Calibrate floor").
+  std::shared_ptr<MappingRequests> requests_;
   std::optional<FloorPlane> floor_;  // The calibration of the last shown frame.
 };
 

@@ -17,7 +17,9 @@ class MobilityImagePanel;
 class MobilityTimingPanel;
 class SceneView;
 
-// Presenter of the "mobility" pipeline. Needs RGB-D frames or point clouds.
+// Presenter of the "mobility" pipeline: draws the results of the registry's MobilityPipeline
+// (core/pipeline/mobility_pipeline.h), the object `sightline-cli run mobility` runs. Needs
+// RGB-D frames or point clouds.
 class MobilityPresenter : public PipelinePresenter {
   Q_OBJECT
 
@@ -25,9 +27,6 @@ class MobilityPresenter : public PipelinePresenter {
   explicit MobilityPresenter(QObject* parent = nullptr);
 
   const char* TitleSource() const override;
-  Status DeclareOptions(OptionSet* options) const override;
-  bool Accepts(SourceKind kind) const override;
-  std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) override;
   void Attach(QMainWindow* window) override;
   void Detach() override;
   void Show(const PlaybackResult& result) override;

@@ -35,23 +35,28 @@ MobilityTimingPanel::MobilityTimingPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(table_, 1);
 }
 
-void MobilityTimingPanel::Show(const MobilityResult& result) {
+void MobilityTimingPanel::Show(const MobilityFrameResult& frame) {
+  const MobilityResult& result = *frame.mobility;
   table_->setRowCount(static_cast<int>(result.stages.size()) + 1);
   int row = 0;
+  double total_ms = 0;
   for (const StageReport& s : result.stages) {
+    const double ms = frame.Stat("mobility/" + s.name + "_ms").value_or(0);
+    const double points = frame.Stat("mobility/" + s.name + "_points").value_or(0);
+    total_ms += ms;
     table_->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(s.name)));
-    table_->setItem(row, 1, new QTableWidgetItem(QString::number(s.ms, 'f', 2)));
-    table_->setItem(row, 2, new QTableWidgetItem(QString::number(s.points)));
+    table_->setItem(row, 1, new QTableWidgetItem(QString::number(ms, 'f', 2)));
+    table_->setItem(row, 2, new QTableWidgetItem(QString::number(points, 'f', 0)));
     ++row;
   }
   table_->setItem(row, 0, new QTableWidgetItem(tr("Total")));
-  table_->setItem(row, 1, new QTableWidgetItem(QString::number(result.TotalMs(), 'f', 2)));
+  table_->setItem(row, 1, new QTableWidgetItem(QString::number(total_ms, 'f', 2)));
   table_->setItem(row, 2, new QTableWidgetItem(QString()));
   QString text = tr("%1 mode, %2 segments")
                      .arg(QString::fromStdString(result.mode))
-                     .arg(result.segments.size());
-  if (result.ground.found) {
-    text += tr(", camera %1 m above the ground").arg(result.ground.d, 0, 'f', 3);
+                     .arg(frame.Stat("mobility/segments").value_or(0));
+  if (const auto height = frame.Stat("mobility/ground_height_m")) {
+    text += tr(", camera %1 m above the ground").arg(*height, 0, 'f', 3);
   }
   if (!result.status.ok()) text += "\n" + QString::fromStdString(result.status.message());
   summary_->setText(text);

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/mobility/mobility_types.h"
+#include "core/pipeline/mobility_result.h"
 
 class QComboBox;
 class QLabel;
@@ -21,8 +22,8 @@ class MobilityTimingPanel : public QWidget {
 
  public:
   explicit MobilityTimingPanel(QWidget* parent = nullptr);
-  // Shows one frame's stages, status and segment count.
-  void Show(const MobilityResult& result);
+  // Shows one frame's stages (its statistics, with their units), status and segment count.
+  void Show(const MobilityFrameResult& result);
   const QTableWidget* table() const { return table_; }
   // How the 3D cloud is coloured: by the rule's score, the GPR's score or the segment.
   QComboBox* color_choice() const { return color_choice_; }

@@ -45,8 +45,8 @@ class PipelinePresenter : public QObject {
   }
   // Whether the pipeline can run on frames of this kind.
   virtual bool Accepts(SourceKind kind) const { return info_.Accepts(kind); }
-  // The pipeline object for an opened source (its info and ground truth), or nullptr when the source lacks what it needs (then
-  // Message says why).
+  // The pipeline object for an opened source (its info and ground truth), or nullptr when the
+  // source lacks what it needs (then Message says why).
   virtual std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) {
     if (!info_.create || !info_.Accepts(source.info.kind)) return nullptr;
     return info_.create();

@@ -7,6 +7,7 @@
 #include "core/common/depth_cloud.h"
 #include "core/common/timing.h"
 #include "core/io/dataset.h"
+#include "core/pipeline/pipeline_registry.h"
 #include "core/pipeline/player.h"
 #include "core/sensors/driver_registry.h"
 #include "core/sensors/live_source.h"
@@ -139,6 +140,8 @@ void PlaybackController::RebuildProcessor() {
   processor_ = std::move(processor);
   processor_source_ = std::move(source);
   processor_opened_ = false;
+  processor_timing_.Clear();
+  processor_started_s_ = 0;
   processor_options_dirty_ = true;
   last_processed_id_ = -1;
 }
@@ -187,10 +190,50 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
     // A seek or a loop breaks the sequence: the pipeline starts over.
     if (last_processed_id_ >= 0 && id != last_processed_id_ + 1) processor_->Reset();
     last_processed_id_ = id;
+    const double start = HostTimeS();
+    if (processor_started_s_ == 0) processor_started_s_ = start;
     result = processor_->Process(frame);
+    if (result.ok()) {
+      AddFrameTiming(processor_->Statistics(), **result, (HostTimeS() - start) * 1000.0,
+                     &processor_timing_);
+    }
   }
   if (!result.ok()) return FailedResult(frame, result.status());
   return *result;
+}
+
+void PlaybackController::SaveResults(const QString& folder, const QString& pipeline_name) {
+  QPointer<PlaybackController> self(this);
+  const std::string out_dir = folder.toStdString();
+  const std::string name = pipeline_name.toStdString();
+  Track(QtConcurrent::run([this, self, folder, out_dir, name] {
+    StatusOr<RunReport> report = FailedPrecondition("no pipeline is running: nothing to save");
+    {
+      std::lock_guard<std::mutex> lock(processor_mutex_);
+      if (processor_ && processor_opened_) {
+        const double wall_s = processor_started_s_ > 0 ? HostTimeS() - processor_started_s_ : 0;
+        report = SaveRun(*processor_, name, processor_source_.info.path, processor_timing_, wall_s,
+                         processor_options_, out_dir);
+      }
+    }
+    QStringList files;
+    if (report.ok()) {
+      for (const std::string& file : report->result.outputs) files << QString::fromStdString(file);
+    }
+    const QString message =
+        report.ok() ? QString() : QString::fromStdString(report.status().ToString());
+    QMetaObject::invokeMethod(
+        this,
+        [self, folder, files, message] {
+          if (!self) return;
+          if (message.isEmpty()) {
+            emit self->ResultsSaved(folder, files);
+          } else {
+            emit self->SaveFailed(message);
+          }
+        },
+        Qt::QueuedConnection);
+  }));
 }
 
 std::shared_ptr<const PipelineFrameResult> PlaybackController::FailedResult(const Frame& frame,

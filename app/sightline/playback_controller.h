@@ -4,6 +4,7 @@
 #include <QFuture>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -13,6 +14,7 @@
 
 #include "app/sightline/playback_result.h"
 #include "app/sightline/view_options.h"
+#include "core/common/timing.h"
 #include "core/io/source.h"
 #include "core/sensors/sensor_stats.h"
 
@@ -56,6 +58,11 @@ class PlaybackController : public QObject {
   // New pipeline options: applied before the next frame, and the current frame is run again.
   void SetPipelineOptions(const OptionSet& options);
 
+  // Writes the running pipeline's results so far into `folder`, exactly the files `sightline-cli
+  // run` writes (metrics.json included), in the background; emits ResultsSaved or SaveFailed.
+  // `pipeline_name` is the registry's name, written into metrics.json.
+  void SaveResults(const QString& folder, const QString& pipeline_name);
+
   // Called on the reading thread with every frame read (the recorder); nullptr removes it, and
   // so does opening another source.
   using FrameTap = std::function<void(const Frame& frame)>;
@@ -75,6 +82,9 @@ class PlaybackController : public QObject {
   // A frame could not be read; playback pauses. The message names the file.
   void ReadError(const QString& message);
   void EndOfStream();
+  // SaveResults finished: the folder and the files written in it.
+  void ResultsSaved(const QString& folder, const QStringList& files);
+  void SaveFailed(const QString& message);
 
  private:
   void StartWorker(std::unique_ptr<Player> player);
@@ -112,6 +122,8 @@ class PlaybackController : public QObject {
   OptionSet processor_options_;
   bool processor_options_dirty_ = false;
   int64_t last_processed_id_ = -1;
+  TimingStats processor_timing_;    // This run's per-stage timing, as metrics.json reports it.
+  double processor_started_s_ = 0;  // Host time of the run's first frame (0: none yet).
 
   mutable std::mutex mutex_;  // Guards everything below.
   ViewOptions view_options_;

@@ -6,8 +6,7 @@
 #include <QPainter>
 #include <QVBoxLayout>
 
-#include "core/io/dataset.h"
-#include "core/stereo/stereo_odometry.h"
+#include "core/pipeline/stereo_vo_result.h"
 #include "widgets/image_view.h"
 #include "widgets/scene_view.h"
 #include "widgets/time_series_plot.h"
@@ -15,80 +14,6 @@
 namespace sightline {
 
 namespace {
-
-// What the stereo processor hands the GUI for one frame.
-struct StereoViewResult : PipelineFrameResult {
-  std::shared_ptr<const StereoOdometryResult> odometry;
-  std::optional<Eigen::Isometry3d> ground_truth;  // world_from_camera, in the estimate's frame.
-};
-
-// Runs StereoOdometry on the playback worker. The estimate starts at the first frame's camera;
-// ground truth is re-expressed relative to that frame so both share one frame in the 3D view.
-class StereoVoProcessor : public FrameProcessor {
- public:
-  StereoVoProcessor(SourceInfo info, std::shared_ptr<const Trajectory> ground_truth)
-      : info_(std::move(info)), ground_truth_(std::move(ground_truth)) {}
-
-  Status Configure(const OptionSet& options) override {
-    StereoOdometryOptions parsed = options.Extract(StereoOdometryOptions::Describe());
-    if (!info_.stereo) {
-      return FailedPrecondition(info_.path +
-                                ": no stereo calibration; open a live pair with one, "
-                                "aravis://LEFT,RIGHT?calibration_file=FILE");
-    }
-    auto odometry = std::make_unique<StereoOdometry>(parsed);
-    SIGHTLINE_RETURN_IF_ERROR(odometry->Configure(*info_.stereo));
-    odometry_ = std::move(odometry);
-    first_gt_.reset();
-    return Status::Ok();
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
-    auto result = std::make_shared<StereoViewResult>();
-    result->stamp = StampOf(frame);
-    const auto* stereo = std::get_if<StereoFrame>(&frame);
-    if (stereo == nullptr || !odometry_) {
-      result->status = FailedPrecondition("stereo odometry needs stereo frames");
-      return result;
-    }
-    StatusOr<std::shared_ptr<const StereoOdometryResult>> r = odometry_->Process(*stereo);
-    if (!r.ok()) {
-      result->status = r.status();
-      return result;
-    }
-    result->odometry = *r;
-    const FrameStats& s = (*r)->stats;
-    result->stats = {{"vo/tracked", double(s.tracked)},
-                     {"vo/inliers", double(s.inliers)},
-                     {"vo/ransac_iterations", double(s.ransac_iterations)},
-                     {"vo/residual_px", s.residual_px}};
-    if (ground_truth_) {
-      if (auto i = ground_truth_->Nearest(stereo->stamp.sensor_time_s, 0.02)) {
-        const Eigen::Isometry3d& world_from_camera = ground_truth_->poses()[*i].world_from_sensor;
-        if (!first_gt_) first_gt_ = world_from_camera;
-        result->ground_truth = first_gt_->inverse() * world_from_camera;
-      }
-    }
-    return result;
-  }
-
-  // Odometry integrates motion: a re-run restarts it from the current frame.
-  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
-    Reset();
-    return ProcessFrame(frame);
-  }
-
-  void Reset() override {
-    if (odometry_) odometry_->Reset();
-    first_gt_.reset();
-  }
-
- private:
-  SourceInfo info_;
-  std::shared_ptr<const Trajectory> ground_truth_;
-  std::unique_ptr<StereoOdometry> odometry_;
-  std::optional<Eigen::Isometry3d> first_gt_;
-};
 
 QColor RoleColor(FeatureRole role) {
   switch (role) {
@@ -106,61 +31,97 @@ constexpr const char* kEstimateLayer = "vo/estimate";
 constexpr const char* kGroundTruthLayer = "vo/ground_truth";
 constexpr const char* kCameraLayer = "vo/camera";
 
+// A plotted statistic: its key, its series name and colour.
+struct Series {
+  const char* key;
+  const char* label;  // Translated in the presenter's context.
+  QColor color;
+};
+
+const Series kCountSeries[] = {
+    {"vo/tracked", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "tracks"),
+     QColor(60, 120, 255)},
+    {"vo/anchored", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "anchored"),
+     QColor(0, 200, 200)},
+    {"vo/stereo_matches", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "stereo"),
+     QColor(255, 200, 0)},
+    {"vo/inliers", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "inliers"),
+     QColor(40, 220, 40)},
+    {"vo/ransac_iterations", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "RANSAC it."),
+     QColor(230, 120, 230)}};
+
+const Series kTimingSeries[] = {
+    {"vo/rectify_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "rectify"),
+     QColor(150, 150, 150)},
+    {"vo/pyramid_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "pyramid"),
+     QColor(0, 200, 200)},
+    {"vo/tracking_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "tracking"),
+     QColor(60, 120, 255)},
+    {"vo/detection_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "detection"),
+     QColor(255, 140, 0)},
+    {"vo/matching_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "matching"),
+     QColor(255, 200, 0)},
+    {"vo/ransac_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "RANSAC"),
+     QColor(230, 120, 230)},
+    {"vo/refine_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "refine"),
+     QColor(40, 220, 40)},
+    {"vo/window_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "window BA"),
+     QColor(200, 80, 80)},
+    {"vo/total_ms", QT_TRANSLATE_NOOP("sightline::StereoVoPresenter", "total"),
+     QColor(240, 240, 240)}};
+
+// The unit of statistic `key` from the pipeline's table.
+QString Unit(const char* key) {
+  const StatisticInfo* info = FindStatistic(StereoVoStatistics(), key);
+  return info != nullptr ? QString::fromStdString(info->unit) : QString();
+}
+
+// A frame's value of `key`; 0 when the frame has none (a stage that did not run).
+double Value(const StereoVoResult& result, const char* key) {
+  return result.Stat(key).value_or(0.0);
+}
+
 }  // namespace
 
-StereoVoPresenter::StereoVoPresenter(QObject* parent) : PipelinePresenter(parent) {}
+StereoVoPresenter::StereoVoPresenter(QObject* parent)
+    : PipelinePresenter(*BuiltinPipelines().Find("stereo-vo"), parent) {}
 
 const char* StereoVoPresenter::TitleSource() const { return QT_TR_NOOP("Stereo visual odometry"); }
 
-Status StereoVoPresenter::DeclareOptions(OptionSet* options) const {
-  return options->Declare(StereoOdometryOptions::Describe());
-}
-
-bool StereoVoPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kStereo; }
-
-std::unique_ptr<Pipeline> StereoVoPresenter::CreateProcessor(const PipelineSource& source) {
-  const SourceInfo& info = source.info;
-  // The recording's ground truth, if any, to draw beside the estimate.
-  std::shared_ptr<const Trajectory> ground_truth;
-  if (info.has_ground_truth && !info.live) {
-    StatusOr<std::unique_ptr<Source>> source = OpenDataset(info.path, SourceKind::kStereo);
-    if (source.ok() && (*source)->ground_truth() != nullptr) {
-      ground_truth = std::make_shared<const Trajectory>(*(*source)->ground_truth());
-    }
+void StereoVoPresenter::CreateViews(QMainWindow* window) {
+  auto* panel = new QWidget(window);
+  auto* layout = new QVBoxLayout(panel);
+  layout->setContentsMargins(0, 0, 0, 0);
+  stats_label_ = new QLabel(panel);
+  tracks_view_ = new ImageView(panel);
+  layout->addWidget(stats_label_);
+  layout->addWidget(tracks_view_, 1);
+  tracks_dock_ = new QDockWidget(tr("Tracks (inliers green, outliers red, new blue)"), window);
+  tracks_dock_->setObjectName("vo_tracks_dock");
+  tracks_dock_->setWidget(panel);
+  matches_view_ = new ImageView(window);
+  matches_dock_ = new QDockWidget(tr("Stereo matches (right image)"), window);
+  matches_dock_->setObjectName("vo_matches_dock");
+  matches_dock_->setWidget(matches_view_);
+  auto* plots = new QWidget(window);
+  auto* plots_layout = new QVBoxLayout(plots);
+  plots_layout->setContentsMargins(0, 0, 0, 0);
+  // Plot titles carry the units of the pipeline's statistics table.
+  counts_plot_ = new TimeSeriesPlot(tr("per frame [%1]").arg(Unit("vo/tracked")), plots);
+  timing_plot_ = new TimeSeriesPlot(tr("%1 per stage").arg(Unit("vo/tracking_ms")), plots);
+  residual_plot_ =
+      new TimeSeriesPlot(tr("residual [%1]; red: gated").arg(Unit("vo/residual_px")), plots);
+  for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) {
+    plot->SetCapacity(300);
+    plots_layout->addWidget(plot, 1);
   }
-  return std::make_unique<StereoVoProcessor>(info, std::move(ground_truth));
+  stats_dock_ = new QDockWidget(tr("Statistics over time"), window);
+  stats_dock_->setObjectName("vo_stats_dock");
+  stats_dock_->setWidget(plots);
 }
 
 void StereoVoPresenter::Attach(QMainWindow* window) {
-  if (tracks_dock_ == nullptr) {
-    auto* panel = new QWidget(window);
-    auto* layout = new QVBoxLayout(panel);
-    layout->setContentsMargins(0, 0, 0, 0);
-    stats_label_ = new QLabel(panel);
-    tracks_view_ = new ImageView(panel);
-    layout->addWidget(stats_label_);
-    layout->addWidget(tracks_view_, 1);
-    tracks_dock_ = new QDockWidget(tr("Tracks (inliers green, outliers red, new blue)"), window);
-    tracks_dock_->setObjectName("vo_tracks_dock");
-    tracks_dock_->setWidget(panel);
-    matches_view_ = new ImageView(window);
-    matches_dock_ = new QDockWidget(tr("Stereo matches (right image)"), window);
-    matches_dock_->setObjectName("vo_matches_dock");
-    matches_dock_->setWidget(matches_view_);
-    auto* plots = new QWidget(window);
-    auto* plots_layout = new QVBoxLayout(plots);
-    plots_layout->setContentsMargins(0, 0, 0, 0);
-    counts_plot_ = new TimeSeriesPlot(tr("per frame: counts"), plots);
-    timing_plot_ = new TimeSeriesPlot(tr("ms per stage"), plots);
-    residual_plot_ = new TimeSeriesPlot(tr("residual [px]; red: gated"), plots);
-    for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) {
-      plot->SetCapacity(300);
-      plots_layout->addWidget(plot, 1);
-    }
-    stats_dock_ = new QDockWidget(tr("Statistics over time"), window);
-    stats_dock_->setObjectName("vo_stats_dock");
-    stats_dock_->setWidget(plots);
-  }
+  if (tracks_dock_ == nullptr) CreateViews(window);
   scene_ = window->findChild<SceneView*>();
   window->addDockWidget(Qt::LeftDockWidgetArea, tracks_dock_);
   window->addDockWidget(Qt::LeftDockWidgetArea, matches_dock_);
@@ -187,10 +148,10 @@ void StereoVoPresenter::Detach() {
 }
 
 void StereoVoPresenter::Show(const PlaybackResult& result) {
-  const auto* view = dynamic_cast<const StereoViewResult*>(result.pipeline.get());
+  const auto* view = dynamic_cast<const StereoVoResult*>(result.pipeline.get());
   if (view == nullptr || tracks_view_ == nullptr || !view->odometry) return;
-  const std::shared_ptr<const StereoOdometryResult> odometry = view->odometry;
-  // A jump back (seek, loop) starts the drawn trajectories over, as the processor does.
+  const std::shared_ptr<const StereoOdometryResult>& odometry = view->odometry;
+  // A jump back (seek, loop) starts the drawn trajectories over, as the pipeline does.
   if (odometry->stamp.sequence_id <= last_id_) {
     estimate_ = Trajectory();
     ground_truth_drawn_ = Trajectory();
@@ -198,7 +159,24 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
     fitted_box_.setEmpty();
   }
   last_id_ = odometry->stamp.sequence_id;
+  DrawImages(odometry);
+  ShowSummary(*view);
 
+  estimate_.Add(odometry->stamp.sensor_time_s, odometry->world_from_camera);
+  if (view->ground_truth)
+    ground_truth_drawn_.Add(odometry->stamp.sensor_time_s, *view->ground_truth);
+  if (scene_ != nullptr) {
+    scene_->SetTrajectory(kEstimateLayer, estimate_, QColor(255, 80, 80), 3.0);
+    if (!ground_truth_drawn_.empty()) {
+      scene_->SetTrajectory(kGroundTruthLayer, ground_truth_drawn_, QColor(80, 160, 255), 2.0);
+    }
+    scene_->SetFrusta(kCameraLayer, {odometry->world_from_camera}, QColor(255, 80, 80), 1.0);
+    FitViewIfGrown();
+  }
+  PlotStatistics(*view);
+}
+
+void StereoVoPresenter::DrawImages(const std::shared_ptr<const StereoOdometryResult>& odometry) {
   tracks_view_->SetImage(odometry->left_rectified);
   tracks_view_->SetOverlayPainter([odometry](QPainter& painter, const QTransform& to_widget) {
     for (const TrackedFeature& f : odometry->features) {
@@ -217,53 +195,31 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
       painter.drawEllipse(to_widget.map(QPointF(f.right.x, f.right.y)), 2.5, 2.5);
     }
   });
-  const FrameStats& s = odometry->stats;
-  stats_label_->setText(tr("tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual "
-                           "%6 px, %7 ms%8")
-                            .arg(s.tracked)
-                            .arg(s.new_features)
-                            .arg(s.stereo_matches)
-                            .arg(s.inliers)
-                            .arg(s.ransac_iterations)
-                            .arg(s.residual_px, 0, 'f', 2)
-                            .arg(s.total_ms, 0, 'f', 1)
-                            .arg(s.gated ? tr(", GATED: pose held") : QString()));
-
-  estimate_.Add(odometry->stamp.sensor_time_s, odometry->world_from_camera);
-  if (view->ground_truth)
-    ground_truth_drawn_.Add(odometry->stamp.sensor_time_s, *view->ground_truth);
-  if (scene_ != nullptr) {
-    scene_->SetTrajectory(kEstimateLayer, estimate_, QColor(255, 80, 80), 3.0);
-    if (!ground_truth_drawn_.empty()) {
-      scene_->SetTrajectory(kGroundTruthLayer, ground_truth_drawn_, QColor(80, 160, 255), 2.0);
-    }
-    scene_->SetFrusta(kCameraLayer, {odometry->world_from_camera}, QColor(255, 80, 80), 1.0);
-    FitViewIfGrown();
-  }
-  PlotStatistics(odometry->stamp.sequence_id, s);
 }
 
-void StereoVoPresenter::PlotStatistics(int64_t frame, const FrameStats& s) {
-  const double x = static_cast<double>(frame);
-  counts_plot_->Append(tr("tracks"), x, s.tracked, QColor(60, 120, 255));
-  counts_plot_->Append(tr("anchored"), x, s.anchored, QColor(0, 200, 200));
-  counts_plot_->Append(tr("stereo"), x, s.stereo_matches, QColor(255, 200, 0));
-  counts_plot_->Append(tr("inliers"), x, s.inliers, QColor(40, 220, 40));
-  counts_plot_->Append(tr("RANSAC it."), x, s.ransac_iterations, QColor(230, 120, 230));
-  const std::pair<QString, double> stages[] = {
-      {tr("rectify"), s.rectify_ms},   {tr("pyramid"), s.pyramid_ms},
-      {tr("tracking"), s.tracking_ms}, {tr("detection"), s.detection_ms},
-      {tr("matching"), s.matching_ms}, {tr("RANSAC"), s.ransac_ms},
-      {tr("refine"), s.refine_ms},     {tr("window BA"), s.window_ms},
-      {tr("total"), s.total_ms}};
-  const QColor colors[] = {QColor(150, 150, 150), QColor(0, 200, 200), QColor(60, 120, 255),
-                           QColor(255, 140, 0),   QColor(255, 200, 0), QColor(230, 120, 230),
-                           QColor(40, 220, 40),   QColor(200, 80, 80), QColor(240, 240, 240)};
-  for (size_t i = 0; i < std::size(stages); ++i) {
-    timing_plot_->Append(stages[i].first, x, stages[i].second, colors[i]);
-  }
-  residual_plot_->Append(tr("residual"), x, s.residual_px, QColor(255, 200, 0));
-  if (s.gated) {
+void StereoVoPresenter::ShowSummary(const StereoVoResult& r) {
+  stats_label_->setText(
+      tr("tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10")
+          .arg(Value(r, "vo/tracked"))
+          .arg(Value(r, "vo/new_features"))
+          .arg(Value(r, "vo/stereo_matches"))
+          .arg(Value(r, "vo/inliers"))
+          .arg(Value(r, "vo/ransac_iterations"))
+          .arg(Value(r, "vo/residual_px"), 0, 'f', 2)
+          .arg(Unit("vo/residual_px"))
+          .arg(Value(r, "vo/total_ms"), 0, 'f', 1)
+          .arg(Unit("vo/total_ms"))
+          .arg(Value(r, "vo/gated") != 0 ? tr(", GATED: pose held") : QString()));
+}
+
+void StereoVoPresenter::PlotStatistics(const StereoVoResult& r) {
+  const double x = static_cast<double>(r.stamp.sequence_id);
+  for (const Series& s : kCountSeries)
+    counts_plot_->Append(tr(s.label), x, Value(r, s.key), s.color);
+  for (const Series& s : kTimingSeries)
+    timing_plot_->Append(tr(s.label), x, Value(r, s.key), s.color);
+  residual_plot_->Append(tr("residual"), x, Value(r, "vo/residual_px"), QColor(255, 200, 0));
+  if (Value(r, "vo/gated") != 0) {
     counts_plot_->AddMarker(x);
     residual_plot_->AddMarker(x);
   }

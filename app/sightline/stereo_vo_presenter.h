@@ -19,19 +19,18 @@ namespace sightline {
 class ImageView;
 class SceneView;
 class TimeSeriesPlot;
-struct FrameStats;
+struct StereoOdometryResult;
+struct StereoVoResult;
 
-// Presenter of the "stereo-vo" pipeline (seed 003). Needs stereo frames.
+// Presenter of the "stereo-vo" pipeline (seed 003): draws StereoVoPipeline's results.
 class StereoVoPresenter : public PipelinePresenter {
   Q_OBJECT
 
  public:
+  // The registry's "stereo-vo" entry: its options, sources and pipeline object.
   explicit StereoVoPresenter(QObject* parent = nullptr);
 
   const char* TitleSource() const override;
-  Status DeclareOptions(OptionSet* options) const override;
-  bool Accepts(SourceKind kind) const override;
-  std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) override;
   void Attach(QMainWindow* window) override;
   void Detach() override;
   void Show(const PlaybackResult& result) override;
@@ -50,8 +49,14 @@ class StereoVoPresenter : public PipelinePresenter {
   int view_fits() const { return view_fits_; }
 
  private:
-  // Appends one frame's statistics to the plots.
-  void PlotStatistics(int64_t frame, const FrameStats& stats);
+  // Creates the docks, views and plots on the first Attach.
+  void CreateViews(QMainWindow* window);
+  // Draws the rectified images with the tracks and the stereo matches.
+  void DrawImages(const std::shared_ptr<const StereoOdometryResult>& odometry);
+  // The one-line summary above the tracks, from the frame's named statistics.
+  void ShowSummary(const StereoVoResult& result);
+  // Appends one frame's named statistics to the plots.
+  void PlotStatistics(const StereoVoResult& result);
   // Re-fits the 3D view when the drawn trajectories leave the last fitted box.
   void FitViewIfGrown();
 

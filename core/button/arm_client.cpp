@@ -68,7 +68,12 @@ StatusOr<ArmClient> ArmClient::Connect(const std::string& host, int port, const 
   return client;
 }
 
-ArmClient::ArmClient(ArmClient&& o) noexcept : fd_(o.fd_), buffer_(std::move(o.buffer_)) {
+ArmClient::ArmClient(ArmClient&& o) noexcept
+    : fd_(o.fd_),
+      buffer_(std::move(o.buffer_)),
+      max_line_bytes_(o.max_line_bytes_),
+      discarding_(o.discarding_),
+      discarded_(o.discarded_) {
   o.fd_ = -1;
 }
 
@@ -77,6 +82,9 @@ ArmClient& ArmClient::operator=(ArmClient&& o) noexcept {
     Close();
     fd_ = o.fd_;
     buffer_ = std::move(o.buffer_);
+    max_line_bytes_ = o.max_line_bytes_;
+    discarding_ = o.discarding_;
+    discarded_ = o.discarded_;
     o.fd_ = -1;
   }
   return *this;
@@ -109,9 +117,27 @@ StatusOr<std::string> ArmClient::ReadLine(int timeout_ms) {
   while (true) {
     const size_t newline = buffer_.find('\n');
     if (newline != std::string::npos) {
+      if (discarding_) {  // The end of an over-long line: report it, keep what follows.
+        const size_t length = discarded_ + newline;
+        buffer_.erase(0, newline + 1);
+        discarding_ = false;
+        discarded_ = 0;
+        return ParseError("arm client: dropped a line of " + std::to_string(length) +
+                          " bytes (longer than " + std::to_string(max_line_bytes_) + ")");
+      }
+      if (newline > max_line_bytes_) {
+        buffer_.erase(0, newline + 1);
+        return ParseError("arm client: dropped a line of " + std::to_string(newline) +
+                          " bytes (longer than " + std::to_string(max_line_bytes_) + ")");
+      }
       std::string line = buffer_.substr(0, newline);
       buffer_.erase(0, newline + 1);
       return line;
+    }
+    if (buffer_.size() > max_line_bytes_) {  // No end in sight: drop what came so far.
+      discarding_ = true;
+      discarded_ += buffer_.size();
+      buffer_.clear();
     }
     if (fd_ < 0) return Unavailable("arm client: connection closed");
     const auto left =
@@ -127,6 +153,11 @@ StatusOr<std::string> ArmClient::ReadLine(int timeout_ms) {
     if (n == 0) {
       Close();
       return Unavailable("arm client: connection closed by the server");
+    }
+    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+      const std::string reason = std::strerror(errno);
+      Close();
+      return Unavailable("arm client: connection lost: " + reason);
     }
     if (n > 0) buffer_.append(chunk, size_t(n));
   }

@@ -29,8 +29,12 @@ class ArmClient {
   ~ArmClient();
 
   // The next line without its '\n'. OutOfRange after timeout_ms without a whole line;
-  // Unavailable once the server closed the connection.
+  // Unavailable once the server closed (or reset) the connection; ParseError for a line longer
+  // than max_line_bytes (it is dropped whole, the next call reads the line after it).
   StatusOr<std::string> ReadLine(int timeout_ms);
+  // Longest line ReadLine() returns (default 65536 bytes): memory stays bounded whatever the
+  // peer sends.
+  void set_max_line_bytes(size_t bytes) { max_line_bytes_ = bytes; }
   // Sends raw bytes (tests send malformed input with it).
   Status Send(const std::string& bytes);
   void Close();
@@ -39,6 +43,9 @@ class ArmClient {
   explicit ArmClient(int fd) : fd_(fd) {}
   int fd_ = -1;
   std::string buffer_;
+  size_t max_line_bytes_ = 65536;
+  bool discarding_ = false;  // Inside an over-long line: bytes are dropped up to its '\n'.
+  size_t discarded_ = 0;     // Bytes of it dropped so far.
 };
 
 }  // namespace sightline

@@ -1,6 +1,8 @@
 #include "core/button/arm_protocol.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 
 #include "core/common/json_writer.h"
 
@@ -8,12 +10,20 @@ namespace sightline {
 
 namespace {
 
+// Seconds with microsecond resolution: epoch stamps need 16 significant digits.
+std::string Seconds(double s) {
+  if (!std::isfinite(s)) return "null";
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.6f", s);
+  return text;
+}
+
 JsonWriter& Header(JsonWriter& w, const char* type, int64_t seq, double now_s) {
   w.BeginObject();
   w.Key("version").Int(kArmProtocolVersion);
   w.Key("type").String(type);
   w.Key("seq").Int(seq);
-  w.Key("stamp").Double(now_s);
+  w.Key("stamp").Raw(Seconds(now_s));
   return w;
 }
 
@@ -28,7 +38,7 @@ void Vector(JsonWriter& w, const Eigen::Vector3d& v) {
 std::string TargetLine(int64_t seq, double now_s, const ArmTarget& t) {
   JsonWriter w(false);
   Header(w, "target", seq, now_s);
-  w.Key("frame_stamp").Double(t.stamp_s);
+  w.Key("frame_stamp").Raw(Seconds(t.stamp_s));
   w.Key("frame_id").String(t.frame_id);
   w.Key("position_m");
   Vector(w, t.position_m);
@@ -173,6 +183,16 @@ class FlatReader {
 
 std::optional<std::string> ParseTokenLine(const std::string& line) {
   return FlatReader(line).Token();
+}
+
+bool TokensMatch(const std::string& presented, const std::string& expected) {
+  // Every byte of `expected` is visited whatever `presented` holds; no early exit.
+  volatile unsigned char diff = presented.size() == expected.size() ? 0 : 1;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const unsigned char p = i < presented.size() ? static_cast<unsigned char>(presented[i]) : 0;
+    diff = diff | (p ^ static_cast<unsigned char>(expected[i]));
+  }
+  return diff == 0;
 }
 
 }  // namespace sightline

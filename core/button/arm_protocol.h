@@ -1,6 +1,6 @@
-// The arm-target protocol (version 1): JSON lines over TCP, documented in
-// core/button/PROTOCOL.md. Serialisation of the three message types and parsing of the one
-// line a client may send (the token handshake).
+// The arm-target protocol (version 2): JSON lines over TCP, documented in
+// core/button/PROTOCOL.md. Serialisation of the three message types, parsing of the one line a
+// client may send (the token handshake) and the token check.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,7 +11,7 @@
 
 namespace sightline {
 
-inline constexpr int kArmProtocolVersion = 1;
+inline constexpr int kArmProtocolVersion = 2;
 
 // A button target for the arm controller.
 struct ArmTarget {
@@ -24,6 +24,7 @@ struct ArmTarget {
 };
 
 // One JSON line (with the trailing '\n') per message; `seq` counts all messages of a server.
+// `stamp` and `frame_stamp` are written with six decimals (microseconds).
 std::string TargetLine(int64_t seq, double now_s, const ArmTarget& target);
 std::string HeartbeatLine(int64_t seq, double now_s, bool targets_enabled);
 std::string StopLine(int64_t seq, double now_s, const std::string& reason);
@@ -32,5 +33,9 @@ std::string StopLine(int64_t seq, double now_s, const std::string& reason);
 // other keys only, non-string token). Accepts a flat object of string, number, bool or null
 // members.
 std::optional<std::string> ParseTokenLine(const std::string& line);
+
+// True when `presented` equals `expected`. The time taken depends only on the length of
+// `expected`, not on where the two differ (no timing oracle for guessing the token).
+bool TokensMatch(const std::string& presented, const std::string& expected);
 
 }  // namespace sightline

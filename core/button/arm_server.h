@@ -1,7 +1,15 @@
-// The arm-target server: serves the protocol of PROTOCOL.md (JSON lines, version 1) to any
-// number of TCP clients from its own thread (POSIX sockets, poll()). Publishing never blocks on
-// a client: each client has a bounded queue; when it is full the oldest message is dropped and
-// counted. STOP goes out at once and suppresses targets until Resume().
+// The arm-target server: serves the protocol of PROTOCOL.md (JSON lines, version 2) to TCP
+// clients from its own I/O thread (POSIX sockets, poll()).
+//
+// Publishing never waits for a client or for socket I/O: Publish* take a short lock that only
+// guards the per-client queues, and the I/O thread holds that lock only to move one line out of a
+// queue, never across recv() or send(). Every connection is read at most a fixed number of bytes
+// per wake-up, so a client that floods the server cannot delay the others.
+//
+// Per client there are three queues: stops (never dropped), the latest heartbeat (a newer one
+// replaces it) and targets (bounded; a full queue drops its oldest target). They are written in
+// that order. A stop removes the targets and the heartbeat still queued for a client: nothing
+// published before a stop reaches the arm after it.
 #pragma once
 
 #include <atomic>
@@ -22,67 +30,93 @@ namespace sightline {
 struct ArmServerOptions {
   std::string bind_address = "127.0.0.1";  // IPv4 address to bind; 0.0.0.0 = every interface.
   int port = 5757;                         // TCP port; 0 = any free port (see port()).
-  std::string token;                       // Non-empty: clients must send {"token": ...} first.
-  int queue_messages = 64;                 // Per-client queue; full = drop oldest, count.
-  double heartbeat_s = 0.5;                // Heartbeat period [s]; 0 = none.
-  int max_clients = 8;                     // More connections are closed at once.
-  int max_line_bytes = 1024;               // Longer client lines are discarded.
+  std::string token;            // Clients must send {"token": ...} first; required off loopback.
+  int queue_messages = 64;      // Per-client target queue; full = drop the oldest target, count.
+  double heartbeat_s = 0.5;     // Heartbeat period [s]; 0 = none.
+  int max_clients = 8;          // Authorised clients; further ones are closed.
+  int max_line_bytes = 1024;    // Longer client lines are discarded (a failed handshake).
+  double handshake_s = 2.0;     // With a token: time a connection has to present it [s].
+  int max_unauthenticated = 4;  // Connections still owing the token; a new one evicts the oldest.
+  double close_flush_s = 0.5;   // SendStopAndClose waits this long for the stop lines [s].
 
   bool IsValid(std::string* error) const;
   static OptionTable<ArmServerOptions> Describe();
 };
 
+// True for 127.0.0.0/8 (the only addresses a server without a token may bind).
+bool IsLoopbackAddress(const std::string& ipv4);
+
 // Counters since Start().
 struct ArmServerStats {
-  int clients = 0;               // Connected now.
-  int authorised = 0;            // Connected and receiving.
-  int64_t targets = 0;           // Targets published.
-  int64_t stops = 0;             // Stops published.
-  int64_t suppressed = 0;        // Targets refused while stopped.
-  int64_t heartbeats = 0;        // Heartbeats published.
-  int64_t sent_lines = 0;        // Lines fully written to clients.
-  int64_t dropped = 0;           // Lines dropped from full client queues.
-  int64_t ignored_lines = 0;     // Client lines ignored (malformed, wrong token, after handshake).
-  int64_t rejected_clients = 0;  // Connections refused (max_clients).
+  int clients = 0;                 // Connected now (authorised or owing the token).
+  int authorised = 0;              // Connected and receiving.
+  int64_t targets = 0;             // Targets published.
+  int64_t stops = 0;               // Stops published (SendStopAndClose included).
+  int64_t suppressed = 0;          // Targets refused while stopped or closing.
+  int64_t heartbeats = 0;          // Heartbeats published.
+  int64_t sent_lines = 0;          // Lines fully written to clients.
+  int64_t sent_stops = 0;          // Stop lines fully written to clients.
+  int64_t dropped = 0;             // Targets and heartbeats dropped (full queue, or a stop).
+  int64_t ignored_lines = 0;       // Client lines ignored after the handshake.
+  int64_t rejected_clients = 0;    // Connections closed at once (max_clients).
+  int64_t token_failures = 0;      // Closed after a wrong, malformed or over-long token line.
+  int64_t handshake_timeouts = 0;  // Closed for not presenting the token within handshake_s.
+  int64_t evicted = 0;             // Unauthenticated, closed to make room for a newer one.
+  int64_t closed_for_input = 0;    // Authorised, closed for sending too much (see PROTOCOL.md).
 };
 
-// Thread-safe: Publish*, Resume, Stats may be called from any thread.
+// Thread-safe: every public method may be called from any thread.
 //
 //   auto server = ArmServer::Start(options);
 //   if (!server.ok()) return server.status();
 //   (*server)->PublishTarget(target);     // Never blocks on a client.
 //   (*server)->PublishStop("operator");   // Targets suppressed until Resume().
+//   (*server)->SendStopAndClose("quit");  // Every exit path: a stop line, then closed.
 class ArmServer {
  public:
-  // Binds, listens and starts the thread. InvalidArgument for invalid options, Unavailable
-  // when the address cannot be bound (the message names address and port).
+  // Binds, listens and starts the thread. InvalidArgument for invalid options (a non-loopback
+  // bind address without a token among them), Unavailable when the address cannot be bound (the
+  // message names address and port).
   static StatusOr<std::unique_ptr<ArmServer>> Start(ArmServerOptions options);
+  // SendStopAndClose("shutdown").
   ~ArmServer();
   ArmServer(const ArmServer&) = delete;
   ArmServer& operator=(const ArmServer&) = delete;
 
   int port() const { return port_; }
-  // Queues a target for every authorised client; returns its seq, or -1 while stopped.
+  // Queues a target for every authorised client; returns its seq, or -1 while stopped or closed.
   int64_t PublishTarget(const ArmTarget& target);
-  // Queues a stop for every authorised client ahead of nothing: it is sent at once. Targets
-  // are suppressed until Resume().
+  // Queues a stop for every authorised client ahead of everything still queued (the queued
+  // targets and heartbeat are dropped) and wakes the I/O thread. Targets are suppressed until
+  // Resume(). A client that authenticates while stopped receives the last stop at once. Returns
+  // the stop's seq, or -1 once closed.
   int64_t PublishStop(const std::string& reason);
   // The operator starts again: targets are accepted.
   void Resume();
   bool stopped() const { return stopped_.load(); }
   ArmServerStats Stats() const;
-  // Closes every connection and joins the thread; called by the destructor.
-  void Shutdown();
+  // The one call for every exit path (GUI quit, pipeline switch, serving turned off, end of the
+  // source, a signal): publishes a stop with `reason`, waits up to close_flush_s for every
+  // authorised client to receive its queued stop lines, then closes every connection and the
+  // listening socket and joins the thread. Idempotent; Publish* return -1 afterwards. A client
+  // that never reads cannot receive it and is closed when the wait ends.
+  void SendStopAndClose(const std::string& reason);
+  // SendStopAndClose("shutdown").
+  void Shutdown() { SendStopAndClose("shutdown"); }
 
  private:
-  struct Client;
+  struct Outbox;
+  struct Connection;
   ArmServer(ArmServerOptions options, int listen_fd, int port, int wake_read, int wake_write);
   void Run();
-  void Broadcast(const std::string& line, bool is_stop);
   void Wake();
-  void Accept();
-  bool Read(Client& client);
-  bool Write(Client& client);
+  int64_t QueueStopLocked(const std::string& reason);
+  void Accept(std::vector<std::unique_ptr<Connection>>& connections);
+  void Authorise(Connection& c, int authorised_now);
+  void Read(Connection& c);
+  void HandleLine(Connection& c);
+  void Write(Connection& c);
+  void Close(Connection& c);
   void Heartbeat();
   static double NowS();
 
@@ -90,12 +124,15 @@ class ArmServer {
   const int listen_fd_;
   const int port_;
   const int wake_read_, wake_write_;
-  std::atomic<bool> running_{true};
   std::atomic<bool> stopped_{false};
-  mutable std::mutex mutex_;  // Guards clients_, stats_ and seq_.
-  std::vector<std::unique_ptr<Client>> clients_;
+  std::atomic<bool> closing_{false};  // Set by SendStopAndClose: the I/O thread flushes and ends.
+  std::mutex close_mutex_;            // Serialises SendStopAndClose callers.
+  bool closed_ = false;               // Guarded by close_mutex_.
+  mutable std::mutex mutex_;  // Guards outboxes_, stats_, seq_, last_stop_; never held across I/O.
+  std::vector<std::shared_ptr<Outbox>> outboxes_;  // Of the authorised clients.
   ArmServerStats stats_;
   int64_t seq_ = 0;
+  std::shared_ptr<const std::string> last_stop_;  // While stopped: for clients that join.
   std::thread thread_;
 };
 

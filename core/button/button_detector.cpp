@@ -15,6 +15,9 @@ using button_internal::Invalid;
 double ButtonModel::RadiusPx() const { return std::sqrt(std::max(area_px, 0.0) / M_PI); }
 
 bool ButtonDetectorOptions::IsValid(std::string* error) const {
+  if (method != "multiscale" && method != "seed") {
+    return Invalid(error, "button.detect.method must be multiscale or seed");
+  }
   if (working_size_px < 160 || working_size_px > 8192) {
     return Invalid(error, "button.detect.working_size_px must lie in [160, 8192]");
   }
@@ -39,6 +42,28 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
   if (!(sift_margin_px >= 0)) return Invalid(error, "button.detect.sift_margin_px must be >= 0");
   if (!(sift_margin_radius >= 0))
     return Invalid(error, "button.detect.sift_margin_radius must be >= 0");
+  if (!(search_radius_px >= 16))
+    return Invalid(error, "button.detect.search_radius_px must be >= 16");
+  if (!(second_blur >= 1 && second_blur <= 10)) {
+    return Invalid(error, "button.detect.second_blur must lie in [1, 10]");
+  }
+  if (!(canny_spread >= 1 && canny_spread <= 10)) {
+    return Invalid(error, "button.detect.canny_spread must lie in [1, 10]");
+  }
+  if (!(max_centre_offset > 0 && max_centre_offset <= 1)) {
+    return Invalid(error, "button.detect.max_centre_offset must lie in (0, 1]");
+  }
+  if (!(region_max_aspect >= 1))
+    return Invalid(error, "button.detect.region_max_aspect must be >= 1");
+  if (!(size_bias_px >= 0)) return Invalid(error, "button.detect.size_bias_px must be >= 0");
+  if (!(circle_votes >= 1)) return Invalid(error, "button.detect.circle_votes must be >= 1");
+  if (!(circle_support >= 0 && circle_support <= 1)) {
+    return Invalid(error, "button.detect.circle_support must lie in [0, 1]");
+  }
+  if (!(circle_min_radius_px >= 2 && circle_max_radius_px > circle_min_radius_px)) {
+    return Invalid(
+        error, "button.detect.circle_min_radius_px must be >= 2 and below circle_max_radius_px");
+  }
   if (min_keypoints < 1) return Invalid(error, "button.detect.min_keypoints must be >= 1");
   if (!(sift_contrast > 0 && sift_contrast < 1)) {
     return Invalid(error, "button.detect.sift_contrast must lie in (0, 1)");
@@ -49,6 +74,10 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
 OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
   using O = ButtonDetectorOptions;
   return OptionTable<O>("button.detect")
+      .Choice("method", &O::method, {"multiscale", "seed"},
+              "Region from the tap: outlines at two scales plus Hough circles, the one holding "
+              "the tap nearest its centre (multiscale), or the seed's rule (the centroid "
+              "nearest the tap within max_tap_distance_px).")
       .Int("working_size_px", &O::working_size_px, "px", 160, 8192, 32,
            "Longer image side at which contours are searched; larger frames are scaled down.")
       .Double("blur_sigma_px", &O::blur_sigma_px, "px", 0, 20, 0.1,
@@ -67,7 +96,28 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
               "Longest over shortest side of the region's rotated box.")
       .Double("max_tap_distance_px", &O::max_tap_distance_px, "px", 1, 1000, 1,
               "A region whose centroid is farther from the tap and that does not contain it is "
-              "not the tapped button.")
+              "not the tapped button (seed method).")
+      .Double("search_radius_px", &O::search_radius_px, "px", 16, 4096, 8,
+              "multiscale: half size of the window around the tap that is searched.")
+      .Double("second_blur", &O::second_blur, "", 1, 10, 0.1,
+              "multiscale: blur of the second scale, times blur_sigma_px.")
+      .Double("canny_spread", &O::canny_spread, "", 1, 10, 0.1,
+              "multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).")
+      .Double("max_centre_offset", &O::max_centre_offset, "radii", 0.05, 1, 0.05,
+              "multiscale: the region's centroid lies at most this many radii from the tap.")
+      .Double("region_max_aspect", &O::region_max_aspect, "", 1, 20, 0.1,
+              "multiscale: longest over shortest side of a region's rotated box.")
+      .Double("size_bias_px", &O::size_bias_px, "px", 0, 100, 1,
+              "multiscale: regions are ranked by (offset + bias) / radius, so the button's "
+              "outline wins over a glyph on it.")
+      .Bool("circles", &O::circles, "multiscale: add Hough circles (round buttons, thin rings).")
+      .Double("circle_votes", &O::circle_votes, "", 1, 500, 1, "Hough accumulator threshold.")
+      .Double("circle_support", &O::circle_support, "", 0, 1, 0.05,
+              "Fraction of a circle's rim that must lie on an edge.")
+      .Double("circle_min_radius_px", &O::circle_min_radius_px, "px", 2, 1000, 1,
+              "Smallest Hough circle radius.")
+      .Double("circle_max_radius_px", &O::circle_max_radius_px, "px", 3, 4000, 1,
+              "Largest Hough circle radius.")
       .Double("sift_margin_px", &O::sift_margin_px, "px", 0, 200, 1,
               "SIFT keypoints up to this far outside the region belong to the button model.")
       .Double("sift_margin_radius", &O::sift_margin_radius, "radii", 0, 20, 0.1,
@@ -193,6 +243,125 @@ const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d ta
   return best;
 }
 
+// Multiscale candidates in `window` of the working image, in working-image pixels: the
+// convex hulls of compact contours of the edges at two blurs and two Canny pairs, and Hough
+// circles whose rim lies on edges.
+std::vector<Candidate> MultiScaleCandidates(const cv::Mat& work, cv::Rect window,
+                                            const ButtonDetectorOptions& o) {
+  const cv::Mat grey = work(window);
+  const double max_area = o.max_area_fraction * work.cols * work.rows;
+  const double s = o.canny_spread;
+  const double factors[2] = {2 / (1 + s), 2 * s / (1 + s)};
+  std::vector<Candidate> out;
+  const cv::Mat kernel = o.close_px > 0 ? cv::getStructuringElement(
+                                              cv::MORPH_ELLIPSE, cv::Size(o.close_px, o.close_px))
+                                        : cv::Mat();
+  const cv::Point offset = window.tl();
+  for (double sigma : {o.blur_sigma_px, o.blur_sigma_px * o.second_blur}) {
+    cv::Mat blurred = grey;
+    if (sigma > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), sigma);
+    for (double f : factors) {
+      cv::Mat edges;
+      cv::Canny(blurred, edges, o.canny_low * f, o.canny_high * f);
+      if (!kernel.empty()) cv::morphologyEx(edges, edges, cv::MORPH_CLOSE, kernel);
+      std::vector<std::vector<cv::Point>> contours;
+      cv::findContours(edges, contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE, offset);
+      for (const auto& contour : contours) {
+        if (contour.size() < 5) continue;
+        std::vector<cv::Point> hull;
+        cv::convexHull(contour, hull);
+        const cv::Moments m = cv::moments(hull);
+        const double area = m.m00;
+        if (area < o.min_area_px || area > max_area) continue;
+        const cv::RotatedRect box = cv::minAreaRect(hull);
+        const double lo = std::min(box.size.width, box.size.height);
+        const double hi = std::max(box.size.width, box.size.height);
+        if (lo <= 0 || hi / lo > o.region_max_aspect) continue;
+        Candidate c;
+        c.centroid = {m.m10 / area, m.m01 / area};
+        c.area = area;
+        c.contour = std::move(hull);
+        out.push_back(std::move(c));
+      }
+    }
+  }
+  if (!o.circles) return out;
+  cv::Mat smooth;
+  cv::GaussianBlur(grey, smooth, cv::Size(0, 0), std::max(0.5, 1.25 * o.blur_sigma_px));
+  std::vector<cv::Vec3f> circles;
+  cv::HoughCircles(smooth, circles, cv::HOUGH_GRADIENT, 1, 12, 100, o.circle_votes,
+                   int(o.circle_min_radius_px), int(o.circle_max_radius_px));
+  if (circles.empty()) return out;
+  cv::Mat rim_edges;
+  cv::Canny(smooth, rim_edges, o.canny_low, o.canny_high);
+  cv::dilate(rim_edges, rim_edges, cv::Mat::ones(3, 3, CV_8U));
+  for (const cv::Vec3f& circle : circles) {
+    const cv::Point centre(int(std::lround(circle[0])), int(std::lround(circle[1])));
+    const int radius = int(std::lround(circle[2]));
+    std::vector<cv::Point> rim;
+    cv::ellipse2Poly(centre, {radius, radius}, 0, 0, 360, 5, rim);
+    int inside = 0, on_edge = 0;
+    for (const cv::Point& p : rim) {
+      if (p.x < 0 || p.y < 0 || p.x >= rim_edges.cols || p.y >= rim_edges.rows) continue;
+      ++inside;
+      on_edge += rim_edges.at<uchar>(p) ? 1 : 0;
+    }
+    if (inside < 10 || on_edge < o.circle_support * inside) continue;
+    const double area = M_PI * radius * radius;
+    if (area < o.min_area_px || area > max_area) continue;
+    Candidate c;
+    cv::ellipse2Poly(centre + offset, {radius, radius}, 0, 0, 360, 10, c.contour);
+    c.centroid = cv::Point2d(circle[0], circle[1]) + cv::Point2d(offset);
+    c.area = area;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// multiscale: true when `outer` holds two or more distinct button-sized regions (4-50 % of its
+// area) away from its centre that do not hold the tap: a plate or a group of buttons. Glyphs
+// and slots on a button are smaller or near its centre.
+bool HoldsOtherButtons(const Candidate& outer, const std::vector<Candidate>& all, cv::Point2d tap) {
+  const double off_centre = 0.4 * std::sqrt(outer.area / M_PI);
+  std::vector<const Candidate*> held;
+  for (const Candidate& c : all) {
+    if (&c == &outer || c.area < 0.04 * outer.area || c.area > 0.5 * outer.area) continue;
+    if (cv::norm(c.centroid - outer.centroid) < off_centre) continue;
+    if (cv::pointPolygonTest(c.contour, cv::Point2f(tap), false) >= 0) continue;
+    if (cv::pointPolygonTest(outer.contour, cv::Point2f(c.centroid), false) <= 0) continue;
+    const double r = std::sqrt(c.area / M_PI);
+    bool seen = false;
+    for (const Candidate* h : held) {
+      seen =
+          seen || cv::norm(c.centroid - h->centroid) < 0.5 * std::max(r, std::sqrt(h->area / M_PI));
+    }
+    if (seen) continue;
+    held.push_back(&c);
+    if (held.size() >= 2) return true;
+  }
+  return false;
+}
+
+// multiscale: the region that contains the tap with its centroid nearest the tap relative to
+// its radius, at most max_offset radii away.
+const Candidate* ChooseContaining(const std::vector<Candidate>& candidates, cv::Point2d tap,
+                                  double max_offset, double bias) {
+  const Candidate* best = nullptr;
+  double best_score = 0;
+  for (const Candidate& c : candidates) {
+    const double radius = std::sqrt(c.area / M_PI);
+    const double offset = std::hypot(c.centroid.x - tap.x, c.centroid.y - tap.y);
+    if (offset > max_offset * radius) continue;
+    const double score = (offset + bias) / radius;
+    if (best && score >= best_score) continue;
+    if (cv::pointPolygonTest(c.contour, cv::Point2f(tap), false) < 0) continue;
+    if (HoldsOtherButtons(c, candidates, tap)) continue;
+    best = &c;
+    best_score = score;
+  }
+  return best;
+}
+
 }  // namespace
 
 StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point2d tap) const {
@@ -214,11 +383,28 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
   if (scale != 1.0) {
     cv::resize(grey, work, cv::Size(), scale, scale, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
   }
-  const std::vector<Candidate> candidates = Candidates(work, options_);
-  const Candidate* best = Choose(candidates, tap * scale, options_.max_tap_distance_px);
-  if (!best) {
-    return NotFound("no button here: no compact outline within " +
-                    std::to_string(int(options_.max_tap_distance_px)) + " px of the tap");
+  std::vector<Candidate> candidates;
+  const Candidate* best = nullptr;
+  if (options_.method == "seed") {
+    candidates = Candidates(work, options_);
+    best = Choose(candidates, tap * scale, options_.max_tap_distance_px);
+    if (!best) {
+      return NotFound("no button here: no compact outline within " +
+                      std::to_string(int(options_.max_tap_distance_px)) + " px of the tap");
+    }
+  } else {
+    const cv::Point2d t = tap * scale;
+    const double half = options_.search_radius_px;
+    const cv::Rect window =
+        cv::Rect(cv::Point(int(std::floor(t.x - half)), int(std::floor(t.y - half))),
+                 cv::Point(int(std::ceil(t.x + half)), int(std::ceil(t.y + half)))) &
+        cv::Rect(0, 0, work.cols, work.rows);
+    candidates = MultiScaleCandidates(work, window, options_);
+    best = ChooseContaining(candidates, t, options_.max_centre_offset, options_.size_bias_px);
+    if (!best) {
+      return NotFound("no button here: no outline around the tap with its centre within " +
+                      std::to_string(options_.max_centre_offset).substr(0, 4) + " radii of it");
+    }
   }
   ButtonModel model;
   model.tap = tap;

@@ -1,7 +1,15 @@
-// Button detection from a tap (the seed's plan phase): contours of the still frame's edges,
-// each closed by its convex hull, the one whose centroid lies nearest the tap (within a limit,
-// relative to its size), its region, and SIFT features on it.
-// No contour near the tap means "no button here": the operator is asked to tap again.
+// Button detection from a tap (the seed's plan phase): outlines of the still frame's edges,
+// each closed by its convex hull, the one that best fits the tap, its region, and SIFT
+// features on it. Two methods:
+//  - multiscale (opt-in for now): in a window around the tap, contours of the edges at two blurs
+//  and
+//    two Canny threshold pairs plus Hough circles confirmed by edges along their rim (round
+//    buttons with a thin ring); the region that contains the tap with its centroid nearest
+//    the tap relative to its radius (at most max_centre_offset radii away; size_bias_px favours
+//    the button's outline over a glyph on it), skipping regions that hold other buttons.
+//  - seed (default): the seed's rule, contours at one scale and the centroid nearest the tap within
+//    max_tap_distance_px.
+// No region fits the tap: "no button here", the operator is asked to tap again.
 #pragma once
 
 #include <memory>
@@ -17,6 +25,7 @@ namespace sightline {
 // Detector options. Keys "button.detect.*". Pixel sizes refer to the working image, the still
 // frame scaled so its longer side is at most working_size_px.
 struct ButtonDetectorOptions {
+  std::string method = "seed";      // seed or multiscale (see the file comment).
   int working_size_px = 960;        // Longer image side the contours are searched at [px].
   double blur_sigma_px = 1.2;       // Gaussian blur before edge detection [px].
   double canny_low = 30;            // Canny lower hysteresis threshold [grey levels].
@@ -27,11 +36,25 @@ struct ButtonDetectorOptions {
   double min_coverage = 0.75;       // Fraction of directions (16 sectors) around a region's
                                     // centre in which its outline lies.
   double max_aspect = 3.0;          // Longest / shortest side of the rotated bounding box.
-  double max_tap_distance_px = 35;  // Centroid farther from the tap: not this button [px].
-  double sift_margin_px = 8;        // Features up to this far outside the region are kept [px]
-  double sift_margin_radius = 5.0;  // ... or this many region radii, if larger.
-  int min_keypoints = 3;            // Fewer SIFT keypoints: the button cannot be tracked.
-  double sift_contrast = 0.01;      // SIFT contrast threshold (lower finds more on plain buttons).
+  double max_tap_distance_px = 35;  // seed: centroid farther from the tap: not this button [px].
+  // multiscale only:
+  double search_radius_px = 200;    // Half size of the window around the tap searched [px].
+  double second_blur = 2.0;         // The second scale's blur, times blur_sigma_px.
+  double canny_spread = 2.0;        // Two Canny pairs: (canny_low, canny_high) times
+                                    // 2 / (1 + spread) and 2 spread / (1 + spread).
+  double max_centre_offset = 0.75;  // Region centroid at most this many radii from the tap.
+  double region_max_aspect = 2.2;   // Longest / shortest side of a region (max_aspect: seed).
+  double size_bias_px = 4;      // Ranking (offset + bias) / radius: of the regions about the tap,
+                                // the larger (the button around its glyph) wins [px].
+  bool circles = true;          // Add Hough circles (round buttons with a thin ring).
+  double circle_votes = 28;     // Hough accumulator threshold.
+  double circle_support = 0.6;  // Fraction of the circle's rim on an edge to keep it.
+  double circle_min_radius_px = 8;    // Smallest circle radius [px].
+  double circle_max_radius_px = 120;  // Largest circle radius [px].
+  double sift_margin_px = 8;          // Features up to this far outside the region are kept [px]
+  double sift_margin_radius = 5.0;    // ... or this many region radii, if larger.
+  int min_keypoints = 3;              // Fewer SIFT keypoints: the button cannot be tracked.
+  double sift_contrast = 0.01;  // SIFT contrast threshold (lower finds more on plain buttons).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonDetectorOptions> Describe();

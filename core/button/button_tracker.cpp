@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -12,6 +13,18 @@
 namespace sightline {
 
 using button_internal::Invalid;
+
+const char* TrackStateName(TrackState state) {
+  switch (state) {
+    case TrackState::kTracking:
+      return "tracking";
+    case TrackState::kReacquired:
+      return "reacquired";
+    case TrackState::kLost:
+      return "lost";
+  }
+  return "?";
+}
 
 bool ButtonTrackerOptions::IsValid(std::string* error) const {
   if (!(ratio > 0 && ratio <= 1)) return Invalid(error, "button.track.ratio must lie in (0, 1]");
@@ -38,6 +51,16 @@ bool ButtonTrackerOptions::IsValid(std::string* error) const {
   }
   if (max_model_keypoints < 2)
     return Invalid(error, "button.track.max_model_keypoints must be >= 2");
+  if (reacquire_min_inliers < 2)
+    return Invalid(error, "button.track.reacquire_min_inliers must be >= 2");
+  if (!(reacquire_max_scale >= 1))
+    return Invalid(error, "button.track.reacquire_max_scale must be >= 1");
+  if (reacquire_min_face < 0) return Invalid(error, "button.track.reacquire_min_face must be >= 0");
+  if (!(reacquire_face_radius > 0))
+    return Invalid(error, "button.track.reacquire_face_radius must be > 0");
+  if (!(reacquire_ambiguity > 0 && reacquire_ambiguity <= 1))
+    return Invalid(error, "button.track.reacquire_ambiguity must lie in (0, 1]");
+  if (!(view_margin_px >= 0)) return Invalid(error, "button.track.view_margin_px must be >= 0");
   return true;
 }
 
@@ -74,7 +97,23 @@ OptionTable<ButtonTrackerOptions> ButtonTrackerOptions::Describe() {
       .Double("refresh_min_confidence", &O::refresh_min_confidence, "", 0, 1, 0.05,
               "Only frames tracked at least this confidently refresh the model.")
       .Int("max_model_keypoints", &O::max_model_keypoints, "", 2, 100000, 100,
-           "The model never grows beyond this many keypoints.");
+           "The model never grows beyond this many keypoints.")
+      .Bool("reacquire", &O::reacquire,
+            "After a loss, search whole frames and re-acquire the button only on a confident "
+            "match at a plausible size.")
+      .Int("reacquire_min_inliers", &O::reacquire_min_inliers, "", 2, 1000, 1,
+           "Consistent matches needed to re-acquire a lost button.")
+      .Double("reacquire_max_scale", &O::reacquire_max_scale, "", 1, 10, 0.05,
+              "Largest size change (either way) since the last tracked frame at re-acquisition.")
+      .Int("reacquire_min_face", &O::reacquire_min_face, "", 0, 1000, 1,
+           "Of the re-acquiring matches, at least this many lie on the button itself.")
+      .Double("reacquire_face_radius", &O::reacquire_face_radius, "radii", 0.1, 10, 0.1,
+              "On the button: within this many radii of its centre.")
+      .Double("reacquire_ambiguity", &O::reacquire_ambiguity, "", 0.01, 1, 0.05,
+              "Re-acquisition is refused when the other matches support a second similarity "
+              "with this fraction of the inliers (another button of a repeated panel).")
+      .Double("view_margin_px", &O::view_margin_px, "px", 0, 1000, 1,
+              "A button centre farther than this outside the image is out of view (lost).");
 }
 
 ButtonTracker::ButtonTracker(std::shared_ptr<const ButtonModel> model, ButtonTrackerOptions options)
@@ -134,6 +173,27 @@ struct Match {
 
 StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image,
                                            const TrackPrediction& prediction) {
+  const bool was_lost = lost_frames_ > 0;
+  StatusOr<ButtonTrack> result = TrackOnce(image, prediction, was_lost);
+  if (!result.ok()) return result;
+  ButtonTrack& track = *result;
+  if (track.found) {
+    track.state = was_lost ? TrackState::kReacquired : TrackState::kTracking;
+    if (was_lost) ++reacquisitions_;
+    lost_frames_ = 0;
+    last_scale_ = track.scale;
+  } else {
+    track.state = TrackState::kLost;
+    ++lost_frames_;
+    last_.reset();
+  }
+  track.lost_frames = lost_frames_;
+  track.reacquisitions = reacquisitions_;
+  return result;
+}
+
+StatusOr<ButtonTrack> ButtonTracker::TrackOnce(const cv::Mat& image,
+                                               const TrackPrediction& prediction, bool lost) {
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   if (!model_ || !index_)
@@ -211,6 +271,53 @@ StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image,
     const cv::Point2d c = model_->center;
     track.center = {a * c.x - b * c.y + s.at<double>(0, 2), b * c.x + a * c.y + s.at<double>(1, 2)};
   }
+  if (lost && options_.reacquire && options_.centre == "similarity") {
+    const double change = std::max(track.scale / last_scale_, last_scale_ / track.scale);
+    // Inliers on the button's own face, and a second similarity among the other matches.
+    const double face = options_.reacquire_face_radius * model_->RadiusPx() * track.scale;
+    int on_face = 0, second = 0;
+    {
+      std::vector<cv::Point2f> rest_from, rest_to;
+      const cv::Matx23d s(similarity);
+      for (size_t i = 0; i < to.size(); ++i) {
+        const cv::Point2f& q = from[i];
+        const cv::Point2d mapped(s(0, 0) * q.x + s(0, 1) * q.y + s(0, 2),
+                                 s(1, 0) * q.x + s(1, 1) * q.y + s(1, 2));
+        const bool inlier = cv::norm(mapped - cv::Point2d(to[i])) <= options_.ransac_px;
+        if (inlier) {
+          on_face += cv::norm(cv::Point2d(to[i]) - track.center) <= face ? 1 : 0;
+        } else {
+          rest_from.push_back(from[i]);
+          rest_to.push_back(to[i]);
+        }
+      }
+      if (int(rest_to.size()) >= options_.min_matches) {
+        std::vector<uchar> rest_mask;
+        const cv::Mat s2 = cv::estimateAffinePartial2D(rest_from, rest_to, rest_mask, cv::RANSAC,
+                                                       options_.ransac_px, 2000, 0.995, 10);
+        if (!s2.empty()) second = int(std::count(rest_mask.begin(), rest_mask.end(), uchar(1)));
+      }
+    }
+    const bool ambiguous =
+        second >= options_.min_matches && second >= options_.reacquire_ambiguity * track.inliers;
+    if (track.inliers < options_.reacquire_min_inliers || on_face < options_.reacquire_min_face ||
+        change > options_.reacquire_max_scale || ambiguous) {
+      char text[200];
+      std::snprintf(text, sizeof(text),
+                    "lost: re-acquisition refused (%d consistent matches, needs %d; %d on the "
+                    "button, needs %d; size x%.2f, at most x%.2f; second fit %d)",
+                    track.inliers, options_.reacquire_min_inliers, on_face,
+                    options_.reacquire_min_face, change, options_.reacquire_max_scale, second);
+      track.reason = text;
+      return track;
+    }
+  }
+  const double m = options_.view_margin_px;
+  if (track.center.x < -m || track.center.y < -m || track.center.x > grey.cols - 1 + m ||
+      track.center.y > grey.rows - 1 + m) {
+    track.reason = "lost: the button lies outside the view";
+    return track;
+  }
   track.radius_px = model_->RadiusPx() * track.scale;
   const double fraction = double(track.inliers) / std::max(1, track.matches);
   const double support = std::min(1.0, double(track.inliers) / (2.0 * options_.min_matches));
@@ -218,7 +325,7 @@ StatusOr<ButtonTrack> ButtonTracker::Track(const cv::Mat& image,
   track.found = true;
   last_ = TrackPrediction{true, track.center, track.scale};
   const double change = std::max(track.scale / refresh_scale_, refresh_scale_ / track.scale);
-  if (options_.refresh && !similarity.empty() &&
+  if (options_.refresh && !lost && !similarity.empty() &&
       track.confidence >= options_.refresh_min_confidence &&
       change >= options_.refresh_scale_step) {
     Refresh(keypoints, descriptors, cv::Point2f(track.window.tl()), track, similarity);

@@ -1,7 +1,10 @@
 // Button tracking in later frames (the seed's tracking phase): SIFT on a search window
 // predicted from the camera pose (or the last position), FLANN matching against the model of
 // the tapped button with Lowe's ratio test and the seed's distance gate, and the new centre
-// from the matches; lost when too few matches survive.
+// from the matches; lost when too few matches survive. After a loss (a finger over the button,
+// the button out of view) every frame is searched whole against the model kept from the tap
+// (plus refreshed features), and the button is re-acquired only on a confident match at a
+// plausible size, inside the view.
 #pragma once
 
 #include <memory>
@@ -39,6 +42,18 @@ struct ButtonTrackerOptions {
   double refresh_radius = 5.0;          // Features within this many button radii are added.
   double refresh_min_confidence = 0.5;  // Only frames tracked at least this confidently.
   int max_model_keypoints = 2000;       // The model never grows beyond this.
+  bool reacquire = true;                // After a loss, search whole frames and re-acquire
+                                        // only on a confident match (false: the first frame
+                                        // with min_matches consistent matches, as before).
+  int reacquire_min_inliers = 8;        // Consistent matches needed to re-acquire.
+  int reacquire_min_face = 3;           // ... of which at least this many on the button
+  double reacquire_face_radius = 1.5;   // ... within this many radii of its centre.
+  double reacquire_ambiguity = 0.5;     // Refused when the matches left over support a
+                                        // second similarity with this fraction of the
+                                        // inliers (a repeated panel: another button).
+  double reacquire_max_scale = 1.6;     // Scale change since the last tracked frame allowed
+                                        // at re-acquisition (either way).
+  double view_margin_px = 4;            // A centre farther outside the image: not in view.
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonTrackerOptions> Describe();
@@ -52,9 +67,20 @@ struct TrackPrediction {
   double scale = 1.0;
 };
 
+// Where the track stands after a frame.
+enum class TrackState {
+  kTracking,    // Found, as in the frame before.
+  kReacquired,  // Found again after one or more lost frames.
+  kLost,        // Not found in this frame.
+};
+const char* TrackStateName(TrackState state);
+
 // The tracker's answer for one frame.
 struct ButtonTrack {
   bool found = false;  // False: lost (too few matches); `reason` says why.
+  TrackState state = TrackState::kLost;
+  int lost_frames = 0;     // Consecutive lost frames up to this one (0 when found).
+  int reacquisitions = 0;  // Times the button was re-acquired since the tap.
   std::string reason;
   cv::Point2d center;     // Button centre in this frame [px].
   double scale = 1.0;     // Size relative to the model.
@@ -85,8 +111,13 @@ class ButtonTracker {
   int model_keypoints() const { return int(points_.size()); }
   // Forgets the last position: the next frame is searched whole.
   void Reset() { last_.reset(); }
+  // Times the button was found again after being lost.
+  int reacquisitions() const { return reacquisitions_; }
 
  private:
+  // One frame without the lost/re-acquired bookkeeping; `lost`: the frames before were lost.
+  StatusOr<ButtonTrack> TrackOnce(const cv::Mat& image, const TrackPrediction& prediction,
+                                  bool lost);
   cv::Rect Window(cv::Size size, const TrackPrediction& p) const;
   // Adds keypoints near the tracked centre, mapped into the model frame by the inverse of the
   // similarity model_to_image (2x3).
@@ -101,6 +132,9 @@ class ButtonTracker {
   cv::Ptr<cv::flann::Index> index_;  // Over descriptors_.
   double refresh_scale_ = 1.0;       // Scale at the last refresh.
   std::optional<TrackPrediction> last_;
+  int lost_frames_ = 0;      // Consecutive lost frames (0 while tracking).
+  double last_scale_ = 1.0;  // Scale of the last found frame.
+  int reacquisitions_ = 0;
 };
 
 }  // namespace sightline

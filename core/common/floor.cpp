@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace sightline {
@@ -31,6 +32,16 @@ bool FloorPlane::IsValid(std::string* error) const {
     return Invalid(error, "floor plane epsilon_m must be positive and finite");
   }
   return true;
+}
+
+std::string DescribeFloorCalibration(const FloorCalibration& calibration) {
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "calibrated from %d frames: camera %.3f m above the floor, pitched %.1f deg "
+                "down, %.0f %% inliers",
+                calibration.frames, calibration.plane.CameraHeightM(),
+                calibration.plane.PitchDownDeg(), 100 * calibration.inlier_ratio);
+  return text;
 }
 
 }  // namespace sightline

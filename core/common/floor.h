@@ -1,5 +1,6 @@
-// The floor plane model (seed 000, section 4.3.2), shared by the mapping estimators that fit and
-// use it and by the floor file (core/io/floor_file.h) that stores it.
+// The floor plane model (seed 000, section 4.3.2) and a floor calibration, shared by the mapping
+// estimators that fit and use it (core/mapping/floor_plane.h), the views that draw it and the
+// floor file (core/io/floor_file.h) that stores it.
 //
 // The plane is a x + b y + c z + d = 0 in the camera frame (x right, y down, z forward), with
 // (a, b, c) a unit normal pointing up, towards the camera. Then a x + b y + c z + d is the height
@@ -27,5 +28,18 @@ struct FloorPlane {
   // Checks that the normal is unit, points up (d > 0) and epsilon is positive.
   bool IsValid(std::string* error) const;
 };
+
+// A calibrated floor: what a floor file holds (core/io/floor_file.h) and what a floor
+// calibration (FloorCalibrator in core/mapping/floor_plane.h) produces.
+struct FloorCalibration {
+  FloorPlane plane;
+  double inlier_ratio = 0;  // Of the fit that produced it, for people (0 = unknown).
+  int frames = 0;           // Frames the fit used (0 = unknown).
+  std::string source;       // Dataset the fit came from, for people.
+};
+
+// One line for a log: "calibrated from 5 frames: camera 0.800 m above the floor, pitched 10.0 deg
+// down, 92 % inliers".
+std::string DescribeFloorCalibration(const FloorCalibration& calibration);
 
 }  // namespace sightline

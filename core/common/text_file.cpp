@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -27,6 +28,34 @@ StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
   }
   if (in.bad()) return Unavailable(path + ": read error after line " + std::to_string(number));
   return lines;
+}
+
+StatusOr<std::string> ReadWholeTextFile(const std::string& path, size_t max_bytes,
+                                        const std::string& what) {
+  namespace fs = std::filesystem;
+  const std::string name = what + " " + path;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) return NotFound(name + ": no such file");
+  if (fs::is_directory(status)) return InvalidArgument(name + " is a folder, not a file");
+  if (!fs::is_regular_file(status)) {
+    return InvalidArgument(name + " is not a regular file (a device, pipe or socket)");
+  }
+  const uintmax_t size = fs::file_size(path, ec);
+  if (ec) return Unavailable(name + ": cannot read its size: " + ec.message());
+  if (size > max_bytes) {
+    return InvalidArgument(name + " is " + std::to_string(size) + " bytes; a " + what +
+                           " holds at most " + std::to_string(max_bytes));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Unavailable(name + " cannot be read: " + std::strerror(errno));
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (in.gcount() != static_cast<std::streamsize>(size)) {
+    return Unavailable(name + ": read error (" + std::to_string(in.gcount()) + " of " +
+                       std::to_string(size) + " bytes)");
+  }
+  return text;
 }
 
 std::vector<std::string> SplitFields(const std::string& text) {

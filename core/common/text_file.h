@@ -25,6 +25,13 @@ std::vector<std::string> SplitFields(const std::string& text);
 StatusOr<std::vector<double>> ParseNumbers(const DataLine& line, size_t min_count,
                                            const std::string& path);
 
+// Checks that `path` is a regular, readable file of at most `max_bytes` and reads it whole.
+// Errors name the path and the cause: no such file, a folder, not a regular file (a device or
+// pipe such as /dev/zero), cannot be read (the system's reason, e.g. permission denied), or larger
+// than the limit (nothing is read then). `what` names the file's role, e.g. "profile".
+StatusOr<std::string> ReadWholeTextFile(const std::string& path, size_t max_bytes,
+                                        const std::string& what);
+
 // Whole-file helpers.
 bool FileExists(const std::string& path);
 bool DirectoryExists(const std::string& path);

@@ -56,6 +56,12 @@ std::string PairDescription(const TrajectoryErrors& errors) {
 
 }  // namespace
 
+AccuracyFigureInfo DescribeAccuracyFigure(const std::string& key) {
+  const auto it = FigureInfos().find(key);
+  if (it == FigureInfos().end()) return {};
+  return {it->second.unit, it->second.meaning};
+}
+
 std::string FormatErrorTable(const TrajectoryErrors& errors) {
   std::string out;
   out += Printf("%zu associated poses (%zu estimated and %zu ground-truth poses unmatched)\n",

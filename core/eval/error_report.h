@@ -10,6 +10,14 @@
 
 namespace sightline {
 
+// Unit and meaning of an accuracy figure (keys of AccuracyFigures and metrics.json's
+// `accuracy`), e.g. {"m", "absolute trajectory error, RMSE"}; empty for a key it does not know.
+struct AccuracyFigureInfo {
+  std::string unit;
+  std::string meaning;
+};
+AccuracyFigureInfo DescribeAccuracyFigure(const std::string& key);
+
 // A plain-text report: pairing and alignment, one row per accuracy figure with unit and meaning,
 // the KITTI errors per segment length, and notes on figures that are absent.
 std::string FormatErrorTable(const TrajectoryErrors& errors);

@@ -1,6 +1,6 @@
-// The floor file: the calibrated floor plane (core/common/floor.h) as `sightline-cli floor`, the
-// mapping pipeline (floor.yaml) and the GUI's mapping view write it, and as mapping.run.floor_file
-// and mobility.run.floor_file read it. Plain YAML, one key per line:
+// The floor file: the floor calibration (FloorCalibration, core/common/floor.h) as
+// `sightline-cli floor`, the mapping pipeline (floor.yaml) and the GUI's mapping view write it,
+// and as mapping.run.floor_file and mobility.run.floor_file read it. Plain YAML, one key per line:
 //
 //   a: 0.01                  # required: normal (a, b, c) of a x + b y + c z + d = 0 in the
 //   b: -0.96                 #   camera frame, pointing up; within 1 % of unit length (it is
@@ -22,14 +22,6 @@
 #include "core/common/status.h"
 
 namespace sightline {
-
-// What a floor file holds.
-struct FloorCalibration {
-  FloorPlane plane;
-  double inlier_ratio = 0;  // Of the fit that produced it, for people (0 = unknown).
-  int frames = 0;           // Frames the fit used (0 = unknown).
-  std::string source;       // Dataset the fit came from, for people.
-};
 
 // Writes the format above. InvalidArgument (nothing written) when the plane is not valid
 // (FloorPlane::IsValid) or a figure is out of range; Unavailable when the file cannot be written.

@@ -7,7 +7,9 @@
 #include <pcl/point_types.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -28,35 +30,194 @@ bool HasField(const pcl::PCLPointCloud2& blob, const std::string& name) {
   return false;
 }
 
-// PCL 1.13's PCDReader::read crashes on some garbage files (no FIELDS, no DATA line) instead of
-// failing, so the header is checked here before PCL sees the file.
+// The most points a PCD file may declare: 50 million (a 640x480 cloud is 307,200; an
+// aggregated map a few million). Larger headers are refused before anything is allocated.
+constexpr double kMaxPcdPoints = 50e6;
+
+// The header's numbers as written, before PCL sees them.
+struct HeaderNumbers {
+  double width = 0, height = 0, points = 0, point_bytes = 0;
+  std::string data;
+  std::streamoff data_end = 0;  // File offset just after the DATA line.
+};
+
+// Parses "KEY n n n" words as numbers; ParseError naming the line when one is not a count.
+StatusOr<std::vector<double>> HeaderCounts(std::istringstream& words, const std::string& key,
+                                           const std::string& path) {
+  std::vector<double> values;
+  for (std::string w; words >> w;) {
+    char* end = nullptr;
+    const double v = std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0' || !(v >= 0) || v != std::floor(v) || v > 4e9) {
+      return ParseError(path + ": PCD header " + key + " has '" + w + "', not a count");
+    }
+    values.push_back(v);
+  }
+  if (values.empty()) return ParseError(path + ": PCD header " + key + " has no value");
+  return values;
+}
+
+// Bounds what the header asks PCL to allocate by the file's real size: raw binary stores every
+// byte, LZF expands at most ~90x, ascii needs at least two characters per point.
+Status CheckDeclaredSize(const HeaderNumbers& h, const std::string& path) {
+  if (h.width * h.height != h.points) {
+    return ParseError(path + ": PCD header's WIDTH x HEIGHT (" +
+                      std::to_string(static_cast<long long>(h.width)) + " x " +
+                      std::to_string(static_cast<long long>(h.height)) + ") is not POINTS (" +
+                      std::to_string(static_cast<long long>(h.points)) + ")");
+  }
+  if (h.points > kMaxPcdPoints) {
+    return ParseError(path + ": PCD header declares " +
+                      std::to_string(static_cast<long long>(h.points)) + " points; at most " +
+                      std::to_string(static_cast<long long>(kMaxPcdPoints)) + " are read");
+  }
+  std::error_code ec;
+  const double file_bytes = static_cast<double>(std::filesystem::file_size(path, ec));
+  const double available = file_bytes - static_cast<double>(h.data_end);
+  const double data_bytes = h.points * h.point_bytes;
+  const bool fits = h.data == "binary"              ? data_bytes <= available
+                    : h.data == "binary_compressed" ? data_bytes <= 128.0 * available
+                                                    : 2.0 * h.points <= available;
+  if (ec || !fits) {
+    return ParseError(path + ": PCD file is truncated or its header is corrupt: " +
+                      std::to_string(static_cast<long long>(h.points)) + " points of " +
+                      std::to_string(static_cast<long long>(h.point_bytes)) +
+                      " bytes cannot fit in " + std::to_string(static_cast<long long>(available)) +
+                      " bytes of data");
+  }
+  return Status::Ok();
+}
+
+// Each field's TYPE and SIZE must name a real type: F of 4 or 8 bytes, I or U of 1, 2, 4 or 8.
+Status CheckFieldTypes(const std::vector<std::string>& names, const std::vector<std::string>& types,
+                       const std::vector<double>& sizes, const std::string& path) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    const double size = sizes[i];
+    const bool ok = types[i] == "F" ? (size == 4 || size == 8)
+                    : (types[i] == "I" || types[i] == "U")
+                        ? (size == 1 || size == 2 || size == 4 || size == 8)
+                        : false;
+    if (!ok) {
+      return ParseError(path + ": PCD field '" + names[i] + "' has TYPE " + types[i] +
+                        " with SIZE " + std::to_string(static_cast<int>(size)) +
+                        " (F is 4 or 8 bytes, I and U 1, 2, 4 or 8)");
+    }
+  }
+  return Status::Ok();
+}
+
+// PCL 1.13's PCDReader crashes on some garbage files (no FIELDS, no DATA line) and allocates
+// what a header declares before checking it, so the header is read and bounded here first.
 Status CheckHeaderText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return NotFound(path + ": cannot be opened for reading");
   std::set<std::string> seen;
+  HeaderNumbers h;
+  std::vector<double> sizes, counts;
+  std::vector<std::string> names, types;
   std::string line;
   for (int n = 0; n < 64 && std::getline(in, line, '\n'); ++n) {
     if (line.size() > 4096) break;  // Binary junk, not a header line.
     std::istringstream words(line);
-    std::string key, value;
-    words >> key >> value;
+    std::string key;
+    words >> key;
     if (key.empty() || key[0] == '#') continue;
     seen.insert(key);
-    if (key == "DATA") {
-      if (value != "ascii" && value != "binary" && value != "binary_compressed") {
-        return ParseError(path + ": PCD header: unknown DATA type '" + value + "'");
-      }
-      for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "POINTS"}) {
-        if (seen.count(required) == 0) {
-          return ParseError(path + ": PCD header has no " + std::string(required) + " line");
-        }
-      }
-      return Status::Ok();
+    if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS" || key == "SIZE" || key == "COUNT") {
+      StatusOr<std::vector<double>> values = HeaderCounts(words, key, path);
+      if (!values.ok()) return values.status();
+      if (key == "SIZE") sizes = *values;
+      if (key == "COUNT") counts = *values;
+      if (key == "WIDTH") h.width = values->front();
+      if (key == "HEIGHT") h.height = values->front();
+      if (key == "POINTS") h.points = values->front();
+      continue;
     }
+    if (key == "FIELDS" || key == "TYPE") {
+      for (std::string w; words >> w;) (key == "FIELDS" ? names : types).push_back(w);
+      continue;
+    }
+    if (key != "DATA") continue;
+    words >> h.data;
+    if (h.data != "ascii" && h.data != "binary" && h.data != "binary_compressed") {
+      return ParseError(path + ": PCD header: unknown DATA type '" + h.data + "'");
+    }
+    for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "POINTS"}) {
+      if (seen.count(required) == 0) {
+        return ParseError(path + ": PCD header has no " + std::string(required) + " line");
+      }
+    }
+    if (seen.count("HEIGHT") == 0) h.height = 1;
+    if ((!counts.empty() && counts.size() != sizes.size()) || types.size() != sizes.size() ||
+        names.size() != sizes.size()) {
+      return ParseError(path +
+                        ": PCD header's FIELDS, SIZE, TYPE and COUNT list different "
+                        "numbers of fields");
+    }
+    SIGHTLINE_RETURN_IF_ERROR(CheckFieldTypes(names, types, sizes, path));
+    for (size_t i = 0; i < sizes.size(); ++i)
+      h.point_bytes += sizes[i] * (counts.empty() ? 1 : counts[i]);
+    h.data_end = in.tellg();
+    return CheckDeclaredSize(h, path);
   }
   return ParseError(path +
                     ": not a PCD file (no 'DATA ascii|binary|binary_compressed' header "
                     "line)");
+}
+
+// Checks what PCL takes on trust: each field's type and size agree (F is 4 or 8 bytes, I and U
+// 1, 2, 4 or 8), x y z are 4-byte floats and rgb/rgba 4 bytes (the point conversions assume
+// both), COUNT >= 1, and the point's size is the sum of its fields.
+Status CheckFields(const pcl::PCLPointCloud2& header, const std::string& path) {
+  size_t step = 0;
+  for (const pcl::PCLPointField& f : header.fields) {
+    const size_t size = pcl::getFieldSize(f.datatype);
+    if (size == 0) {
+      return ParseError(path + ": PCD field '" + f.name + "' has an unknown TYPE/SIZE pair");
+    }
+    if (f.count < 1) return ParseError(path + ": PCD field '" + f.name + "' has COUNT 0");
+    const bool xyz = f.name == "x" || f.name == "y" || f.name == "z";
+    if (xyz && (f.datatype != pcl::PCLPointField::FLOAT32 || f.count != 1)) {
+      return ParseError(path + ": PCD field '" + f.name +
+                        "' must be one 4-byte float (TYPE F, SIZE 4, COUNT 1)");
+    }
+    if ((f.name == "rgb" || f.name == "rgba") && size != 4) {
+      return ParseError(path + ": PCD field '" + f.name + "' must be 4 bytes");
+    }
+    if (f.offset != step) {
+      return ParseError(path + ": PCD field '" + f.name + "' does not follow the one before it");
+    }
+    step += size * f.count;
+  }
+  if (step != header.point_step) {
+    return ParseError(path + ": PCD fields add up to " + std::to_string(step) +
+                      " bytes but the point size is " + std::to_string(header.point_step));
+  }
+  return Status::Ok();
+}
+
+// For DATA binary_compressed: the two sizes in front of the LZF block must describe exactly the
+// declared points and a block that the file holds.
+Status CheckCompressedSizes(const std::string& path, unsigned int data_index, double file_bytes,
+                            double data_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(data_index);
+  uint32_t sizes[2] = {0, 0};
+  in.read(reinterpret_cast<char*>(sizes), sizeof(sizes));
+  if (!in) return ParseError(path + ": PCD binary_compressed data is cut off before its sizes");
+  const double compressed = sizes[0], uncompressed = sizes[1];
+  if (compressed == 0 || compressed > file_bytes - data_index - 8) {
+    return ParseError(path + ": PCD binary_compressed block of " + std::to_string(sizes[0]) +
+                      " bytes does not fit in the file (" +
+                      std::to_string(static_cast<long long>(file_bytes - data_index - 8)) +
+                      " bytes after the header)");
+  }
+  if (uncompressed != data_bytes) {
+    return ParseError(path + ": PCD binary_compressed block expands to " +
+                      std::to_string(sizes[1]) + " bytes but the header's points need " +
+                      std::to_string(static_cast<long long>(data_bytes)));
+  }
+  return Status::Ok();
 }
 
 // Reads only the header: size, fields and viewpoint. ParseError naming the file.
@@ -84,6 +245,12 @@ StatusOr<pcl::PCLPointCloud2> ReadHeader(const std::string& path, Eigen::Vector4
   if (header.point_step == 0 || header.width == 0 || header.height == 0) {
     return ParseError(path + ": PCD header declares no points or no point size");
   }
+  SIGHTLINE_RETURN_IF_ERROR(CheckFields(header, path));
+  if (static_cast<double>(header.width) * header.height > kMaxPcdPoints) {
+    return ParseError(path + ": PCD header declares " + std::to_string(header.width) + " x " +
+                      std::to_string(header.height) + " points; at most " +
+                      std::to_string(static_cast<long long>(kMaxPcdPoints)) + " are read");
+  }
   // Bound what PCL will allocate by what the file can hold, so a corrupt POINTS or WIDTH
   // fails here instead of exhausting memory: raw binary stores every byte, LZF expands at most
   // ~90x, ascii needs at least two characters per point.
@@ -100,6 +267,9 @@ StatusOr<pcl::PCLPointCloud2> ReadHeader(const std::string& path, Eigen::Vector4
                       std::to_string(static_cast<long long>(points)) + " points of " +
                       std::to_string(header.point_step) + " bytes cannot fit in " +
                       std::to_string(static_cast<long long>(available)) + " bytes of data");
+  }
+  if (data_type == 2) {
+    SIGHTLINE_RETURN_IF_ERROR(CheckCompressedSizes(path, data_index, file_bytes, data_bytes));
   }
   return header;
 }

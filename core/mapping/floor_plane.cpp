@@ -298,4 +298,32 @@ StatusOr<FloorFitResult> FloorPlaneEstimator::Fit(
   return result;
 }
 
+void FloorCalibrator::AddDepth(const cv::Mat& depth_m, const PinholeCamera& camera) {
+  AppendDepthPoints(depth_m, camera, estimator_.options().max_depth_m, 2, &points_);
+  ++frames_;
+}
+
+void FloorCalibrator::AddCloud(const std::vector<Eigen::Vector3f>& points) {
+  points_.insert(points_.end(), points.begin(), points.end());
+  ++frames_;
+}
+
+StatusOr<FloorFitResult> FloorCalibrator::Fit() const { return estimator_.Fit(points_); }
+
+StatusOr<FloorCalibration> FloorCalibrator::Calibrate(const std::string& source) const {
+  StatusOr<FloorFitResult> fit = Fit();
+  if (!fit.ok()) return fit.status();
+  FloorCalibration calibration;
+  calibration.plane = fit->plane;
+  calibration.inlier_ratio = fit->inlier_ratio;
+  calibration.frames = frames_;
+  calibration.source = source;
+  return calibration;
+}
+
+void FloorCalibrator::Clear() {
+  points_.clear();
+  frames_ = 0;
+}
+
 }  // namespace sightline

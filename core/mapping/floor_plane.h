@@ -11,41 +11,10 @@
 #include "core/common/camera.h"
 #include "core/common/floor.h"
 #include "core/common/status.h"
+#include "core/mapping/floor_types.h"
 #include "core/options/option_table.h"
 
 namespace sightline {
-
-// Options of the floor plane RANSAC fit. Keys "mapping.floor.*".
-struct FloorPlaneOptions {
-  double epsilon_m = 0.035;          // epsilon_floor. Seed: 3.5 (relative units); read as 3.5 cm.
-  double fit_threshold_m = 0.02;     // Point-to-plane distance of a RANSAC inlier [m].
-  int max_iterations = 500;          // RANSAC hypotheses.
-  double local_sample_size_m = 0.3;  // Half of the hypotheses draw their points from one voxel
-                                     // of this size [m].
-  double min_inlier_ratio = 0.03;    // Fraction of the sampled points the floor must hold.
-  double max_tilt_deg = 60;          // Largest angle between the floor normal and the camera's up
-                                     // axis (-y) [deg]; excludes walls.
-  double min_camera_height_m = 0.1;  // Plausible camera heights [m].
-  double max_camera_height_m = 3.0;
-  double max_below_ratio = 0.03;  // The floor is the lowest plane: at most this fraction of the
-                                  // points may lie more than 3 fit thresholds below it.
-  double max_depth_m = 6.0;       // Points farther away are not used [m].
-  int max_points = 20000;         // Points are subsampled evenly to at most this many.
-  int seed = 1;                   // RNG seed (runs are deterministic).
-
-  bool IsValid(std::string* error) const;
-  static OptionTable<FloorPlaneOptions> Describe();
-};
-
-// What a floor fit found.
-struct FloorFitResult {
-  FloorPlane plane;
-  int points = 0;           // Points the fit used (after subsampling).
-  int inliers = 0;          // Within fit_threshold_m of the plane.
-  double inlier_ratio = 0;  // inliers / points.
-  double rms_m = 0;         // RMS distance of the inliers [m].
-  double below_ratio = 0;   // Fraction of points clearly below the plane.
-};
 
 // Fits the floor plane by MSAC (RANSAC scored by the truncated squared distance) with a
 // least-squares refit. Construct once, call Fit as often as needed (deterministic per call).
@@ -73,5 +42,38 @@ class FloorPlaneEstimator {
 // skipped), sampling every `step`-th pixel.
 void AppendDepthPoints(const cv::Mat& depth_m, const PinholeCamera& camera, double max_depth_m,
                        int step, std::vector<Eigen::Vector3f>* points);
+
+// The floor calibration of a run, the one way Sightline calibrates the floor (the mapping
+// pipeline on its first frames, `sightline-cli floor`): collects the points of frames (depth
+// sampled every 2nd pixel, or clouds) and fits the plane on them.
+//
+//   FloorCalibrator calibrator(options.floor, 5);
+//   for (...) calibrator.AddDepth(frame.depth_m, camera);   // Until calibrator.Full().
+//   StatusOr<FloorCalibration> floor = calibrator.Calibrate(dataset_path);
+class FloorCalibrator {
+ public:
+  FloorCalibrator(FloorPlaneOptions options, int frames)
+      : estimator_(std::move(options)), wanted_(frames) {}
+
+  // Adds the points of one depth image (metres) seen by `camera`.
+  void AddDepth(const cv::Mat& depth_m, const PinholeCamera& camera);
+  // Adds the points of one cloud (camera frame).
+  void AddCloud(const std::vector<Eigen::Vector3f>& points);
+  // Frames added, and whether they are as many as wanted.
+  int frames() const { return frames_; }
+  bool Full() const { return frames_ >= wanted_; }
+  // Fits the floor on the frames so far.
+  StatusOr<FloorFitResult> Fit() const;
+  // ... as a calibration file's content naming `source`.
+  StatusOr<FloorCalibration> Calibrate(const std::string& source) const;
+  // Forgets the frames.
+  void Clear();
+
+ private:
+  FloorPlaneEstimator estimator_;
+  int wanted_ = 1;
+  int frames_ = 0;
+  std::vector<Eigen::Vector3f> points_;
+};
 
 }  // namespace sightline

@@ -32,6 +32,7 @@
 
 #include "core/mapping/dead_reckoning.h"
 #include "core/mapping/line_extractor.h"
+#include "core/mapping/mapping_types.h"
 #include "core/options/option_table.h"
 
 namespace sightline {
@@ -70,18 +71,6 @@ struct ManhattanRotationOptions {
   static OptionTable<ManhattanRotationOptions> Describe();
 };
 
-// The dominant wall direction of one frame.
-struct ManhattanMeasurement {
-  bool valid = false;
-  double angle_rad = 0;      // m in [-pi/4, pi/4), base frame.
-  double concentration = 0;  // In [0, 1]; 1 = all voting lines exactly Manhattan.
-  double weight_m = 0;       // Summed vote weight (length x fit quality) of the voters [m].
-  int voting_lines = 0;
-  int rejected_lines = 0;       // Long enough but outside the gate or the trim.
-  double trimmed_weight_m = 0;  // Length of the lines inside the gate that the trim dropped:
-                                // a second, conflicting direction [m].
-};
-
 // The dominant wall direction of a frame's lines, robustly: lines below the length / inlier
 // limits do not vote, nor do lines farther than `gate_rad` (modulo 90 deg) from `expected_rad`
 // (the direction the walls should have, from the reference and the predicted heading) or,
@@ -97,23 +86,6 @@ ManhattanMeasurement MeasureManhattanAngle(const std::vector<WallSegment>& lines
                                            const ManhattanRotationOptions& options,
                                            std::optional<double> expected_rad = std::nullopt,
                                            std::optional<double> gate_rad = std::nullopt);
-
-// One frame's rotation estimate.
-struct RotationEstimate {
-  double heading_rad = 0;            // The estimate: world_from_base heading.
-  double predicted_heading_rad = 0;  // Previous estimate plus the pose source's turn.
-  double correction_rad = 0;         // Applied correction (heading - predicted).
-  double raw_correction_rad = 0;     // What the walls said, before gating and gain.
-  double gate_rad = 0;               // The tracking gate of this frame (see the options).
-  ManhattanMeasurement measurement;
-  bool corrected = false;          // The walls corrected the heading.
-  bool gated = false;              // The walls disagreed too much; not applied.
-  bool reference_set = false;      // A reference direction exists (after this frame).
-  double reference_angle_rad = 0;  // alpha_ref in [-pi/4, pi/4), world frame.
-  bool reset = false;              // The reset rule fired on this frame.
-  std::string reset_reason;        // Why, for the log.
-  std::string status;              // "corrected", "no walls: dead reckoning", ...
-};
 
 // Tracks the heading. Construct, then Update() once per frame in order.
 //

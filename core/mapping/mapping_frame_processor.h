@@ -18,6 +18,7 @@
 #include "core/mapping/floor_plane.h"
 #include "core/mapping/line_extractor.h"
 #include "core/mapping/manhattan_rotation.h"
+#include "core/mapping/mapping_types.h"
 #include "core/mapping/multi_line_ransac.h"
 #include "core/mapping/occupancy_grid_map.h"
 #include "core/mapping/occupancy_image.h"
@@ -55,45 +56,6 @@ struct MappingInput {
   std::optional<Pose2d> odometry;
   // Ground-truth person boxes; nullopt = unknown (the detector may run, see mapping.people).
   std::optional<std::vector<PersonBox>> people;
-};
-
-// Per-stage durations of one frame [ms]; stages that did not run are 0.
-struct MappingStageTimes {
-  double people_ms = 0;
-  double occupancy_ms = 0;
-  double scan_ms = 0;
-  double lines_ms = 0;
-  double rotation_ms = 0;
-  double stitch_ms = 0;
-  double total_ms = 0;  // All of the above.
-};
-
-// Everything one frame produced, immutable once returned, for the GUI to draw: the occupancy
-// image (OccupancyCell values), the scan's rays (robot at occupancy.ToImage({0, 0}), each point's
-// cell), the wall lines with their Manhattan direction class (base frame; occupancy.ToImage()
-// turns their end points into image coordinates), the pose, and every few frames the global map
-// with the trajectory. A busy view can draw the pose alone.
-struct MappingFrameResult {
-  FrameStamp stamp;
-  std::vector<PersonBox> people;  // Boxes used (image pixels).
-  OccupancyImage occupancy;
-  PolarScan scan;
-  LineExtraction lines;  // Base frame; direction_class set.
-  RotationEstimate rotation;
-  Pose2d pose;  // world_from_base estimate.
-  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
-  bool reset = false;        // The reset rule fired (rotation.reset_reason says why).
-  bool map_cleared = false;  // ... and the map was started anew.
-  std::string status;        // "ok" or what was degenerate ("no valid depth", ...).
-  MappingStageTimes times;
-  int64_t frame_index = 0;  // Frames processed before this one.
-  // Every mapping.stitch.render_every_n frames (else null): the global map as BGR with the
-  // trajectory in red; map_origin is the world position of its bottom-left corner.
-  std::shared_ptr<const cv::Mat> map_image;
-  Eigen::Vector2d map_origin = Eigen::Vector2d::Zero();
-  double map_resolution_m = 0;
-  // With map_image: the estimated poses so far (world_from_base), to draw or plot.
-  std::shared_ptr<const std::vector<Pose2d>> trajectory;
 };
 
 // Runs the chain frame by frame. One instance per run; not thread-safe (one worker drives it).

@@ -16,18 +16,11 @@
 #include "core/common/camera.h"
 #include "core/common/status.h"
 #include "core/mapping/floor_plane.h"
+#include "core/mapping/mapping_types.h"
 #include "core/mapping/person_boxes.h"
 #include "core/options/option_table.h"
 
 namespace sightline {
-
-// The label of one occupancy cell (the values stored in OccupancyImage::cells).
-enum class OccupancyCell : uint8_t {
-  kUnknown = 0,   // No depth reading fell into the cell.
-  kFree = 1,      // Floor seen, nothing above it.
-  kOccupied = 2,  // Something between epsilon_floor and max_height_m above the floor.
-  kPerson = 3,    // Occupied by a person (excluded from scans and from the map's obstacles).
-};
 
 // Options of the occupancy image. Keys "mapping.occupancy.*".
 struct OccupancyImageOptions {
@@ -42,41 +35,6 @@ struct OccupancyImageOptions {
 
   bool IsValid(std::string* error) const;
   static OptionTable<OccupancyImageOptions> Describe();
-};
-
-// A person's footprint in the occupancy image.
-struct PersonFootprint {
-  int id = -1;
-  cv::Rect cells;      // Bounding rectangle in cells (x = column, y = row).
-  double range_m = 0;  // Median distance from the robot [m].
-};
-
-// One frame's occupancy image and what went into it.
-struct OccupancyImage {
-  cv::Mat cells;  // CV_8UC1 of OccupancyCell, height_cells x width_cells.
-  double cell_size_m = 0.02;
-  std::vector<PersonFootprint> people;  // Scans skip these rectangles.
-  cv::Rect known_cells;                 // Bounding rectangle of the cells that are not unknown.
-  int sampled_pixels = 0;               // Depth pixels looked at.
-  int invalid_pixels = 0;               // NaN or non-positive depth.
-  int floor_pixels = 0;
-  int occupied_pixels = 0;
-  int person_pixels = 0;
-  int outside_pixels = 0;  // Valid but outside the image, below the floor or above max height.
-
-  int width() const { return cells.cols; }
-  int height() const { return cells.rows; }
-  // The base-frame position (x forward, y left) of a cell's centre [m].
-  Eigen::Vector2d CellCenter(int column, int row) const {
-    return {(height() - row - 0.5) * cell_size_m, (0.5 * width() - column - 0.5) * cell_size_m};
-  }
-  // The cell holding a base-frame point, as continuous image coordinates (column, row).
-  Eigen::Vector2d ToImage(const Eigen::Vector2d& p_in_base) const {
-    return {0.5 * width() - p_in_base.y() / cell_size_m, height() - p_in_base.x() / cell_size_m};
-  }
-  OccupancyCell At(int column, int row) const {
-    return static_cast<OccupancyCell>(cells.at<uint8_t>(row, column));
-  }
 };
 
 // Builds occupancy images. Configure() once per floor plane and camera (it precomputes a table

@@ -10,17 +10,10 @@
 #include <vector>
 
 #include "core/common/status.h"
+#include "core/mapping/mapping_types.h"
 #include "core/options/option_table.h"
 
 namespace sightline {
-
-// A person's box in one image.
-struct PersonBox {
-  int id = -1;          // Ground-truth person id, or -1 for a detection.
-  cv::Rect2d box;       // Pixels of the image it was found in.
-  cv::Size image_size;  // Size of that image (boxes are scaled to the depth image).
-  double score = 1;     // Detector confidence (1 for ground truth).
-};
 
 // Where person boxes come from. Keys "mapping.people.*".
 struct PersonDetectorOptions {

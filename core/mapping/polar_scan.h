@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/common/status.h"
+#include "core/mapping/mapping_types.h"
 #include "core/mapping/occupancy_image.h"
 #include "core/options/option_table.h"
 
@@ -24,28 +25,6 @@ struct PolarScanOptions {
 
   bool IsValid(std::string* error) const;
   static OptionTable<PolarScanOptions> Describe();
-};
-
-// One scan point: the nearest occupied cell along a ray.
-struct ScanPoint {
-  int ray = 0;                                   // Ray index (0 = rightmost).
-  double bearing_rad = 0;                        // Counter-clockwise from forward.
-  double range_m = 0;                            // Robot to cell centre [m].
-  Eigen::Vector2d xy = Eigen::Vector2d::Zero();  // Cell centre in the base frame [m].
-  cv::Point cell;                                // (column, row) in the occupancy image.
-};
-
-// One frame's scan. Points are ordered by bearing (right to left).
-struct PolarScan {
-  std::vector<ScanPoint> points;
-  int rays_cast = 0;               // Rays inside the field of view.
-  int rays_blocked_by_people = 0;  // Rays that passed a person's cells or footprint.
-  double fov_min_rad = 0;          // Bearing range actually scanned.
-  double fov_max_rad = 0;
-  double resolution_rad = 0;
-  double cell_size_m = 0;  // Of the occupancy image scanned.
-  // "290 of 900 rays (0.2 deg over 180 deg) lie in the 57.9 deg field of view".
-  std::string Describe() const;
 };
 
 // Casts rays through occupancy images. The cells of every ray are precomputed once per image

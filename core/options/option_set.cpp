@@ -3,9 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "core/common/json_writer.h"
+#include "core/common/text_file.h"
 
 namespace sightline {
 
@@ -79,43 +81,102 @@ void OptionSet::Reset(const std::string& key) {
 
 namespace {
 
-// Collects (dotted key, scalar text, line) from a YAML tree.
+// A profile is a short list of options: anything far larger is not one (and a small file of
+// nested aliases would otherwise expand to gigabytes).
+constexpr size_t kMaxProfileBytes = 1 << 20;
+constexpr size_t kMaxProfileEntries = 10000;
+constexpr int kMaxProfileDepth = 16;
+
+using ProfileEntries = std::vector<std::tuple<std::string, std::string, int>>;
+
+// Rejects [ and { nested deeper than a profile ever needs before the parser, which recurses
+// once per level, sees them.
+Status CheckFlowNesting(const std::string& text, const std::string& origin) {
+  int depth = 0, line = 1;
+  char quote = 0;
+  for (char c : text) {
+    if (c == '\n') ++line;
+    if (quote != 0) {
+      if (c == quote || c == '\n') quote = 0;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxProfileDepth) {
+        return ParseError(origin + " line " + std::to_string(line) +
+                          ": lists or maps nest deeper than " + std::to_string(kMaxProfileDepth) +
+                          " levels");
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return Status::Ok();
+}
+
+std::string At(const std::string& origin, int line) {
+  return origin + " line " + std::to_string(line);
+}
+
+// Collects (dotted key, scalar text, line) from a YAML tree. Keys must be plain words; a key
+// given twice (also once nested and once dotted) is an error naming both lines.
 Status Flatten(const YAML::Node& node, const std::string& prefix, const std::string& origin,
-               std::vector<std::tuple<std::string, std::string, int>>* out) {
+               int depth, std::map<std::string, int>* lines, ProfileEntries* out) {
   const int line = node.Mark().line + 1;
+  if (depth > kMaxProfileDepth) {
+    return ParseError(At(origin, line) + ": options nest deeper than " +
+                      std::to_string(kMaxProfileDepth) + " levels");
+  }
   if (node.IsMap()) {
     for (const auto& item : node) {
-      const std::string key = item.first.as<std::string>();
-      SIGHTLINE_RETURN_IF_ERROR(
-          Flatten(item.second, prefix.empty() ? key : prefix + "." + key, origin, out));
+      if (!item.first.IsScalar()) {
+        return ParseError(At(origin, item.first.Mark().line + 1) +
+                          ": an option key must be a word, not a list or map");
+      }
+      const std::string key = item.first.Scalar();
+      SIGHTLINE_RETURN_IF_ERROR(Flatten(item.second, prefix.empty() ? key : prefix + "." + key,
+                                        origin, depth + 1, lines, out));
     }
     return Status::Ok();
   }
   if (node.IsScalar()) {
+    if (out->size() >= kMaxProfileEntries) {
+      return ParseError(origin + ": more than " + std::to_string(kMaxProfileEntries) +
+                        " values (aliases expanding?); a profile lists each option once");
+    }
+    const auto [it, inserted] = lines->emplace(prefix, line);
+    if (!inserted) {
+      return ParseError(At(origin, line) + ": option '" + prefix + "' is given twice (also line " +
+                        std::to_string(it->second) + ")");
+    }
     out->emplace_back(prefix, node.Scalar(), line);
     return Status::Ok();
   }
   if (node.IsNull()) {
-    return ParseError(origin + " line " + std::to_string(line) + ": option '" + prefix +
-                      "' has no value");
+    return ParseError(At(origin, line) + ": option '" + prefix + "' has no value");
   }
-  return ParseError(origin + " line " + std::to_string(line) + ": option '" + prefix +
+  return ParseError(At(origin, line) + ": option '" + prefix +
                     "' must be a single value, not a list");
 }
 
 }  // namespace
 
 Status OptionSet::LoadYamlText(const std::string& text, const std::string& origin) {
+  SIGHTLINE_RETURN_IF_ERROR(CheckFlowNesting(text, origin));
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     return ParseError(origin + " line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  } catch (const std::exception& e) {
+    return ParseError(origin + ": not a readable YAML profile: " + e.what());
   }
   if (root.IsNull()) return Status::Ok();  // An empty profile changes nothing.
   if (!root.IsMap()) return ParseError(origin + ": a profile must be a map of option keys");
-  std::vector<std::tuple<std::string, std::string, int>> entries;
-  SIGHTLINE_RETURN_IF_ERROR(Flatten(root, "", origin, &entries));
+  ProfileEntries entries;
+  std::map<std::string, int> lines;
+  SIGHTLINE_RETURN_IF_ERROR(Flatten(root, "", origin, 0, &lines, &entries));
   OptionSet updated = *this;
   for (const auto& [key, value, line] : entries) {
     SIGHTLINE_RETURN_IF_ERROR(
@@ -126,17 +187,26 @@ Status OptionSet::LoadYamlText(const std::string& text, const std::string& origi
 }
 
 Status OptionSet::LoadYaml(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return NotFound("profile " + path + ": no such file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return LoadYamlText(text.str(), path);
+  StatusOr<std::string> text = ReadWholeTextFile(path, kMaxProfileBytes, "profile");
+  if (!text.ok()) return text.status();
+  return LoadYamlText(*text, path);
+}
+
+OptionSet OptionSet::Without(const std::string& prefix) const {
+  OptionSet subset;
+  for (const OptionSpec& spec : specs_) {
+    if (spec.key.compare(0, prefix.size(), prefix) == 0) continue;
+    subset.specs_.push_back(spec);
+    subset.values_[spec.key] = values_.at(spec.key);
+  }
+  return subset;
 }
 
 std::string OptionSet::ToYaml() const {
-  YAML::Emitter out;
-  out << YAML::BeginMap;
-  // Specs are grouped by their dotted path; emit nested maps following declaration order.
+  // Written by hand rather than by YAML::Emitter, whose comments land after the previous key:
+  // here each description stands on its own key's line. Scalars are still quoted by the
+  // emitter so that every value reads back as written.
+  std::string text;
   std::vector<std::string> open;  // Currently open path components.
   for (const OptionSpec& spec : specs_) {
     std::vector<std::string> parts;
@@ -146,25 +216,23 @@ std::string OptionSet::ToYaml() const {
     while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common]) {
       ++common;
     }
-    while (open.size() > common) {
-      out << YAML::EndMap;
-      open.pop_back();
-    }
+    open.resize(common);
     for (size_t i = common; i + 1 < parts.size(); ++i) {
-      out << YAML::Key << parts[i] << YAML::Value << YAML::BeginMap;
+      text += std::string(2 * open.size(), ' ') + parts[i] + ":\n";
       open.push_back(parts[i]);
     }
+    YAML::Emitter scalar;
+    scalar << FormatOptionValue(values_.at(spec.key));
     std::string comment = spec.description;
     if (!spec.unit.empty()) comment += " [" + spec.unit + "]";
-    out << YAML::Comment(comment);
-    out << YAML::Key << parts.back() << YAML::Value << FormatOptionValue(values_.at(spec.key));
+    for (char& c : comment) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    text += std::string(2 * open.size(), ' ') + parts.back() + ": " + scalar.c_str();
+    if (!comment.empty()) text += "  # " + comment;
+    text += "\n";
   }
-  while (!open.empty()) {
-    out << YAML::EndMap;
-    open.pop_back();
-  }
-  out << YAML::EndMap;
-  return std::string(out.c_str()) + "\n";
+  return text;
 }
 
 Status OptionSet::SaveYaml(const std::string& path) const {

@@ -60,6 +60,10 @@ class OptionSet {
   // Writes {"key": value, ...} (flat dotted keys) as one JSON object value.
   void WriteJson(JsonWriter* writer) const;
 
+  // A copy without the options whose keys start with `prefix` (e.g. "view." for a profile that
+  // holds only a pipeline's options).
+  OptionSet Without(const std::string& prefix) const;
+
   // Fills a typed Options struct from the current values of the table's keys.
   template <typename T>
   T Extract(const OptionTable<T>& table, T options = T()) const {

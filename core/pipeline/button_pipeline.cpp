@@ -103,7 +103,10 @@ struct Waiter {
                            const RunContext& context) {
     const auto start = std::chrono::steady_clock::now();
     while (server.Stats().authorised < run.wait_clients) {
-      if (context.Cancelled()) return Cancelled("run cancelled while waiting for arm clients");
+      if (context.Cancelled()) {
+        server.SendStopAndClose("cancelled");
+        return Cancelled("run cancelled while waiting for arm clients");
+      }
       const double waited =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (waited > run.wait_clients_s) {
@@ -188,8 +191,10 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
   double tap_stamp_s = 0, first_target_stamp_s = 0, processing_ms_to_first = 0;
   std::optional<cv::Point2d> tapped_centre;
   for (int64_t index = 0; total < 0 || index < total; ++index) {
-    if (context.Cancelled())
+    if (context.Cancelled()) {
+      if (server) server->SendStopAndClose("cancelled");  // Signals land here (run --serve).
       return Cancelled("run cancelled after " + std::to_string(index) + " frames");
+    }
     StatusOr<std::optional<MonoFrame>> next = NextMonoFrame(source, path);
     if (!next.ok()) return next.status().WithContext("frame " + std::to_string(index));
     if (!*next) break;
@@ -263,8 +268,13 @@ StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
     return OutOfRange("button.run.tap: frame " + std::to_string(tap->frame) +
                       " is past the last frame (" + std::to_string(frames - 1) + ")");
   }
-  if (server && run.linger_s > 0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(run.linger_s));
+  if (server) {
+    // Queued targets go out, then every client is told the stream is over.
+    const auto linger_end =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(run.linger_s);
+    while (std::chrono::steady_clock::now() < linger_end && !context.Cancelled())
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    server->SendStopAndClose(context.Cancelled() ? "cancelled" : "source ended");
   }
 
   RunResult result;

@@ -1,11 +1,11 @@
 #include "core/pipeline/inspect_pipeline.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <opencv2/core.hpp>
 
 #include "core/common/timing.h"
-#include "core/io/dataset.h"
 
 namespace sightline {
 
@@ -58,80 +58,90 @@ double CheckFrame(const Frame& frame, const InspectOptions& options, std::string
   return static_cast<double>(finite);
 }
 
-StatusOr<RunResult> RunInspect(const RunContext& context) {
-  const InspectOptions options = context.options.Extract(InspectOptions::Describe());
+}  // namespace
+
+const StatisticTable& InspectStatistics() {
+  static const StatisticTable kTable = {
+      {"inspect/check_ms", "ms", "Checking the frame's content."},
+      {"inspect/valid_depth_fraction", "", "RGB-D: fraction of depth pixels in (0, max_depth_m]."},
+      {"inspect/mean_intensity_left", "", "Stereo: mean grey value of the left image."},
+      {"inspect/mean_intensity", "", "Mono: mean grey value."},
+      {"inspect/finite_points", "count", "Cloud: points with finite coordinates."},
+      {"inspect/has_gt", "", "1 when a ground-truth pose lies within gt_tolerance_s."},
+  };
+  return kTable;
+}
+
+InspectPipeline::InspectPipeline() = default;
+InspectPipeline::~InspectPipeline() = default;
+
+Status InspectPipeline::Configure(const OptionSet& options) {
+  const InspectOptions parsed = options.Extract(InspectOptions::Describe());
   std::string error;
-  if (!options.IsValid(&error)) return InvalidArgument(error);
+  if (!parsed.IsValid(&error)) return InvalidArgument(error);
+  options_ = parsed;
+  return Status::Ok();
+}
 
-  StatusOr<std::unique_ptr<Source>> opened = OpenDataset(context.dataset_path);
-  if (!opened.ok()) return opened.status();
-  Source& source = **opened;
-  const Trajectory* gt = source.ground_truth();
-  int64_t total = source.info().frame_count;
-  if (options.max_frames > 0 && (total < 0 || total > options.max_frames)) {
-    total = options.max_frames;
-  }
+Status InspectPipeline::Open(const PipelineSource& source) {
+  ground_truth_ = source.ground_truth;
+  Reset();
+  return Status::Ok();
+}
 
-  const std::string csv_path = context.out_dir + "/frames.csv";
+StatusOr<std::shared_ptr<const PipelineResult>> InspectPipeline::Process(const Frame& frame) {
+  auto result = std::make_shared<PipelineResult>();
+  result->stamp = StampOf(frame);
+  const double start = HostTimeS();
+  std::string what;
+  const double value = CheckFrame(frame, options_, &what);
+  const double check_ms = (HostTimeS() - start) * 1000.0;
+  const bool has_gt = ground_truth_ != nullptr &&
+                      ground_truth_->Nearest(result->stamp.sensor_time_s, options_.gt_tolerance_s);
+  if (column_.empty()) column_ = what;
+  char line[128];
+  std::snprintf(line, sizeof(line), "%lld,%.6f,%.6g,%d\n",
+                static_cast<long long>(result->stamp.sequence_id), result->stamp.sensor_time_s,
+                value, has_gt ? 1 : 0);
+  rows_ += line;
+  ++frames_;
+  with_gt_ += has_gt ? 1 : 0;
+  result->stats = {{"inspect/check_ms", check_ms},
+                   {"inspect/" + what, value},
+                   {"inspect/has_gt", has_gt ? 1.0 : 0.0}};
+  return std::shared_ptr<const PipelineResult>(std::move(result));
+}
+
+void InspectPipeline::Reset() {
+  column_.clear();
+  rows_.clear();
+  frames_ = 0;
+  with_gt_ = 0;
+}
+
+StatusOr<RunResult> InspectPipeline::Finish(const std::string& out_dir) {
+  const std::string csv_path = out_dir + "/frames.csv";
   std::ofstream csv(csv_path);
   if (!csv) return NotFound("cannot write " + csv_path);
-
-  RunResult result;
-  result.dataset_format = source.info().format;
-  int64_t with_gt = 0;
-  bool header_written = false;
-  while (total < 0 || result.frames < total) {
-    if (context.Cancelled())
-      return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
-    ScopedTimer frame_timer(context.timing, "total");
-    StatusOr<Frame> frame = Internal("not read");
-    {
-      ScopedTimer t(context.timing, "read");
-      Status grabbed = source.Grab();
-      if (grabbed.code() == StatusCode::kOutOfRange) break;
-      if (!grabbed.ok()) return grabbed;
-      frame = source.Retrieve();
-    }
-    if (!frame.ok()) return frame.status();
-    std::string what;
-    double value = 0;
-    {
-      ScopedTimer t(context.timing, "check");
-      value = CheckFrame(*frame, options, &what);
-    }
-    const FrameStamp& stamp = StampOf(*frame);
-    const bool has_gt = gt != nullptr && gt->Nearest(stamp.sensor_time_s, options.gt_tolerance_s);
-    with_gt += has_gt ? 1 : 0;
-    if (!header_written) {
-      csv << "frame,time_s," << what << ",has_gt\n";
-      header_written = true;
-    }
-    char line[128];
-    std::snprintf(line, sizeof(line), "%lld,%.6f,%.6g,%d\n",
-                  static_cast<long long>(stamp.sequence_id), stamp.sensor_time_s, value,
-                  has_gt ? 1 : 0);
-    csv << line;
-    ++result.frames;
-    if (context.progress) context.progress(result.frames, total);
-  }
+  if (frames_ > 0) csv << "frame,time_s," << column_ << ",has_gt\n" << rows_;
   csv.flush();
   if (!csv) return Unavailable("write to " + csv_path + " failed (disk full?)");
-  if (result.frames == 0) return OutOfRange(context.dataset_path + " holds no frames");
+  RunResult result;
+  result.frames = frames_;
   result.outputs.push_back("frames.csv");
-  if (gt != nullptr) {
-    result.accuracy.emplace_back("gt_coverage", static_cast<double>(with_gt) / result.frames);
+  if (ground_truth_ != nullptr && frames_ > 0) {
+    result.accuracy.emplace_back("gt_coverage", static_cast<double>(with_gt_) / frames_);
   }
   return result;
 }
 
-}  // namespace
-
-PipelineInfo InspectPipeline() {
+PipelineInfo InspectPipelineInfo() {
   PipelineInfo info;
   info.name = "inspect";
+  info.title = "Inspect frames";
   info.summary = "read and check every frame of a dataset; time the decoding";
   info.declare_options = [](OptionSet* set) { return set->Declare(InspectOptions::Describe()); };
-  info.run = RunInspect;
+  info.create = [] { return std::unique_ptr<Pipeline>(std::make_unique<InspectPipeline>()); };
   return info;
 }
 

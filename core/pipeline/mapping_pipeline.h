@@ -1,11 +1,12 @@
-// The "mapping" pipeline (seed 000): indoor Manhattan mapping from a Kinect recording, headless.
+// The "mapping" pipeline (seed 000): indoor Manhattan mapping from a Kinect recording, one
+// object run headless (`sightline-cli run mapping`) and in the GUI.
 //
 // Reads an RGB-D dataset (a TUM folder or a recording with an rgbd/ sensor folder). From the
 // recording's top folder it also uses, when present: odometry.txt (wheel odometry, the dead
 // reckoning pose source), people.csv (ground-truth person boxes), walls.csv (true wall faces,
 // for accuracy) and scene.yaml (the camera's offset ahead of the odometry base).
 //
-// Writes trajectory.txt (TUM, camera poses), lines.csv, map.pgm + map.yaml (ROS map_server),
+// Finish writes trajectory.txt (TUM, camera poses), lines.csv, map.pgm + map.yaml (ROS map_server),
 // map.png, floor.yaml (the floor calibration used), mapping_log.txt (per-frame status and every
 // reset), and metrics.json with timing for occupancy, scan, lines, rotation, stitch and, with
 // ground truth: accuracy.heading_error_deg_mean, heading_error_deg_max, ate_rmse_m, and with
@@ -13,10 +14,11 @@
 // map_recall).
 #pragma once
 
+#include <memory>
 #include <string>
 
-#include "core/mapping/floor_plane.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/mapping_result.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline {
@@ -41,13 +43,35 @@ struct MappingRunOptions {
   static OptionTable<MappingRunOptions> Describe();
 };
 
-// Calibrates the floor from the first `frames` frames of an RGB-D dataset or the clouds of a
-// PCD file/folder (`sightline-cli floor`). `used_frames` receives the number of frames read.
-StatusOr<FloorFitResult> CalibrateFloorFromDataset(const std::string& path, int frames,
-                                                   const FloorPlaneOptions& options,
-                                                   int* used_frames = nullptr);
+// The mapping pipeline: the floor calibration (mapping.run.floor_file, or fitted on the first
+// mapping.run.floor_frames frames, which are then mapped too), the mapping chain on every
+// frame, and the run's files and figures. The one object `sightline-cli run mapping` and the
+// GUI run. `requests` (optional) carries the GUI's "Calibrate floor".
+class MappingPipeline : public Pipeline {
+ public:
+  explicit MappingPipeline(std::shared_ptr<const MappingRequests> requests = nullptr);
+  ~MappingPipeline() override;
 
-// The pipeline's registry entry.
-PipelineInfo MappingPipeline();
+  Status Configure(const OptionSet& options) override;
+  Status Open(const PipelineSource& source) override;
+  int64_t FrameLimit() const override;
+  StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
+  void Reset() override;
+  StatusOr<RunResult> Finish(const std::string& out_dir) override;
+  const StatisticTable& Statistics() const override { return MappingStatistics(); }
+
+  // The run's state (mapping_run.h; for the pipeline's own source files).
+  struct State;
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
+// The pipeline's options: the mapping chain's (MappingOptions, with the map rendered every 10
+// frames for views) and mapping.run.*.
+Status DeclareMappingOptions(OptionSet* options);
+
+// The pipeline's registry entry; its objects share `requests` when given.
+PipelineInfo MappingPipelineInfo(std::shared_ptr<const MappingRequests> requests = nullptr);
 
 }  // namespace sightline

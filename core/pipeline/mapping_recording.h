@@ -1,5 +1,5 @@
-// What a mapping run reads beside the depth frames of a recording, shared by the headless
-// pipeline and the GUI: wheel odometry, person boxes, true walls and the camera's offset.
+// What a mapping run reads beside the depth frames of a recording (MappingPipeline): wheel
+// odometry, person boxes, true walls and the camera's offset.
 #pragma once
 
 #include <optional>

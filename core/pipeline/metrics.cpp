@@ -36,6 +36,7 @@ std::string MetricsToJson(const RunMetrics& m) {
   w.Key("counts").BeginObject();
   for (const auto& [key, value] : m.counts) w.Key(key).Double(value);
   w.EndObject();
+  if (!m.failure.empty()) w.Key("failure").String(m.failure);
   w.Key("options");
   m.options.WriteJson(&w);
   w.EndObject();

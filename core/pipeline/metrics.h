@@ -18,6 +18,7 @@ namespace sightline {
 //                "total": {...}},
 //  "accuracy": {"ate_rmse_m": ..., ...},
 //  "counts": {"<name>": n, ...},
+//  "failure": "why the run achieved nothing" (only then),
 //  "options": {"<key>": value, ...}}
 struct RunMetrics {
   std::string pipeline;
@@ -27,6 +28,9 @@ struct RunMetrics {
   std::vector<std::pair<std::string, double>> accuracy;
   std::vector<std::pair<std::string, double>> counts;
   OptionSet options;  // The effective options of the run.
+  // Why the run achieved nothing (no frame tracked, never initialised, every frame gated);
+  // empty for a run with results. Written as "failure" when set.
+  std::string failure;
 };
 
 // Summaries of every stage of `stats`, in the order the stages were first timed.

@@ -1,21 +1,18 @@
 #include "core/pipeline/mobility_pipeline.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <opencv2/imgcodecs.hpp>
+#include <limits>
+#include <optional>
 
 #include "core/common/text_file.h"
-#include "core/io/dataset.h"
 #include "core/io/floor_file.h"
-#include "core/mapping/floor_plane.h"
 #include "core/mobility/mobility_map.h"
+#include "core/mobility/mobility_mapper.h"
+#include "core/mobility/score_plot.h"
 #include "core/mobility/terrain_truth.h"
 #include "core/pipeline/mobility_outputs.h"
-#include "core/sensors/driver_registry.h"
+#include "core/pipeline/mobility_run.h"
 
 namespace sightline {
 
@@ -54,34 +51,20 @@ OptionTable<MobilityRunOptions> MobilityRunOptions::Describe() {
 
 namespace {
 
-double Median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-// The recording folder holding regions.csv: the dataset path or its parent.
-std::string FindRegionsFile(const std::string& dataset_path, const std::string& source_path) {
+// The recording folder holding regions.csv: the source's folder or its parent.
+std::string FindRegionsFile(const std::string& source_path) {
   for (const std::string& folder :
-       {dataset_path, source_path, std::filesystem::path(source_path).parent_path().string()}) {
+       {source_path, std::filesystem::path(source_path).parent_path().string()}) {
     const std::string path = JoinPath(folder, "regions.csv");
     if (FileExists(path)) return path;
   }
   return "";
 }
 
-// Accuracy figures gathered over the frames of a simulated terrain.
-struct TerrainAccuracy {
-  double slope_error_max = 0;
-  std::string worst;  // Where the largest slope error was, for the log.
-  int slopes = 0;
-  std::vector<double> flat_roughness;
-};
-
 void AddTerrainAccuracy(int64_t frame, const MobilityResult& r,
                         const Eigen::Isometry3d& world_from_camera,
                         const std::vector<TrueRegion>& regions, double min_fraction,
-                        TerrainAccuracy* acc) {
+                        MobilityTerrainAccuracy* acc) {
   for (const SegmentMatch& m : MatchSegmentsToRegions(r, world_from_camera, regions)) {
     if (m.region < 0 || m.fraction < min_fraction) continue;
     const TrueRegion& region = regions[m.region];
@@ -101,154 +84,239 @@ void AddTerrainAccuracy(int64_t frame, const MobilityResult& r,
   }
 }
 
-StatusOr<RunResult> RunMobility(const RunContext& context) {
-  const MobilityOptions options = context.options.Extract(MobilityOptions::Describe());
-  const MobilityRunOptions run = context.options.Extract(MobilityRunOptions::Describe());
+// A colour per segment id (the ground grey-blue, unsegmented dark).
+Eigen::Matrix<uint8_t, 3, 1> SegmentColor(const MobilityResult& r, int segment) {
+  if (segment < 0) return {50, 50, 50};
+  if (r.segments[segment].is_ground) return {110, 130, 170};
+  const uint32_t h = static_cast<uint32_t>(segment) * 2654435761u;
+  return {static_cast<uint8_t>(80 + (h >> 8) % 176), static_cast<uint8_t>(80 + (h >> 16) % 176),
+          static_cast<uint8_t>(80 + (h >> 24) % 176)};
+}
+
+// The scored cloud coloured by rule score, GPR score and segment, for the 3D view.
+void ColourClouds(const MobilityResult& r, MobilityFrameResult* out) {
+  auto by_score = std::make_shared<PointCloud>();
+  auto by_gpr = std::make_shared<PointCloud>();
+  auto by_segment = std::make_shared<PointCloud>();
+  for (PointCloud* cloud : {by_score.get(), by_gpr.get(), by_segment.get()}) {
+    cloud->points = r.points;
+    cloud->width = static_cast<int>(r.points.size());
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    const int s = r.segment[i];
+    const cv::Vec3b rule =
+        ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_rule));
+    const cv::Vec3b gpr = ScoreColorBgr(s < 0 ? nan : static_cast<float>(r.segments[s].score_gpr));
+    by_score->colors.emplace_back(rule[2], rule[1], rule[0]);
+    by_gpr->colors.emplace_back(gpr[2], gpr[1], gpr[0]);
+    by_segment->colors.push_back(SegmentColor(r, s));
+  }
+  out->by_score = std::move(by_score);
+  out->by_gpr = std::move(by_gpr);
+  out->by_segment = std::move(by_segment);
+}
+
+// The statistics of one frame.
+std::vector<std::pair<std::string, double>> FrameStatistics(const MobilityResult& r) {
+  std::vector<std::pair<std::string, double>> stats;
+  for (const StageReport& s : r.stages) {
+    stats.emplace_back("mobility/" + s.name + "_ms", s.ms);
+    stats.emplace_back("mobility/" + s.name + "_points", static_cast<double>(s.points));
+  }
+  stats.emplace_back("mobility/segments", static_cast<double>(r.segments.size()));
+  if (r.ground.found) stats.emplace_back("mobility/ground_height_m", r.ground.d);
+  return stats;
+}
+
+// The expected up direction of a floor calibration file ("" = none).
+StatusOr<std::optional<Eigen::Vector3d>> UpFromFloorFile(const std::string& path) {
+  if (path.empty()) return std::optional<Eigen::Vector3d>();
+  StatusOr<FloorCalibration> floor = ReadFloorCalibration(path);
+  if (!floor.ok()) return floor.status();
+  return std::optional<Eigen::Vector3d>(floor->plane.normal);
+}
+
+}  // namespace
+
+const std::vector<std::string>& MobilityStages() {
+  static const std::vector<std::string> kStages = {
+      "downsample", "range_cut",    "denoise", "normals",  "rgbn",
+      "ground",     "segmentation", "surface", "mobility", "maps"};
+  return kStages;
+}
+
+const StatisticTable& MobilityStatistics() {
+  static const StatisticTable kTable = [] {
+    StatisticTable table;
+    for (const std::string& stage : MobilityStages()) {
+      table.push_back({"mobility/" + stage + "_ms", "ms", "Time of the " + stage + " stage."});
+    }
+    for (const std::string& stage : MobilityStages()) {
+      table.push_back({"mobility/" + stage + "_points", "count",
+                       "Points (segments for mobility) entering the " + stage + " stage."});
+    }
+    table.push_back({"mobility/segments", "count", "Segments measured, the ground included."});
+    table.push_back({"mobility/ground_height_m", "m",
+                     "Camera height above the ground plane (when one was found)."});
+    return table;
+  }();
+  return kTable;
+}
+
+cv::Mat MobilityScoreSurface() { return RenderScoreSurface(GprScore::TrainOnTable()); }
+
+void MobilityRunRecord::Add(std::shared_ptr<const MobilityResult> r, bool keep_for_files) {
+  const int64_t index = frames++;
+  if (!r->status.ok()) {
+    ++failed;
+    log.push_back("frame " + std::to_string(index) + ": " + r->status.message());
+  } else {
+    log.push_back("frame " + std::to_string(index) + ": ok, " + std::to_string(r->segments.size()) +
+                  " segments");
+  }
+  segments_csv += SegmentsCsvRows(index, *r);
+  kept.push_back(keep_for_files ? std::move(r) : nullptr);
+}
+
+struct MobilityPipeline::State {
+  MobilityOptions options;
+  MobilityRunOptions run;
+  bool configured = false;
+  std::optional<PipelineSource> source;
+  MobilityMapper mapper;
+  std::optional<Eigen::Vector3d> up;  // From mobility.run.floor_file.
+  std::vector<TrueRegion> regions;    // Simulated terrain's true regions, for accuracy.
+  MobilityRunRecord record;
+
+  // The mapper's input of a frame.
+  StatusOr<MobilityInput> InputOf(const Frame& frame) const;
+  // Maps one frame (the mapper is const: frames are independent).
+  StatusOr<std::shared_ptr<const MobilityFrameResult>> Map(const Frame& frame) const;
+  // Adds a mapped frame to the run's record.
+  void Record(const MobilityFrameResult& result);
+};
+
+StatusOr<MobilityInput> MobilityPipeline::State::InputOf(const Frame& frame) const {
+  const SourceInfo& info = source->info;
+  MobilityInput input;
+  if (const auto* rgbd = std::get_if<RgbdFrame>(&frame)) {
+    if (!info.rgbd) return FailedPrecondition(info.path + ": the RGB-D source has no camera");
+    input = MobilityInputFromRgbd(*rgbd, info.rgbd->color);
+  } else if (const auto* cloud = std::get_if<CloudFrame>(&frame)) {
+    input = MobilityInputFromCloud(*cloud);
+  } else {
+    return InvalidArgument(info.path + " gave a frame that is neither RGB-D nor a cloud");
+  }
+  input.up_in_camera = up;
+  return input;
+}
+
+MobilityPipeline::MobilityPipeline() : state_(std::make_unique<State>()) {}
+MobilityPipeline::~MobilityPipeline() = default;
+
+Status MobilityPipeline::Configure(const OptionSet& options) {
+  const MobilityOptions mobility = options.Extract(MobilityOptions::Describe());
+  const MobilityRunOptions run = options.Extract(MobilityRunOptions::Describe());
   std::string error;
-  if (!options.IsValid(&error) || !run.IsValid(&error)) return InvalidArgument(error);
-  // Any RGB-D source: datasets, .oni recordings and sensor URIs (openni2://...).
-  StatusOr<std::unique_ptr<Source>> opened = OpenSource(context.dataset_path);
-  if (!opened.ok()) return opened.status();
-  Source& source = **opened;
-  const SourceInfo& info = source.info();
+  if (!mobility.IsValid(&error) || !run.IsValid(&error)) return InvalidArgument(error);
+  StatusOr<std::optional<Eigen::Vector3d>> up = UpFromFloorFile(run.floor_file);
+  if (!up.ok()) return up.status();
+  State& s = *state_;
+  SIGHTLINE_RETURN_IF_ERROR(s.mapper.Configure(mobility));
+  s.options = mobility;
+  s.run = run;
+  s.up = *up;
+  s.configured = true;
+  return Status::Ok();
+}
+
+Status MobilityPipeline::Open(const PipelineSource& source) {
+  State& s = *state_;
+  if (!s.configured) return FailedPrecondition("mobility: Configure() before Open()");
+  const SourceInfo& info = source.info;
   if (info.kind != SourceKind::kRgbd && info.kind != SourceKind::kCloud) {
-    return InvalidArgument(context.dataset_path + " is a " + SourceKindName(info.kind) +
+    return InvalidArgument(info.path + " is a " + SourceKindName(info.kind) +
                            " dataset; the mobility map needs RGB-D frames or point clouds");
   }
-  std::optional<Eigen::Vector3d> up;
-  if (!run.floor_file.empty()) {
-    StatusOr<FloorCalibration> floor = ReadFloorCalibration(run.floor_file);
-    if (!floor.ok()) return floor.status();
-    up = floor->plane.normal;
-  }
   std::vector<TrueRegion> regions;
-  const std::string regions_path = FindRegionsFile(context.dataset_path, info.path);
+  const std::string regions_path = FindRegionsFile(info.path);
   if (!regions_path.empty()) {
     StatusOr<std::vector<TrueRegion>> read = ReadTerrainRegions(regions_path);
     if (!read.ok()) return read.status();
     regions = std::move(*read);
   }
-  MobilityMapper mapper(options);
-  RunResult result;
-  result.dataset_format = info.format;
-  const std::string csv_path = JoinPath(context.out_dir, "segments.csv");
-  std::ofstream csv(csv_path);
-  if (!csv) return NotFound("cannot write " + csv_path);
-  csv << SegmentsCsvHeader();
-  std::vector<std::string> log;
-  std::map<std::string, std::vector<double>> stage_points;
-  std::vector<double> heights;
-  TerrainAccuracy terrain;
-  int64_t total = info.frame_count;
-  if (run.max_frames > 0 && (total < 0 || total > run.max_frames)) total = run.max_frames;
-  int failed = 0;
-  while (total < 0 || result.frames < total) {
-    if (context.Cancelled())
-      return Cancelled("run cancelled after " + std::to_string(result.frames) + " frames");
-    Status grabbed = source.Grab();
-    if (grabbed.code() == StatusCode::kOutOfRange) break;
-    if (!grabbed.ok()) return grabbed;
-    StatusOr<Frame> frame = source.Retrieve();
-    if (!frame.ok()) return frame.status();
-    MobilityInput input;
-    if (const auto* rgbd = std::get_if<RgbdFrame>(&*frame)) {
-      if (!info.rgbd) return FailedPrecondition(info.path + ": the RGB-D source has no camera");
-      input = MobilityInputFromRgbd(*rgbd, info.rgbd->color);
-    } else if (const auto* cloud = std::get_if<CloudFrame>(&*frame)) {
-      input = MobilityInputFromCloud(*cloud);
-    } else {
-      return InvalidArgument(context.dataset_path +
-                             " gave a frame that is neither RGB-D nor a cloud");
-    }
-    input.up_in_camera = up;
-    const std::shared_ptr<const MobilityResult> r = mapper.Process(input);
-    const int64_t index = result.frames;
-    double total_ms = 0;
-    for (const StageReport& s : r->stages) {
-      context.timing->Add(s.name, s.ms);
-      stage_points[s.name].push_back(static_cast<double>(s.points));
-      total_ms += s.ms;
-    }
-    context.timing->Add("total", total_ms);
-    char name[64];
-    if (!r->status.ok()) {
-      ++failed;
-      log.push_back("frame " + std::to_string(index) + ": " + r->status.message());
-    } else {
-      log.push_back("frame " + std::to_string(index) + ": ok, " +
-                    std::to_string(r->segments.size()) + " segments");
-    }
-    if (r->ground.found) heights.push_back(r->ground.d);
-    csv << SegmentsCsvRows(index, *r);
-    if (run.cloud_format != "none" && !r->points.empty()) {
-      std::snprintf(name, sizeof(name), "%06lld_cloud.%s", static_cast<long long>(index),
-                    run.cloud_format.c_str());
-      SIGHTLINE_RETURN_IF_ERROR(
-          WriteScoredCloud(*r, run.cloud_format, JoinPath(context.out_dir, name)));
-      result.outputs.push_back(name);
-    }
-    if (run.write_images && !r->projection.empty()) {
-      std::snprintf(name, sizeof(name), "%06lld_projection.png", static_cast<long long>(index));
-      if (!cv::imwrite(JoinPath(context.out_dir, name), r->projection)) {
-        return Unavailable("cannot write " + JoinPath(context.out_dir, name));
-      }
-      result.outputs.push_back(name);
-    }
-    if (run.write_images && r->ground.found) {
-      std::snprintf(name, sizeof(name), "%06lld_topview.png", static_cast<long long>(index));
-      if (!cv::imwrite(JoinPath(context.out_dir, name), RenderTopView(r->map))) {
-        return Unavailable("cannot write " + JoinPath(context.out_dir, name));
-      }
-      result.outputs.push_back(name);
-    }
-    const Trajectory* gt = source.ground_truth();
-    if (!regions.empty() && gt != nullptr && r->ground.found) {
-      if (auto k = gt->Nearest(r->stamp.sensor_time_s, run.gt_tolerance_s)) {
-        AddTerrainAccuracy(index, *r, gt->poses()[*k].world_from_sensor, regions,
-                           run.min_match_fraction, &terrain);
-      }
-    }
-    ++result.frames;
-    if (context.progress) context.progress(result.frames, total);
-  }
-  csv.flush();
-  if (!csv) return Unavailable("write to " + csv_path + " failed (disk full?)");
-  if (result.frames == 0) return OutOfRange(context.dataset_path + " holds no frames");
-  result.outputs.push_back("segments.csv");
-  if (!heights.empty()) result.accuracy.emplace_back("ground_height_m", Median(heights));
-  if (terrain.slopes > 0) {
-    result.accuracy.emplace_back("slope_error_deg_max", terrain.slope_error_max);
-    log.push_back("largest slope error: " + terrain.worst);
-  }
-  if (!terrain.flat_roughness.empty()) {
-    result.accuracy.emplace_back("flat_roughness", Median(terrain.flat_roughness));
-  }
-  for (const auto& [stage, points] : stage_points) {
-    result.counts.emplace_back("points_" + stage, Median(points));
-  }
-  result.counts.emplace_back("frames_without_map", failed);
-  result.counts.emplace_back("frames_with_ground", static_cast<double>(heights.size()));
-  const std::string log_path = JoinPath(context.out_dir, "mobility_log.txt");
-  std::ofstream log_file(log_path);
-  if (!log_file) return NotFound("cannot write " + log_path);
-  for (const std::string& line : log) log_file << line << "\n";
-  result.outputs.push_back("mobility_log.txt");
-  return result;
+  s.source = source;
+  s.regions = std::move(regions);
+  s.record = MobilityRunRecord();
+  return Status::Ok();
 }
 
-}  // namespace
+int64_t MobilityPipeline::FrameLimit() const { return state_->run.max_frames; }
 
-PipelineInfo MobilityPipeline() {
+StatusOr<std::shared_ptr<const MobilityFrameResult>> MobilityPipeline::State::Map(
+    const Frame& frame) const {
+  StatusOr<MobilityInput> input = InputOf(frame);
+  if (!input.ok()) return input.status();
+  auto result = std::make_shared<MobilityFrameResult>();
+  result->stamp = StampOf(frame);
+  result->mobility = mapper.Process(*input);
+  result->status = result->mobility->status;
+  result->stats = FrameStatistics(*result->mobility);
+  ColourClouds(*result->mobility, result.get());
+  return std::shared_ptr<const MobilityFrameResult>(std::move(result));
+}
+
+void MobilityPipeline::State::Record(const MobilityFrameResult& result) {
+  const MobilityResult& r = *result.mobility;
+  const int64_t index = record.frames;
+  record.Add(result.mobility, run.cloud_format != "none" || run.write_images);
+  record.stats.Add(result);
+  const Trajectory* gt = source->ground_truth.get();
+  if (regions.empty() || gt == nullptr || !r.ground.found) return;
+  if (auto k = gt->Nearest(r.stamp.sensor_time_s, run.gt_tolerance_s)) {
+    AddTerrainAccuracy(index, r, gt->poses()[*k].world_from_sensor, regions, run.min_match_fraction,
+                       &record.terrain);
+  }
+}
+
+StatusOr<std::shared_ptr<const PipelineResult>> MobilityPipeline::Process(const Frame& frame) {
+  State& s = *state_;
+  if (!s.source) return FailedPrecondition("mobility: Open() before Process()");
+  StatusOr<std::shared_ptr<const MobilityFrameResult>> result = s.Map(frame);
+  if (!result.ok()) return result.status();
+  s.Record(**result);
+  return std::shared_ptr<const PipelineResult>(*result);
+}
+
+StatusOr<std::shared_ptr<const PipelineResult>> MobilityPipeline::Reprocess(const Frame& frame) {
+  if (!state_->source) return FailedPrecondition("mobility: Open() before Reprocess()");
+  StatusOr<std::shared_ptr<const MobilityFrameResult>> result = state_->Map(frame);
+  if (!result.ok()) return result.status();
+  return std::shared_ptr<const PipelineResult>(*result);
+}
+
+void MobilityPipeline::Reset() { state_->record = MobilityRunRecord(); }
+
+StatusOr<RunResult> MobilityPipeline::Finish(const std::string& out_dir) {
+  const State& s = *state_;
+  if (!s.source) return FailedPrecondition("mobility: nothing to save before Open()");
+  return FinishMobilityRun(s.record, s.run, out_dir);
+}
+
+PipelineInfo MobilityPipelineInfo() {
   PipelineInfo info;
   info.name = "mobility";
+  info.title = "Mobility map";
   info.summary =
       "mobility map from RGB-D frames or point clouds: ground, segments, slope, "
       "roughness, rule and GPR scores (seed 001)";
+  info.accepts = {SourceKind::kRgbd, SourceKind::kCloud};
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MobilityOptions::Describe()));
     return set->Declare(MobilityRunOptions::Describe());
   };
-  info.run = RunMobility;
+  info.create = [] { return std::unique_ptr<Pipeline>(std::make_unique<MobilityPipeline>()); };
   return info;
 }
 

@@ -1,5 +1,5 @@
 // The "mobility" pipeline (seed 001): the mobility map of every frame of an RGB-D recording or
-// of PCD clouds, headless.
+// of PCD clouds, headless or in the GUI.
 //
 // Writes per frame NNNNNN_cloud.pcd (or .ply: x y z rgb score segment; rgb = the score colour),
 // NNNNNN_projection.png (scores on the colour image), NNNNNN_topview.png (the top-view grid),
@@ -12,10 +12,11 @@
 // ground's median roughness).
 #pragma once
 
+#include <memory>
 #include <string>
 
-#include "core/mobility/mobility_mapper.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/mobility_result.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline {
@@ -35,7 +36,32 @@ struct MobilityRunOptions {
   static OptionTable<MobilityRunOptions> Describe();
 };
 
+// The mobility pipeline: the mapper on every frame (its expected up direction from
+// mobility.run.floor_file when given), the run's files and figures. The one object
+// `sightline-cli run mobility` and the GUI run. Frames are independent: a re-run is a run.
+class MobilityPipeline : public Pipeline {
+ public:
+  MobilityPipeline();
+  ~MobilityPipeline() override;
+
+  Status Configure(const OptionSet& options) override;
+  Status Open(const PipelineSource& source) override;
+  int64_t FrameLimit() const override;
+  StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
+  // Frames are independent: the frame again with the current options, the run's record kept.
+  StatusOr<std::shared_ptr<const PipelineResult>> Reprocess(const Frame& frame) override;
+  void Reset() override;
+  StatusOr<RunResult> Finish(const std::string& out_dir) override;
+  const StatisticTable& Statistics() const override { return MobilityStatistics(); }
+
+  // The run's state (mobility_pipeline.cpp).
+  struct State;
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
 // The pipeline's registry entry.
-PipelineInfo MobilityPipeline();
+PipelineInfo MobilityPipelineInfo();
 
 }  // namespace sightline

@@ -75,7 +75,16 @@ struct RunResult {
   std::vector<std::pair<std::string, double>> counts;
   std::vector<std::string> outputs;  // Files written, relative to out_dir.
   std::vector<std::string> notes;    // Facts a user should read (also in the CLI's output).
+  // Why the run achieved nothing although it ran: no frame tracked, never initialised, every
+  // frame gated, no target sent when one was asked for. Empty for a run with results. The CLI
+  // prints it first and exits with kExitNothingAchieved; metrics.json states it as "failure".
+  std::string nothing_achieved;
 };
+
+// `sightline-cli run`'s exit codes: 0 results written; 1 an error (bad input, options, data);
+// 3 the run completed and wrote its files but achieved nothing (RunResult::nothing_achieved).
+constexpr int kExitError = 1;
+constexpr int kExitNothingAchieved = 3;
 
 // One pipeline. Not thread-safe: one thread drives it at a time (the GUI's worker, the CLI's
 // loop). Every pipeline is constructible many times in one process.

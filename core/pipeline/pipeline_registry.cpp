@@ -85,11 +85,7 @@ StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& cont
     ++processed;
     if (context.timing != nullptr) {
       context.timing->Add("read", (process_start - read_start) * 1000.0);
-      for (const auto& [key, value] : (*result)->stats) {
-        const StatisticInfo* stat = FindStatistic(table, key);
-        if (stat != nullptr && stat->unit == "ms") context.timing->Add(TimingStage(key), value);
-      }
-      context.timing->Add("total", (end - process_start) * 1000.0);
+      AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
     }
     if (context.progress) context.progress(index + 1, total);
   }
@@ -98,6 +94,71 @@ StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& cont
   if (!result.ok()) return result.status();
   if (result->dataset_format.empty()) result->dataset_format = source.info().format;
   return result;
+}
+
+void AddFrameTiming(const StatisticTable& table, const PipelineResult& result, double total_ms,
+                    TimingStats* timing) {
+  for (const auto& [key, value] : result.stats) {
+    const StatisticInfo* stat = FindStatistic(table, key);
+    if (stat != nullptr && stat->unit == "ms") timing->Add(TimingStage(key), value);
+  }
+  timing->Add("total", total_ms);
+}
+
+RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& dataset,
+                          const RunResult& result, const TimingStats& timing, double wall_s,
+                          const OptionSet& options) {
+  RunMetrics metrics;
+  metrics.pipeline = pipeline;
+  metrics.dataset = dataset;
+  metrics.frames = result.frames;
+  // Pipelines time "total" per frame; it is listed last.
+  for (auto& [stage, summary] : SummarizeTiming(timing)) {
+    if (stage != "total") metrics.timing_ms.emplace_back(stage, summary);
+  }
+  TimingSummary total = timing.Summary("total");
+  if (total.count == 0) total = TimingStats::Summarize({wall_s * 1000.0});
+  metrics.timing_ms.emplace_back("total", total);
+  metrics.accuracy = result.accuracy;
+  metrics.counts = result.counts;
+  metrics.counts.emplace_back("wall_time_s", wall_s);
+  if (wall_s > 0) metrics.counts.emplace_back("frames_per_second", result.frames / wall_s);
+  metrics.options = options;
+  // The arm server's token is a secret: metrics.json only says that one was set.
+  if (StatusOr<OptionValue> token = metrics.options.Get("button.arm.token");
+      token.ok() && !FormatOptionValue(*token).empty()) {
+    (void)metrics.options.Set("button.arm.token", std::string("(set, not shown)"), "redacted");
+  }
+  metrics.failure = result.nothing_achieved;
+  return metrics;
+}
+
+namespace {
+
+Status CreateOutputFolder(const std::string& out_dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) {
+    return NotFound("cannot create output folder " + out_dir + (ec ? ": " + ec.message() : ""));
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+StatusOr<RunReport> SaveRun(Pipeline& pipeline, const std::string& name, const std::string& dataset,
+                            const TimingStats& timing, double wall_s, const OptionSet& options,
+                            const std::string& out_dir) {
+  SIGHTLINE_RETURN_IF_ERROR(CreateOutputFolder(out_dir));
+  RunReport report;
+  StatusOr<RunResult> result = pipeline.Finish(out_dir);
+  if (!result.ok()) return result.status();
+  report.result = std::move(*result);
+  report.metrics = MakeRunMetrics(name, dataset, report.result, timing, wall_s, options);
+  report.metrics_path = (std::filesystem::path(out_dir) / "metrics.json").string();
+  SIGHTLINE_RETURN_IF_ERROR(WriteMetricsJson(report.metrics, report.metrics_path));
+  report.result.outputs.push_back("metrics.json");
+  return report;
 }
 
 Status PipelineRegistry::Register(PipelineInfo info) {
@@ -120,10 +181,10 @@ const PipelineInfo* PipelineRegistry::Find(const std::string& name) const {
 
 PipelineRegistry BuiltinPipelines() {
   PipelineRegistry registry;
-  Status s = registry.Register(InspectPipeline());
-  s = registry.Register(MappingPipeline());
-  s = registry.Register(StereoVoPipeline());
-  s = registry.Register(MobilityPipeline());
+  Status s = registry.Register(InspectPipelineInfo());
+  s = registry.Register(MappingPipelineInfo());
+  s = registry.Register(StereoVoPipelineInfo());
+  s = registry.Register(MobilityPipelineInfo());
   s = registry.Register(MonoSlamPipeline());
   s = registry.Register(ButtonPipeline());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
@@ -148,12 +209,7 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   for (const std::string& assignment : request.overrides) {
     SIGHTLINE_RETURN_IF_ERROR(context.options.ApplyOverride(assignment));
   }
-  std::error_code ec;
-  std::filesystem::create_directories(request.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(request.out_dir)) {
-    return NotFound("cannot create output folder " + request.out_dir +
-                    (ec ? ": " + ec.message() : ""));
-  }
+  SIGHTLINE_RETURN_IF_ERROR(CreateOutputFolder(request.out_dir));
   TimingStats timing;
   context.timing = &timing;
   context.progress = request.progress;
@@ -166,23 +222,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   if (!result.ok()) return result.status();
   report.result = std::move(*result);
   const double wall_s = HostTimeS() - start_s;
-  report.metrics.pipeline = pipeline->name;
-  report.metrics.dataset = request.dataset_path;
-  report.metrics.frames = report.result.frames;
-  // Pipelines time "total" per frame; it is listed last.
-  for (auto& [stage, summary] : SummarizeTiming(timing)) {
-    if (stage != "total") report.metrics.timing_ms.emplace_back(stage, summary);
-  }
-  TimingSummary total = timing.Summary("total");
-  if (total.count == 0) total = TimingStats::Summarize({wall_s * 1000.0});
-  report.metrics.timing_ms.emplace_back("total", total);
-  report.metrics.accuracy = report.result.accuracy;
-  report.metrics.counts = report.result.counts;
-  report.metrics.counts.emplace_back("wall_time_s", wall_s);
-  if (wall_s > 0) {
-    report.metrics.counts.emplace_back("frames_per_second", report.result.frames / wall_s);
-  }
-  report.metrics.options = context.options;
+  report.metrics = MakeRunMetrics(pipeline->name, request.dataset_path, report.result, timing,
+                                  wall_s, context.options);
   report.metrics_path = (std::filesystem::path(request.out_dir) / "metrics.json").string();
   SIGHTLINE_RETURN_IF_ERROR(WriteMetricsJson(report.metrics, report.metrics_path));
   return report;

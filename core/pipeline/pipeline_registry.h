@@ -82,12 +82,29 @@ struct RunRequest {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-// What RunPipeline did.
+// Adds one processed frame's timing to `timing`: every statistic of unit "ms" under its stage
+// name ("vo/rectify_ms" -> "rectify") and `total_ms` under "total". CLI and GUI runs alike.
+void AddFrameTiming(const StatisticTable& table, const PipelineResult& result, double total_ms,
+                    TimingStats* timing);
+
+// The metrics.json of a run: its figures, per-stage timing summaries ("total" last, or the
+// wall time per frame when no stage timed "total"), wall time and frame rate, and options.
+RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& dataset,
+                          const RunResult& result, const TimingStats& timing, double wall_s,
+                          const OptionSet& options);
+
+// What a run wrote.
 struct RunReport {
   RunResult result;
   RunMetrics metrics;
   std::string metrics_path;
 };
+
+// Writes the files of a run so far, as `sightline-cli run` writes them: creates out_dir, calls
+// the pipeline's Finish and writes metrics.json. The GUI's File > Save results.
+StatusOr<RunReport> SaveRun(Pipeline& pipeline, const std::string& name, const std::string& dataset,
+                            const TimingStats& timing, double wall_s, const OptionSet& options,
+                            const std::string& out_dir);
 
 // Declares options, loads the profile, applies overrides, creates out_dir, runs the pipeline
 // and writes out_dir/metrics.json.

@@ -1,22 +1,11 @@
 #include "core/pipeline/stereo_vo_pipeline.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <variant>
 
-#include "core/eval/evaluation.h"
-#include "core/io/dataset.h"
 #include "core/io/stereo_calibration_file.h"
 #include "core/sensors/driver_registry.h"
 
 namespace sightline {
-
-namespace {
-// A ground-truth path shorter than this is a static recording [m].
-constexpr double kStaticPathM = 0.05;
-}  // namespace
 
 bool StereoVoRunOptions::IsValid(std::string* error) const {
   if (subsample < 1) {
@@ -55,206 +44,186 @@ OptionTable<StereoVoRunOptions> StereoVoRunOptions::Describe() {
               "opened without one.");
 }
 
-StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
-                                        const StereoOdometryOptions& options,
-                                        const StereoVoRunOptions& run, TimingStats* timing,
-                                        const std::function<void(int64_t, int64_t)>& progress,
-                                        const std::atomic<bool>* cancel,
-                                        const OptionSet* sensor_options) {
-  std::string error;
-  if (!run.IsValid(&error) || !options.IsValid(&error)) return InvalidArgument(error);
-  StatusOr<std::unique_ptr<Source>> opened =
-      IsSensorUri(path) ? OpenSource(path, sensor_options ? *sensor_options : OptionSet())
-                        : OpenDataset(path, SourceKind::kStereo);
-  if (!opened.ok()) return opened.status();
-  Source& source = **opened;
-  if (source.info().kind != SourceKind::kStereo) {
-    return InvalidArgument(path + " is a " + SourceKindName(source.info().kind) +
-                           " source; stereo-vo needs stereo pairs");
+namespace {
+
+// The odometry's stages with a "vo/<stage>_ms" statistic, and where FrameStats keeps each.
+struct StageField {
+  const char* stage;
+  double FrameStats::*ms;
+};
+constexpr StageField kStages[] = {
+    {"rectify", &FrameStats::rectify_ms},   {"pyramid", &FrameStats::pyramid_ms},
+    {"tracking", &FrameStats::tracking_ms}, {"detection", &FrameStats::detection_ms},
+    {"matching", &FrameStats::matching_ms}, {"ransac", &FrameStats::ransac_ms},
+    {"refine", &FrameStats::refine_ms},     {"window", &FrameStats::window_ms}};
+
+// The named statistics of one frame: every count and measure, the times of the stages that ran
+// (`ran` holds them; a stage that did not run publishes none, as the run's timing has none).
+std::vector<std::pair<std::string, double>> StatValues(const FrameStats& s,
+                                                       const TimingStats& ran) {
+  std::vector<std::pair<std::string, double>> v = {
+      {"vo/tracked", s.tracked},
+      {"vo/retracked", s.retracked ? 1 : 0},
+      {"vo/anchored", s.anchored},
+      {"vo/new_features", s.new_features},
+      {"vo/stereo_matches", s.stereo_matches},
+      {"vo/correspondences", s.correspondences},
+      {"vo/inliers", s.inliers},
+      {"vo/ransac_iterations", s.ransac_iterations},
+      {"vo/rigidity_failures", s.rigidity_failures},
+      {"vo/residual_px", s.residual_px},
+      {"vo/disparity_offset_px", s.disparity_offset_px},
+      {"vo/window_points", s.window_points},
+      {"vo/window_rms_px", s.window_rms_px},
+      {"vo/translation_m", s.translation_m},
+      {"vo/rotation_deg", s.rotation_deg},
+      {"vo/gated", s.gated ? 1 : 0}};
+  for (const StageField& f : kStages) {
+    if (ran.Summary(f.stage).count > 0)
+      v.emplace_back(std::string("vo/") + f.stage + "_ms", s.*f.ms);
   }
-  std::optional<StereoRig> rig = source.info().stereo;
-  if (!run.calibration_file.empty()) {
-    StatusOr<StereoRig> read = ReadStereoCalibration(run.calibration_file);
+  v.emplace_back("vo/total_ms", s.total_ms);
+  return v;
+}
+
+// The rig a source's frames need: stereo.calibration_file's when set, else the source's.
+StatusOr<StereoRig> RigFor(const SourceInfo& info, const std::string& calibration_file) {
+  if (!calibration_file.empty()) {
+    StatusOr<StereoRig> read = ReadStereoCalibration(calibration_file);
     if (!read.ok()) return read.status().WithContext("stereo.calibration_file");
-    if (read->left.width != source.info().width || read->left.height != source.info().height) {
-      return InvalidArgument("stereo.calibration_file " + run.calibration_file + " is for " +
+    if (read->left.width != info.width || read->left.height != info.height) {
+      return InvalidArgument("stereo.calibration_file " + calibration_file + " is for " +
                              std::to_string(read->left.width) + "x" +
-                             std::to_string(read->left.height) + " images but " + path + " gives " +
-                             std::to_string(source.info().width) + "x" +
-                             std::to_string(source.info().height));
+                             std::to_string(read->left.height) + " images but " + info.path +
+                             " gives " + std::to_string(info.width) + "x" +
+                             std::to_string(info.height));
     }
-    rig = *read;
+    return *read;
   }
-  if (!rig) {
+  if (!info.stereo) {
     return FailedPrecondition(
-        path +
+        info.path +
         ": the source has no stereo calibration; give one with "
         "stereo.calibration_file=FILE (--set; an OpenCV stereo YAML as `sightline-cli "
         "calibrate stereo` writes), or for an Aravis pair "
         "aravis://LEFT,RIGHT?calibration_file=FILE");
   }
-  StereoOdometry odometry(options);
-  SIGHTLINE_RETURN_IF_ERROR(odometry.Configure(*rig).WithContext(path));
-
-  StereoVoRun out;
-  out.dataset_format = source.info().format;
-  if (const Trajectory* gt = source.ground_truth(); gt != nullptr && !gt->empty()) {
-    out.ground_truth = *gt;
-  }
-  int64_t total = source.info().frame_count;
-  if (run.max_frames > 0 && (total < 0 || total > run.max_frames)) total = run.max_frames;
-  for (int64_t index = 0; total < 0 || index < total; ++index) {
-    if (cancel != nullptr && cancel->load()) {
-      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
-    }
-    const double read_start = HostTimeS();
-    const Status grabbed = source.Grab();
-    if (grabbed.code() == StatusCode::kOutOfRange) break;
-    if (!grabbed.ok()) return grabbed;
-    if (index % run.subsample != 0) continue;  // Grabbed but not decoded.
-    StatusOr<Frame> frame = source.Retrieve();
-    if (timing) timing->Add("read", (HostTimeS() - read_start) * 1000.0);
-    if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
-    const StereoFrame* stereo = std::get_if<StereoFrame>(&*frame);
-    if (stereo == nullptr) return InvalidArgument(path + " does not give stereo frames");
-    StatusOr<std::shared_ptr<const StereoOdometryResult>> result =
-        odometry.Process(*stereo, timing);
-    if (!result.ok()) return result.status();
-    out.estimate.Add((*result)->stamp.sensor_time_s, (*result)->world_from_camera);
-    out.frames.push_back((*result)->stats);
-    out.sequence_ids.push_back(stereo->stamp.sequence_id);
-    if (progress) progress(index + 1, total);
-  }
-  if (out.frames.empty()) return OutOfRange(path + " holds no frames");
-  return out;
-}
-
-std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& run,
-                                                             double gt_tolerance_s,
-                                                             std::vector<std::string>* notes) {
-  std::vector<std::pair<std::string, double>> figures;
-  if (run.ground_truth && run.ground_truth->LengthM() < kStaticPathM) {
-    // A static recording: relative figures (% of a path of millimetres) mean nothing; the only
-    // error is any motion at all.
-    double max_translation = 0, max_rotation = 0;
-    const Eigen::Isometry3d first_inverse =
-        run.estimate.poses().front().world_from_sensor.inverse();
-    for (const TimedPose& p : run.estimate.poses()) {
-      const Eigen::Isometry3d rel = first_inverse * p.world_from_sensor;
-      max_translation = std::max(max_translation, rel.translation().norm());
-      max_rotation = std::max(max_rotation, Eigen::AngleAxisd(rel.rotation()).angle() * 180 / M_PI);
-    }
-    figures.emplace_back("static_translation_m", max_translation);
-    figures.emplace_back("static_rotation_deg", max_rotation);
-    if (notes) {
-      notes->push_back(
-          "the ground truth moves less than 5 cm: static recording, reporting the "
-          "estimated motion (static_translation_m, static_rotation_deg) instead of "
-          "trajectory errors");
-    }
-  } else if (run.ground_truth) {
-    EvaluationOptions eval;
-    eval.max_time_difference_s = gt_tolerance_s;
-    StatusOr<TrajectoryErrors> errors = EvaluateTrajectory(run.estimate, *run.ground_truth, eval);
-    if (errors.ok()) {
-      figures = AccuracyFigures(*errors);
-      if (notes) notes->insert(notes->end(), errors->notes.begin(), errors->notes.end());
-    } else if (notes) {
-      notes->push_back("trajectory accuracy not computed: " + errors.status().message());
-    }
-  }
-  figures.emplace_back("estimated_length_m", run.estimate.LengthM());
-  return figures;
-}
-
-namespace {
-
-Status WriteFramesCsv(const StereoVoRun& run, const std::string& path) {
-  std::ofstream csv(path);
-  if (!csv) return NotFound("cannot write " + path);
-  csv << "frame,time_s,tracked,retracked,anchored,new_features,stereo_matches,correspondences,"
-         "inliers,"
-         "ransac_iterations,rigidity_failures,residual_px,disparity_offset_px,window_points,"
-         "window_rms_px,translation_m,rotation_deg,gated,"
-         "rectify_ms,pyramid_ms,tracking_ms,detection_ms,matching_ms,ransac_ms,refine_ms,"
-         "window_ms,total_ms,status\n";
-  for (size_t i = 0; i < run.frames.size(); ++i) {
-    const FrameStats& s = run.frames[i];
-    std::string status = s.status;
-    for (char& c : status) {
-      if (c == '"') c = '\'';
-    }
-    char row[512];
-    std::snprintf(row, sizeof(row),
-                  "%lld,%.6f,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%d,%.4f,%.5f,%.5f,%d,%.3f,%.3f,"
-                  "%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,\"%s\"\n",
-                  static_cast<long long>(run.sequence_ids[i]), run.estimate.poses()[i].time_s,
-                  s.tracked, s.retracked ? 1 : 0, s.anchored, s.new_features, s.stereo_matches,
-                  s.correspondences, s.inliers, s.ransac_iterations, s.rigidity_failures,
-                  s.residual_px, s.disparity_offset_px, s.window_points, s.window_rms_px,
-                  s.translation_m, s.rotation_deg, s.gated ? 1 : 0, s.rectify_ms, s.pyramid_ms,
-                  s.tracking_ms, s.detection_ms, s.matching_ms, s.ransac_ms, s.refine_ms,
-                  s.window_ms, s.total_ms, status.c_str());
-    csv << row;
-  }
-  csv.flush();
-  if (!csv) return Unavailable("write to " + path + " failed (disk full?)");
-  return Status::Ok();
-}
-
-StatusOr<RunResult> RunStereoVo(const RunContext& context) {
-  const StereoOdometryOptions options = context.options.Extract(StereoOdometryOptions::Describe());
-  const StereoVoRunOptions run = context.options.Extract(StereoVoRunOptions::Describe());
-  StatusOr<StereoVoRun> estimated =
-      RunStereoOdometry(context.dataset_path, options, run, context.timing, context.progress,
-                        context.cancel, &context.options);
-  if (!estimated.ok()) return estimated.status();
-  RunResult result;
-  result.dataset_format = estimated->dataset_format;
-  result.frames = static_cast<int64_t>(estimated->frames.size());
-
-  namespace fs = std::filesystem;
-  const std::string trajectory_path = (fs::path(context.out_dir) / "trajectory.txt").string();
-  SIGHTLINE_RETURN_IF_ERROR(run.output_format == "kitti"
-                                ? WriteKittiTrajectory(estimated->estimate, trajectory_path)
-                                : WriteTumTrajectory(estimated->estimate, trajectory_path));
-  result.outputs.push_back("trajectory.txt");
-  SIGHTLINE_RETURN_IF_ERROR(
-      WriteFramesCsv(*estimated, (fs::path(context.out_dir) / "frames.csv").string()));
-  result.outputs.push_back("frames.csv");
-
-  std::vector<std::string> notes;
-  result.accuracy = StereoVoAccuracy(*estimated, run.gt_tolerance_s, &notes);
-  double gated = 0, inliers = 0, matches = 0;
-  for (const FrameStats& s : estimated->frames) {
-    gated += s.gated ? 1 : 0;
-    inliers += s.inliers;
-    matches += s.stereo_matches;
-  }
-  const double n = static_cast<double>(estimated->frames.size());
-  result.counts.emplace_back("frames_gated", gated);
-  result.counts.emplace_back("inliers_per_frame", inliers / n);
-  result.counts.emplace_back("stereo_matches_per_frame", matches / n);
-  if (!notes.empty()) {
-    std::ofstream log(fs::path(context.out_dir) / "stereo_vo_notes.txt");
-    for (const std::string& note : notes) log << note << "\n";
-    result.outputs.push_back("stereo_vo_notes.txt");
-  }
-  return result;
+  return *info.stereo;
 }
 
 }  // namespace
 
-PipelineInfo StereoVoPipeline() {
+Status StereoVoPipeline::Configure(const OptionSet& options) {
+  return Configure(options.Extract(StereoOdometryOptions::Describe()),
+                   options.Extract(StereoVoRunOptions::Describe()));
+}
+
+Status StereoVoPipeline::Configure(const StereoOdometryOptions& odometry,
+                                   const StereoVoRunOptions& run) {
+  std::string error;
+  if (!run.IsValid(&error) || !odometry.IsValid(&error)) return InvalidArgument(error);
+  const StereoOdometryOptions previous_odometry = odometry_options_;
+  const StereoVoRunOptions previous_run = run_options_;
+  odometry_options_ = odometry;
+  run_options_ = run;
+  if (!source_info_) return Status::Ok();
+  // Opened: the odometry starts over with the new options (the old one stays on an error).
+  const Status started = StartOdometry();
+  if (!started.ok()) {
+    odometry_options_ = previous_odometry;
+    run_options_ = previous_run;
+  }
+  return started;
+}
+
+Status StereoVoPipeline::Open(const PipelineSource& source) {
+  const SourceInfo& info = source.info;
+  if (info.kind != SourceKind::kStereo) {
+    return InvalidArgument(info.path + " is a " + SourceKindName(info.kind) +
+                           " source; stereo-vo needs stereo pairs");
+  }
+  source_info_ = info;
+  ground_truth_.reset();
+  if (source.ground_truth != nullptr && !source.ground_truth->empty()) {
+    ground_truth_ = source.ground_truth;
+  }
+  run_ = StereoVoRun();
+  run_.dataset_format = info.format;
+  const Status started = StartOdometry();  // Also starts the run.
+  if (!started.ok()) {
+    source_info_.reset();
+    odometry_.reset();
+  }
+  return started;
+}
+
+Status StereoVoPipeline::StartOdometry() {
+  // The rig is looked up again each time, so a changed stereo.calibration_file applies at once.
+  StatusOr<StereoRig> rig = RigFor(*source_info_, run_options_.calibration_file);
+  if (!rig.ok()) return rig.status();
+  auto odometry = std::make_unique<StereoOdometry>(odometry_options_);
+  SIGHTLINE_RETURN_IF_ERROR(odometry->Configure(*rig).WithContext(source_info_->path));
+  odometry_ = std::move(odometry);
+  Reset();
+  return Status::Ok();
+}
+
+void StereoVoPipeline::Reset() {
+  if (odometry_) odometry_->Reset();
+  first_ground_truth_.reset();
+  run_.estimate = Trajectory();
+  run_.frames.clear();
+  run_.sequence_ids.clear();
+  run_.ground_truth.reset();
+  if (ground_truth_) run_.ground_truth = *ground_truth_;
+  log_.Clear();
+}
+
+std::optional<Eigen::Isometry3d> StereoVoPipeline::GroundTruthAt(double time_s) {
+  if (!ground_truth_) return std::nullopt;
+  const std::optional<size_t> i = ground_truth_->Nearest(time_s, run_options_.gt_tolerance_s);
+  if (!i) return std::nullopt;
+  const Eigen::Isometry3d& world_from_camera = ground_truth_->poses()[*i].world_from_sensor;
+  if (!first_ground_truth_) first_ground_truth_ = world_from_camera;
+  return first_ground_truth_->inverse() * world_from_camera;
+}
+
+StatusOr<std::shared_ptr<const PipelineResult>> StereoVoPipeline::Process(const Frame& frame) {
+  if (!odometry_) return FailedPrecondition("stereo-vo: a frame before the source was opened");
+  const StereoFrame* stereo = std::get_if<StereoFrame>(&frame);
+  if (stereo == nullptr)
+    return InvalidArgument(source_info_->path + " does not give stereo frames");
+  TimingStats ran;
+  StatusOr<std::shared_ptr<const StereoOdometryResult>> odometry =
+      odometry_->Process(*stereo, &ran);
+  if (!odometry.ok()) return odometry.status();
+  const StereoOdometryResult& r = **odometry;
+  auto result = std::make_shared<StereoVoResult>();
+  result->stamp = r.stamp;
+  result->odometry = *odometry;
+  result->stats = StatValues(r.stats, ran);
+  // A frame without a motion estimate (the first, or gated) says why, as frames.csv's status.
+  if (r.stats.status != "ok") result->status = FailedPrecondition(r.stats.status);
+  result->ground_truth = GroundTruthAt(r.stamp.sensor_time_s);
+  run_.estimate.Add(r.stamp.sensor_time_s, r.world_from_camera);
+  run_.frames.push_back(r.stats);
+  run_.sequence_ids.push_back(stereo->stamp.sequence_id);
+  log_.Add(*result);
+  return std::shared_ptr<const PipelineResult>(std::move(result));
+}
+
+PipelineInfo StereoVoPipelineInfo() {
   PipelineInfo info;
   info.name = "stereo-vo";
+  info.title = "Stereo visual odometry";
   info.summary = "stereo visual odometry (KLT tracks, rigidity RANSAC, reprojection refinement)";
+  info.accepts = {SourceKind::kStereo};
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(StereoOdometryOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(StereoVoRunOptions::Describe()));
     return DeclareSensorOptions(set);  // Live sources: sensors.aravis.stereo.* and the others.
   };
-  info.run = RunStereoVo;
+  info.create = [] { return std::make_unique<StereoVoPipeline>(); };
   return info;
 }
 

@@ -29,6 +29,12 @@ struct StreamImage {
   double time_s = 0;  // Device timestamp.
 };
 
+// What the started streams give: the output's frame rate and the field of view.
+struct StreamGeometry {
+  int fps = 0;                // Of the main stream (colour when active).
+  double hfov = 0, vfov = 0;  // [rad]; not positive when unknown.
+};
+
 }  // namespace
 
 struct OpenNi2Source::Impl {
@@ -66,6 +72,36 @@ struct OpenNi2Source::Impl {
     unpaired_reported = 0;
     watcher.reset();
   }
+
+  // Converts a frame of stream s (kDepth, kColor); false when a colour frame cannot be
+  // converted (incomplete).
+  bool Convert(int s, const openni::VideoFrameRef& frame, StreamImage* image) const;
+  // The pairing key of a frame of stream s at time_s: recordings restart their timestamps when
+  // they loop, so the loops are counted to keep the keys increasing.
+  double PairingKey(int s, const openni::VideoFrameRef& frame, double time_s);
+
+  // The steps of Connect() (with `mutex` held), in order.
+  // Opens `target` (claiming a live device from the runtime) and notes what it is.
+  Status OpenDevice(const std::string& target, bool is_file, const std::string& who,
+                    std::vector<std::string>* notes);
+  // Creates the wanted streams the device has; both before either starts (recordings play only
+  // that way).
+  Status CreateStreams(const OpenNi2Options& options, const std::string& who,
+                       std::vector<std::string>* notes);
+  // Video modes: the requested one, or the device's when no size/rate is given; a recording's
+  // formats are checked.
+  Status SelectVideoModes(const OpenNi2Options& options, bool is_file, const std::string& who,
+                          std::vector<std::string>* notes);
+  // Registration, synchronisation and mirroring.
+  Status SetStreamOptions(const OpenNi2Options& options, bool is_file, const std::string& who,
+                          std::vector<std::string>* notes);
+  Status StartStreams(const std::string& who);
+  // Depth units, the output size and the field of view of the started streams.
+  StreamGeometry ReadGeometry(std::vector<std::string>* notes);
+  // Fills *info: kind, size, rate, a recording's frame count and the intrinsics.
+  void DescribeSource(const OpenNi2Options& options, bool is_file, const std::string& uri,
+                      const StreamGeometry& geometry, openni::PlaybackControl* playback,
+                      SourceInfo* info, std::vector<std::string>* notes);
 };
 
 OpenNi2Source::OpenNi2Source(std::string uri, OpenNi2Options options)
@@ -139,18 +175,8 @@ Status OpenNi2Source::Connect(SourceInfo* info) {
     if (list.getSize() == 0) return Unavailable("no OpenNI2 device is attached");
     target = list[0].getUri();
   }
-  if (!is_file_) {
-    SIGHTLINE_RETURN_IF_ERROR(m.runtime->ClaimDevice(target));
-    m.claimed_uri = target;
-  }
-  if (m.device.open(target.c_str()) != openni::STATUS_OK) {
-    return Unavailable(who + " could not be opened: " + openni::OpenNI::getExtendedError());
-  }
-  m.device_open = true;
-  m.device_uri = m.device.getDeviceInfo().getUri();
   std::vector<std::string> notes;
-  notes.push_back(std::string(m.device.getDeviceInfo().getVendor()) + " " +
-                  m.device.getDeviceInfo().getName() + ", URI " + m.device_uri);
+  SIGHTLINE_RETURN_IF_ERROR(m.OpenDevice(target, is_file_, who, &notes));
 
   openni::PlaybackControl* playback = is_file_ ? m.device.getPlaybackControl() : nullptr;
   if (playback != nullptr) {
@@ -162,137 +188,12 @@ Status OpenNi2Source::Connect(SourceInfo* info) {
     playback->setRepeatEnabled(true);
   }
 
-  // Streams: both are created before either starts (recordings play only that way).
-  const bool wanted[2] = {options_.depth, options_.color};
-  const openni::SensorType types[2] = {openni::SENSOR_DEPTH, openni::SENSOR_COLOR};
-  for (int s = 0; s < 2; ++s) {
-    if (!wanted[s]) continue;
-    if (!m.device.hasSensor(types[s])) {
-      notes.push_back(std::string("no ") + StreamName(s) + " stream");
-      continue;
-    }
-    if (m.streams[s].create(m.device, types[s]) != openni::STATUS_OK) {
-      return Unavailable(who + ": cannot create the " + StreamName(s) +
-                         " stream: " + openni::OpenNI::getExtendedError());
-    }
-    m.active[s] = true;
-  }
-  if (!m.active[kDepth] && !m.active[kColor]) {
-    return Unavailable(who + " offers none of the requested streams");
-  }
-
-  // Video modes: the requested one, or the device's when no size/rate is given.
-  for (int s = 0; s < 2; ++s) {
-    if (!m.active[s]) continue;
-    if (is_file_) {
-      const openni::VideoMode mode = m.streams[s].getVideoMode();
-      if (!StreamFormatSupported(s, mode.getPixelFormat())) {
-        return InvalidArgument(who + ": the recorded " + StreamName(s) + " format " +
-                               VideoModeText(mode) + " is not supported");
-      }
-      continue;
-    }
-    SIGHTLINE_RETURN_IF_ERROR(
-        SelectVideoMode(&m.streams[s], s, options_.width, options_.height, options_.fps, who));
-  }
-  if (is_file_ && (options_.width > 0 || options_.fps > 0)) {
-    notes.push_back("size and rate options do not apply to recordings");
-  }
-
-  // Registration, synchronisation and mirroring.
-  const bool both = m.active[kDepth] && m.active[kColor];
-  if (both && options_.registration) {
-    if (m.device.isImageRegistrationModeSupported(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) &&
-        m.device.setImageRegistrationMode(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) ==
-            openni::STATUS_OK) {
-      notes.push_back("depth registered to colour by the device");
-    } else {
-      notes.push_back("depth not registered to colour (not supported by the " +
-                      std::string(is_file_ ? "recording" : "device") + ")");
-    }
-  }
-  if (both && options_.sync) {
-    if (m.device.setDepthColorSyncEnabled(true) != openni::STATUS_OK) {
-      notes.push_back("depth/colour frame sync not supported; pairing by timestamp only");
-    }
-  }
-  for (int s = 0; s < 2 && !is_file_; ++s) {
-    if (!m.active[s]) continue;
-    if (m.streams[s].setMirroringEnabled(options_.mirror) != openni::STATUS_OK && options_.mirror) {
-      return InvalidArgument(who + ": the " + std::string(StreamName(s)) +
-                             " stream cannot be mirrored");
-    }
-  }
-
-  for (int s = 0; s < 2; ++s) {
-    if (m.active[s] && m.streams[s].start() != openni::STATUS_OK) {
-      return Unavailable(who + ": cannot start the " + StreamName(s) +
-                         " stream: " + openni::OpenNI::getExtendedError());
-    }
-  }
-
-  // Geometry and description.
-  openni::VideoMode depth_mode, color_mode;
-  if (m.active[kDepth]) {
-    depth_mode = m.streams[kDepth].getVideoMode();
-    m.depth_units_per_m = DepthUnitsPerMetre(depth_mode.getPixelFormat());
-    notes.push_back("depth " + VideoModeText(depth_mode));
-  }
-  if (m.active[kColor]) {
-    color_mode = m.streams[kColor].getVideoMode();
-    notes.push_back("colour " + VideoModeText(color_mode));
-  }
-  const int main = m.active[kColor] ? kColor : kDepth;
-  const openni::VideoMode& main_mode = main == kColor ? color_mode : depth_mode;
-  m.color_size = cv::Size(main_mode.getResolutionX(), main_mode.getResolutionY());
-  if (both && (depth_mode.getResolutionX() != color_mode.getResolutionX() ||
-               depth_mode.getResolutionY() != color_mode.getResolutionY())) {
-    notes.push_back("depth resized to the colour size (nearest neighbour)");
-  }
-  double hfov = m.streams[main].getHorizontalFieldOfView();
-  double vfov = m.streams[main].getVerticalFieldOfView();
-  if (!(hfov > 0 && vfov > 0) && both) {
-    const int other = 1 - main;
-    hfov = m.streams[other].getHorizontalFieldOfView();
-    vfov = m.streams[other].getVerticalFieldOfView();
-    if (hfov > 0 && vfov > 0) {
-      notes.push_back(std::string("intrinsics from the ") + StreamName(other) +
-                      " stream's field of view (the " + StreamName(main) + " stream has none)");
-    }
-  }
-  info->format = is_file_ ? "OpenNI2 recording (.oni)" : "OpenNI2 device";
-  info->path = is_file_ ? uri_ : "openni2://" + m.device_uri;
-  info->kind = SourceKind::kRgbd;
-  info->width = m.color_size.width;
-  info->height = m.color_size.height;
-  info->rate_hz = main_mode.getFps();
-  info->live = !is_file_;
-  info->seekable = is_file_;
-  info->frame_count = -1;
-  if (playback != nullptr) {
-    int count = -1;
-    for (int s = 0; s < 2; ++s) {
-      if (!m.active[s]) continue;
-      const int n = playback->getNumberOfFrames(m.streams[s]);
-      count = count < 0 ? n : std::min(count, n);
-    }
-    m.frame_count = std::max(count, 0);
-    info->frame_count = m.frame_count;
-    if (info->rate_hz > 0 && m.frame_count > 1) {
-      info->duration_s = (m.frame_count - 1) / info->rate_hz;
-    }
-    if (options_.loop) notes.push_back("loops at the end");
-  }
-  RgbdCalibration calibration;
-  calibration.depth_scale = m.depth_units_per_m;
-  calibration.max_depth_m = options_.max_depth_m;
-  if (hfov > 0 && vfov > 0) {
-    calibration.color = PinholeFromFov(m.color_size.width, m.color_size.height, hfov, vfov);
-    info->camera = calibration.color;
-  } else {
-    notes.push_back("no field of view reported: intrinsics unknown");
-  }
-  info->rgbd = calibration;
+  SIGHTLINE_RETURN_IF_ERROR(m.CreateStreams(options_, who, &notes));
+  SIGHTLINE_RETURN_IF_ERROR(m.SelectVideoModes(options_, is_file_, who, &notes));
+  SIGHTLINE_RETURN_IF_ERROR(m.SetStreamOptions(options_, is_file_, who, &notes));
+  SIGHTLINE_RETURN_IF_ERROR(m.StartStreams(who));
+  const StreamGeometry geometry = m.ReadGeometry(&notes);
+  m.DescribeSource(options_, is_file_, uri_, geometry, playback, info, &notes);
   info->notes = std::move(notes);
 
   m.pairer = std::make_unique<TimestampPairer<StreamImage>>(options_.pair_tolerance_ms * 1e-3);
@@ -302,6 +203,180 @@ Status OpenNi2Source::Connect(SourceInfo* info) {
     openni::OpenNI::addDeviceStateChangedListener(m.watcher.get());
   }
   return Status::Ok();
+}
+
+Status OpenNi2Source::Impl::OpenDevice(const std::string& target, bool is_file,
+                                       const std::string& who, std::vector<std::string>* notes) {
+  if (!is_file) {
+    SIGHTLINE_RETURN_IF_ERROR(runtime->ClaimDevice(target));
+    claimed_uri = target;
+  }
+  if (device.open(target.c_str()) != openni::STATUS_OK) {
+    return Unavailable(who + " could not be opened: " + openni::OpenNI::getExtendedError());
+  }
+  device_open = true;
+  device_uri = device.getDeviceInfo().getUri();
+  notes->push_back(std::string(device.getDeviceInfo().getVendor()) + " " +
+                   device.getDeviceInfo().getName() + ", URI " + device_uri);
+  return Status::Ok();
+}
+
+Status OpenNi2Source::Impl::CreateStreams(const OpenNi2Options& options, const std::string& who,
+                                          std::vector<std::string>* notes) {
+  const bool wanted[2] = {options.depth, options.color};
+  const openni::SensorType types[2] = {openni::SENSOR_DEPTH, openni::SENSOR_COLOR};
+  for (int s = 0; s < 2; ++s) {
+    if (!wanted[s]) continue;
+    if (!device.hasSensor(types[s])) {
+      notes->push_back(std::string("no ") + StreamName(s) + " stream");
+      continue;
+    }
+    if (streams[s].create(device, types[s]) != openni::STATUS_OK) {
+      return Unavailable(who + ": cannot create the " + StreamName(s) +
+                         " stream: " + openni::OpenNI::getExtendedError());
+    }
+    active[s] = true;
+  }
+  if (!active[kDepth] && !active[kColor]) {
+    return Unavailable(who + " offers none of the requested streams");
+  }
+  return Status::Ok();
+}
+
+Status OpenNi2Source::Impl::SelectVideoModes(const OpenNi2Options& options, bool is_file,
+                                             const std::string& who,
+                                             std::vector<std::string>* notes) {
+  for (int s = 0; s < 2; ++s) {
+    if (!active[s]) continue;
+    if (is_file) {
+      const openni::VideoMode mode = streams[s].getVideoMode();
+      if (!StreamFormatSupported(s, mode.getPixelFormat())) {
+        return InvalidArgument(who + ": the recorded " + StreamName(s) + " format " +
+                               VideoModeText(mode) + " is not supported");
+      }
+      continue;
+    }
+    SIGHTLINE_RETURN_IF_ERROR(
+        SelectVideoMode(&streams[s], s, options.width, options.height, options.fps, who));
+  }
+  if (is_file && (options.width > 0 || options.fps > 0)) {
+    notes->push_back("size and rate options do not apply to recordings");
+  }
+  return Status::Ok();
+}
+
+Status OpenNi2Source::Impl::SetStreamOptions(const OpenNi2Options& options, bool is_file,
+                                             const std::string& who,
+                                             std::vector<std::string>* notes) {
+  const bool both = active[kDepth] && active[kColor];
+  if (both && options.registration) {
+    if (device.isImageRegistrationModeSupported(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) &&
+        device.setImageRegistrationMode(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) ==
+            openni::STATUS_OK) {
+      notes->push_back("depth registered to colour by the device");
+    } else {
+      notes->push_back("depth not registered to colour (not supported by the " +
+                       std::string(is_file ? "recording" : "device") + ")");
+    }
+  }
+  if (both && options.sync) {
+    if (device.setDepthColorSyncEnabled(true) != openni::STATUS_OK) {
+      notes->push_back("depth/colour frame sync not supported; pairing by timestamp only");
+    }
+  }
+  for (int s = 0; s < 2 && !is_file; ++s) {
+    if (!active[s]) continue;
+    if (streams[s].setMirroringEnabled(options.mirror) != openni::STATUS_OK && options.mirror) {
+      return InvalidArgument(who + ": the " + std::string(StreamName(s)) +
+                             " stream cannot be mirrored");
+    }
+  }
+  return Status::Ok();
+}
+
+Status OpenNi2Source::Impl::StartStreams(const std::string& who) {
+  for (int s = 0; s < 2; ++s) {
+    if (active[s] && streams[s].start() != openni::STATUS_OK) {
+      return Unavailable(who + ": cannot start the " + StreamName(s) +
+                         " stream: " + openni::OpenNI::getExtendedError());
+    }
+  }
+  return Status::Ok();
+}
+
+StreamGeometry OpenNi2Source::Impl::ReadGeometry(std::vector<std::string>* notes) {
+  const bool both = active[kDepth] && active[kColor];
+  openni::VideoMode depth_mode, color_mode;
+  if (active[kDepth]) {
+    depth_mode = streams[kDepth].getVideoMode();
+    depth_units_per_m = DepthUnitsPerMetre(depth_mode.getPixelFormat());
+    notes->push_back("depth " + VideoModeText(depth_mode));
+  }
+  if (active[kColor]) {
+    color_mode = streams[kColor].getVideoMode();
+    notes->push_back("colour " + VideoModeText(color_mode));
+  }
+  const int main = active[kColor] ? kColor : kDepth;
+  const openni::VideoMode& main_mode = main == kColor ? color_mode : depth_mode;
+  color_size = cv::Size(main_mode.getResolutionX(), main_mode.getResolutionY());
+  if (both && (depth_mode.getResolutionX() != color_mode.getResolutionX() ||
+               depth_mode.getResolutionY() != color_mode.getResolutionY())) {
+    notes->push_back("depth resized to the colour size (nearest neighbour)");
+  }
+  StreamGeometry geometry;
+  geometry.fps = main_mode.getFps();
+  geometry.hfov = streams[main].getHorizontalFieldOfView();
+  geometry.vfov = streams[main].getVerticalFieldOfView();
+  if (!(geometry.hfov > 0 && geometry.vfov > 0) && both) {
+    const int other = 1 - main;
+    geometry.hfov = streams[other].getHorizontalFieldOfView();
+    geometry.vfov = streams[other].getVerticalFieldOfView();
+    if (geometry.hfov > 0 && geometry.vfov > 0) {
+      notes->push_back(std::string("intrinsics from the ") + StreamName(other) +
+                       " stream's field of view (the " + StreamName(main) + " stream has none)");
+    }
+  }
+  return geometry;
+}
+
+void OpenNi2Source::Impl::DescribeSource(const OpenNi2Options& options, bool is_file,
+                                         const std::string& uri, const StreamGeometry& geometry,
+                                         openni::PlaybackControl* playback, SourceInfo* info,
+                                         std::vector<std::string>* notes) {
+  info->format = is_file ? "OpenNI2 recording (.oni)" : "OpenNI2 device";
+  info->path = is_file ? uri : "openni2://" + device_uri;
+  info->kind = SourceKind::kRgbd;
+  info->width = color_size.width;
+  info->height = color_size.height;
+  info->rate_hz = geometry.fps;
+  info->live = !is_file;
+  info->seekable = is_file;
+  info->frame_count = -1;
+  if (playback != nullptr) {
+    int count = -1;
+    for (int s = 0; s < 2; ++s) {
+      if (!active[s]) continue;
+      const int n = playback->getNumberOfFrames(streams[s]);
+      count = count < 0 ? n : std::min(count, n);
+    }
+    frame_count = std::max(count, 0);
+    info->frame_count = frame_count;
+    if (info->rate_hz > 0 && frame_count > 1) {
+      info->duration_s = (frame_count - 1) / info->rate_hz;
+    }
+    if (options.loop) notes->push_back("loops at the end");
+  }
+  RgbdCalibration calibration;
+  calibration.depth_scale = depth_units_per_m;
+  calibration.max_depth_m = options.max_depth_m;
+  if (geometry.hfov > 0 && geometry.vfov > 0) {
+    calibration.color =
+        PinholeFromFov(color_size.width, color_size.height, geometry.hfov, geometry.vfov);
+    info->camera = calibration.color;
+  } else {
+    notes->push_back("no field of view reported: intrinsics unknown");
+  }
+  info->rgbd = calibration;
 }
 
 StatusOr<std::optional<CapturedFrame>> OpenNi2Source::ReadFrame(std::chrono::milliseconds timeout) {
@@ -343,27 +418,11 @@ StatusOr<std::optional<CapturedFrame>> OpenNi2Source::ReadFrame(std::chrono::mil
                          " frame failed: " + openni::OpenNI::getExtendedError());
     }
     StreamImage image;
-    image.time_s = static_cast<double>(frame.getTimestamp()) * 1e-6;
-    if (s == kDepth) {
-      cv::Mat raw(frame.getHeight(), frame.getWidth(), CV_16UC1, const_cast<void*>(frame.getData()),
-                  static_cast<size_t>(frame.getStrideInBytes()));
-      image.image = RawDepthToMetres(raw, m.depth_units_per_m);
-      if (m.active[kColor] && image.image.size() != m.color_size) {
-        cv::resize(image.image, image.image, m.color_size, 0, 0, cv::INTER_NEAREST);
-      }
-    } else {
-      image.image = ColorFrameToBgr(frame);
-      if (image.image.empty()) {
-        CountIncomplete();
-        continue;
-      }
+    if (!m.Convert(s, frame, &image)) {
+      CountIncomplete();
+      continue;
     }
-    // Recordings restart their timestamps when they loop: keep pairing keys increasing.
-    if (m.last_frame_index[s] >= 0 && frame.getFrameIndex() < m.last_frame_index[s]) {
-      ++m.loops[s];
-    }
-    m.last_frame_index[s] = frame.getFrameIndex();
-    const double key = image.time_s + static_cast<double>(m.loops[s]) * kLoopKeyOffsetS;
+    const double key = m.PairingKey(s, frame, image.time_s);
 
     std::optional<std::pair<StreamImage, StreamImage>> pair;
     if (m.active[kDepth] && m.active[kColor]) {
@@ -393,6 +452,28 @@ StatusOr<std::optional<CapturedFrame>> OpenNi2Source::ReadFrame(std::chrono::mil
     }
     if (Clock::now() >= deadline) return std::optional<CapturedFrame>();
   }
+}
+
+bool OpenNi2Source::Impl::Convert(int s, const openni::VideoFrameRef& frame,
+                                  StreamImage* image) const {
+  image->time_s = static_cast<double>(frame.getTimestamp()) * 1e-6;
+  if (s == kDepth) {
+    cv::Mat raw(frame.getHeight(), frame.getWidth(), CV_16UC1, const_cast<void*>(frame.getData()),
+                static_cast<size_t>(frame.getStrideInBytes()));
+    image->image = RawDepthToMetres(raw, depth_units_per_m);
+    if (active[kColor] && image->image.size() != color_size) {
+      cv::resize(image->image, image->image, color_size, 0, 0, cv::INTER_NEAREST);
+    }
+    return true;
+  }
+  image->image = ColorFrameToBgr(frame);
+  return !image->image.empty();
+}
+
+double OpenNi2Source::Impl::PairingKey(int s, const openni::VideoFrameRef& frame, double time_s) {
+  if (last_frame_index[s] >= 0 && frame.getFrameIndex() < last_frame_index[s]) ++loops[s];
+  last_frame_index[s] = frame.getFrameIndex();
+  return time_s + static_cast<double>(loops[s]) * kLoopKeyOffsetS;
 }
 
 // OniFile's player thread marks itself running only once it is scheduled. A file closed before

@@ -162,133 +162,192 @@ void FeatureTracker::TrackPass(const ImagePyramid& previous, const ImagePyramid&
   }
 }
 
-std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
-                                                const std::vector<cv::Point2f>& existing) const {
-  std::vector<cv::Point2f> fresh;
-  const int wanted = options_.max_features - static_cast<int>(existing.size());
-  if (wanted <= 0 || pyramid.empty()) return fresh;
-  const int level = std::min(options_.detection_level, pyramid.max_level);
-  const float scale = static_cast<float>(1 << level);
-  const cv::Mat& image = pyramid.Level(level);
-  // Buckets and distances are in full-resolution pixels.
-  const int bs = options_.bucket_size_px;
-  const int cols = (pyramid.image.cols + bs - 1) / bs, rows = (pyramid.image.rows + bs - 1) / bs;
-  const int per_bucket = std::max(
-      1, static_cast<int>(std::ceil(static_cast<double>(options_.max_features) / (cols * rows))));
-  std::vector<std::vector<cv::Point2f>> in_bucket(static_cast<size_t>(cols * rows));
-  for (const cv::Point2f& p : existing) {
-    const int bx = std::clamp(static_cast<int>(p.x) / bs, 0, cols - 1);
-    const int by = std::clamp(static_cast<int>(p.y) / bs, 0, rows - 1);
-    in_bucket[static_cast<size_t>(by * cols + bx)].push_back(p);
+namespace {
+
+// One Detect() call: the grid of buckets with the corners they hold (existing and new), and
+// the new corners, searched bucket row by bucket row on one pyramid level. Buckets and
+// distances are in full-resolution pixels.
+class CornerSearch {
+ public:
+  CornerSearch(const FeatureTrackerOptions& options, const ImagePyramid& pyramid,
+               const std::vector<cv::Point2f>& existing, int wanted, int level)
+      : options_(options),
+        pyramid_(pyramid),
+        wanted_(wanted),
+        level_(level),
+        scale_(static_cast<float>(1 << level)),
+        image_(pyramid.Level(level)),
+        bs_(options.bucket_size_px),
+        cols_((pyramid.image.cols + bs_ - 1) / bs_),
+        rows_((pyramid.image.rows + bs_ - 1) / bs_),
+        per_bucket_(std::max(1, static_cast<int>(std::ceil(
+                                    static_cast<double>(options.max_features) / (cols_ * rows_))))),
+        in_bucket_(static_cast<size_t>(cols_ * rows_)),
+        min_d2_(options.min_distance_px * options.min_distance_px),
+        margin_(options.block_size / 2 + 2),
+        // Buckets that need corners: fewer than refill_fraction of their share.
+        refill_below_(
+            std::max(1, static_cast<int>(std::ceil(options.refill_fraction * per_bucket_)))) {
+    for (const cv::Point2f& p : existing) {
+      const int bx = std::clamp(static_cast<int>(p.x) / bs_, 0, cols_ - 1);
+      const int by = std::clamp(static_cast<int>(p.y) / bs_, 0, rows_ - 1);
+      Bucket(bx, by).push_back(p);
+    }
+    const int border = static_cast<int>(std::ceil(options.border_px / scale_));
+    inside_ = cv::Rect(border, border, image_.cols - 2 * border, image_.rows - 2 * border);
   }
-  const double min_d2 = options_.min_distance_px * options_.min_distance_px;
-  auto far_from = [&](const cv::Point2f& p, int bx, int by) {
-    for (int y = std::max(0, by - 1); y <= std::min(rows - 1, by + 1); ++y) {
-      for (int x = std::max(0, bx - 1); x <= std::min(cols - 1, bx + 1); ++x) {
-        for (const cv::Point2f& q : in_bucket[static_cast<size_t>(y * cols + x)]) {
+
+  int rows() const { return rows_; }
+  // Fewer new corners than wanted so far.
+  bool Short() const { return static_cast<int>(fresh_.size()) < wanted_; }
+  std::vector<cv::Point2f>& fresh() { return fresh_; }
+
+  // Searches the bucket row `by`: one eigenvalue image per run of neighbouring buckets that
+  // need corners.
+  void SearchRow(int by) {
+    for (int run_start = 0; run_start < cols_ && Short();) {
+      while (run_start < cols_ && !Needy(run_start, by)) ++run_start;
+      if (run_start >= cols_) break;
+      int run_end = run_start;
+      while (run_end + 1 < cols_ && Needy(run_end + 1, by)) ++run_end;
+      const int first = run_start, last = run_end;
+      run_start = run_end + 1;
+      const cv::Rect span =
+          cv::Rect(cvFloor(first * bs_ / scale_), cvFloor(by * bs_ / scale_),
+                   cvCeil((last - first + 1) * bs_ / scale_), cvCeil(bs_ / scale_)) &
+          inside_;
+      if (span.width < 3 || span.height < 3) continue;
+      const cv::Rect ext = cv::Rect(span.x - margin_, span.y - margin_, span.width + 2 * margin_,
+                                    span.height + 2 * margin_) &
+                           cv::Rect(0, 0, image_.cols, image_.rows);
+      MinEigenResponse(pyramid_.Derivatives(level_), ext, options_.block_size, &eig_);
+      for (int bx = first; bx <= last && Short(); ++bx) FillBucket(bx, by, span, ext);
+    }
+  }
+
+ private:
+  std::vector<cv::Point2f>& Bucket(int bx, int by) {
+    return in_bucket_[static_cast<size_t>(by * cols_ + bx)];
+  }
+  bool Needy(int bx, int by) const {
+    return static_cast<int>(in_bucket_[static_cast<size_t>(by * cols_ + bx)].size()) <
+           refill_below_;
+  }
+
+  // No corner in the 3 x 3 buckets around (bx, by) closer to p than min_distance_px.
+  bool FarFrom(const cv::Point2f& p, int bx, int by) const {
+    for (int y = std::max(0, by - 1); y <= std::min(rows_ - 1, by + 1); ++y) {
+      for (int x = std::max(0, bx - 1); x <= std::min(cols_ - 1, bx + 1); ++x) {
+        for (const cv::Point2f& q : in_bucket_[static_cast<size_t>(y * cols_ + x)]) {
           const cv::Point2f d = p - q;
-          if (d.x * d.x + d.y * d.y < min_d2) return false;
+          if (d.x * d.x + d.y * d.y < min_d2_) return false;
         }
       }
     }
     return true;
-  };
-  const int border = static_cast<int>(std::ceil(options_.border_px / scale));
-  const cv::Rect inside(border, border, image.cols - 2 * border, image.rows - 2 * border);
-  const int margin = options_.block_size / 2 + 2;
-  cv::Mat eig;
-  std::vector<std::pair<float, cv::Point>> candidates;
-  // Buckets that need corners: fewer than refill_fraction of their share.
-  const int refill_below =
-      std::max(1, static_cast<int>(std::ceil(options_.refill_fraction * per_bucket)));
-  auto needy = [&](int bx, int by) {
-    return static_cast<int>(in_bucket[static_cast<size_t>(by * cols + bx)].size()) < refill_below;
-  };
-  for (int by = 0; by < rows && static_cast<int>(fresh.size()) < wanted; ++by) {
-    for (int run_start = 0; run_start < cols && static_cast<int>(fresh.size()) < wanted;) {
-      // One eigenvalue image per run of neighbouring buckets that need corners.
-      while (run_start < cols && !needy(run_start, by)) ++run_start;
-      if (run_start >= cols) break;
-      int run_end = run_start;
-      while (run_end + 1 < cols && needy(run_end + 1, by)) ++run_end;
-      const int first = run_start, last = run_end;
-      run_start = run_end + 1;
-      const cv::Rect span = cv::Rect(cvFloor(first * bs / scale), cvFloor(by * bs / scale),
-                                     cvCeil((last - first + 1) * bs / scale), cvCeil(bs / scale)) &
-                            inside;
-      if (span.width < 3 || span.height < 3) continue;
-      const cv::Rect ext = cv::Rect(span.x - margin, span.y - margin, span.width + 2 * margin,
-                                    span.height + 2 * margin) &
-                           cv::Rect(0, 0, image.cols, image.rows);
-      MinEigenResponse(pyramid.Derivatives(level), ext, options_.block_size, &eig);
-      for (int bx = first; bx <= last && static_cast<int>(fresh.size()) < wanted; ++bx) {
-        std::vector<cv::Point2f>& here = in_bucket[static_cast<size_t>(by * cols + bx)];
-        const int need = per_bucket - static_cast<int>(here.size());
-        if (need <= 0) continue;
-        const cv::Rect cell = cv::Rect(cvFloor(bx * bs / scale), cvFloor(by * bs / scale),
-                                       cvCeil(bs / scale), cvCeil(bs / scale)) &
-                              span;
-        if (cell.width < 1 || cell.height < 1) continue;
-        // The strongest local maxima of the cell, strongest first. Only the best `limit` are
-        // kept (a min-heap), which skips most comparisons; if the distance test then leaves the
-        // cell short, it is scanned again without a limit.
-        auto collect = [&](size_t limit) {
-          candidates.clear();
-          const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
-          for (int y = cell.y; y < cell.y + cell.height; ++y) {
-            const int ey = y - ext.y;
-            if (ey < 1 || ey + 1 >= eig.rows) continue;
-            const float* up = eig.ptr<float>(ey - 1);
-            const float* row = eig.ptr<float>(ey);
-            const float* down = eig.ptr<float>(ey + 1);
-            for (int x = cell.x; x < cell.x + cell.width; ++x) {
-              const int ex = x - ext.x;
-              if (ex < 1 || ex + 1 >= eig.cols) continue;
-              const float v = row[ex];
-              if (v < options_.min_eigenvalue) continue;
-              if (limit > 0 && candidates.size() == limit && v <= candidates.front().first)
-                continue;
-              if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] ||
-                  v < up[ex + 1] || v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
-                continue;
-              }
-              candidates.emplace_back(v, cv::Point(x, y));
-              if (limit == 0) continue;
-              std::push_heap(candidates.begin(), candidates.end(), weaker);
-              if (candidates.size() > limit) {
-                std::pop_heap(candidates.begin(), candidates.end(), weaker);
-                candidates.pop_back();
-              }
-            }
-          }
-          std::sort(candidates.begin(), candidates.end(), weaker);
-        };
-        auto take = [&]() {
-          int added = 0;
-          for (const auto& [value, pixel] : candidates) {
-            if (added >= need || static_cast<int>(fresh.size()) >= wanted) break;
-            const cv::Point2f p(pixel.x * scale, pixel.y * scale);
-            if (!far_from(p, bx, by)) continue;
-            here.push_back(p);
-            fresh.push_back(p);
-            ++added;
-          }
-          return added;
-        };
-        const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
-        collect(limit);
-        const size_t kept_before = here.size(), fresh_before = fresh.size();
-        const int added = take();
-        if (added < need && candidates.size() == limit && static_cast<int>(fresh.size()) < wanted) {
-          // Undo and take from the full list, so the result equals an unlimited scan.
-          here.resize(kept_before);
-          fresh.resize(fresh_before);
-          collect(0);
-          take();
+  }
+
+  // Adds up to the bucket's missing share of corners from the eigenvalue image eig_ of `ext`.
+  void FillBucket(int bx, int by, const cv::Rect& span, const cv::Rect& ext) {
+    std::vector<cv::Point2f>& here = Bucket(bx, by);
+    const int need = per_bucket_ - static_cast<int>(here.size());
+    if (need <= 0) return;
+    const cv::Rect cell = cv::Rect(cvFloor(bx * bs_ / scale_), cvFloor(by * bs_ / scale_),
+                                   cvCeil(bs_ / scale_), cvCeil(bs_ / scale_)) &
+                          span;
+    if (cell.width < 1 || cell.height < 1) return;
+    // Only the best `limit` maxima are kept, which skips most comparisons; if the distance test
+    // then leaves the cell short, it is scanned again without a limit.
+    const size_t limit = static_cast<size_t>(2 * need + 2 * here.size() + 8);
+    Collect(cell, ext, limit);
+    const size_t kept_before = here.size(), fresh_before = fresh_.size();
+    const int added = Take(bx, by, need);
+    if (added < need && candidates_.size() == limit && Short()) {
+      // Undo and take from the full list, so the result equals an unlimited scan.
+      here.resize(kept_before);
+      fresh_.resize(fresh_before);
+      Collect(cell, ext, 0);
+      Take(bx, by, need);
+    }
+  }
+
+  // The strongest local maxima of eig_ in `cell` into candidates_, strongest first; with
+  // limit > 0 only the best `limit` (a min-heap).
+  void Collect(const cv::Rect& cell, const cv::Rect& ext, size_t limit) {
+    std::vector<std::pair<float, cv::Point>>& candidates = candidates_;
+    candidates.clear();
+    const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
+    for (int y = cell.y; y < cell.y + cell.height; ++y) {
+      const int ey = y - ext.y;
+      if (ey < 1 || ey + 1 >= eig_.rows) continue;
+      const float* up = eig_.ptr<float>(ey - 1);
+      const float* row = eig_.ptr<float>(ey);
+      const float* down = eig_.ptr<float>(ey + 1);
+      for (int x = cell.x; x < cell.x + cell.width; ++x) {
+        const int ex = x - ext.x;
+        if (ex < 1 || ex + 1 >= eig_.cols) continue;
+        const float v = row[ex];
+        if (v < options_.min_eigenvalue) continue;
+        if (limit > 0 && candidates.size() == limit && v <= candidates.front().first) continue;
+        if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] || v < up[ex + 1] ||
+            v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
+          continue;
+        }
+        candidates.emplace_back(v, cv::Point(x, y));
+        if (limit == 0) continue;
+        std::push_heap(candidates.begin(), candidates.end(), weaker);
+        if (candidates.size() > limit) {
+          std::pop_heap(candidates.begin(), candidates.end(), weaker);
+          candidates.pop_back();
         }
       }
     }
+    std::sort(candidates.begin(), candidates.end(), weaker);
   }
+
+  // Takes candidates far enough from the corners around, up to `need` and the wanted total;
+  // returns how many.
+  int Take(int bx, int by, int need) {
+    std::vector<cv::Point2f>& here = Bucket(bx, by);
+    int added = 0;
+    for (const auto& [value, pixel] : candidates_) {
+      if (added >= need || !Short()) break;
+      const cv::Point2f p(pixel.x * scale_, pixel.y * scale_);
+      if (!FarFrom(p, bx, by)) continue;
+      here.push_back(p);
+      fresh_.push_back(p);
+      ++added;
+    }
+    return added;
+  }
+
+  const FeatureTrackerOptions& options_;
+  const ImagePyramid& pyramid_;
+  const int wanted_;
+  const int level_;
+  const float scale_;     // Of the level.
+  const cv::Mat& image_;  // The level's image.
+  const int bs_, cols_, rows_, per_bucket_;
+  std::vector<std::vector<cv::Point2f>> in_bucket_;
+  const double min_d2_;
+  const int margin_;  // Around a span, for the eigenvalue image's window.
+  const int refill_below_;
+  cv::Rect inside_;  // The level's image without the border.
+  cv::Mat eig_;
+  std::vector<std::pair<float, cv::Point>> candidates_;
+  std::vector<cv::Point2f> fresh_;
+};
+
+}  // namespace
+
+std::vector<cv::Point2f> FeatureTracker::Detect(const ImagePyramid& pyramid,
+                                                const std::vector<cv::Point2f>& existing) const {
+  const int wanted = options_.max_features - static_cast<int>(existing.size());
+  if (wanted <= 0 || pyramid.empty()) return {};
+  const int level = std::min(options_.detection_level, pyramid.max_level);
+  CornerSearch search(options_, pyramid, existing, wanted, level);
+  for (int by = 0; by < search.rows() && search.Short(); ++by) search.SearchRow(by);
+  std::vector<cv::Point2f> fresh = std::move(search.fresh());
   if (level > 0 && !fresh.empty() && options_.refine_window_px > 0) {
     // Corners found on a reduced level sit up to a pixel off the full-resolution corner; move
     // them onto it so KLT tracks a well-localised patch.

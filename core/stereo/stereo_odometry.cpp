@@ -73,6 +73,12 @@ std::vector<TrackObservation> Observations(const std::vector<Feature>& kept,
   return out;
 }
 
+// The length and angle of the applied motion.
+void SetMotionStats(const Eigen::Isometry3d& current_from_previous, FrameStats* stats) {
+  stats->translation_m = current_from_previous.translation().norm();
+  stats->rotation_deg = Eigen::AngleAxisd(current_from_previous.rotation()).angle() * 180.0 / M_PI;
+}
+
 }  // namespace
 
 StereoOdometry::StereoOdometry(StereoOdometryOptions options)
@@ -121,45 +127,89 @@ void StereoOdometry::Reset() {
   frame_number_ = 0;
 }
 
+// One frame's working data, passed between the steps of Process().
+struct StereoOdometry::FrameState {
+  std::shared_ptr<StereoOdometryResult> result;
+  TimingStats* timing = nullptr;
+  StageClock total_clock, clock;
+  double dt = 0;  // Since the previous frame [s].
+  ImagePyramid left_pyramid, right_pyramid;
+  // Tracking and detection: left positions, disparity guesses (NaN for new corners) and the
+  // feature each continues (index into features_, or -1 for new).
+  std::vector<cv::Point2f> points;
+  std::vector<float> guesses;
+  std::vector<int> source;
+  std::vector<AnchorAlignment> alignment;  // Per feature of the previous frame.
+  // Matching: the features with a stereo match, the index into features_ each continues (or
+  // -1), and the correspondences of the tracked ones.
+  std::vector<Feature> kept;
+  std::vector<int> kept_source;
+  std::vector<StereoCorrespondence> correspondences;
+  std::vector<int> correspondence_feature;  // Index into kept.
+  std::vector<int> inliers;                 // Index into correspondences.
+};
+
 StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
     const StereoFrame& frame, TimingStats* timing) {
   if (!configured_) return FailedPrecondition("StereoOdometry::Process before Configure");
-  auto result = std::make_shared<StereoOdometryResult>();
-  result->stamp = frame.stamp;
-  FrameStats& stats = result->stats;
-  StageClock total_clock, clock;
-  const double dt = has_previous_ ? frame.stamp.sensor_time_s - previous_time_s_ : 0.0;
-
-  // A frame that cannot be used: the gate decides what motion to assume; the state stays at the
-  // last good frame, so the next good frame is measured against it.
-  auto reject_input = [&](const std::string& why) {
-    MotionCandidate candidate;
-    candidate.failure = why;
-    const GateDecision decision = gate_.Check(candidate, dt);
-    result->current_from_previous = decision.current_from_previous;
-    result->world_from_camera = world_from_camera_ * decision.current_from_previous.inverse();
-    stats.gated = has_previous_;
-    stats.status = has_previous_ ? decision.reason : why + "; pose held";
-    stats.gated = true;
-    stats.total_ms = total_clock.Lap();
-    if (timing) timing->Add("total", stats.total_ms);
-  };
+  FrameState s;
+  s.result = std::make_shared<StereoOdometryResult>();
+  s.timing = timing;
+  s.result->stamp = frame.stamp;
+  FrameStats& stats = s.result->stats;
+  s.dt = has_previous_ ? frame.stamp.sensor_time_s - previous_time_s_ : 0.0;
 
   cv::Mat left, right;
   const Status rectified = rectifier_.Rectify(frame, &left, &right);
-  Record(timing, "rectify", clock.Lap(), &stats.rectify_ms);
+  Record(timing, "rectify", s.clock.Lap(), &stats.rectify_ms);
   if (!rectified.ok()) {
-    reject_input("bad input: " + rectified.message());
-    return std::shared_ptr<const StereoOdometryResult>(result);
+    RejectInput("bad input: " + rectified.message(), &s);
+    return FinishFrame(&s);
   }
-  result->left_rectified = left;
-  result->right_rectified = right;
+  s.result->left_rectified = left;
+  s.result->right_rectified = right;
 
-  const ImagePyramid left_pyramid = BuildImagePyramid(left, pyramid_window_, pyramid_levels_);
-  const ImagePyramid right_pyramid = BuildImagePyramid(right, pyramid_window_, pyramid_levels_);
-  Record(timing, "pyramid", clock.Lap(), &stats.pyramid_ms);
+  s.left_pyramid = BuildImagePyramid(left, pyramid_window_, pyramid_levels_);
+  s.right_pyramid = BuildImagePyramid(right, pyramid_window_, pyramid_levels_);
+  Record(timing, "pyramid", s.clock.Lap(), &stats.pyramid_ms);
 
-  // Temporal tracking on the left image.
+  TrackFeatures(&s);
+  DetectFeatures(&s);
+  MatchFeatures(&s);
+  if (!has_previous_) {
+    StartFirstFrame(&s);
+  } else if (!EstimateMotion(&s)) {
+    return FinishFrame(&s);
+  }
+  s.result->world_from_camera = world_from_camera_;
+  SetMotionStats(s.result->current_from_previous, &stats);
+
+  PublishFeatures(&s);
+  ObserveDisparityOffset(s);
+  features_ = std::move(s.kept);
+  RenewAnchors(s.left_pyramid.image);
+  ++frame_number_;
+  SetKeyframeIfNeeded();
+  previous_left_ = s.left_pyramid;
+  previous_time_s_ = frame.stamp.sensor_time_s;
+  has_previous_ = true;
+  return FinishFrame(&s);
+}
+
+void StereoOdometry::RejectInput(const std::string& why, FrameState* s) {
+  FrameStats& stats = s->result->stats;
+  MotionCandidate candidate;
+  candidate.failure = why;
+  const GateDecision decision = gate_.Check(candidate, s->dt);
+  s->result->current_from_previous = decision.current_from_previous;
+  s->result->world_from_camera = world_from_camera_ * decision.current_from_previous.inverse();
+  stats.gated = has_previous_;
+  stats.status = has_previous_ ? decision.reason : why + "; pose held";
+  stats.gated = true;
+}
+
+void StereoOdometry::TrackFeatures(FrameState* s) {
+  FrameStats& stats = s->result->stats;
   std::vector<cv::Point2f> previous_points, tracked;
   std::vector<unsigned char> tracked_ok;
   previous_points.reserve(features_.size());
@@ -168,290 +218,310 @@ StatusOr<std::shared_ptr<const StereoOdometryResult>> StereoOdometry::Process(
   // fast motion and subsampled input.
   std::vector<cv::Point2f> predicted;
   std::vector<float> predicted_disparity;
-  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // Predicted current_from_previous.
-  if (has_previous_ && last_motion_dt_s_ > 0 && dt > 0) {
-    const double scale = dt / last_motion_dt_s_;
-    const Eigen::AngleAxisd aa(last_motion_.rotation());
-    motion.linear() = Eigen::AngleAxisd(aa.angle() * scale, aa.axis()).toRotationMatrix();
-    motion.translation() = last_motion_.translation() * scale;
-    const RectifiedStereoCamera& c = rectifier_.camera();
-    predicted.reserve(features_.size());
-    for (const Feature& f : features_) {
-      const Eigen::Vector3d y = motion * c.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x);
-      cv::Point2f p = f.left;
-      float d = f.left.x - f.right.x;
-      if (y.z() > 0.1) {
-        const Eigen::Vector2d q = c.ProjectLeft(y);
-        if (q.x() >= 0 && q.y() >= 0 && q.x() < c.width && q.y() < c.height) {
-          p = cv::Point2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
-          d = static_cast<float>(c.f * c.baseline_m / y.z());
-        }
-      }
-      predicted.push_back(p);
-      predicted_disparity.push_back(d);
-    }
-  }
+  const Eigen::Isometry3d motion = PredictMotion(s->dt, &predicted, &predicted_disparity);
   if (has_previous_) {
-    stats.retracked = tracker_.Track(previous_left_, left_pyramid, previous_points, predicted,
+    stats.retracked = tracker_.Track(previous_left_, s->left_pyramid, previous_points, predicted,
                                      &tracked, &tracked_ok, tracked_fraction_);
   }
-  // Tracked positions aligned against their anchors (no drift); kRenew marks new anchors.
-  std::vector<AnchorAlignment> alignment(tracked_ok.size(), AnchorAlignment::kUnchanged);
-  if (options_.anchor.enabled && has_previous_) {
-    const Eigen::Isometry3d world_from_predicted = world_from_camera_ * motion.inverse();
-    for (size_t i = 0; i < tracked_ok.size(); ++i) {
-      if (!tracked_ok[i]) continue;
-      alignment[i] = anchors_.Align(rectifier_.camera(), features_[i].anchor, frame_number_,
-                                    left_pyramid.image, world_from_predicted, &tracked[i]);
-      if (alignment[i] == AnchorAlignment::kAligned) ++stats.anchored;
-    }
-  }
-  std::vector<cv::Point2f> points;
-  std::vector<float> guesses;
-  std::vector<int> source;  // Index into features_, or -1 for new.
+  AlignToAnchors(motion, tracked_ok, &tracked, s);
   for (size_t i = 0; i < tracked_ok.size(); ++i) {
     if (!tracked_ok[i]) continue;
-    points.push_back(tracked[i]);
-    guesses.push_back(predicted_disparity.empty() ? features_[i].left.x - features_[i].right.x
-                                                  : predicted_disparity[i]);
-    source.push_back(static_cast<int>(i));
+    s->points.push_back(tracked[i]);
+    s->guesses.push_back(predicted_disparity.empty() ? features_[i].left.x - features_[i].right.x
+                                                     : predicted_disparity[i]);
+    s->source.push_back(static_cast<int>(i));
   }
-  stats.tracked = static_cast<int>(points.size());
+  stats.tracked = static_cast<int>(s->points.size());
   if (!previous_points.empty()) {
-    tracked_fraction_ = static_cast<double>(points.size()) / previous_points.size();
+    tracked_fraction_ = static_cast<double>(s->points.size()) / previous_points.size();
   }
-  Record(timing, "tracking", clock.Lap(), &stats.tracking_ms);
+  Record(s->timing, "tracking", s->clock.Lap(), &stats.tracking_ms);
+}
 
-  // New corners where tracks are missing.
-  const std::vector<cv::Point2f> fresh = tracker_.Detect(left_pyramid, points);
+Eigen::Isometry3d StereoOdometry::PredictMotion(double dt, std::vector<cv::Point2f>* predicted,
+                                                std::vector<float>* predicted_disparity) const {
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // Predicted current_from_previous.
+  if (!(has_previous_ && last_motion_dt_s_ > 0 && dt > 0)) return motion;
+  const double scale = dt / last_motion_dt_s_;
+  const Eigen::AngleAxisd aa(last_motion_.rotation());
+  motion.linear() = Eigen::AngleAxisd(aa.angle() * scale, aa.axis()).toRotationMatrix();
+  motion.translation() = last_motion_.translation() * scale;
+  const RectifiedStereoCamera& c = rectifier_.camera();
+  predicted->reserve(features_.size());
+  for (const Feature& f : features_) {
+    const Eigen::Vector3d y = motion * c.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x);
+    cv::Point2f p = f.left;
+    float d = f.left.x - f.right.x;
+    if (y.z() > 0.1) {
+      const Eigen::Vector2d q = c.ProjectLeft(y);
+      if (q.x() >= 0 && q.y() >= 0 && q.x() < c.width && q.y() < c.height) {
+        p = cv::Point2f(static_cast<float>(q.x()), static_cast<float>(q.y()));
+        d = static_cast<float>(c.f * c.baseline_m / y.z());
+      }
+    }
+    predicted->push_back(p);
+    predicted_disparity->push_back(d);
+  }
+  return motion;
+}
+
+void StereoOdometry::AlignToAnchors(const Eigen::Isometry3d& predicted_motion,
+                                    const std::vector<unsigned char>& tracked_ok,
+                                    std::vector<cv::Point2f>* tracked, FrameState* s) {
+  // Tracked positions aligned against their anchors (no drift); kRenew marks new anchors.
+  s->alignment.assign(tracked_ok.size(), AnchorAlignment::kUnchanged);
+  if (!(options_.anchor.enabled && has_previous_)) return;
+  const Eigen::Isometry3d world_from_predicted = world_from_camera_ * predicted_motion.inverse();
+  for (size_t i = 0; i < tracked_ok.size(); ++i) {
+    if (!tracked_ok[i]) continue;
+    s->alignment[i] = anchors_.Align(rectifier_.camera(), features_[i].anchor, frame_number_,
+                                     s->left_pyramid.image, world_from_predicted, &(*tracked)[i]);
+    if (s->alignment[i] == AnchorAlignment::kAligned) ++s->result->stats.anchored;
+  }
+}
+
+void StereoOdometry::DetectFeatures(FrameState* s) {
+  const std::vector<cv::Point2f> fresh = tracker_.Detect(s->left_pyramid, s->points);
   for (const cv::Point2f& p : fresh) {
-    points.push_back(p);
-    guesses.push_back(std::numeric_limits<float>::quiet_NaN());
-    source.push_back(-1);
+    s->points.push_back(p);
+    s->guesses.push_back(std::numeric_limits<float>::quiet_NaN());
+    s->source.push_back(-1);
   }
-  Record(timing, "detection", clock.Lap(), &stats.detection_ms);
+  Record(s->timing, "detection", s->clock.Lap(), &s->result->stats.detection_ms);
+}
 
-  // Stereo matching of every feature.
+void StereoOdometry::MatchFeatures(FrameState* s) {
+  FrameStats& stats = s->result->stats;
   std::vector<cv::Point2f> right_points;
   std::vector<unsigned char> matched;
-  matcher_.Match(left_pyramid, right_pyramid, points, guesses, &right_points, &matched);
-  std::vector<Feature> kept;
-  std::vector<int> kept_source;
-  std::vector<StereoCorrespondence> correspondences;
-  std::vector<int> correspondence_feature;  // Index into kept.
+  matcher_.Match(s->left_pyramid, s->right_pyramid, s->points, s->guesses, &right_points, &matched);
   const RectifiedStereoCamera& cam = rectifier_.camera();
-  for (size_t i = 0; i < points.size(); ++i) {
+  for (size_t i = 0; i < s->points.size(); ++i) {
     if (!matched[i]) continue;
     Feature f;
-    const int s = source[i];
-    f.id = s >= 0 ? features_[static_cast<size_t>(s)].id : next_id_++;
-    f.left = points[i];
+    const int src = s->source[i];
+    f.id = src >= 0 ? features_[static_cast<size_t>(src)].id : next_id_++;
+    f.left = s->points[i];
     f.right = right_points[i];
-    f.age = s >= 0 ? features_[static_cast<size_t>(s)].age + 1 : 0;
-    if (s >= 0) {
-      const Feature& p = features_[static_cast<size_t>(s)];
+    f.age = src >= 0 ? features_[static_cast<size_t>(src)].age + 1 : 0;
+    if (src >= 0) {
+      const Feature& p = features_[static_cast<size_t>(src)];
       f.has_keyframe = p.has_keyframe;
       f.keyframe_left = p.keyframe_left;
       f.keyframe_right = p.keyframe_right;
-      if (alignment[static_cast<size_t>(s)] != AnchorAlignment::kRenew) f.anchor = p.anchor;
+      if (s->alignment[static_cast<size_t>(src)] != AnchorAlignment::kRenew) f.anchor = p.anchor;
       StereoCorrespondence c;
       c.previous = {p.left.x, p.left.y, p.right.x};
       c.current = {f.left.x, f.left.y, f.right.x};
       disparity_offset_.Apply(&c);
       Triangulate(cam, &c);
-      correspondences.push_back(c);
-      correspondence_feature.push_back(static_cast<int>(kept.size()));
+      s->correspondences.push_back(c);
+      s->correspondence_feature.push_back(static_cast<int>(s->kept.size()));
     } else {
       ++stats.new_features;
     }
-    kept.push_back(f);
-    kept_source.push_back(s);
+    s->kept.push_back(f);
+    s->kept_source.push_back(src);
   }
-  stats.stereo_matches = static_cast<int>(kept.size());
-  stats.correspondences = static_cast<int>(correspondences.size());
+  stats.stereo_matches = static_cast<int>(s->kept.size());
+  stats.correspondences = static_cast<int>(s->correspondences.size());
   stats.disparity_offset_px = disparity_offset_.offset_px();
-  Record(timing, "matching", clock.Lap(), &stats.matching_ms);
+  Record(s->timing, "matching", s->clock.Lap(), &stats.matching_ms);
+}
 
-  // Motion: RANSAC, refinement, gate.
-  std::vector<int> inliers;
-  if (!has_previous_) {
-    stats.status = "first frame";
-    if (options_.window.enabled) {
-      window_.Reset();
-      window_.Add(cam, world_from_camera_,
-                  Observations(kept, kept_source, std::vector<unsigned char>(kept.size(), 1)));
+void StereoOdometry::StartFirstFrame(FrameState* s) {
+  s->result->stats.status = "first frame";
+  if (!options_.window.enabled) return;
+  window_.Reset();
+  window_.Add(rectifier_.camera(), world_from_camera_,
+              Observations(s->kept, s->kept_source, std::vector<unsigned char>(s->kept.size(), 1)));
+}
+
+bool StereoOdometry::EstimateMotion(FrameState* s) {
+  FrameStats& stats = s->result->stats;
+  StereoOdometryResult& result = *s->result;
+  const MotionCandidate candidate = MeasureMotion(s);
+  const GateDecision decision = gate_.Check(candidate, s->dt);
+  stats.gated = !decision.accepted;
+  if (!decision.accepted) stats.status = decision.reason;
+  result.current_from_previous = decision.current_from_previous;
+  if (stats.gated && stats.stereo_matches < options_.gate.min_inliers) {
+    // Nothing to track from (black frame, lens cap): keep the last good frame as reference so
+    // the next frame is measured against it; publish the gate's prediction only.
+    result.world_from_camera = world_from_camera_ * decision.current_from_previous.inverse();
+    SetMotionStats(result.current_from_previous, &stats);
+    return false;
+  }
+  Eigen::Isometry3d world_from_current =
+      world_from_camera_ * decision.current_from_previous.inverse();
+  const bool new_keyframe = AlignToKeyframe(s, &world_from_current);
+  if (options_.window.enabled) AdjustWindow(s, &world_from_current);
+  world_from_camera_ = world_from_current;
+  last_motion_ = result.current_from_previous;
+  last_motion_dt_s_ = s->dt;
+  if (options_.keyframe.enabled && new_keyframe) has_keyframe_ = false;  // Set later.
+  return true;
+}
+
+MotionCandidate StereoOdometry::MeasureMotion(FrameState* s) {
+  FrameStats& stats = s->result->stats;
+  const RectifiedStereoCamera& cam = rectifier_.camera();
+  MotionCandidate candidate;
+  const MotionHypothesis h = estimator_.Estimate(cam, s->correspondences);
+  stats.ransac_iterations = h.iterations;
+  stats.rigidity_failures = h.rigidity_failures;
+  Record(s->timing, "ransac", s->clock.Lap(), &stats.ransac_ms);
+  if (h.ok) {
+    Eigen::Isometry3d motion = h.current_from_previous;
+    s->inliers = h.inliers;
+    RefinementSummary summary;
+    for (int round = 0; round < options_.refine_rounds; ++round) {
+      summary = refiner_.Refine(cam, s->correspondences, s->inliers, &motion);
+      if (round + 1 < options_.refine_rounds) {
+        std::vector<int> again = MotionEstimator::Inliers(cam, s->correspondences, motion,
+                                                          options_.ransac.inlier_threshold_px);
+        if (again.size() < 3) break;
+        s->inliers = std::move(again);
+      }
     }
+    candidate.estimated = true;
+    candidate.current_from_previous = motion;
+    candidate.residual_px = summary.final_rms_px;
+    candidate.inliers = static_cast<int>(s->inliers.size());
+    stats.residual_px = summary.final_rms_px;
+    stats.inliers = candidate.inliers;
   } else {
-    MotionCandidate candidate;
-    const MotionHypothesis h = estimator_.Estimate(cam, correspondences);
-    stats.ransac_iterations = h.iterations;
-    stats.rigidity_failures = h.rigidity_failures;
-    Record(timing, "ransac", clock.Lap(), &stats.ransac_ms);
-    if (h.ok) {
-      Eigen::Isometry3d motion = h.current_from_previous;
-      inliers = h.inliers;
-      RefinementSummary summary;
-      for (int round = 0; round < options_.refine_rounds; ++round) {
-        summary = refiner_.Refine(cam, correspondences, inliers, &motion);
-        if (round + 1 < options_.refine_rounds) {
-          std::vector<int> again = MotionEstimator::Inliers(cam, correspondences, motion,
-                                                            options_.ransac.inlier_threshold_px);
-          if (again.size() < 3) break;
-          inliers = std::move(again);
-        }
-      }
-      candidate.estimated = true;
-      candidate.current_from_previous = motion;
-      candidate.residual_px = summary.final_rms_px;
-      candidate.inliers = static_cast<int>(inliers.size());
-      stats.residual_px = summary.final_rms_px;
-      stats.inliers = candidate.inliers;
-    } else {
-      candidate.failure = stats.stereo_matches == 0
-                              ? "no stereo matches (no texture, lens cap, or identical left and "
-                                "right images?)"
-                              : "RANSAC failed: " + h.failure;
-    }
-    Record(timing, "refine", clock.Lap(), &stats.refine_ms);
-    const GateDecision decision = gate_.Check(candidate, dt);
-    stats.gated = !decision.accepted;
-    if (!decision.accepted) stats.status = decision.reason;
-    result->current_from_previous = decision.current_from_previous;
-    if (stats.gated && stats.stereo_matches < options_.gate.min_inliers) {
-      // Nothing to track from (black frame, lens cap): keep the last good frame as reference so
-      // the next frame is measured against it; publish the gate's prediction only.
-      result->world_from_camera = world_from_camera_ * decision.current_from_previous.inverse();
-      stats.translation_m = result->current_from_previous.translation().norm();
-      stats.rotation_deg =
-          Eigen::AngleAxisd(result->current_from_previous.rotation()).angle() * 180.0 / M_PI;
-      stats.total_ms = total_clock.Lap();
-      if (timing) timing->Add("total", stats.total_ms);
-      return std::shared_ptr<const StereoOdometryResult>(result);
-    }
-    Eigen::Isometry3d world_from_current =
-        world_from_camera_ * decision.current_from_previous.inverse();
-    bool new_keyframe = true;
-    if (options_.keyframe.enabled && has_keyframe_ && !stats.gated) {
-      // Re-estimate against the keyframe's observations of the surviving tracks.
-      std::vector<StereoCorrespondence> from_keyframe;
-      for (const Feature& f : kept) {
-        if (!f.has_keyframe) continue;
-        StereoCorrespondence c;
-        c.previous = {f.keyframe_left.x, f.keyframe_left.y, f.keyframe_right.x};
-        c.current = {f.left.x, f.left.y, f.right.x};
-        disparity_offset_.Apply(&c);
-        Triangulate(cam, &c);
-        from_keyframe.push_back(c);
-      }
-      Eigen::Isometry3d current_from_keyframe = world_from_current.inverse() * world_from_keyframe_;
-      const int agree = RefineAgainstKeyframe(
-          cam, refiner_, from_keyframe, options_.ransac.inlier_threshold_px, options_.refine_rounds,
-          options_.keyframe.min_inliers, &current_from_keyframe);
-      if (agree >= options_.keyframe.min_inliers) {
-        world_from_current = world_from_keyframe_ * current_from_keyframe.inverse();
-        result->current_from_previous = world_from_current.inverse() * world_from_camera_;
-        new_keyframe = static_cast<double>(from_keyframe.size()) <
-                       options_.keyframe.min_track_fraction * static_cast<double>(keyframe_tracks_);
-      }
-    }
-    if (options_.window.enabled) {
-      // Sliding-window adjustment over the frame's consistent tracks (inliers) and its new
-      // features (seen again later); a frame whose motion was not measured restarts the window.
-      if (stats.gated) window_.Reset();
-      std::vector<unsigned char> use(kept.size(), stats.gated ? 1 : 0);
-      if (!stats.gated) {
-        for (int i : inliers)
-          use[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
-      }
-      WindowBundleSummary summary;
-      const Eigen::Isometry3d adjusted =
-          window_.Add(cam, world_from_current, Observations(kept, kept_source, use), &summary,
-                      disparity_offset_.offset_px());
-      if (summary.adjusted) {
-        world_from_current = adjusted;
-        result->current_from_previous = world_from_current.inverse() * world_from_camera_;
-      }
-      stats.window_points = summary.points;
-      stats.window_rms_px = summary.final_rms_px;
-      Record(timing, "window", clock.Lap(), &stats.window_ms);
-    }
-    world_from_camera_ = world_from_current;
-    last_motion_ = result->current_from_previous;
-    last_motion_dt_s_ = dt;
-    if (options_.keyframe.enabled && new_keyframe) has_keyframe_ = false;  // Set below.
+    candidate.failure = stats.stereo_matches == 0
+                            ? "no stereo matches (no texture, lens cap, or identical left and "
+                              "right images?)"
+                            : "RANSAC failed: " + h.failure;
   }
-  result->world_from_camera = world_from_camera_;
-  stats.translation_m = result->current_from_previous.translation().norm();
-  stats.rotation_deg =
-      Eigen::AngleAxisd(result->current_from_previous.rotation()).angle() * 180.0 / M_PI;
+  Record(s->timing, "refine", s->clock.Lap(), &stats.refine_ms);
+  return candidate;
+}
 
-  // Features for views.
-  std::vector<unsigned char> is_inlier(kept.size(), 0);
-  if (!stats.gated) {
-    for (int i : inliers)
-      is_inlier[static_cast<size_t>(correspondence_feature[static_cast<size_t>(i)])] = 1;
+bool StereoOdometry::AlignToKeyframe(FrameState* s, Eigen::Isometry3d* world_from_current) {
+  if (!(options_.keyframe.enabled && has_keyframe_ && !s->result->stats.gated)) return true;
+  // Re-estimate against the keyframe's observations of the surviving tracks.
+  const RectifiedStereoCamera& cam = rectifier_.camera();
+  std::vector<StereoCorrespondence> from_keyframe;
+  for (const Feature& f : s->kept) {
+    if (!f.has_keyframe) continue;
+    StereoCorrespondence c;
+    c.previous = {f.keyframe_left.x, f.keyframe_left.y, f.keyframe_right.x};
+    c.current = {f.left.x, f.left.y, f.right.x};
+    disparity_offset_.Apply(&c);
+    Triangulate(cam, &c);
+    from_keyframe.push_back(c);
   }
-  result->features.reserve(kept.size());
+  Eigen::Isometry3d current_from_keyframe = world_from_current->inverse() * world_from_keyframe_;
+  const int agree = RefineAgainstKeyframe(
+      cam, refiner_, from_keyframe, options_.ransac.inlier_threshold_px, options_.refine_rounds,
+      options_.keyframe.min_inliers, &current_from_keyframe);
+  if (agree < options_.keyframe.min_inliers) return true;
+  *world_from_current = world_from_keyframe_ * current_from_keyframe.inverse();
+  s->result->current_from_previous = world_from_current->inverse() * world_from_camera_;
+  return static_cast<double>(from_keyframe.size()) <
+         options_.keyframe.min_track_fraction * static_cast<double>(keyframe_tracks_);
+}
+
+void StereoOdometry::AdjustWindow(FrameState* s, Eigen::Isometry3d* world_from_current) {
+  // Sliding-window adjustment over the frame's consistent tracks (inliers) and its new
+  // features (seen again later); a frame whose motion was not measured restarts the window.
+  FrameStats& stats = s->result->stats;
+  if (stats.gated) window_.Reset();
+  std::vector<unsigned char> use(s->kept.size(), stats.gated ? 1 : 0);
+  if (!stats.gated) {
+    for (int i : s->inliers)
+      use[static_cast<size_t>(s->correspondence_feature[static_cast<size_t>(i)])] = 1;
+  }
+  WindowBundleSummary summary;
+  const Eigen::Isometry3d adjusted = window_.Add(rectifier_.camera(), *world_from_current,
+                                                 Observations(s->kept, s->kept_source, use),
+                                                 &summary, disparity_offset_.offset_px());
+  if (summary.adjusted) {
+    *world_from_current = adjusted;
+    s->result->current_from_previous = world_from_current->inverse() * world_from_camera_;
+  }
+  stats.window_points = summary.points;
+  stats.window_rms_px = summary.final_rms_px;
+  Record(s->timing, "window", s->clock.Lap(), &stats.window_ms);
+}
+
+void StereoOdometry::PublishFeatures(FrameState* s) const {
+  const std::vector<Feature>& kept = s->kept;
+  std::vector<unsigned char> is_inlier(kept.size(), 0);
+  if (!s->result->stats.gated) {
+    for (int i : s->inliers)
+      is_inlier[static_cast<size_t>(s->correspondence_feature[static_cast<size_t>(i)])] = 1;
+  }
+  std::vector<TrackedFeature>& features = s->result->features;
+  features.reserve(kept.size());
   for (size_t k = 0; k < kept.size(); ++k) {
     TrackedFeature t;
     t.id = kept[k].id;
     t.left = kept[k].left;
     t.right = kept[k].right;
     t.age = kept[k].age;
-    const int s = kept_source[k];
-    t.previous_left = s >= 0 ? features_[static_cast<size_t>(s)].left : kept[k].left;
+    const int src = s->kept_source[k];
+    t.previous_left = src >= 0 ? features_[static_cast<size_t>(src)].left : kept[k].left;
     t.role =
-        s < 0 ? FeatureRole::kNew : (is_inlier[k] ? FeatureRole::kInlier : FeatureRole::kOutlier);
-    result->features.push_back(t);
+        src < 0 ? FeatureRole::kNew : (is_inlier[k] ? FeatureRole::kInlier : FeatureRole::kOutlier);
+    features.push_back(t);
   }
+}
 
-  std::vector<OffsetTrack> offset_tracks(kept.size());
-  for (size_t k = 0; k < kept.size(); ++k) {
-    offset_tracks[k] = {kept[k].id, {kept[k].left.x, kept[k].left.y, kept[k].right.x}};
+void StereoOdometry::ObserveDisparityOffset(const FrameState& s) {
+  std::vector<OffsetTrack> offset_tracks(s.kept.size());
+  for (size_t k = 0; k < s.kept.size(); ++k) {
+    offset_tracks[k] = {s.kept[k].id, {s.kept[k].left.x, s.kept[k].left.y, s.kept[k].right.x}};
   }
-  disparity_offset_.Observe(cam, refiner_, options_.ransac.inlier_threshold_px,
-                            std::move(offset_tracks), world_from_camera_, !stats.gated);
-  features_ = std::move(kept);
-  if (options_.anchor.enabled) {
-    // New tracks, and those whose anchor failed or expires, are anchored here, with the surface
-    // their neighbours show.
-    std::vector<Eigen::Vector3d> points;
-    std::vector<cv::Point2f> pixels;
-    std::vector<size_t> renew;
-    points.reserve(features_.size());
-    pixels.reserve(features_.size());
-    for (size_t k = 0; k < features_.size(); ++k) {
-      const Feature& f = features_[k];
-      points.push_back(cam.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x));
-      pixels.push_back(f.left);
-      if (!anchors_.Usable(f.anchor.frame, frame_number_ + 1)) renew.push_back(k);
-    }
-    const std::vector<Eigen::Vector3f> normals =
-        SurfaceNormals(points, pixels, renew, options_.anchor);
-    for (size_t r = 0; r < renew.size(); ++r) {
-      Feature& f = features_[renew[r]];
-      f.anchor = {frame_number_, f.left, f.left.x - f.right.x, normals[r]};
-    }
-    anchors_.AddFrame(frame_number_, left_pyramid.image, world_from_camera_);
+  disparity_offset_.Observe(rectifier_.camera(), refiner_, options_.ransac.inlier_threshold_px,
+                            std::move(offset_tracks), world_from_camera_, !s.result->stats.gated);
+}
+
+void StereoOdometry::RenewAnchors(const cv::Mat& left_image) {
+  if (!options_.anchor.enabled) return;
+  // New tracks, and those whose anchor failed or expires, are anchored here, with the surface
+  // their neighbours show.
+  const RectifiedStereoCamera& cam = rectifier_.camera();
+  std::vector<Eigen::Vector3d> points;
+  std::vector<cv::Point2f> pixels;
+  std::vector<size_t> renew;
+  points.reserve(features_.size());
+  pixels.reserve(features_.size());
+  for (size_t k = 0; k < features_.size(); ++k) {
+    const Feature& f = features_[k];
+    points.push_back(cam.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x));
+    pixels.push_back(f.left);
+    if (!anchors_.Usable(f.anchor.frame, frame_number_ + 1)) renew.push_back(k);
   }
-  ++frame_number_;
-  if (options_.keyframe.enabled && !has_keyframe_) {
-    // This frame becomes the keyframe: its stereo observations are what later frames refer to.
-    for (Feature& f : features_) {
-      f.has_keyframe = true;
-      f.keyframe_left = f.left;
-      f.keyframe_right = f.right;
-    }
-    world_from_keyframe_ = world_from_camera_;
-    keyframe_tracks_ = features_.size();
-    has_keyframe_ = true;
+  const std::vector<Eigen::Vector3f> normals =
+      SurfaceNormals(points, pixels, renew, options_.anchor);
+  for (size_t r = 0; r < renew.size(); ++r) {
+    Feature& f = features_[renew[r]];
+    f.anchor = {frame_number_, f.left, f.left.x - f.right.x, normals[r]};
   }
-  previous_left_ = left_pyramid;
-  previous_time_s_ = frame.stamp.sensor_time_s;
-  has_previous_ = true;
-  stats.total_ms = total_clock.Lap();
-  if (timing) timing->Add("total", stats.total_ms);
-  return std::shared_ptr<const StereoOdometryResult>(result);
+  anchors_.AddFrame(frame_number_, left_image, world_from_camera_);
+}
+
+void StereoOdometry::SetKeyframeIfNeeded() {
+  if (!options_.keyframe.enabled || has_keyframe_) return;
+  // This frame becomes the keyframe: its stereo observations are what later frames refer to.
+  for (Feature& f : features_) {
+    f.has_keyframe = true;
+    f.keyframe_left = f.left;
+    f.keyframe_right = f.right;
+  }
+  world_from_keyframe_ = world_from_camera_;
+  keyframe_tracks_ = features_.size();
+  has_keyframe_ = true;
+}
+
+std::shared_ptr<const StereoOdometryResult> StereoOdometry::FinishFrame(FrameState* s) const {
+  s->result->stats.total_ms = s->total_clock.Lap();
+  if (s->timing) s->timing->Add("total", s->result->stats.total_ms);
+  return s->result;
 }
 
 }  // namespace sightline

@@ -26,6 +26,7 @@
 #include "core/stereo/motion_refiner.h"
 #include "core/stereo/rectifier.h"
 #include "core/stereo/stereo_matcher.h"
+#include "core/stereo/stereo_types.h"
 #include "core/stereo/track_anchor.h"
 #include "core/stereo/window_bundle_adjuster.h"
 
@@ -47,58 +48,6 @@ struct StereoOdometryOptions {
 
   bool IsValid(std::string* error) const;
   static OptionTable<StereoOdometryOptions> Describe();
-};
-
-// How a feature took part in the frame's motion estimate.
-enum class FeatureRole {
-  kInlier,   // Tracked from the previous frame and consistent with the motion.
-  kOutlier,  // Tracked, but rejected by RANSAC / reprojection.
-  kNew,      // Detected in this frame (no motion information yet).
-};
-
-// One feature of the current frame, in rectified pixel coordinates.
-struct TrackedFeature {
-  int64_t id = -1;            // Stable across frames while tracked.
-  cv::Point2f left;           // Left image position [px].
-  cv::Point2f right;          // Right image position (same row) [px].
-  cv::Point2f previous_left;  // Left position in the previous frame; == left for new features.
-  int age = 0;                // Frames tracked (0 = new).
-  FeatureRole role = FeatureRole::kNew;
-};
-
-// Statistics of one frame (also written as a row of frames.csv).
-struct FrameStats {
-  int tracked = 0;                 // Features tracked from the previous left image.
-  bool retracked = false;          // Lost tracks were tracked again with more pyramid levels.
-  int anchored = 0;                // Tracked positions refined against their anchors.
-  int new_features = 0;            // Detected this frame (and matched in the right image).
-  int stereo_matches = 0;          // Features matched in the right image (tracked + new).
-  int correspondences = 0;         // Features with stereo at both times (RANSAC input).
-  int inliers = 0;                 // After refinement.
-  int ransac_iterations = 0;       // Rigid samples tried.
-  int rigidity_failures = 0;       // Samples rejected by the rigidity test.
-  double residual_px = 0;          // Refined RMS reprojection error over the inliers [px].
-  int window_points = 0;           // Points of the sliding-window bundle adjustment.
-  double window_rms_px = 0;        // Its RMS reprojection error after adjustment [px].
-  double disparity_offset_px = 0;  // Disparity offset applied to this frame's matches [px].
-  double translation_m = 0;        // Length of the applied motion [m].
-  double rotation_deg = 0;         // Angle of the applied motion [deg].
-  bool gated = false;              // The estimate was rejected (or failed) and a fallback applied.
-  std::string status = "ok";       // "ok", "first frame", or why the estimate was rejected.
-  // Per-stage wall time [ms].
-  double rectify_ms = 0, pyramid_ms = 0, tracking_ms = 0, matching_ms = 0, detection_ms = 0,
-         ransac_ms = 0, refine_ms = 0, window_ms = 0, total_ms = 0;
-};
-
-// The result of one frame, shared immutable with views.
-struct StereoOdometryResult {
-  FrameStamp stamp;
-  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();      // Left camera pose.
-  Eigen::Isometry3d current_from_previous = Eigen::Isometry3d::Identity();  // Applied motion.
-  FrameStats stats;
-  std::vector<TrackedFeature> features;  // After this frame's replenishment.
-  cv::Mat left_rectified;                // CV_8UC1, what the feature positions refer to.
-  cv::Mat right_rectified;               // CV_8UC1.
 };
 
 // The odometry. Construct, Configure() with the rig, then Process() frames in order.
@@ -139,6 +88,47 @@ class StereoOdometry {
     cv::Point2f keyframe_left, keyframe_right;  // ... there.
     TrackAnchor anchor;                         // What its position is aligned against.
   };
+  struct FrameState;  // One frame's working data, passed between the steps of Process().
+
+  // The steps of Process(), in order (stereo_odometry.cpp).
+  // An unusable frame: the gate's motion; the state stays at the last good frame.
+  void RejectInput(const std::string& why, FrameState* s);
+  // Tracks the features into the new left image (KLT from a constant-motion prediction, then
+  // anchor alignment); fills s->points, guesses, source and alignment.
+  void TrackFeatures(FrameState* s);
+  // Where the features should land under constant motion (empty when there is no motion
+  // history); returns the predicted current_from_previous.
+  Eigen::Isometry3d PredictMotion(double dt, std::vector<cv::Point2f>* predicted,
+                                  std::vector<float>* predicted_disparity) const;
+  // Refines the tracked positions against their anchors; fills s->alignment.
+  void AlignToAnchors(const Eigen::Isometry3d& predicted_motion,
+                      const std::vector<unsigned char>& tracked_ok,
+                      std::vector<cv::Point2f>* tracked, FrameState* s);
+  // Adds new corners where tracks are missing.
+  void DetectFeatures(FrameState* s);
+  // Matches every feature in the right image; fills s->kept and the correspondences.
+  void MatchFeatures(FrameState* s);
+  // The first frame: nothing to measure, the window starts.
+  void StartFirstFrame(FrameState* s);
+  // Measures, gates and applies the motion. False when the frame holds the pose (nothing to
+  // track from) and Process() ends without updating the state.
+  bool EstimateMotion(FrameState* s);
+  // RANSAC and refinement rounds over the correspondences; sets s->inliers.
+  MotionCandidate MeasureMotion(FrameState* s);
+  // Re-estimates *world_from_current against the keyframe; returns whether a new keyframe is due.
+  bool AlignToKeyframe(FrameState* s, Eigen::Isometry3d* world_from_current);
+  // Sliding-window adjustment of *world_from_current.
+  void AdjustWindow(FrameState* s, Eigen::Isometry3d* world_from_current);
+  // The kept features with their roles, for views.
+  void PublishFeatures(FrameState* s) const;
+  // Feeds the disparity offset estimator with the kept features.
+  void ObserveDisparityOffset(const FrameState& s);
+  // Anchors new tracks and those whose anchor failed or expires; keeps the frame's image.
+  void RenewAnchors(const cv::Mat& left_image);
+  // Makes this frame the keyframe when none is set.
+  void SetKeyframeIfNeeded();
+  // Records the total time and hands out the result.
+  std::shared_ptr<const StereoOdometryResult> FinishFrame(FrameState* s) const;
 
   StereoOdometryOptions options_;
   Rectifier rectifier_;

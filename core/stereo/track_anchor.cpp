@@ -105,6 +105,143 @@ inline bool Inside(const cv::Mat& image, float x, float y) {
          y < static_cast<float>(image.rows - 1);
 }
 
+// The anchor patch's warp into the current image: the Jacobian at the anchor of "back-project
+// at the anchor's depth, move, project". False when the anchor cannot be aligned from here
+// (behind the camera, seen from too far aside, too much change of scale).
+bool PatchWarp(const RectifiedStereoCamera& camera, const TrackAnchor& anchor,
+               const Eigen::Isometry3d& current_from_anchor, const TrackAnchorOptions& options,
+               Eigen::Matrix2d* warp) {
+  const Eigen::Vector3d x_anchor =
+      camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
+  const Eigen::Vector3d y = current_from_anchor * x_anchor;
+  if (y.z() < 0.05) return false;
+  // Seen from too far aside for the warp (a surface guessed or fitted wrongly shows it most).
+  const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
+  if (x_anchor.normalized().dot((x_anchor - centre).normalized()) <
+      std::cos(options.max_view_change_deg * M_PI / 180)) {
+    return false;
+  }
+  // How the anchor's surface point moves with its pixel: on the fitted plane, or on a plane
+  // facing the camera at the anchor's depth.
+  const Eigen::Vector3d ray((anchor.left.x - camera.cx) / camera.f,
+                            (anchor.left.y - camera.cy) / camera.f, 1.0);
+  Eigen::Vector3d normal(0, 0, 1);
+  if (anchor.normal.squaredNorm() > 0.5 &&
+      std::abs(anchor.normal.cast<double>().dot(ray.normalized())) > 0.15) {
+    normal = anchor.normal.cast<double>();  // Not seen too close to edge-on.
+  }
+  const double along = normal.dot(ray);
+  Eigen::Matrix<double, 3, 2> surface;  // d(point) / d(u, v) at the anchor.
+  surface.col(0) =
+      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
+  surface.col(1) =
+      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
+  Eigen::Matrix<double, 2, 3> projection;
+  projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
+  *warp = (camera.f / y.z()) * projection * current_from_anchor.linear() * surface;
+  const double det = warp->determinant();
+  return det > 0 && !(std::abs(std::sqrt(det) - 1) > options.max_scale_change);
+}
+
+// The anchor's patch (half-size h) resampled through `inverse` (current to anchor pixels) into
+// the current image's pixel grid, with one pixel of border for the gradients: (2h + 3)^2 values
+// into *templ. False when it leaves the anchor image.
+bool ResampleTemplate(const cv::Mat& anchor_image, const cv::Point2f& at,
+                      const Eigen::Matrix2d& inverse, int h, std::vector<float>* templ) {
+  const int side = 2 * h + 3;
+  templ->assign(static_cast<size_t>(side * side), 0.f);
+  for (int j = -h - 1; j <= h + 1; ++j) {
+    for (int i = -h - 1; i <= h + 1; ++i) {
+      const float sx = at.x + static_cast<float>(inverse(0, 0) * i + inverse(0, 1) * j);
+      const float sy = at.y + static_cast<float>(inverse(1, 0) * i + inverse(1, 1) * j);
+      if (!Inside(anchor_image, sx, sy)) return false;
+      (*templ)[static_cast<size_t>((j + h + 1) * side + (i + h + 1))] =
+          Sample(anchor_image, sx, sy);
+    }
+  }
+  return true;
+}
+
+// The template's inner values, the residual's Jacobian by (dx, dy, bias) at each, and the
+// Gauss-Newton matrix they make.
+Eigen::Matrix3d TemplateJacobian(const std::vector<float>& templ, int h,
+                                 std::vector<std::array<float, 3>>* jac,
+                                 std::vector<float>* values) {
+  const int side = 2 * h + 3;
+  const int n = (2 * h + 1) * (2 * h + 1);
+  jac->resize(static_cast<size_t>(n));
+  values->resize(static_cast<size_t>(n));
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  int k = 0;
+  for (int j = -h; j <= h; ++j) {
+    for (int i = -h; i <= h; ++i, ++k) {
+      const size_t c = static_cast<size_t>((j + h + 1) * side + (i + h + 1));
+      const float gx = 0.5f * (templ[c + 1] - templ[c - 1]);
+      const float gy =
+          0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
+      (*jac)[static_cast<size_t>(k)] = {gx, gy, -1.f};
+      (*values)[static_cast<size_t>(k)] = templ[c];
+      const Eigen::Vector3d g(gx, gy, -1.0);
+      H.noalias() += g * g.transpose();
+    }
+  }
+  return H;
+}
+
+// Whether the patch of half-size h centred at (cx, cy) lies inside `image`.
+bool PatchInside(const cv::Mat& image, float cx, float cy, int h) {
+  return Inside(image, cx - static_cast<float>(h), cy - static_cast<float>(h)) &&
+         Inside(image, cx + static_cast<float>(h), cy + static_cast<float>(h));
+}
+
+// Gauss-Newton on the translation (*cx, *cy) and a brightness offset; `patch` is scratch space.
+// False when the patch leaves the current image.
+bool AlignTranslation(const cv::Mat& current, int h, const std::vector<float>& values,
+                      const std::vector<std::array<float, 3>>& jac, const Eigen::Matrix3d& H_inv,
+                      int max_iterations, float* cx, float* cy, std::vector<float>* patch) {
+  const int n = (2 * h + 1) * (2 * h + 1);
+  float bias = 0;
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
+    if (!PatchInside(current, *cx, *cy, h)) return false;
+    SamplePatch(current, *cx - static_cast<float>(h), *cy - static_cast<float>(h), 2 * h + 1,
+                patch->data());
+    float bx = 0, by = 0, bz = 0;
+    for (int q = 0; q < n; ++q) {
+      const float e = (*patch)[static_cast<size_t>(q)] - values[static_cast<size_t>(q)] - bias;
+      const std::array<float, 3>& g = jac[static_cast<size_t>(q)];
+      bx += g[0] * e;
+      by += g[1] * e;
+      bz += g[2] * e;
+    }
+    const Eigen::Vector3d b(bx, by, bz);
+    const Eigen::Vector3d step = -H_inv * b;
+    *cx += static_cast<float>(step.x());
+    *cy += static_cast<float>(step.y());
+    bias -= static_cast<float>(step.z());
+    if (step.head<2>().squaredNorm() < 1e-4) break;
+  }
+  return true;
+}
+
+// Zero-mean normalised correlation of the template values with `patch` (n values each);
+// false for a flat patch.
+bool Correlation(const std::vector<float>& values, const std::vector<float>& patch, int n,
+                 double* zncc) {
+  double st = 0, sc = 0, stt = 0, scc = 0, stc = 0;
+  for (int q = 0; q < n; ++q) {
+    const double t = values[static_cast<size_t>(q)], c = patch[static_cast<size_t>(q)];
+    st += t;
+    sc += c;
+    stt += t * t;
+    scc += c * c;
+    stc += t * c;
+  }
+  const double vt = stt - st * st / n, vc = scc - sc * sc / n;
+  if (!(vt > 0 && vc > 0)) return false;
+  *zncc = (stc - st * sc / n) / std::sqrt(vt * vc);
+  return true;
+}
+
 }  // namespace
 
 std::vector<Eigen::Vector3f> SurfaceNormals(const std::vector<Eigen::Vector3d>& points,
@@ -180,127 +317,42 @@ AnchorAlignment TrackAnchors::Align(const RectifiedStereoCamera& camera, const T
   const Frame* ref = Find(anchor.frame);
   if (!ref) return AnchorAlignment::kRenew;
 
-  // The patch's warp from the anchor image to the current one: the Jacobian at the anchor of
-  // "back-project at the anchor's depth, move, project".
   const Eigen::Isometry3d current_from_anchor =
       world_from_current.inverse() * ref->world_from_camera;
-  const Eigen::Vector3d x_anchor =
-      camera.Triangulate(anchor.left.x, anchor.left.y, anchor.disparity_px);
-  const Eigen::Vector3d y = current_from_anchor * x_anchor;
-  if (y.z() < 0.05) return AnchorAlignment::kRenew;
-  // Seen from too far aside for the warp (a surface guessed or fitted wrongly shows it most).
-  const Eigen::Vector3d centre = current_from_anchor.inverse().translation();
-  if (x_anchor.normalized().dot((x_anchor - centre).normalized()) <
-      std::cos(options_.max_view_change_deg * M_PI / 180)) {
-    return AnchorAlignment::kRenew;
-  }
-  // How the anchor's surface point moves with its pixel: on the fitted plane, or on a plane
-  // facing the camera at the anchor's depth.
-  const Eigen::Vector3d ray((anchor.left.x - camera.cx) / camera.f,
-                            (anchor.left.y - camera.cy) / camera.f, 1.0);
-  Eigen::Vector3d normal(0, 0, 1);
-  if (anchor.normal.squaredNorm() > 0.5 &&
-      std::abs(anchor.normal.cast<double>().dot(ray.normalized())) > 0.15) {
-    normal = anchor.normal.cast<double>();  // Not seen too close to edge-on.
-  }
-  const double along = normal.dot(ray);
-  Eigen::Matrix<double, 3, 2> surface;  // d(point) / d(u, v) at the anchor.
-  surface.col(0) =
-      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitX() - ray * normal.x() / along);
-  surface.col(1) =
-      (x_anchor.z() / camera.f) * (Eigen::Vector3d::UnitY() - ray * normal.y() / along);
-  Eigen::Matrix<double, 2, 3> projection;
-  projection << 1, 0, -y.x() / y.z(), 0, 1, -y.y() / y.z();
-  const Eigen::Matrix2d warp =
-      (camera.f / y.z()) * projection * current_from_anchor.linear() * surface;
-  const double det = warp.determinant();
-  if (!(det > 0) || std::abs(std::sqrt(det) - 1) > options_.max_scale_change) {
+  Eigen::Matrix2d warp;
+  if (!PatchWarp(camera, anchor, current_from_anchor, options_, &warp)) {
     return AnchorAlignment::kRenew;
   }
   const Eigen::Matrix2d inverse = warp.inverse();
 
-  // The anchor's patch resampled into the current image's pixel grid, one pixel of border for
-  // the gradients.
   const int h = options_.patch_px / 2;
-  const int side = 2 * h + 3;
   thread_local std::vector<float> templ;
-  templ.assign(static_cast<size_t>(side * side), 0.f);
-  for (int j = -h - 1; j <= h + 1; ++j) {
-    for (int i = -h - 1; i <= h + 1; ++i) {
-      const float sx = anchor.left.x + static_cast<float>(inverse(0, 0) * i + inverse(0, 1) * j);
-      const float sy = anchor.left.y + static_cast<float>(inverse(1, 0) * i + inverse(1, 1) * j);
-      if (!Inside(ref->left, sx, sy)) return AnchorAlignment::kRenew;
-      templ[static_cast<size_t>((j + h + 1) * side + (i + h + 1))] = Sample(ref->left, sx, sy);
-    }
+  if (!ResampleTemplate(ref->left, anchor.left, inverse, h, &templ)) {
+    return AnchorAlignment::kRenew;
   }
   const int n = (2 * h + 1) * (2 * h + 1);
   thread_local std::vector<std::array<float, 3>> jac;  // d residual / (dx, dy, bias).
   thread_local std::vector<float> values, patch;
-  jac.resize(static_cast<size_t>(n));
-  values.resize(static_cast<size_t>(n));
+  const Eigen::Matrix3d H = TemplateJacobian(templ, h, &jac, &values);
   patch.resize(static_cast<size_t>(n));
-  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-  int k = 0;
-  for (int j = -h; j <= h; ++j) {
-    for (int i = -h; i <= h; ++i, ++k) {
-      const size_t c = static_cast<size_t>((j + h + 1) * side + (i + h + 1));
-      const float gx = 0.5f * (templ[c + 1] - templ[c - 1]);
-      const float gy =
-          0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
-      jac[static_cast<size_t>(k)] = {gx, gy, -1.f};
-      values[static_cast<size_t>(k)] = templ[c];
-      const Eigen::Vector3d g(gx, gy, -1.0);
-      H.noalias() += g * g.transpose();
-    }
-  }
   if (!(H.topLeftCorner<2, 2>().determinant() > 1e-6)) return AnchorAlignment::kRenew;
   const Eigen::Matrix3d H_inv = H.inverse();
 
   // Gauss-Newton on the translation and a brightness offset, from the KLT position.
   const cv::Point2f start = *position;
-  float cx = start.x, cy = start.y, bias = 0;
-  for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
-    if (!Inside(current, cx - static_cast<float>(h), cy - static_cast<float>(h)) ||
-        !Inside(current, cx + static_cast<float>(h), cy + static_cast<float>(h))) {
-      return AnchorAlignment::kRenew;
-    }
-    SamplePatch(current, cx - static_cast<float>(h), cy - static_cast<float>(h), 2 * h + 1,
-                patch.data());
-    float bx = 0, by = 0, bz = 0;
-    for (int q = 0; q < n; ++q) {
-      const float e = patch[static_cast<size_t>(q)] - values[static_cast<size_t>(q)] - bias;
-      const std::array<float, 3>& g = jac[static_cast<size_t>(q)];
-      bx += g[0] * e;
-      by += g[1] * e;
-      bz += g[2] * e;
-    }
-    const Eigen::Vector3d b(bx, by, bz);
-    const Eigen::Vector3d step = -H_inv * b;
-    cx += static_cast<float>(step.x());
-    cy += static_cast<float>(step.y());
-    bias -= static_cast<float>(step.z());
-    if (step.head<2>().squaredNorm() < 1e-4) break;
-  }
-  if (std::hypot(cx - start.x, cy - start.y) > options_.max_correction_px ||
-      !Inside(current, cx - static_cast<float>(h), cy - static_cast<float>(h)) ||
-      !Inside(current, cx + static_cast<float>(h), cy + static_cast<float>(h))) {
+  float cx = start.x, cy = start.y;
+  if (!AlignTranslation(current, h, values, jac, H_inv, options_.max_iterations, &cx, &cy,
+                        &patch) ||
+      std::hypot(cx - start.x, cy - start.y) > options_.max_correction_px ||
+      !PatchInside(current, cx, cy, h)) {
     return AnchorAlignment::kRenew;
   }
 
   // Zero-mean normalised correlation of the aligned patches.
   SamplePatch(current, cx - static_cast<float>(h), cy - static_cast<float>(h), 2 * h + 1,
               patch.data());
-  double st = 0, sc = 0, stt = 0, scc = 0, stc = 0;
-  for (int q = 0; q < n; ++q) {
-    const double t = values[static_cast<size_t>(q)], c = patch[static_cast<size_t>(q)];
-    st += t;
-    sc += c;
-    stt += t * t;
-    scc += c * c;
-    stc += t * c;
-  }
-  const double vt = stt - st * st / n, vc = scc - sc * sc / n;
-  if (!(vt > 0 && vc > 0) || (stc - st * sc / n) / std::sqrt(vt * vc) < options_.min_zncc) {
+  double zncc = 0;
+  if (!Correlation(values, patch, n, &zncc) || zncc < options_.min_zncc) {
     return AnchorAlignment::kRenew;
   }
   *position = cv::Point2f(cx, cy);

@@ -114,6 +114,290 @@ Eigen::Isometry3d Update(const Eigen::Isometry3d& t, const Vector6& delta) {
   return d * t;
 }
 
+// One adjustment: the window's poses, the points and their observations.
+struct Problem {
+  const RectifiedStereoCamera* camera = nullptr;
+  int fixed = 1;        // Frames [0, fixed) hold the gauge; the others are adjusted.
+  double huber_px = 0;  // Robust weight threshold.
+  std::vector<Eigen::Isometry3d> poses;    // camera_from_world of each window frame.
+  std::vector<Eigen::Vector3d> points;     // World points.
+  std::vector<Edge> edges;                 // Usable observations of the points.
+  std::vector<std::vector<int>> edges_of;  // Edges grouped by point, for the Schur complement.
+  std::vector<unsigned char> active;       // Per edge: not dropped as an outlier.
+};
+
+// The Gauss-Newton system of one iteration: the free poses' block, each point's block, and
+// the pose-point coupling of every edge.
+struct NormalEquations {
+  Eigen::MatrixXd H;
+  Eigen::VectorXd b;
+  std::vector<Eigen::Matrix3d> point_hessian;
+  std::vector<Eigen::Vector3d> point_gradient;
+  std::vector<Matrix63> coupling;  // J_pose^T W J_point per edge.
+};
+
+// Reprojection error of edge e at poses T and points X [px]; false behind the camera.
+bool EdgeError(const Problem& p, const std::vector<Eigen::Isometry3d>& T,
+               const std::vector<Eigen::Vector3d>& X, size_t e, double* error) {
+  const Edge& edge = p.edges[e];
+  Eigen::Vector3d q;
+  if (!Project(*p.camera, T[static_cast<size_t>(edge.frame)] * X[static_cast<size_t>(edge.point)],
+               &q, nullptr)) {
+    return false;
+  }
+  *error = (q - edge.measured).norm();
+  return true;
+}
+
+// Robust cost of the active edges at poses T and points X; *rms (optional) gets their RMS error.
+double TotalCost(const Problem& p, const std::vector<Eigen::Isometry3d>& T,
+                 const std::vector<Eigen::Vector3d>& X, double* rms) {
+  const double k = p.huber_px;
+  double cost = 0, squared = 0;
+  int used = 0;
+  for (size_t e = 0; e < p.edges.size(); ++e) {
+    if (!p.active[e]) continue;
+    const Edge& edge = p.edges[e];
+    double err = 0;
+    if (!EdgeError(p, T, X, e, &err)) {
+      cost += edge.weight * 2 * k * 1e3;  // Behind the camera: a large, finite penalty.
+      continue;
+    }
+    cost += edge.weight * HuberCost(err, k);
+    squared += err * err;
+    ++used;
+  }
+  if (rms) *rms = used ? std::sqrt(squared / used) : 0;
+  return cost;
+}
+
+// Deactivates the observations that still disagree (a track slid along an edge, a walking
+// person); returns how many.
+int DropOutliers(double max_error_px, Problem* p) {
+  int dropped = 0;
+  for (size_t e = 0; e < p->edges.size(); ++e) {
+    if (!p->active[e]) continue;
+    double err = 0;
+    if (!EdgeError(*p, p->poses, p->points, e, &err) || err > max_error_px) {
+      p->active[e] = 0;
+      ++dropped;
+    }
+  }
+  return dropped;
+}
+
+// Linearises every active edge at the current poses and points.
+NormalEquations BuildNormalEquations(const Problem& p) {
+  const int fixed = p.fixed;
+  const int dim = 6 * (static_cast<int>(p.poses.size()) - fixed);
+  const double k = p.huber_px;
+  NormalEquations eq;
+  eq.H = Eigen::MatrixXd::Zero(dim, dim);
+  eq.b = Eigen::VectorXd::Zero(dim);
+  eq.point_hessian.resize(p.points.size());
+  eq.point_gradient.resize(p.points.size());
+  eq.coupling.assign(p.edges.size(), Matrix63::Zero());
+  for (size_t pi = 0; pi < p.points.size(); ++pi) {
+    Eigen::Matrix3d Hll = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d bl = Eigen::Vector3d::Zero();
+    for (int e : p.edges_of[pi]) {
+      if (!p.active[static_cast<size_t>(e)]) continue;
+      const Edge& edge = p.edges[static_cast<size_t>(e)];
+      const Eigen::Isometry3d& T = p.poses[static_cast<size_t>(edge.frame)];
+      const Eigen::Vector3d xc = T * p.points[pi];
+      Eigen::Vector3d q;
+      Eigen::Matrix3d Jproj;
+      if (!Project(*p.camera, xc, &q, &Jproj)) continue;
+      const Eigen::Vector3d r = q - edge.measured;
+      const double w = edge.weight * HuberWeight(r.norm(), k);
+      const Eigen::Matrix3d Jl = Jproj * T.linear();
+      const Eigen::Matrix3d JlW = w * Jl.transpose();
+      Hll.noalias() += JlW * Jl;
+      bl.noalias() -= JlW * r;
+      if (edge.frame < fixed) continue;
+      Matrix36 Jp;
+      Jp.leftCols<3>().noalias() = -Jproj * Skew(xc);
+      Jp.rightCols<3>() = Jproj;
+      const Matrix63 JpW = w * Jp.transpose();
+      const int o = 6 * (edge.frame - fixed);
+      const Eigen::Matrix<double, 6, 6> Hpp = JpW * Jp;
+      eq.H.block<6, 6>(o, o) += Hpp;
+      eq.b.segment<6>(o).noalias() -= JpW * r;
+      eq.coupling[static_cast<size_t>(e)].noalias() = JpW * Jl;
+    }
+    eq.point_hessian[pi] = Hll;
+    eq.point_gradient[pi] = bl;
+  }
+  return eq;
+}
+
+// The damped system reduced to the poses (Schur complement of the points): *S and *rhs, and
+// each point's inverted damped block.
+void ReducedSystem(const Problem& p, const NormalEquations& eq, double lambda, Eigen::MatrixXd* S,
+                   Eigen::VectorXd* rhs, std::vector<Eigen::Matrix3d>* inverse) {
+  const int fixed = p.fixed;
+  const int dim = static_cast<int>(eq.H.rows());
+  *S = eq.H;
+  for (int d = 0; d < dim; ++d) (*S)(d, d) += lambda * std::max(eq.H(d, d), 1e-6);
+  *rhs = eq.b;
+  inverse->resize(p.points.size());
+  for (size_t pi = 0; pi < p.points.size(); ++pi) {
+    Eigen::Matrix3d Hll = eq.point_hessian[pi];
+    for (int d = 0; d < 3; ++d) Hll(d, d) += lambda * std::max(Hll(d, d), 1e-6) + 1e-9;
+    (*inverse)[pi] = Hll.inverse();
+    const Eigen::Vector3d v = (*inverse)[pi] * eq.point_gradient[pi];
+    const std::vector<int>& es = p.edges_of[pi];
+    for (size_t a = 0; a < es.size(); ++a) {
+      const Edge& ea = p.edges[static_cast<size_t>(es[a])];
+      if (!p.active[static_cast<size_t>(es[a])] || ea.frame < fixed) continue;
+      const Matrix63& Wa = eq.coupling[static_cast<size_t>(es[a])];
+      const Matrix63 WaInv = (Wa * (*inverse)[pi]).eval();
+      const int oa = 6 * (ea.frame - fixed);
+      rhs->segment<6>(oa).noalias() -= Wa * v;
+      // S is symmetric: the blocks at and above the diagonal, mirrored below.
+      for (size_t c = a; c < es.size(); ++c) {
+        const Edge& ec = p.edges[static_cast<size_t>(es[c])];
+        if (!p.active[static_cast<size_t>(es[c])] || ec.frame < fixed) continue;
+        const int oc = 6 * (ec.frame - fixed);
+        const Eigen::Matrix<double, 6, 6> block =
+            WaInv * eq.coupling[static_cast<size_t>(es[c])].transpose();
+        S->block<6, 6>(oa, oc) -= block;
+        if (oc != oa) S->block<6, 6>(oc, oa) -= block.transpose();
+      }
+    }
+  }
+}
+
+// One Levenberg-Marquardt step with damping `lambda`: the moved poses and points and the step's
+// length. False when the solution is not finite.
+bool DampedStep(const Problem& p, const NormalEquations& eq, double lambda,
+                std::vector<Eigen::Isometry3d>* new_poses, std::vector<Eigen::Vector3d>* new_points,
+                double* step) {
+  const int fixed = p.fixed;
+  Eigen::MatrixXd S;
+  Eigen::VectorXd rhs;
+  std::vector<Eigen::Matrix3d> inverse;
+  ReducedSystem(p, eq, lambda, &S, &rhs, &inverse);
+  const Eigen::VectorXd dp = S.ldlt().solve(rhs);
+  if (!dp.allFinite()) return false;
+  *new_poses = p.poses;
+  for (int fi = fixed; fi < static_cast<int>(p.poses.size()); ++fi) {
+    (*new_poses)[static_cast<size_t>(fi)] =
+        Update(p.poses[static_cast<size_t>(fi)], dp.segment<6>(6 * (fi - fixed)));
+  }
+  *new_points = p.points;
+  for (size_t pi = 0; pi < p.points.size(); ++pi) {
+    Eigen::Vector3d g = eq.point_gradient[pi];
+    for (int e : p.edges_of[pi]) {
+      const Edge& edge = p.edges[static_cast<size_t>(e)];
+      if (!p.active[static_cast<size_t>(e)] || edge.frame < fixed) continue;
+      g.noalias() -=
+          eq.coupling[static_cast<size_t>(e)].transpose() * dp.segment<6>(6 * (edge.frame - fixed));
+    }
+    (*new_points)[pi] += inverse[pi] * g;
+  }
+  *step = dp.norm();
+  return true;
+}
+
+// Levenberg-Marquardt over the free poses and the points; drops outliers halfway.
+void Optimize(const WindowBundleOptions& options, Problem* p, WindowBundleSummary* s) {
+  double lambda = 1e-4;
+  double cost = TotalCost(*p, p->poses, p->points, &s->initial_rms_px);
+  const int drop_after = std::max(1, options.max_iterations / 2);
+  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+    if (iteration == drop_after) {
+      s->dropped += DropOutliers(options.max_error_px, p);
+      cost = TotalCost(*p, p->poses, p->points, nullptr);
+    }
+    ++s->iterations;
+    const NormalEquations eq = BuildNormalEquations(*p);
+    // Try steps with growing damping until the cost falls.
+    bool improved = false;
+    for (int attempt = 0; attempt < 6 && !improved; ++attempt) {
+      std::vector<Eigen::Isometry3d> new_poses;
+      std::vector<Eigen::Vector3d> new_points;
+      double step = 0;
+      if (!DampedStep(*p, eq, lambda, &new_poses, &new_points, &step)) {
+        lambda *= 10;
+        continue;
+      }
+      const double new_cost = TotalCost(*p, new_poses, new_points, nullptr);
+      if (new_cost < cost) {
+        improved = true;
+        p->poses = std::move(new_poses);
+        p->points = std::move(new_points);
+        cost = new_cost;
+        lambda = std::max(lambda / 3, 1e-7);
+        if (step < 1e-8) iteration = options.max_iterations;  // Converged.
+      } else {
+        lambda *= 5;
+      }
+    }
+    if (!improved) break;
+  }
+  TotalCost(*p, p->poses, p->points, &s->final_rms_px);
+}
+
+// How often a track is seen usable in the window.
+struct Seen {
+  int count = 0;
+  bool adjusted = false;  // In a frame whose pose is adjusted.
+};
+
+// Usable sightings of every track in the window's frames (WindowBundleAdjuster::Frame).
+template <typename Frames>
+std::unordered_map<int64_t, Seen> CountSightings(const Frames& frames, int fixed) {
+  std::unordered_map<int64_t, Seen> seen;
+  for (int fi = 0; fi < static_cast<int>(frames.size()); ++fi) {
+    const auto& f = frames[static_cast<size_t>(fi)];
+    for (size_t i = 0; i < f.observations.size(); ++i) {
+      if (!f.usable[i]) continue;
+      Seen& t = seen[f.observations[i].track_id];
+      ++t.count;
+      t.adjusted = t.adjusted || fi >= fixed;
+    }
+  }
+  return seen;
+}
+
+// Points: tracks with at least two usable observations, one of them in an adjusted frame; each
+// starts where its largest-disparity observation (best depth) puts it. Fills p->points and
+// p->edges.
+template <typename Frames>
+void CollectPoints(const Frames& frames, const WindowBundleOptions& options,
+                   double disparity_offset_px, Problem* p) {
+  const RectifiedStereoCamera& camera = *p->camera;
+  std::unordered_map<int64_t, Seen> seen = CountSightings(frames, p->fixed);
+  std::unordered_map<int64_t, int> point_of;
+  std::vector<double> best_disparity;
+  for (int fi = 0; fi < static_cast<int>(frames.size()); ++fi) {
+    const auto& f = frames[static_cast<size_t>(fi)];
+    for (size_t i = 0; i < f.observations.size(); ++i) {
+      const TrackObservation& o = f.observations[i];
+      if (!f.usable[i]) continue;
+      const Seen& t = seen[o.track_id];
+      if (t.count < 2 || !t.adjusted) continue;
+      const double right_u = o.right_u - disparity_offset_px;
+      const double disparity = o.left_u - right_u;
+      if (!(disparity > 0)) continue;
+      auto [it, inserted] = point_of.emplace(o.track_id, static_cast<int>(p->points.size()));
+      const Eigen::Vector3d world =
+          f.camera_from_world.inverse() * camera.Triangulate(o.left_u, o.v, disparity);
+      if (inserted) {
+        p->points.push_back(world);
+        best_disparity.push_back(disparity);
+      } else if (disparity > best_disparity[static_cast<size_t>(it->second)]) {
+        p->points[static_cast<size_t>(it->second)] = world;
+        best_disparity[static_cast<size_t>(it->second)] = disparity;
+      }
+      const double weight = options.center_weighting ? CenterWeight(camera, o.left_u) : 1.0;
+      p->edges.push_back(
+          {fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u), static_cast<int>(i), weight});
+    }
+  }
+}
+
 }  // namespace
 
 bool WindowBundleAdjuster::EnoughMotion(const RectifiedStereoCamera& camera, const Frame& from,
@@ -141,6 +425,48 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   WindowBundleSummary local;
   WindowBundleSummary& s = summary ? *summary : local;
   s = WindowBundleSummary();
+  AppendFrame(world_from_camera, std::move(observations));
+  const int n = static_cast<int>(frames_.size());
+  // Frames [0, fixed) hold the gauge; the newest options_.frames - 1 are adjusted.
+  Problem problem;
+  problem.camera = &camera;
+  problem.fixed = std::max(1, n - (options_.frames - 1));
+  problem.huber_px = options_.huber_px;
+  s.frames = std::min(n, options_.frames);
+  s.fixed_frames = n - s.frames;
+  frames_.back().keep =
+      n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
+  if (n < 2) return world_from_camera;
+
+  CollectPoints(frames_, options_, disparity_offset_px, &problem);
+  s.points = static_cast<int>(problem.points.size());
+  s.observations = static_cast<int>(problem.edges.size());
+  // Enough to constrain the free poses (6 each) many times over.
+  if (problem.points.size() < 20) return world_from_camera;
+
+  problem.edges_of.resize(problem.points.size());
+  for (size_t e = 0; e < problem.edges.size(); ++e)
+    problem.edges_of[static_cast<size_t>(problem.edges[e].point)].push_back(static_cast<int>(e));
+  for (const Frame& f : frames_) problem.poses.push_back(f.camera_from_world);
+  problem.active.assign(problem.edges.size(), 1);
+  Optimize(options_, &problem, &s);
+
+  // Keep the refined poses and forget dropped observations for the frames to come.
+  for (int fi = 0; fi < n; ++fi)
+    frames_[static_cast<size_t>(fi)].camera_from_world = problem.poses[static_cast<size_t>(fi)];
+  for (size_t e = 0; e < problem.edges.size(); ++e) {
+    if (!problem.active[e]) {
+      frames_[static_cast<size_t>(problem.edges[e].frame)]
+          .usable[static_cast<size_t>(problem.edges[e].observation)] = 0;
+    }
+  }
+  s.adjusted = true;
+  frames_.back().keep = EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
+  return problem.poses.back().inverse();
+}
+
+void WindowBundleAdjuster::AppendFrame(const Eigen::Isometry3d& world_from_camera,
+                                       std::vector<TrackObservation> observations) {
   Frame frame;
   frame.camera_from_world = world_from_camera.inverse();
   frame.usable.resize(observations.size());
@@ -155,245 +481,6 @@ Eigen::Isometry3d WindowBundleAdjuster::Add(const RectifiedStereoCamera& camera,
   while (static_cast<int>(frames_.size()) > options_.frames + options_.fixed_frames) {
     frames_.pop_front();
   }
-  const int n = static_cast<int>(frames_.size());
-  // Frames [0, fixed) hold the gauge; the newest options_.frames - 1 are adjusted.
-  const int fixed = std::max(1, n - (options_.frames - 1));
-  s.frames = std::min(n, options_.frames);
-  s.fixed_frames = n - s.frames;
-  frames_.back().keep =
-      n < 2 || EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
-  if (n < 2) return world_from_camera;
-
-  // Points: tracks with at least two usable observations, one of them in an adjusted frame.
-  struct Seen {
-    int count = 0;
-    bool adjusted = false;  // In a frame whose pose is adjusted.
-  };
-  std::unordered_map<int64_t, Seen> seen;
-  for (int fi = 0; fi < n; ++fi) {
-    const Frame& f = frames_[static_cast<size_t>(fi)];
-    for (size_t i = 0; i < f.observations.size(); ++i) {
-      if (!f.usable[i]) continue;
-      Seen& t = seen[f.observations[i].track_id];
-      ++t.count;
-      t.adjusted = t.adjusted || fi >= fixed;
-    }
-  }
-  std::unordered_map<int64_t, int> point_of;
-  std::vector<Eigen::Vector3d> points;
-  std::vector<double> best_disparity;
-  std::vector<Edge> edges;
-  for (int fi = 0; fi < n; ++fi) {
-    const Frame& f = frames_[static_cast<size_t>(fi)];
-    for (size_t i = 0; i < f.observations.size(); ++i) {
-      const TrackObservation& o = f.observations[i];
-      if (!f.usable[i]) continue;
-      const Seen& t = seen[o.track_id];
-      if (t.count < 2 || !t.adjusted) continue;
-      const double right_u = o.right_u - disparity_offset_px;
-      const double disparity = o.left_u - right_u;
-      if (!(disparity > 0)) continue;
-      auto [it, inserted] = point_of.emplace(o.track_id, static_cast<int>(points.size()));
-      // Each point starts where its largest-disparity observation (best depth) puts it.
-      const Eigen::Vector3d world =
-          f.camera_from_world.inverse() * camera.Triangulate(o.left_u, o.v, disparity);
-      if (inserted) {
-        points.push_back(world);
-        best_disparity.push_back(disparity);
-      } else if (disparity > best_disparity[static_cast<size_t>(it->second)]) {
-        points[static_cast<size_t>(it->second)] = world;
-        best_disparity[static_cast<size_t>(it->second)] = disparity;
-      }
-      const double weight = options_.center_weighting ? CenterWeight(camera, o.left_u) : 1.0;
-      edges.push_back(
-          {fi, it->second, Eigen::Vector3d(o.left_u, o.v, right_u), static_cast<int>(i), weight});
-    }
-  }
-  s.points = static_cast<int>(points.size());
-  s.observations = static_cast<int>(edges.size());
-  // Enough to constrain the free poses (6 each) many times over.
-  if (points.size() < 20) return world_from_camera;
-
-  // Edges grouped by point, for the Schur complement.
-  std::vector<std::vector<int>> edges_of(points.size());
-  for (size_t e = 0; e < edges.size(); ++e)
-    edges_of[static_cast<size_t>(edges[e].point)].push_back(static_cast<int>(e));
-
-  std::vector<Eigen::Isometry3d> poses;
-  for (const Frame& f : frames_) poses.push_back(f.camera_from_world);
-  std::vector<unsigned char> active(edges.size(), 1);
-  const double k = options_.huber_px;
-
-  // Reprojection error of edge e at poses T and points X [px]; false behind the camera.
-  auto edge_error = [&](const std::vector<Eigen::Isometry3d>& T,
-                        const std::vector<Eigen::Vector3d>& X, size_t e, double* error) {
-    const Edge& edge = edges[e];
-    Eigen::Vector3d p;
-    if (!Project(camera, T[static_cast<size_t>(edge.frame)] * X[static_cast<size_t>(edge.point)],
-                 &p, nullptr)) {
-      return false;
-    }
-    *error = (p - edge.measured).norm();
-    return true;
-  };
-  auto total_cost = [&](const std::vector<Eigen::Isometry3d>& T,
-                        const std::vector<Eigen::Vector3d>& X, double* rms) {
-    double cost = 0, squared = 0;
-    int used = 0;
-    for (size_t e = 0; e < edges.size(); ++e) {
-      if (!active[e]) continue;
-      const Edge& edge = edges[e];
-      double err = 0;
-      if (!edge_error(T, X, e, &err)) {
-        cost += edge.weight * 2 * k * 1e3;  // Behind the camera: a large, finite penalty.
-        continue;
-      }
-      cost += edge.weight * HuberCost(err, k);
-      squared += err * err;
-      ++used;
-    }
-    if (rms) *rms = used ? std::sqrt(squared / used) : 0;
-    return cost;
-  };
-
-  const int free_frames = n - fixed;
-  const int dim = 6 * free_frames;
-  double lambda = 1e-4;
-  double cost = total_cost(poses, points, &s.initial_rms_px);
-  const int drop_after = std::max(1, options_.max_iterations / 2);
-  for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
-    if (iteration == drop_after) {
-      // Observations that still disagree (a track slid along an edge, a walking person).
-      for (size_t e = 0; e < edges.size(); ++e) {
-        if (!active[e]) continue;
-        double err = 0;
-        if (!edge_error(poses, points, e, &err) || err > options_.max_error_px) {
-          active[e] = 0;
-          ++s.dropped;
-        }
-      }
-      cost = total_cost(poses, points, nullptr);
-    }
-    ++s.iterations;
-    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(dim, dim);
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(dim);
-    std::vector<Eigen::Matrix3d> point_hessian(points.size());
-    std::vector<Eigen::Vector3d> point_gradient(points.size());
-    std::vector<Matrix63> coupling(edges.size(), Matrix63::Zero());  // J_pose^T W J_point.
-    for (size_t pi = 0; pi < points.size(); ++pi) {
-      Eigen::Matrix3d Hll = Eigen::Matrix3d::Zero();
-      Eigen::Vector3d bl = Eigen::Vector3d::Zero();
-      for (int e : edges_of[pi]) {
-        if (!active[static_cast<size_t>(e)]) continue;
-        const Edge& edge = edges[static_cast<size_t>(e)];
-        const Eigen::Isometry3d& T = poses[static_cast<size_t>(edge.frame)];
-        const Eigen::Vector3d xc = T * points[pi];
-        Eigen::Vector3d p;
-        Eigen::Matrix3d Jproj;
-        if (!Project(camera, xc, &p, &Jproj)) continue;
-        const Eigen::Vector3d r = p - edge.measured;
-        const double w = edge.weight * HuberWeight(r.norm(), k);
-        const Eigen::Matrix3d Jl = Jproj * T.linear();
-        const Eigen::Matrix3d JlW = w * Jl.transpose();
-        Hll.noalias() += JlW * Jl;
-        bl.noalias() -= JlW * r;
-        if (edge.frame < fixed) continue;
-        Matrix36 Jp;
-        Jp.leftCols<3>().noalias() = -Jproj * Skew(xc);
-        Jp.rightCols<3>() = Jproj;
-        const Matrix63 JpW = w * Jp.transpose();
-        const int o = 6 * (edge.frame - fixed);
-        const Eigen::Matrix<double, 6, 6> Hpp = JpW * Jp;
-        H.block<6, 6>(o, o) += Hpp;
-        b.segment<6>(o).noalias() -= JpW * r;
-        coupling[static_cast<size_t>(e)].noalias() = JpW * Jl;
-      }
-      point_hessian[pi] = Hll;
-      point_gradient[pi] = bl;
-    }
-
-    // Try steps with growing damping until the cost falls.
-    bool improved = false;
-    for (int attempt = 0; attempt < 6 && !improved; ++attempt) {
-      Eigen::MatrixXd S = H;
-      for (int d = 0; d < dim; ++d) S(d, d) += lambda * std::max(H(d, d), 1e-6);
-      Eigen::VectorXd rhs = b;
-      std::vector<Eigen::Matrix3d> inverse(points.size());
-      for (size_t pi = 0; pi < points.size(); ++pi) {
-        Eigen::Matrix3d Hll = point_hessian[pi];
-        for (int d = 0; d < 3; ++d) Hll(d, d) += lambda * std::max(Hll(d, d), 1e-6) + 1e-9;
-        inverse[pi] = Hll.inverse();
-        const Eigen::Vector3d v = inverse[pi] * point_gradient[pi];
-        const std::vector<int>& es = edges_of[pi];
-        for (size_t a = 0; a < es.size(); ++a) {
-          const Edge& ea = edges[static_cast<size_t>(es[a])];
-          if (!active[static_cast<size_t>(es[a])] || ea.frame < fixed) continue;
-          const Matrix63& Wa = coupling[static_cast<size_t>(es[a])];
-          const Matrix63 WaInv = (Wa * inverse[pi]).eval();
-          const int oa = 6 * (ea.frame - fixed);
-          rhs.segment<6>(oa).noalias() -= Wa * v;
-          // S is symmetric: the blocks at and above the diagonal, mirrored below.
-          for (size_t c = a; c < es.size(); ++c) {
-            const Edge& ec = edges[static_cast<size_t>(es[c])];
-            if (!active[static_cast<size_t>(es[c])] || ec.frame < fixed) continue;
-            const int oc = 6 * (ec.frame - fixed);
-            const Eigen::Matrix<double, 6, 6> block =
-                WaInv * coupling[static_cast<size_t>(es[c])].transpose();
-            S.block<6, 6>(oa, oc) -= block;
-            if (oc != oa) S.block<6, 6>(oc, oa) -= block.transpose();
-          }
-        }
-      }
-      const Eigen::VectorXd dp = S.ldlt().solve(rhs);
-      if (!dp.allFinite()) {
-        lambda *= 10;
-        continue;
-      }
-      std::vector<Eigen::Isometry3d> new_poses = poses;
-      for (int fi = fixed; fi < n; ++fi) {
-        new_poses[static_cast<size_t>(fi)] =
-            Update(poses[static_cast<size_t>(fi)], dp.segment<6>(6 * (fi - fixed)));
-      }
-      std::vector<Eigen::Vector3d> new_points = points;
-      for (size_t pi = 0; pi < points.size(); ++pi) {
-        Eigen::Vector3d g = point_gradient[pi];
-        for (int e : edges_of[pi]) {
-          const Edge& edge = edges[static_cast<size_t>(e)];
-          if (!active[static_cast<size_t>(e)] || edge.frame < fixed) continue;
-          g.noalias() -= coupling[static_cast<size_t>(e)].transpose() *
-                         dp.segment<6>(6 * (edge.frame - fixed));
-        }
-        new_points[pi] += inverse[pi] * g;
-      }
-      const double new_cost = total_cost(new_poses, new_points, nullptr);
-      if (new_cost < cost) {
-        improved = true;
-        const double step = dp.norm();
-        poses = std::move(new_poses);
-        points = std::move(new_points);
-        cost = new_cost;
-        lambda = std::max(lambda / 3, 1e-7);
-        if (step < 1e-8) iteration = options_.max_iterations;  // Converged.
-      } else {
-        lambda *= 5;
-      }
-    }
-    if (!improved) break;
-  }
-  total_cost(poses, points, &s.final_rms_px);
-
-  // Keep the refined poses and forget dropped observations for the frames to come.
-  for (int fi = 0; fi < n; ++fi)
-    frames_[static_cast<size_t>(fi)].camera_from_world = poses[static_cast<size_t>(fi)];
-  for (size_t e = 0; e < edges.size(); ++e) {
-    if (!active[e]) {
-      frames_[static_cast<size_t>(edges[e].frame)]
-          .usable[static_cast<size_t>(edges[e].observation)] = 0;
-    }
-  }
-  s.adjusted = true;
-  frames_.back().keep = EnoughMotion(camera, frames_[static_cast<size_t>(n - 2)], frames_.back());
-  return poses.back().inverse();
 }
 
 }  // namespace sightline

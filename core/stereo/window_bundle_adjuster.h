@@ -85,6 +85,10 @@ class WindowBundleAdjuster {
     bool keep = true;  // Stays when the next frame arrives (else the next frame replaces it).
   };
 
+  // Appends the frame with its usable observations (replacing the last frame when it did not
+  // move enough) and drops the frames beyond the window and its fixed observers.
+  void AppendFrame(const Eigen::Isometry3d& world_from_camera,
+                   std::vector<TrackObservation> observations);
   // Whether `to` moved enough from `from` to stay in the window (see WindowBundleOptions).
   bool EnoughMotion(const RectifiedStereoCamera& camera, const Frame& from, const Frame& to) const;
 

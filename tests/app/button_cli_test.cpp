@@ -3,6 +3,7 @@
 // its accuracy against the true button centres, a listening arm client receiving the targets,
 // and a tap on the blank wall.
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -125,6 +126,61 @@ TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   EXPECT_GT(testing::JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0);
   EXPECT_EQ(testing::JsonNumber(metrics, "counts", "arm_clients_at_start").value_or(0), 2);
+}
+
+TEST_F(ButtonCli, SigtermSendsTheArmClientsAStopLine) {
+  int port = 0;
+  {  // A free port on loopback.
+    ArmServerOptions probe;
+    probe.port = 0;
+    auto server = ArmServer::Start(probe);
+    ASSERT_TRUE(server.ok()) << server.status().ToString();
+    port = (*server)->port();
+  }
+  const std::string out = testing::TempDir("button_cli_sigterm");
+  const std::string pid_file = out + "/run.pid";
+  testing::ProcessResult run;
+  std::thread runner([&] {
+    run = testing::RunProcess("echo $$ > " + pid_file + "; exec " + kCli + " run button " + *dir_ +
+                              " --tap " + TapOnTarget() + " --out " + out + " --serve 127.0.0.1:" +
+                              std::to_string(port) + " --set button.run.wait_clients=1");
+  });
+  std::optional<ArmClient> client;
+  for (int attempt = 0; attempt < 600 && !client; ++attempt) {
+    auto c = ArmClient::Connect("127.0.0.1", port, "", 1000);
+    if (c.ok()) {
+      client.emplace(std::move(*c));
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  ASSERT_TRUE(client.has_value()) << "the button run never served port " << port;
+  // The run is serving (a heartbeat came): terminate it the way a service manager does.
+  StatusOr<std::string> first = client->ReadLine(60000);
+  ASSERT_TRUE(first.ok()) << first.status().ToString();
+  const int pid = std::atoi(testing::ReadTextFile(pid_file).c_str());
+  ASSERT_GT(pid, 0);
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  std::string stop;
+  for (int i = 0; i < 10000 && stop.empty(); ++i) {
+    StatusOr<std::string> line = client->ReadLine(60000);
+    ASSERT_TRUE(line.ok()) << "no stop line before: " << line.status().ToString();
+    if (line->find("\"type\":\"stop\"") != std::string::npos) stop = *line;
+  }
+  EXPECT_NE(stop.find("\"reason\":\"cancelled\""), std::string::npos) << stop;
+  EXPECT_EQ(client->ReadLine(10000).status().code(), StatusCode::kUnavailable);  // Then closed.
+  runner.join();
+  EXPECT_NE(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("cancelled"), std::string::npos) << run.out;
+}
+
+TEST_F(ButtonCli, ServingBeyondLoopbackNeedsAToken) {
+  const std::string out = testing::TempDir("button_cli_public");
+  const testing::ProcessResult r =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " +
+                          out + " --serve 0.0.0.0:5757");
+  EXPECT_NE(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("button.arm.token"), std::string::npos) << r.out;
 }
 
 TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {

@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <cstring>
 
+#include "tests/support/isolated_home.h"
 #include "widgets/vtk_gl_widget.h"
 
 int main(int argc, char** argv) {
@@ -14,6 +15,8 @@ int main(int argc, char** argv) {
       return RUN_ALL_TESTS();
     }
   }
+  const sightline::testing::IsolatedHome home;  // Never the user's settings.
+  if (home.path().empty()) return 2;
   sightline::VtkGlWidget::SetDefaultSurfaceFormat();
   QApplication app(argc, argv);
   QApplication::setOrganizationName("SightlineTests");

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <QDir>
+#include <QFile>
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iterator>
@@ -95,6 +98,17 @@ TEST(MainWindow, OpensTumStepsThreeFramesAndDrawsTheCloud) {
   EXPECT_GT(ForegroundPixels(frame, centre), centre_samples / 2)
       << "the centre of the 3D view is not covered by the cloud";
   EXPECT_GT(drawn, 1000) << "the 3D view shows too few cloud pixels: " << drawn;
+}
+
+TEST(GuiTests, UseTheirOwnSettingsFolderNotTheUsers) {
+  const char* home = std::getenv("SIGHTLINE_GUI_TEST_HOME");
+  ASSERT_NE(home, nullptr) << "gui_test_main.cpp sets up a folder per test process";
+  QSettings settings;
+  settings.setValue("probe", 1);
+  settings.sync();
+  EXPECT_TRUE(settings.fileName().startsWith(QString::fromUtf8(home)))
+      << settings.fileName().toStdString();
+  EXPECT_TRUE(QFile::exists(settings.fileName()));
 }
 
 TEST(MainWindow, MissingDatasetIsReportedNotFatal) {

@@ -7,10 +7,13 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
+#include <cmath>
 
 #include "app/sightline/main_window.h"
 #include "app/sightline/mobility_views.h"
 #include "app/sightline/playback_controller.h"
+#include "core/io/floor_file.h"
+#include "core/pipeline/mobility_pipeline.h"
 #include "tests/support/test_data.h"
 #include "widgets/image_view.h"
 #include "widgets/parameter_panel.h"
@@ -71,6 +74,51 @@ TEST(MobilityPresenter, ShowsScoredCloudProjectionAndTimingWhilePlayingTum) {
   EXPECT_EQ(shown.last().at(0).value<int64_t>(), 2);  // The same frame again.
   EXPECT_EQ(table->item(0, 2)->text(), "307200");
   EXPECT_LT(table->item(1, 2)->text().toInt(), 640 * 480 / 64 + 1);  // 8 px stride.
+}
+
+// The GUI runs the registry's pipeline object, the one `sightline-cli run mobility` runs, so it
+// honours every option the CLI does: mobility.run.floor_file gives the expected up direction.
+TEST(MobilityPresenter, RunsTheRegistryPipelineWhichHonoursTheFloorFile) {
+  MobilityPresenter presenter;
+  EXPECT_EQ(presenter.info().name, "mobility");
+  OptionSet options;
+  ASSERT_TRUE(presenter.DeclareOptions(&options).ok());
+  const std::string dir = testing::TempDir("gui_mobility_floor");
+  FloorCalibration floor;
+  floor.plane.normal = Eigen::Vector3d(0, -std::cos(0.4), std::sin(0.4));
+  floor.plane.d = 1.2;
+  ASSERT_TRUE(WriteFloorCalibration(floor, dir + "/floor.yaml").ok());
+  ASSERT_TRUE(options.ApplyOverride("mobility.run.floor_file=" + dir + "/floor.yaml").ok());
+
+  PipelineSource source;
+  source.info.kind = SourceKind::kCloud;
+  source.info.path = dir;
+  std::unique_ptr<Pipeline> pipeline = presenter.CreateProcessor(source);
+  ASSERT_NE(pipeline, nullptr);
+  EXPECT_NE(dynamic_cast<MobilityPipeline*>(pipeline.get()), nullptr);
+  ASSERT_TRUE(pipeline->Configure(options).ok());
+  ASSERT_TRUE(pipeline->Open(source).ok());
+  // An organized 61 x 61 patch of the floor 1.2 m below the camera, 1-4 m ahead.
+  CloudFrame frame;
+  auto cloud = std::make_shared<PointCloud>();
+  const Eigen::Vector3d n = floor.plane.normal;
+  const Eigen::Vector3d ahead = (Eigen::Vector3d::UnitZ() - n.z() * n).normalized();
+  const Eigen::Vector3d side = n.cross(ahead);
+  for (int i = 0; i <= 60; ++i) {
+    for (int j = -30; j <= 30; ++j) {
+      const Eigen::Vector3d p = -1.2 * n + (1.0 + 0.05 * i) * ahead + 0.05 * j * side;
+      cloud->points.push_back(p.cast<float>());
+    }
+  }
+  cloud->width = 61;
+  cloud->height = 61;
+  frame.cloud = cloud;
+  StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline->Process(Frame(frame));
+  ASSERT_TRUE(result.ok()) << result.status().ToString();
+  const auto* mobility = dynamic_cast<const MobilityFrameResult*>(result->get());
+  ASSERT_NE(mobility, nullptr);
+  ASSERT_NE(mobility->mobility, nullptr);
+  EXPECT_LT((mobility->mobility->expected_up - n).norm(), 1e-6);
 }
 
 }  // namespace

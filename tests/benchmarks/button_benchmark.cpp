@@ -3,12 +3,22 @@
 // 20 ms median) and over the whole image, detection from a tap, the plane locator, and the
 // compute latency from a tap to the first target (detect, track the next frame, locate, gate,
 // publish).
+// On the 38 real panel photos (../shared/data/button_panels, or $SIGHTLINE_DATA_DIR): the region
+// and the whole detection (region + SIFT) from a tap at each labelled button's centre, one tap
+// per iteration in turn, for the multiscale method and the seed's rule.
 // Run: taskset -c 1 build/bin/bench_button --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <map>
 #include <opencv2/core/utility.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <random>
+#include <sstream>
 
 #include "core/button/arm_server.h"
 #include "core/button/button_detector.h"
@@ -99,6 +109,86 @@ void BM_DetectFromTap(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(detector.Detect(a.frames[0].image, a.Project(0)));
 }
 BENCHMARK(BM_DetectFromTap)->Unit(benchmark::kMillisecond);
+
+// Taps at the centres of the labelled buttons, with their photos.
+struct RealTaps {
+  std::map<std::string, cv::Mat> photos;
+  std::vector<std::pair<const cv::Mat*, cv::Point2d>> taps;
+};
+
+const RealTaps& RealPanelTaps() {
+  static const RealTaps real = [] {
+    RealTaps r;
+    const char* env = std::getenv("SIGHTLINE_DATA_DIR");
+    const std::string dir =
+        std::string(env ? env : SIGHTLINE_DEFAULT_DATA_DIR) + "/button_panels/test_panels/";
+    std::ifstream in(SIGHTLINE_BUTTON_LABELS);
+    std::string line;
+    std::vector<std::pair<std::string, cv::Point2d>> wanted;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::vector<std::string> f;
+      std::stringstream ss(line);
+      std::string field;
+      while (std::getline(ss, field, ',')) f.push_back(field);
+      if (f.size() < 6 || f[1] != "button") continue;
+      wanted.push_back(
+          {f[0],
+           {0.5 * (std::stod(f[2]) + std::stod(f[4])), 0.5 * (std::stod(f[3]) + std::stod(f[5]))}});
+    }
+    for (const auto& [file, tap] : wanted) {
+      cv::Mat& photo = r.photos[file];
+      if (photo.empty()) photo = cv::imread(dir + file);
+    }
+    for (const auto& [file, tap] : wanted) {
+      const cv::Mat& photo = r.photos[file];
+      if (!photo.empty()) r.taps.push_back({&photo, tap});
+    }
+    return r;
+  }();
+  return real;
+}
+
+void RealPanels(benchmark::State& state, const std::string& method, bool features) {
+  cv::setNumThreads(1);
+  const RealTaps& real = RealPanelTaps();
+  if (real.taps.empty()) return state.SkipWithError("real panel photos or labels not found");
+  ButtonDetectorOptions options;
+  options.method = method;
+  const ButtonDetector detector(options);
+  size_t i = 0;
+  int found = 0;
+  std::vector<double> ms;  // Per tap.
+  for (auto _ : state) {
+    const auto& [photo, tap] = real.taps[i];
+    const auto start = std::chrono::steady_clock::now();
+    if (features) {
+      auto model = detector.Detect(*photo, tap);
+      found += model.ok() ? 1 : 0;
+    } else {
+      auto region = detector.FindRegion(*photo, tap);
+      found += region.ok() ? 1 : 0;
+    }
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count());
+    i = (i + 1) % real.taps.size();
+  }
+  if (!ms.empty()) {  // The per-tap median and 90th percentile, over the taps timed.
+    std::sort(ms.begin(), ms.end());
+    state.counters["median_ms"] = ms[ms.size() / 2];
+    state.counters["p90_ms"] = ms[ms.size() * 9 / 10];
+  }
+  state.counters["taps"] = double(real.taps.size());
+  state.counters["found"] = benchmark::Counter(found, benchmark::Counter::kAvgIterations);
+}
+
+void BM_RealPanelRegion(benchmark::State& state) { RealPanels(state, "multiscale", false); }
+void BM_RealPanelDetect(benchmark::State& state) { RealPanels(state, "multiscale", true); }
+void BM_RealPanelRegionSeed(benchmark::State& state) { RealPanels(state, "seed", false); }
+// Each run covers every tap at least once (the labels hold about 390).
+BENCHMARK(BM_RealPanelRegion)->Unit(benchmark::kMillisecond)->Iterations(400);
+BENCHMARK(BM_RealPanelDetect)->Unit(benchmark::kMillisecond)->Iterations(400);
+BENCHMARK(BM_RealPanelRegionSeed)->Unit(benchmark::kMillisecond)->Iterations(400);
 
 // 300 map points around the button from the exact depth, 20 % outliers.
 std::vector<Eigen::Vector3d> MapPoints(const Approach& a, size_t f) {

@@ -4,10 +4,12 @@
 
 #include <QApplication>
 
+#include "tests/support/isolated_home.h"
 #include "widgets/vtk_gl_widget.h"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
+  const sightline::testing::IsolatedHome home;  // Never the user's settings.
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
   sightline::VtkGlWidget::SetDefaultSurfaceFormat();
   QApplication app(argc, argv);

@@ -66,7 +66,7 @@ TEST(ArmServer, AClientReceivesTargetsWithTheSchema) {
   const std::string line = NextMessage(client);
   ASSERT_FALSE(line.empty());
   const std::regex schema(
-      R"(\{"version":1,"type":"target","seq":(\d+),"stamp":[0-9.e+]+,"frame_stamp":12\.5,)"
+      R"(\{"version":2,"type":"target","seq":(\d+),"stamp":\d{10}\.\d{6},"frame_stamp":12\.500000,)"
       R"("frame_id":"arm_base","position_m":\[0\.512,-0\.031,0\.318\],"approach":\[1,0,0\],)"
       R"("uncertainty_m":0\.0021,"source_frames":\[41,42\]\})");
   std::smatch m;
@@ -81,7 +81,7 @@ TEST(ArmServer, HeartbeatsArrive) {
   ArmClient client = Connect(*server);
   auto line = client.ReadLine(2000);
   ASSERT_TRUE(line.ok()) << line.status().ToString();
-  EXPECT_NE(line->find(R"("version":1,"type":"heartbeat")"), std::string::npos) << *line;
+  EXPECT_NE(line->find(R"("version":2,"type":"heartbeat")"), std::string::npos) << *line;
   EXPECT_NE(line->find(R"("targets_enabled":true)"), std::string::npos) << *line;
 }
 
@@ -95,13 +95,15 @@ TEST(ArmServer, WithoutTheTokenAClientReceivesNothing) {
   ArmClient silent = Connect(*server);
   ASSERT_TRUE(WaitForClients(*server, 1));
   server->PublishTarget(Target());
-  server->PublishStop("test");
   EXPECT_NE(NextMessage(good).find("\"type\":\"target\""), std::string::npos);
-  // Heartbeats every 10 ms would have arrived by now; neither client gets a single byte.
-  EXPECT_EQ(wrong.ReadLine(300).status().code(), StatusCode::kOutOfRange);
+  server->PublishStop("test");
+  EXPECT_NE(NextMessage(good).find("\"type\":\"stop\""), std::string::npos);
+  // Heartbeats every 10 ms would have arrived by now; neither client gets a single byte: the
+  // wrong token is closed, the silent one waits for its handshake deadline (2 s).
+  EXPECT_EQ(wrong.ReadLine(2000).status().code(), StatusCode::kUnavailable);
   EXPECT_EQ(silent.ReadLine(50).status().code(), StatusCode::kOutOfRange);
-  EXPECT_EQ(server->Stats().clients, 3);
   EXPECT_EQ(server->Stats().authorised, 1);
+  EXPECT_EQ(server->Stats().token_failures, 1);
 }
 
 TEST(ArmServer, SeveralClientsEachReceiveEverything) {
@@ -192,7 +194,26 @@ TEST(ArmServer, ADeadClientDoesNotStallPublishingOrOthers) {
   EXPECT_LT(publish_s, 30.0);
 }
 
-TEST(ArmServer, MalformedClientInputIsIgnored) {
+TEST(ArmServer, AMalformedTokenLineClosesTheConnection) {
+  ArmServerOptions o;
+  o.token = "tok";
+  o.heartbeat_s = 0;
+  o.max_line_bytes = 64;
+  auto server = StartServer(o);
+  const std::vector<std::string> attempts = {"not json\n", "{\"token\": 5}\n",
+                                             "{\"token\":\"tok\"\n", std::string(5000, 'x'),
+                                             std::string("\0\xff\n", 3)};
+  for (const std::string& bytes : attempts) {
+    auto raw = ArmClient::Connect("127.0.0.1", server->port(), "");
+    ASSERT_TRUE(raw.ok());
+    ASSERT_TRUE(raw->Send(bytes).ok());
+    EXPECT_EQ(raw->ReadLine(2000).status().code(), StatusCode::kUnavailable) << bytes.size();
+  }
+  EXPECT_EQ(server->Stats().token_failures, int64_t(attempts.size()));
+  EXPECT_EQ(server->Stats().authorised, 0);
+}
+
+TEST(ArmServer, ClientInputAfterTheHandshakeIsIgnored) {
   ArmServerOptions o;
   o.token = "tok";
   o.heartbeat_s = 0;
@@ -200,18 +221,16 @@ TEST(ArmServer, MalformedClientInputIsIgnored) {
   auto server = StartServer(o);
   auto raw = ArmClient::Connect("127.0.0.1", server->port(), "");
   ASSERT_TRUE(raw.ok());
-  ASSERT_TRUE(raw->Send("not json\n{\"token\": 5}\n{\"token\":\"tok\"\n").ok());
-  ASSERT_TRUE(raw->Send(std::string(5000, 'x') + "\n" + std::string("\0\xff\n", 3)).ok());
-  ASSERT_TRUE(raw->Send("{\"token\": \"tok\", \"client\": \"arm\"}\n").ok());  // Valid at last.
+  ASSERT_TRUE(raw->Send("{\"token\": \"tok\", \"client\": \"arm\"}\n").ok());
   ASSERT_TRUE(WaitForClients(*server, 1));
-  ASSERT_TRUE(raw->Send("{\"garbage\n\n\n").ok());  // After the handshake: ignored too.
+  ASSERT_TRUE(raw->Send("{\"garbage\n\n\n" + std::string(200, 'y') + "\n").ok());
   server->PublishTarget(Target());
   EXPECT_NE(NextMessage(*raw).find("\"type\":\"target\""), std::string::npos);
-  EXPECT_GE(server->Stats().ignored_lines, 5);
   // A client that connects and disconnects at once does no harm.
   { auto gone = ArmClient::Connect("127.0.0.1", server->port(), ""); }
   server->PublishTarget(Target());
   EXPECT_NE(NextMessage(*raw).find("\"type\":\"target\""), std::string::npos);
+  EXPECT_EQ(server->Stats().ignored_lines, 4);
 }
 
 TEST(ArmServer, OptionsAndBindingErrors) {
@@ -241,7 +260,27 @@ TEST(ArmProtocol, ParsesOnlyAValidTokenLine) {
   EXPECT_FALSE(ParseTokenLine(""));
   EXPECT_FALSE(ParseTokenLine("[1,2]"));
   EXPECT_EQ(StopLine(3, 1.5, "operator"),
-            "{\"version\":1,\"type\":\"stop\",\"seq\":3,\"stamp\":1.5,\"reason\":\"operator\"}\n");
+            "{\"version\":2,\"type\":\"stop\",\"seq\":3,\"stamp\":1.500000,"
+            "\"reason\":\"operator\"}\n");
+}
+
+TEST(ArmProtocol, StampsHaveMicroseconds) {
+  const std::string stop = StopLine(0, 1763805600.123456, "x");
+  EXPECT_NE(stop.find("\"stamp\":1763805600.123456,"), std::string::npos) << stop;
+  ArmTarget t;
+  t.stamp_s = 12.000042;
+  const std::string target = TargetLine(1, 1763805600.5, t);
+  EXPECT_NE(target.find("\"stamp\":1763805600.500000,"), std::string::npos) << target;
+  EXPECT_NE(target.find("\"frame_stamp\":12.000042,"), std::string::npos) << target;
+}
+
+TEST(ArmProtocol, TokensMatchOnlyWhenEqual) {
+  EXPECT_TRUE(TokensMatch("s3cret", "s3cret"));
+  EXPECT_FALSE(TokensMatch("s3cre", "s3cret"));
+  EXPECT_FALSE(TokensMatch("s3crett", "s3cret"));
+  EXPECT_FALSE(TokensMatch("S3cret", "s3cret"));
+  EXPECT_FALSE(TokensMatch("", "s3cret"));
+  EXPECT_FALSE(TokensMatch(std::string("s3cret\0", 7), "s3cret"));
 }
 
 TEST(ArmClient, ParsesAddresses) {

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 
 #include "tests/core/io/io_test_util.h"
 #include "tests/support/test_data.h"
@@ -139,19 +141,19 @@ TEST(PcdSourceTest, GarbageFileIsParseErrorNamingTheFile) {
   EXPECT_THAT(status.message(), HasSubstr("broken.pcd"));
 }
 
-TEST(PcdSourceTest, TruncatedDataIsParseErrorAtRetrieve) {
+TEST(PcdSourceTest, TruncatedCompressedDataIsParseErrorWhenOpening) {
   SIGHTLINE_REQUIRE_DATA(office, "pcl_clouds/office1.pcd");
   const std::string dir = TempDir("pcd_truncated");
   std::ifstream in(office, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(bytes.size(), 100000u);
   WriteText(dir + "/cut.pcd", bytes.substr(0, bytes.size() / 3));
-  PcdSource source(dir + "/cut.pcd");
-  ASSERT_TRUE(source.Open().ok());  // The header is intact.
-  ASSERT_TRUE(source.Grab().ok());
-  const Status status = source.Retrieve().status();
+  // The compressed block's size, in front of it, no longer fits the file: refused at once.
+  const Status status = PcdSource(dir + "/cut.pcd").Open();
   EXPECT_EQ(status.code(), StatusCode::kParseError);
   EXPECT_THAT(status.message(), HasSubstr("cut.pcd"));
+  EXPECT_THAT(status.message(), HasSubstr("does not fit in the file"));
+  EXPECT_EQ(ReadPcdFile(dir + "/cut.pcd").status().code(), StatusCode::kParseError);
 }
 
 TEST(PcdSourceTest, TruncatedBinaryIsParseErrorWhenOpening) {
@@ -181,6 +183,96 @@ TEST(PcdSourceTest, MissingAndEmptyAreNotFound) {
   EXPECT_EQ(status.code(), StatusCode::kNotFound);
   EXPECT_THAT(status.message(), HasSubstr("gone.pcd"));
   EXPECT_EQ(ReadPcdFile(dir + "/gone.pcd").status().code(), StatusCode::kNotFound);
+}
+
+// Hostile PCD files: each is refused when opening and when reading, naming the file and what is
+// wrong, before anything the header declares is allocated.
+class HostilePcd : public ::testing::Test {
+ protected:
+  // Expects both entry points to refuse `name` with a message holding `why`.
+  static void ExpectRefused(const std::string& path, const std::string& why) {
+    auto cloud = ReadPcdFile(path);
+    EXPECT_EQ(cloud.status().code(), StatusCode::kParseError) << cloud.status().ToString();
+    EXPECT_THAT(cloud.status().message(), HasSubstr(path));
+    EXPECT_THAT(cloud.status().message(), HasSubstr(why));
+    const Status opened = PcdSource(path).Open();
+    EXPECT_EQ(opened.code(), StatusCode::kParseError) << opened.ToString();
+    EXPECT_THAT(opened.message(), HasSubstr(why));
+  }
+  static std::string Header(const std::string& size, const std::string& type, int width, int height,
+                            long long points, const std::string& data) {
+    return "VERSION 0.7\nFIELDS x y z\nSIZE " + size + "\nTYPE " + type + "\nCOUNT 1 1 1\nWIDTH " +
+           std::to_string(width) + "\nHEIGHT " + std::to_string(height) +
+           "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(points) + "\nDATA " + data + "\n";
+  }
+  // A real compressed cloud's bytes, with `edit` applied.
+  static std::string RealCompressed() {
+    const std::string path = testing::DataPath("pcl_clouds/milk_cartoon_all_small_clorox.pcd");
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  const std::string dir_ = TempDir("pcd_hostile");
+};
+
+TEST_F(HostilePcd, CompressedHeaderWithAZeroBodyIsRefused) {
+  const std::string text =
+      "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH 64\n"
+      "HEIGHT 48\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3072\nDATA binary_compressed\n";
+  WriteText(dir_ + "/zeros.pcd", text + std::string(308, '\0'));
+  ExpectRefused(dir_ + "/zeros.pcd", "cannot fit in 308 bytes");
+  // A body long enough to pass the size bound still declares an empty block.
+  WriteText(dir_ + "/zeros_long.pcd", text + std::string(400, '\0'));
+  ExpectRefused(dir_ + "/zeros_long.pcd", "binary_compressed block of 0 bytes");
+}
+
+TEST_F(HostilePcd, RealCompressedCloudWithTenTimesThePointsIsRefused) {
+  SIGHTLINE_REQUIRE_DATA(milk, "pcl_clouds/milk_cartoon_all_small_clorox.pcd");
+  std::string bytes = RealCompressed();
+  const size_t width = bytes.find("WIDTH 640\n"), points = bytes.find("POINTS 307200\n");
+  ASSERT_NE(width, std::string::npos);
+  ASSERT_NE(points, std::string::npos);
+  bytes.replace(points, 14, "POINTS 3072000\n");
+  bytes.replace(width, 10, "WIDTH 6400\n");
+  WriteText(dir_ + "/ten_times.pcd", bytes);
+  ExpectRefused(dir_ + "/ten_times.pcd", "expands to");
+}
+
+TEST_F(HostilePcd, CompressedSizeOfNearlyFourGigabytesIsRefused) {
+  SIGHTLINE_REQUIRE_DATA(milk, "pcl_clouds/milk_cartoon_all_small_clorox.pcd");
+  std::string bytes = RealCompressed();
+  const size_t data = bytes.find("DATA binary_compressed\n");
+  ASSERT_NE(data, std::string::npos);
+  const uint32_t huge = 0xFFFFFFF0u;
+  bytes.replace(data + 23 + 4, 4, reinterpret_cast<const char*>(&huge), 4);
+  WriteText(dir_ + "/huge.pcd", bytes);
+  ExpectRefused(dir_ + "/huge.pcd", "expands to 4294967280 bytes");
+}
+
+TEST_F(HostilePcd, HeadersThatLieAboutTheirSizeAreRefusedBeforeAllocating) {
+  WriteText(dir_ + "/ascii.pcd",
+            Header("4 4 4", "F F F", 250000000, 1, 250000000, "ascii") + "1 2 3\n");
+  ExpectRefused(dir_ + "/ascii.pcd", "at most 50000000");
+  WriteText(dir_ + "/ascii_small.pcd",
+            Header("4 4 4", "F F F", 2000000, 1, 2000000, "ascii") + std::string(86000, '1'));
+  ExpectRefused(dir_ + "/ascii_small.pcd", "cannot fit");
+  WriteText(dir_ + "/binary.pcd",
+            Header("4 4 4", "F F F", 2000000, 1, 2000000, "binary") + std::string(1200, '\0'));
+  ExpectRefused(dir_ + "/binary.pcd", "truncated");
+  // The cap + 1.
+  WriteText(dir_ + "/cap.pcd",
+            Header("4 4 4", "F F F", 50000001, 1, 50000001, "binary") + std::string(12, '\0'));
+  ExpectRefused(dir_ + "/cap.pcd", "50000001 points; at most 50000000");
+}
+
+TEST_F(HostilePcd, InconsistentFieldsAreRefused) {
+  const float xyz[3] = {1, 2, 3};
+  const std::string point(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+  WriteText(dir_ + "/size3.pcd", Header("3 3 3", "F F F", 1, 1, 1, "binary") + point);
+  ExpectRefused(dir_ + "/size3.pcd", "field 'x'");
+  WriteText(dir_ + "/points.pcd", Header("4 4 4", "F F F", 2, 1, 1, "binary") + point + point);
+  ExpectRefused(dir_ + "/points.pcd", "is not POINTS");
+  WriteText(dir_ + "/double.pcd", Header("8 8 8", "F F F", 1, 1, 1, "binary") + point + point);
+  ExpectRefused(dir_ + "/double.pcd", "4-byte float");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "tests/support/test_data.h"
 
@@ -77,6 +78,23 @@ TEST(OptionSet, YamlRoundTrip) {
   }
 }
 
+TEST(OptionSet, YamlCommentStandsOnItsOwnKeysLine) {
+  OptionSet set = MakeSet();
+  ASSERT_TRUE(set.Set("mapping.extractor", std::string("split_merge")).ok());
+  const std::string yaml = set.ToYaml();
+  EXPECT_NE(yaml.find("  cell_size_m: 0.025  # Cell size. [m]\n"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("  extractor: split_merge  # Extractor.\n"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("    max_iterations: 250  # Iterations.\n"), std::string::npos) << yaml;
+  // No line holds a comment alone or a comment belonging to another key.
+  std::stringstream lines(yaml);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t hash = line.find('#');
+    if (hash == std::string::npos) continue;
+    EXPECT_NE(line.find(':'), std::string::npos) << "comment without a key: " << line;
+    EXPECT_LT(line.find(':'), hash) << line;
+  }
+}
+
 TEST(OptionSet, DottedKeysInYamlWork) {
   OptionSet set = MakeSet();
   ASSERT_TRUE(set.LoadYamlText("mapping.ransac.max_iterations: 42\n", "p.yaml").ok());
@@ -133,6 +151,86 @@ TEST(OptionSet, ResetRestoresDefaults) {
   ASSERT_TRUE(set.ApplyOverride("mapping.cell_size_m=0.5").ok());
   set.ResetToDefaults();
   EXPECT_DOUBLE_EQ(std::get<double>(*set.Get("mapping.cell_size_m")), 0.025);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// Hostile profiles: each is refused with a message naming the file and the cause, quickly and
+// without allocating more than the file's size.
+class HostileProfile : public ::testing::Test {
+ protected:
+  Status Load(const std::string& text) {
+    const std::string path = testing::TempDir("options") + "/hostile.yaml";
+    std::ofstream(path, std::ios::binary) << text;
+    path_ = path;
+    return set_.LoadYaml(path);
+  }
+  OptionSet set_ = MakeSet();
+  std::string path_;
+};
+
+TEST_F(HostileProfile, SequenceOrMapAsKeyIsRefused) {
+  Status s = Load("[a, b]: 1\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("line 1"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("key must be a word"), std::string::npos) << s.message();
+  s = Load("mapping:\n  {x: 1}: 2\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("line 2"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, NestedAliasesDoNotExpand) {
+  // Nine levels of maps holding ten aliases of the level below would be 10^10 values.
+  auto level = [](int i) {
+    std::string map = "a" + std::to_string(i) + ": &a" + std::to_string(i) + " {";
+    for (int k = 0; k < 10; ++k) {
+      map += (k ? ", k" : "k") + std::to_string(k) + ": " +
+             (i == 0 ? std::string("1") : "*a" + std::to_string(i - 1));
+    }
+    return map + "}\n";
+  };
+  std::string text;
+  for (int i = 0; i <= 9; ++i) text += level(i);
+  const Status s = Load(text);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.code(), StatusCode::kParseError) << s.ToString();
+  EXPECT_NE(s.message().find("more than 10000 values"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, DeepNestingIsRefusedBeforeParsing) {
+  const Status s = Load("mapping: " + std::string(100000, '[') + "\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("nest deeper"), std::string::npos) << s.message();
+}
+
+TEST_F(HostileProfile, DuplicateKeysAreRefusedNamingBothLines) {
+  Status s = Load("mapping:\n  cell_size_m: 0.05\n  cell_size_m: 0.07\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("given twice"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("line 2"), std::string::npos) << s.message();
+  s = Load("mapping:\n  cell_size_m: 0.05\nmapping.cell_size_m: 0.07\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("mapping.cell_size_m"), std::string::npos) << s.message();
+  EXPECT_DOUBLE_EQ(std::get<double>(*set_.Get("mapping.cell_size_m")), 0.025);
+}
+
+TEST_F(HostileProfile, FolderDeviceAndHugeFilesSayWhatTheyAre) {
+  Status s = set_.LoadYaml(testing::TempDir("options"));
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("is a folder"), std::string::npos) << s.message();
+  s = set_.LoadYaml("/dev/zero");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("not a regular file"), std::string::npos) << s.message();
+  s = set_.LoadYaml(testing::TempDir("options") + "/missing.yaml");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("no such file"), std::string::npos) << s.message();
+  s = Load("# " + std::string(2 << 20, 'x') + "\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("bytes"), std::string::npos) << s.message();
 }
 
 }  // namespace
