@@ -6,118 +6,27 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
-#include <chrono>
 #include <cmath>
 
-#include "app/sightline/button_pipeline_options.h"
-#include "core/pipeline/metric_slam_view.h"
-#include "core/pipeline/mono_inputs.h"
 #include "widgets/operator_panel.h"
 
 namespace sightline {
 
 namespace {
 
-// The mono presenter's processor, then the picker on its result.
-class ButtonPickerProcessor : public FrameProcessor {
- public:
-  ButtonPickerProcessor(SourceInfo info, PinholeCamera camera, std::unique_ptr<Pipeline> mono,
-                        std::shared_ptr<ButtonPickerControls> controls)
-      : info_(std::move(info)),
-        camera_(camera),
-        mono_(std::move(mono)),
-        controls_(std::move(controls)) {}
-
-  Status Configure(const OptionSet& options) override {
-    SIGHTLINE_RETURN_IF_ERROR(mono_->Configure(options));
-    const ButtonPickerOptions picker = options.Extract(ButtonPickerOptions::Describe());
-    const MetricViewOptions view = options.Extract(MetricViewOptions::Describe());
-    const MonoSlamOptions slam = options.Extract(MonoSlamOptions::Describe());
-    MonoSlamRunOptions run = options.Extract(MonoSlamRunOptions::Describe());
-    const ButtonGuiOptions gui = options.Extract(ButtonGuiOptions::Describe());
-    const ArmServerOptions server_options = options.Extract(ArmServerOptions::Describe());
-    std::string error;
-    if (!picker.IsValid(&error) || !view.IsValid(&error)) return InvalidArgument(error);
-    run.metric_source = "arm";
-    std::string source;
-    StatusOr<Trajectory> base = LoadMetricCameraPoses(info_.path, run, std::nullopt, &source);
-    if (!base.ok()) return base.status().WithContext("button picker: the arm's poses");
-    picker_ = std::make_unique<ButtonPicker>(picker);
-    metric_ = std::make_unique<MetricSlamView>(*base, slam.scale, view, run.gt_tolerance_s);
-    std::shared_ptr<ArmServer> server;
-    if (gui.serve) {
-      StatusOr<std::unique_ptr<ArmServer>> started = ArmServer::Start(server_options);
-      if (!started.ok()) return started.status();
-      server = std::move(*started);
+// The "button" entry whose declared options take `defaults` ("key=value") at once.
+PipelineInfo WithDefaults(PipelineInfo info, std::vector<std::string> defaults) {
+  if (defaults.empty()) return info;
+  auto declare = info.declare_options;
+  info.declare_options = [declare, defaults](OptionSet* set) {
+    SIGHTLINE_RETURN_IF_ERROR(declare(set));
+    for (const std::string& assignment : defaults) {
+      SIGHTLINE_RETURN_IF_ERROR(set->ApplyOverride(assignment));
     }
-    std::lock_guard<std::mutex> lock(controls_->mutex);
-    controls_->server = std::move(server);
     return Status::Ok();
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
-    const auto start = std::chrono::steady_clock::now();
-    StatusOr<std::shared_ptr<const PipelineResult>> processed = mono_->Process(frame);
-    std::shared_ptr<const PipelineFrameResult> base = processed.ok() ? *processed : nullptr;
-    const auto* mono = dynamic_cast<const MonoViewResult*>(base.get());
-    if (mono == nullptr || !mono->slam || !picker_) return base;
-    auto out = std::make_shared<ButtonViewResult>();
-    static_cast<MonoViewResult&>(*out) = *mono;
-    const MonoSlamResult& r = *mono->slam;
-    SlamView view = metric_->Update(r, camera_);
-    out->scale_converged = view.scale_converged;
-    std::optional<QPointF> tap;
-    bool confirm, cancel, stop, restart;
-    std::shared_ptr<ArmServer> server;
-    {
-      std::lock_guard<std::mutex> lock(controls_->mutex);
-      tap = controls_->tap;
-      controls_->tap.reset();
-      confirm = std::exchange(controls_->confirm, false);
-      cancel = std::exchange(controls_->cancel, false);
-      stop = std::exchange(controls_->stop, false);
-      restart = std::exchange(controls_->start, false);
-      server = controls_->server;
-    }
-    if (stop) picker_->Stop();
-    if (restart) picker_->Start();
-    if (cancel) picker_->Cancel();
-    if (tap) {
-      out->tap_answered = true;
-      out->tap_status = picker_->Tap(r.image, {tap->x(), tap->y()}, r.stamp.sequence_id);
-      if (out->tap_status.ok()) out->candidate_outline = picker_->candidate()->contour;
-    }
-    if (confirm) picker_->Confirm();
-    const std::optional<Eigen::Isometry3d> base_pose =
-        metric_->BaseFromCamera(r.stamp.sensor_time_s);
-    if (!base_pose) view.tracking = false;
-    const double elapsed_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out->picker = picker_->Process(r.stamp.sequence_id, r.stamp.sensor_time_s, r.image, view,
-                                   base_pose.value_or(Eigen::Isometry3d::Identity()),
-                                   r.stamp.sensor_time_s + elapsed_s);
-    if (out->picker.target && server) server->PublishTarget(*out->picker.target);
-    out->stats.emplace_back("button/tracking_ms", out->picker.tracking_ms);
-    return out;
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
-    return ProcessFrame(frame);
-  }
-
-  void Reset() override {
-    mono_->Reset();
-    if (picker_) picker_->Cancel();
-  }
-
- private:
-  SourceInfo info_;
-  PinholeCamera camera_;
-  std::unique_ptr<Pipeline> mono_;
-  std::shared_ptr<ButtonPickerControls> controls_;
-  std::unique_ptr<ButtonPicker> picker_;
-  std::unique_ptr<MetricSlamView> metric_;
-};
+  };
+  return info;
+}
 
 // Why no target went out, in plain words for the operator panel. The gate's own message, with its
 // figures and in English, is the line's tooltip for the engineer beside the chair.
@@ -173,31 +82,23 @@ OperatorState PanelState(PickerState s) {
 
 }  // namespace
 
-ButtonPickerPresenter::ButtonPickerPresenter(ArmServerOptions server_defaults, bool serve,
+ButtonPickerPresenter::ButtonPickerPresenter(std::vector<std::string> option_defaults,
                                              QObject* parent)
-    : MonoSlamPresenter(parent), server_defaults_(std::move(server_defaults)), serve_(serve) {}
+    : ButtonPickerPresenter(std::make_shared<ButtonCommands>(),
+                            std::make_shared<MonoSlamCommands>(), std::move(option_defaults),
+                            parent) {}
+
+ButtonPickerPresenter::ButtonPickerPresenter(std::shared_ptr<ButtonCommands> commands,
+                                             std::shared_ptr<MonoSlamCommands> mono_commands,
+                                             std::vector<std::string> option_defaults,
+                                             QObject* parent)
+    : MonoSlamPresenter(
+          WithDefaults(ButtonPipelineInfo(commands, mono_commands), std::move(option_defaults)),
+          mono_commands, parent),
+      commands_(std::move(commands)) {}
 
 const char* ButtonPickerPresenter::TitleSource() const {
   return QT_TR_NOOP("Button picker (monocular SLAM)");
-}
-
-Status ButtonPickerPresenter::DeclareOptions(OptionSet* options) const {
-  SIGHTLINE_RETURN_IF_ERROR(MonoSlamPresenter::DeclareOptions(options));
-  SIGHTLINE_RETURN_IF_ERROR(options->Declare(ButtonPickerOptions::Describe()));
-  SIGHTLINE_RETURN_IF_ERROR(options->Declare(MetricViewOptions::Describe()));
-  SIGHTLINE_RETURN_IF_ERROR(options->Declare(ArmServerOptions::Describe(), server_defaults_));
-  ButtonGuiOptions gui;
-  gui.serve = serve_;
-  return options->Declare(ButtonGuiOptions::Describe(), gui);
-}
-
-bool ButtonPickerPresenter::Accepts(SourceKind kind) const { return kind == SourceKind::kMono; }
-
-std::unique_ptr<Pipeline> ButtonPickerPresenter::CreateProcessor(const PipelineSource& source) {
-  const SourceInfo& info = source.info;
-  std::unique_ptr<Pipeline> mono = MonoSlamPresenter::CreateProcessor(source);
-  if (!mono || !info.camera) return nullptr;
-  return std::make_unique<ButtonPickerProcessor>(info, *info.camera, std::move(mono), controls_);
 }
 
 void ButtonPickerPresenter::Attach(QMainWindow* window) {
@@ -208,23 +109,16 @@ void ButtonPickerPresenter::Attach(QMainWindow* window) {
     panel_dock_->setObjectName("button_operator_dock");
     panel_dock_->setWidget(panel_);
     connect(panel_, &OperatorPanel::Tapped, this, [this](QPointF px) {
-      std::lock_guard<std::mutex> lock(controls_->mutex);
-      controls_->tap = px;
+      ButtonTapRequest tap;
+      tap.x = px.x();
+      tap.y = px.y();
+      commands_->Tap(tap);
     });
-    connect(panel_, &OperatorPanel::Confirmed, this, [this] {
-      std::lock_guard<std::mutex> lock(controls_->mutex);
-      controls_->confirm = true;
-    });
-    connect(panel_, &OperatorPanel::Cancelled, this, [this] {
-      std::lock_guard<std::mutex> lock(controls_->mutex);
-      controls_->cancel = true;
-    });
-    connect(panel_, &OperatorPanel::StopPressed, this, &ButtonPickerPresenter::Stop);
-    connect(panel_, &OperatorPanel::StartRequested, this, [this] {
-      std::lock_guard<std::mutex> lock(controls_->mutex);
-      controls_->start = true;
-      if (controls_->server) controls_->server->Resume();
-    });
+    connect(panel_, &OperatorPanel::Confirmed, this, [this] { commands_->Confirm(); });
+    connect(panel_, &OperatorPanel::Cancelled, this, [this] { commands_->Cancel(); });
+    // STOP reaches the arm at once, not at the next frame.
+    connect(panel_, &OperatorPanel::StopPressed, this, [this] { commands_->Stop("operator"); });
+    connect(panel_, &OperatorPanel::StartRequested, this, [this] { commands_->Restart(); });
     full_screen_action_ = new QAction(tr("Operator panel full screen"), window);
     full_screen_action_->setShortcut(QKeySequence(Qt::Key_F11));
     full_screen_action_->setCheckable(true);
@@ -260,15 +154,9 @@ void ButtonPickerPresenter::Detach() {
   panel_dock_->hide();
 }
 
-void ButtonPickerPresenter::Stop() {
-  std::lock_guard<std::mutex> lock(controls_->mutex);
-  controls_->stop = true;
-  if (controls_->server) controls_->server->PublishStop("operator");  // At once, not next frame.
-}
-
 void ButtonPickerPresenter::Show(const PlaybackResult& result) {
   MonoSlamPresenter::Show(result);
-  const auto* view = dynamic_cast<const ButtonViewResult*>(result.pipeline.get());
+  const auto* view = dynamic_cast<const ButtonFrameResult*>(result.pipeline.get());
   if (view == nullptr || panel_ == nullptr || !view->slam) return;
   panel_->SetImage(view->slam->image);
   if (view->tap_answered) {
@@ -293,7 +181,7 @@ void ButtonPickerPresenter::Show(const PlaybackResult& result) {
     panel_->detail_label()->setToolTip(f.verdict.send ? QString()
                                                       : QString::fromStdString(f.verdict.message));
   }
-  panel_->SetDistance(f.location ? f.location->button_in_camera.norm() : std::nan(""));
+  panel_->SetDistance(view->Stat("button/distance_m").value_or(std::nan("")));
 }
 
 }  // namespace sightline

@@ -8,9 +8,6 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "core/io/dataset.h"
-#include "core/mono/mono_slam.h"
-#include "core/pipeline/mono_slam_pipeline.h"
 #include "widgets/image_view.h"
 #include "widgets/scene_view.h"
 
@@ -78,110 +75,12 @@ class ScalePlot : public QWidget {
 
 namespace {
 
-// Runs MonoSlam (threaded mapping) on the playback worker; recomputes the scale whenever the map
-// changes, from its keyframes and the recording's arm poses or ground truth.
-class MonoSlamProcessor : public FrameProcessor {
- public:
-  MonoSlamProcessor(SourceInfo info, PinholeCamera camera,
-                    std::shared_ptr<MonoSlamControls> controls)
-      : info_(std::move(info)), camera_(camera), controls_(std::move(controls)) {}
-
-  Status Configure(const OptionSet& options) override {
-    MonoSlamOptions parsed = options.Extract(MonoSlamOptions::Describe());
-    parsed.mapping.threaded = true;  // Live view: mapping on its own thread.
-    run_ = options.Extract(MonoSlamRunOptions::Describe());
-    scale_options_ = parsed.scale;
-    auto slam = std::make_unique<MonoSlam>(parsed);
-    SIGHTLINE_RETURN_IF_ERROR(slam->Configure(camera_));
-    slam_ = std::move(slam);
-    LoadMetric();
-    return Status::Ok();
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ProcessFrame(const Frame& frame) override {
-    auto result = std::make_shared<MonoViewResult>();
-    result->stamp = StampOf(frame);
-    MonoFrame mono;
-    if (const auto* m = std::get_if<MonoFrame>(&frame)) {
-      mono = *m;
-    } else if (const auto* s = std::get_if<StereoFrame>(&frame)) {
-      mono = {s->stamp, s->left};
-    }
-    if (!slam_ || mono.image.empty()) {
-      result->status = FailedPrecondition("monocular SLAM needs mono images (or a stereo left)");
-      return result;
-    }
-    if (controls_->reset.exchange(false)) slam_->Reset();
-    slam_->SetMappingPaused(controls_->pause_mapping.load());
-    StatusOr<std::shared_ptr<const MonoSlamResult>> r = slam_->Process(mono);
-    if (!r.ok()) {
-      result->status = r.status();
-      return result;
-    }
-    result->slam = *r;
-    const MonoFrameStats& s = (*r)->stats;
-    result->stats = {{"mono/inliers", double(s.inliers)},
-                     {"mono/matches", double(s.matches)},
-                     {"mono/map_points", double(s.map_points)},
-                     {"mono/tracking_ms", s.tracking_ms}};
-    if ((*r)->map != last_map_) {
-      last_map_ = (*r)->map;
-      ScaleEstimator scale(scale_options_);
-      for (const ScalePair& pair : KeyFrameScalePairs(*last_map_, metric_, run_.gt_tolerance_s)) {
-        scale.Add(pair);
-      }
-      lambda_ = scale.max_likelihood();
-      single_ = scale.single_ratio();
-      result->scale_history = std::make_shared<const std::vector<ScaleSample>>(scale.history());
-    }
-    result->lambda = lambda_;
-    result->single_ratio = single_;
-    result->metric_source = metric_source_;
-    return result;
-  }
-
-  std::shared_ptr<const PipelineFrameResult> ReprocessFrame(const Frame& frame) override {
-    return ProcessFrame(frame);  // SLAM state advances; a still frame simply tracks again.
-  }
-
-  void Reset() override {
-    if (slam_) slam_->Reset();
-    last_map_.reset();
-    lambda_ = single_ = 0;
-  }
-
- private:
-  void LoadMetric() {
-    std::optional<Trajectory> ground_truth;
-    if (info_.has_ground_truth && !info_.live) {
-      StatusOr<std::unique_ptr<Source>> source = OpenDataset(info_.path);
-      if (source.ok() && (*source)->ground_truth() != nullptr)
-        ground_truth = *(*source)->ground_truth();
-    }
-    StatusOr<Trajectory> metric =
-        LoadMetricCameraPoses(info_.path, run_, ground_truth, &metric_source_);
-    metric_ = metric.ok() ? *metric : Trajectory();
-    if (!metric.ok()) metric_source_ = "none";
-  }
-
-  SourceInfo info_;
-  PinholeCamera camera_;
-  std::shared_ptr<MonoSlamControls> controls_;
-  MonoSlamRunOptions run_;
-  ScaleEstimatorOptions scale_options_;
-  std::unique_ptr<MonoSlam> slam_;
-  Trajectory metric_;
-  std::string metric_source_ = "none";
-  std::shared_ptr<const MapSnapshot> last_map_;
-  double lambda_ = 0, single_ = 0;
-};
-
 constexpr const char* kMapLayer = "mono/map";
 constexpr const char* kKeyFramesLayer = "mono/keyframes";
 constexpr const char* kTrajectoryLayer = "mono/trajectory";
 constexpr const char* kCameraLayer = "mono/camera";
 
-// The source of the metric motion, in words (MonoViewResult::metric_source is a key).
+// The source of the metric motion, in words (MonoSlamFrameResult::metric_source is a key).
 QString MetricSourceText(const std::string& source) {
   if (source == "arm") return MonoSlamPresenter::tr("the arm's poses");
   if (source == "ground_truth") return MonoSlamPresenter::tr("the ground truth");
@@ -212,34 +111,18 @@ Eigen::Matrix<uint8_t, 3, 1> KeyFrameColour(int64_t keyframe) {
 
 }  // namespace
 
-MonoSlamPresenter::MonoSlamPresenter(QObject* parent) : PipelinePresenter(parent) {}
+MonoSlamPresenter::MonoSlamPresenter(QObject* parent)
+    : MonoSlamPresenter(std::make_shared<MonoSlamCommands>(), parent) {}
+
+MonoSlamPresenter::MonoSlamPresenter(std::shared_ptr<MonoSlamCommands> commands, QObject* parent)
+    : MonoSlamPresenter(MonoSlamPipelineInfo(commands), commands, parent) {}
+
+MonoSlamPresenter::MonoSlamPresenter(PipelineInfo info, std::shared_ptr<MonoSlamCommands> commands,
+                                     QObject* parent)
+    : PipelinePresenter(std::move(info), parent), commands_(std::move(commands)) {}
 
 const char* MonoSlamPresenter::TitleSource() const {
   return QT_TR_NOOP("Monocular SLAM (PTAM point cloud)");
-}
-
-Status MonoSlamPresenter::DeclareOptions(OptionSet* options) const {
-  SIGHTLINE_RETURN_IF_ERROR(options->Declare(MonoSlamOptions::Describe()));
-  return options->Declare(MonoSlamRunOptions::Describe());
-}
-
-bool MonoSlamPresenter::Accepts(SourceKind kind) const {
-  return kind == SourceKind::kMono || kind == SourceKind::kStereo;
-}
-
-std::unique_ptr<Pipeline> MonoSlamPresenter::CreateProcessor(const PipelineSource& source) {
-  const SourceInfo& info = source.info;
-  PinholeCamera camera;
-  if (info.camera) {
-    camera = *info.camera;
-  } else if (info.stereo) {
-    camera = info.stereo->left;
-  } else {
-    emit Message(2, tr("Monocular SLAM needs a camera calibration (camera.yaml)"));
-    return nullptr;
-  }
-  controls_->reset = false;
-  return std::make_unique<MonoSlamProcessor>(info, camera, controls_);
 }
 
 void MonoSlamPresenter::Attach(QMainWindow* window) {
@@ -260,11 +143,11 @@ void MonoSlamPresenter::Attach(QMainWindow* window) {
     layout->addWidget(image_view_, 1);
     layout->addLayout(buttons);
     connect(reset, &QPushButton::clicked, this, [this] {
-      controls_->reset = true;
+      commands_->ResetMap();
       trajectory_ = Trajectory();
     });
     connect(pause_button_, &QPushButton::toggled, this,
-            [this](bool paused) { controls_->pause_mapping = paused; });
+            [this](bool paused) { commands_->PauseMapping(paused); });
     image_dock_ = new QDockWidget(tr("Tracked features (inliers green, outliers red)"), window);
     image_dock_->setObjectName("mono_image_dock");
     image_dock_->setWidget(panel);
@@ -300,7 +183,7 @@ void MonoSlamPresenter::Detach() {
 }
 
 void MonoSlamPresenter::Show(const PlaybackResult& result) {
-  const auto* view = dynamic_cast<const MonoViewResult*>(result.pipeline.get());
+  const auto* view = dynamic_cast<const MonoSlamFrameResult*>(result.pipeline.get());
   if (view == nullptr || image_view_ == nullptr || !view->slam) return;
   const std::shared_ptr<const MonoSlamResult> slam = view->slam;
   if (slam->stamp.sequence_id <= last_id_) trajectory_ = Trajectory();
@@ -320,14 +203,14 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
     painter.setPen(QPen(QualityColor(slam->quality), 6));
     painter.drawRect(to_widget.mapRect(QRectF(0, 0, slam->image.cols, slam->image.rows)));
   });
-  const MonoFrameStats& s = slam->stats;
+  auto stat = [view](const char* key) { return view->Stat(key).value_or(0); };
   status_label_->setText(tr("%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms")
-                             .arg(QString::fromStdString(s.status))
-                             .arg(s.inliers)
-                             .arg(s.matches)
-                             .arg(s.map_points)
-                             .arg(s.keyframes)
-                             .arg(s.tracking_ms, 0, 'f', 1));
+                             .arg(QString::fromStdString(slam->stats.status))
+                             .arg(stat("mono/inliers"))
+                             .arg(stat("mono/matches"))
+                             .arg(stat("mono/map_points"))
+                             .arg(stat("mono/keyframes"))
+                             .arg(stat("mono/tracking_ms"), 0, 'f', 1));
   scale_ml_ = view->lambda;
   const double divide = view->lambda > 0 ? view->lambda : 1.0;
   if (view->lambda > 0) {

@@ -1,8 +1,9 @@
 // Monocular SLAM in the GUI ("PTAM point cloud"): the image with tracked features and the
 // tracking quality, the map points (coloured by the keyframe that made them), keyframe frusta,
 // the camera's trajectory and the current camera growing in the 3D view, and a scale panel with
-// the single-ratio and maximum-likelihood estimates and their convergence plot. Reset map and
-// Pause mapping reach the worker as atomic requests.
+// the single-ratio and maximum-likelihood estimates and their convergence plot. Draw-only: the
+// registry's "mono-slam" pipeline computes everything; Reset map and Pause mapping reach it as
+// commands (MonoSlamCommands).
 #pragma once
 
 #include <QString>
@@ -12,8 +13,7 @@
 
 #include "app/sightline/pipeline_presenter.h"
 #include "core/common/trajectory.h"
-#include "core/mono/mono_slam.h"
-#include "core/mono/scale_estimator.h"
+#include "core/pipeline/mono_slam_result.h"
 
 class QDockWidget;
 class QLabel;
@@ -25,21 +25,6 @@ class ImageView;
 class SceneView;
 class ScalePlot;
 
-// Requests from the GUI thread to the processor on the worker thread.
-struct MonoSlamControls {
-  std::atomic<bool> reset{false};          // Forget the map at the next frame.
-  std::atomic<bool> pause_mapping{false};  // No new keyframes while set.
-};
-
-// What the mono processor hands the GUI for one frame.
-struct MonoViewResult : PipelineFrameResult {
-  std::shared_ptr<const MonoSlamResult> slam;
-  std::shared_ptr<const std::vector<ScaleSample>> scale_history;  // Null when unchanged.
-  double lambda = 0;  // ML map units per metre, 0 = unknown.
-  double single_ratio = 0;
-  std::string metric_source;  // "arm", "ground_truth" or "none".
-};
-
 // Presenter of the "mono-slam" pipeline (seed 004). Needs mono frames or a stereo pair's left.
 class MonoSlamPresenter : public PipelinePresenter {
   Q_OBJECT
@@ -48,9 +33,6 @@ class MonoSlamPresenter : public PipelinePresenter {
   explicit MonoSlamPresenter(QObject* parent = nullptr);
 
   const char* TitleSource() const override;
-  Status DeclareOptions(OptionSet* options) const override;
-  bool Accepts(SourceKind kind) const override;
-  std::unique_ptr<Pipeline> CreateProcessor(const PipelineSource& source) override;
   void Attach(QMainWindow* window) override;
   void Detach() override;
   void Show(const PlaybackResult& result) override;
@@ -61,8 +43,14 @@ class MonoSlamPresenter : public PipelinePresenter {
   size_t keyframes_drawn() const { return keyframes_drawn_; }
   double scale_ml() const { return scale_ml_; }
 
+ protected:
+  // A presenter of pipeline `info` whose objects take `commands` (the button picker's).
+  MonoSlamPresenter(PipelineInfo info, std::shared_ptr<MonoSlamCommands> commands, QObject* parent);
+
  private:
-  std::shared_ptr<MonoSlamControls> controls_ = std::make_shared<MonoSlamControls>();
+  MonoSlamPresenter(std::shared_ptr<MonoSlamCommands> commands, QObject* parent);
+
+  std::shared_ptr<MonoSlamCommands> commands_;
   QDockWidget* image_dock_ = nullptr;
   QDockWidget* scale_dock_ = nullptr;
   ImageView* image_view_ = nullptr;

@@ -17,6 +17,7 @@
 #include "core/button/button_detector.h"
 #include "core/button/button_locator.h"
 #include "core/button/button_tracker.h"
+#include "core/button/button_types.h"
 #include "core/button/safety_gate.h"
 
 namespace sightline {
@@ -54,34 +55,6 @@ struct SlamView {
   double scale_sigma_rel = 0;    // 1-sigma relative scale error.
 };
 
-// The picker's state, as the operator's banner shows it.
-enum class PickerState {
-  kIdle,
-  kConfirm,
-  kSearching,
-  kTracking,
-  kLocating,
-  kTargetSent,
-  kLost,
-  kStopped
-};
-const char* PickerStateKey(PickerState state);  // "idle", "confirm", ..., "stopped".
-
-// What happened in one frame.
-struct PickerFrame {
-  int64_t frame_id = -1;
-  double stamp_s = 0;
-  PickerState state = PickerState::kIdle;
-  ButtonTrack track;
-  double tracking_ms = 0;                  // Tracker time of this frame.
-  std::optional<ButtonLocation> location;  // Camera frame.
-  Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));  // Fused.
-  int fused_estimates = 0;  // Estimates in button_in_base.
-  Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
-  GateVerdict verdict;
-  std::optional<ArmTarget> target;  // Set when the gate lets it out.
-};
-
 // One picker per button; constructible many times.
 //
 //   ButtonPicker picker(options);
@@ -106,8 +79,10 @@ class ButtonPicker {
   void Start();
   PickerState state() const { return state_; }
 
-  // Tracks, locates and gates one frame. `now_s` is the time the result would be sent (same
-  // clock as stamp_s) for the age check.
+  // Tracks, locates and gates one frame. `now_s` is the time the result would be sent, on the
+  // clock of stamp_s, for the age check: in a recording the frame's own sensor time (data time,
+  // so a replay gives the same targets on any machine); for a live device the caller may add
+  // the host clock's delay since the frame arrived.
   PickerFrame Process(int64_t frame_id, double stamp_s, const cv::Mat& image, const SlamView& slam,
                       const Eigen::Isometry3d& base_from_camera, double now_s);
 

@@ -27,39 +27,12 @@
 #include "core/mono/features.h"
 #include "core/mono/local_mapper.h"
 #include "core/mono/mono_options.h"
+#include "core/mono/mono_types.h"
 #include "core/mono/slam_map.h"
 #include "core/mono/tracker.h"
 #include "core/mono/two_view_initializer.h"
 
 namespace sightline {
-
-// Statistics of one frame.
-struct MonoFrameStats {
-  int keypoints = 0;   // ORB keypoints extracted.
-  int predicted = 0;   // Map points predicted inside the image (fine pass).
-  int matches = 0;     // Map points matched (fine pass).
-  int inliers = 0;     // After robust pose optimisation.
-  double rms_px = 0;   // Inlier reprojection RMS (level-scaled) [px].
-  int map_points = 0;  // In the map after this frame.
-  int keyframes = 0;   // In the map after this frame.
-  bool new_keyframe = false;
-  bool relocalised = false;
-  std::string status;      // What happened, for people ("initialised (homography, 212 points)").
-  double tracking_ms = 0;  // Features + tracking (+ relocalisation) of this frame.
-};
-
-// The result of one frame, shared immutable with views.
-struct MonoSlamResult {
-  FrameStamp stamp;
-  TrackingQuality quality = TrackingQuality::kInitialising;
-  bool tracked = false;  // The pose below is valid for this frame.
-  Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();  // Map units.
-  MonoFrameStats stats;
-  std::vector<cv::Point2f> keypoints;      // Every keypoint (image pixels).
-  std::vector<uint8_t> keypoint_state;     // 0 unmatched, 1 inlier, 2 outlier.
-  std::shared_ptr<const MapSnapshot> map;  // The latest map (shared until it changes).
-  cv::Mat image;                           // The frame as given.
-};
 
 // The SLAM system.
 //

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/common/status.h"
+#include "core/mono/mono_types.h"
 #include "core/options/option_table.h"
 
 namespace sightline {
@@ -53,15 +54,6 @@ StatusOr<double> SingleRatioScale(const ScalePair& pair);
 // `length_exponent` weights each pair by |y|^-length_exponent (0 = unweighted).
 StatusOr<double> MaxLikelihoodScale(const std::vector<ScalePair>& pairs, double sigma_map,
                                     double sigma_metric_m, double length_exponent = 0);
-
-// The state after one added pair (a row of scale.csv).
-struct ScaleSample {
-  int index = 0;              // Pairs offered so far (1-based).
-  double pair_ratio = 0;      // |x| / |y| of this pair alone (0 when dropped as too short).
-  double single_ratio = 0;    // The single-ratio estimate (first accepted pair), 0 = none yet.
-  double max_likelihood = 0;  // ML estimate over the accepted pairs, 0 = none yet.
-  int pairs_used = 0;         // Pairs inside the ML estimate after outlier rejection.
-};
 
 // Accumulates pairs and keeps both estimates and their history.
 //

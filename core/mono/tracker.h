@@ -9,13 +9,10 @@
 
 #include "core/common/camera.h"
 #include "core/mono/mono_options.h"
+#include "core/mono/mono_types.h"
 #include "core/mono/slam_map.h"
 
 namespace sightline {
-
-// How well the current frame is tracked.
-enum class TrackingQuality { kInitialising, kGood, kPoor, kLost };
-const char* TrackingQualityName(TrackingQuality quality);  // "initialising", "good", ...
 
 // A map point as the tracker sees it: a copy taken under the map lock.
 struct LocalPoint {

@@ -1,6 +1,5 @@
 #include "core/pipeline/button_pipeline.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -8,9 +7,7 @@
 #include <fstream>
 #include <thread>
 
-#include "core/button/arm_server.h"
 #include "core/io/hand_eye_file.h"
-#include "core/pipeline/metric_slam_view.h"
 #include "core/pipeline/mono_inputs.h"
 
 namespace sightline {
@@ -44,6 +41,14 @@ OptionTable<ButtonRunOptions> ButtonRunOptions::Describe() {
               "With serve: keep serving this long after the last frame so queued targets go out.");
 }
 
+OptionTable<ButtonGuiOptions> ButtonGuiOptions::Describe() {
+  using O = ButtonGuiOptions;
+  return OptionTable<O>("button.gui")
+      .Bool("serve", &O::serve,
+            "Serve the targets to the arm over TCP (button.arm.bind_address, port, token); "
+            "127.0.0.1:5757 by default. The same as button.run.serve.");
+}
+
 StatusOr<ButtonTap> ParseButtonTap(const std::string& text) {
   const auto bad = [&] {
     return InvalidArgument("button.run.tap = '" + text + "': expected X,Y or X,Y@FRAME (--tap)");
@@ -67,331 +72,400 @@ StatusOr<ButtonTap> ParseButtonTap(const std::string& text) {
   return tap;
 }
 
-namespace {
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+void ButtonCommands::Tap(const ButtonTapRequest& tap) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.tap = tap;
 }
 
-// Per-axis median of the last `window` positions (all when 0), as the picker fuses them.
-Eigen::Vector3d FuseMedian(const std::vector<Eigen::Vector3d>& values, int window) {
-  const size_t n = window > 0 ? std::min(values.size(), size_t(window)) : values.size();
-  Eigen::Vector3d out;
-  for (int k = 0; k < 3; ++k) {
-    std::vector<double> axis;
-    for (size_t i = values.size() - n; i < values.size(); ++i) axis.push_back(values[i][k]);
-    out[k] = Median(axis);
+void ButtonCommands::Confirm() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.confirm = true;
+}
+
+void ButtonCommands::Cancel() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.cancel = true;
+}
+
+void ButtonCommands::Stop(const std::string& reason) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.stop = true;
+  if (stop_now_) stop_now_(reason);  // At once, not at the next frame.
+}
+
+void ButtonCommands::Restart() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.restart = true;
+  if (restart_now_) restart_now_();
+}
+
+ButtonCommands::Pending ButtonCommands::Take(int64_t frame) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  Pending out = pending_;
+  pending_ = Pending();
+  if (out.tap && out.tap->frame > frame) {  // For a later frame: it waits.
+    pending_.tap = out.tap;
+    out.tap.reset();
   }
   return out;
 }
 
-// What the accuracy needs of the last frame that sent a target.
-struct LastTarget {
-  int64_t index = -1;
-  ArmTarget target;
-  ButtonTrack track;
-  Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();
-  std::shared_ptr<const MapSnapshot> map;
-  Eigen::Isometry3d base_from_camera = Eigen::Isometry3d::Identity();
-  Eigen::Vector3d unfused_in_base = Eigen::Vector3d::Constant(std::nan(""));
-};
+bool ButtonCommands::tap_pending() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return pending_.tap.has_value();
+}
 
-struct Waiter {
-  static Status ForClients(ArmServer& server, const ButtonRunOptions& run,
-                           const RunContext& context) {
-    const auto start = std::chrono::steady_clock::now();
-    while (server.Stats().authorised < run.wait_clients) {
-      if (context.Cancelled()) {
-        server.SendStopAndClose("cancelled");
-        return Cancelled("run cancelled while waiting for arm clients");
-      }
-      const double waited =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (waited > run.wait_clients_s) {
-        return Unavailable("button.run.wait_clients: " + std::to_string(server.Stats().authorised) +
-                           " of " + std::to_string(run.wait_clients) +
-                           " arm clients connected within " + std::to_string(run.wait_clients_s) +
-                           " s");
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+void ButtonCommands::SetImmediate(std::function<void(const std::string&)> stop,
+                                  std::function<void()> restart) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  stop_now_ = std::move(stop);
+  restart_now_ = std::move(restart);
+}
+
+const StatisticTable& ButtonStatistics() {
+  static const StatisticTable kTable = [] {
+    StatisticTable table;
+    for (const StatisticInfo& s : MonoSlamStatistics()) {
+      if (s.unit != "ms") table.push_back(s);  // The SLAM's time is button/slam_ms.
     }
-    return Status::Ok();
-  }
-};
+    const StatisticTable button = {
+        {"button/slam_ms", "ms", "Monocular SLAM of the frame."},
+        {"button/tracking_ms", "ms", "Button tracker of the frame (frames after the tap)."},
+        {"button/scale_converged", "", "The metric scale counts as converged."},
+        {"button/scale_ml", "", "Map units per metre (ML estimate), 0 = unknown."},
+        {"button/track_confidence", "", "Confidence of the button's track, 0..1."},
+        {"button/fused_estimates", "count", "Positions in the fused target."},
+        {"button/uncertainty_m", "m", "1-sigma uncertainty of the located button."},
+        {"button/distance_m", "m", "Distance from the camera to the located button."},
+        {"button/target_sent", "", "The safety gate let a target out."},
+    };
+    table.insert(table.end(), button.begin(), button.end());
+    return table;
+  }();
+  return kTable;
+}
 
-StatusOr<RunResult> RunButtonPipeline(const RunContext& context) {
-  const MonoSlamOptions slam_options = context.options.Extract(MonoSlamOptions::Describe());
-  MonoSlamRunOptions mono_run = context.options.Extract(MonoSlamRunOptions::Describe());
-  const ButtonPickerOptions picker_options =
-      context.options.Extract(ButtonPickerOptions::Describe());
-  const ButtonRunOptions run = context.options.Extract(ButtonRunOptions::Describe());
-  const MetricViewOptions view_options = context.options.Extract(MetricViewOptions::Describe());
-  const ArmServerOptions server_options = context.options.Extract(ArmServerOptions::Describe());
+ButtonPipeline::ButtonPipeline(std::shared_ptr<ButtonCommands> commands,
+                               std::shared_ptr<MonoSlamCommands> mono_commands)
+    : headless_(commands == nullptr),
+      commands_(commands ? std::move(commands) : std::make_shared<ButtonCommands>()),
+      mono_(std::move(mono_commands)) {}
+
+ButtonPipeline::~ButtonPipeline() {
+  if (output_) commands_->SetImmediate({}, {});
+}
+
+StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options) {
+  Config c;
+  c.slam = options.Extract(MonoSlamOptions::Describe());
+  c.mono_run = options.Extract(MonoSlamRunOptions::Describe());
+  c.picker = options.Extract(ButtonPickerOptions::Describe());
+  c.run = options.Extract(ButtonRunOptions::Describe());
+  c.view = options.Extract(MetricViewOptions::Describe());
+  c.server = options.Extract(ArmServerOptions::Describe());
+  c.serve = c.run.serve || options.Extract(ButtonGuiOptions::Describe()).serve;
   std::string error;
-  if (!run.IsValid(&error) || !view_options.IsValid(&error) || !picker_options.IsValid(&error)) {
+  if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error)) {
     return InvalidArgument(error);
   }
-  StatusOr<ButtonTap> tap = ParseButtonTap(run.tap);
-  if (!tap.ok()) return tap.status();
-  const std::string& path = context.dataset_path;
-  if (mono_run.metric_source == "auto") mono_run.metric_source = "arm";
-  if (mono_run.metric_source != "arm") {
+  if (!c.run.tap.empty()) {
+    StatusOr<ButtonTap> tap = ParseButtonTap(c.run.tap);
+    if (!tap.ok()) return tap.status();
+    c.tap = *tap;
+  }
+  if (c.mono_run.metric_source == "auto") c.mono_run.metric_source = "arm";
+  if (c.mono_run.metric_source != "arm") {
     return InvalidArgument(
         "mono.run.metric_source must be arm (or auto) for the button pipeline: "
         "the targets are in the arm's base frame");
   }
-  StatusOr<OpenedMono> opened = OpenMono(path);
-  if (!opened.ok()) return opened.status();
-  std::string metric_source;
-  StatusOr<Trajectory> base_from_camera =
-      LoadMetricCameraPoses(path, mono_run, opened->ground_truth, &metric_source);
-  if (!base_from_camera.ok()) return base_from_camera.status();
-  MetricSlamView metric(*base_from_camera, slam_options.scale, view_options,
-                        mono_run.gt_tolerance_s);
+  return c;
+}
 
-  // Ground truth: the simulator's buttons and the arm base in its map frame.
-  std::optional<std::vector<TrueButton>> truth;
-  std::optional<Eigen::Isometry3d> world_from_base;
-  std::vector<std::string> notes;
-  if (const std::string file = FindBeside(path, "buttons.csv"); !file.empty()) {
-    StatusOr<std::vector<TrueButton>> read = ReadTrueButtons(file);
-    if (!read.ok()) return read.status();
-    truth = std::move(*read);
-    std::string hand_eye = mono_run.hand_eye;
-    if (hand_eye.empty()) hand_eye = FindBeside(path, "hand_eye.yaml");
-    if (!hand_eye.empty() && hand_eye != "none") {
-      StatusOr<HandEye> he = ReadHandEyeFile(hand_eye);
-      if (!he.ok()) return he.status();
-      world_from_base = he->world_from_base;
-    }
+Status ButtonPipeline::Configure(const OptionSet& options) {
+  StatusOr<Config> parsed = Parse(options);
+  if (!parsed.ok()) return parsed.status();
+  if (headless_ && !parsed->tap) return ParseButtonTap("").status();  // "--tap is required".
+  config_ = std::move(*parsed);
+  SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, config_.mono_run));
+  if (!source_) return Status::Ok();
+  return Open(*source_);  // New options start the run again.
+}
+
+namespace {
+
+// The simulator's buttons.csv and the arm's base in its map frame (hand_eye.yaml), when there.
+StatusOr<std::optional<ButtonTruth>> LoadTruth(const std::string& path,
+                                               const MonoSlamRunOptions& run) {
+  const std::string file = FindBeside(path, "buttons.csv");
+  if (file.empty()) return std::optional<ButtonTruth>();
+  StatusOr<std::vector<TrueButton>> read = ReadTrueButtons(file);
+  if (!read.ok()) return read.status();
+  ButtonTruth truth;
+  truth.buttons = std::move(*read);
+  std::string hand_eye = run.hand_eye;
+  if (hand_eye.empty()) hand_eye = FindBeside(path, "hand_eye.yaml");
+  if (!hand_eye.empty() && hand_eye != "none") {
+    StatusOr<HandEye> he = ReadHandEyeFile(hand_eye);
+    if (!he.ok()) return he.status();
+    truth.world_from_base = he->world_from_base;
   }
+  return std::optional<ButtonTruth>(std::move(truth));
+}
 
-  std::unique_ptr<ArmServer> server;
-  if (run.serve) {
-    StatusOr<std::unique_ptr<ArmServer>> started = ArmServer::Start(server_options);
+int64_t FrameId(const FrameStamp& stamp, int64_t index) {
+  return stamp.sequence_id >= 0 ? stamp.sequence_id : index;
+}
+
+}  // namespace
+
+Status ButtonPipeline::Open(const PipelineSource& source) {
+  SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
+  StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
+  if (!truth.ok()) return truth.status();
+  truth_ = std::move(*truth);
+  source_ = source;
+  SIGHTLINE_RETURN_IF_ERROR(StartOutput());
+  StartRun();
+  return Status::Ok();
+}
+
+Status ButtonPipeline::StartOutput() {
+  if (!config_.serve) {
+    if (output_) commands_->SetImmediate({}, {});
+    output_.reset();
+    return Status::Ok();
+  }
+  if (!output_) {
+    StatusOr<std::shared_ptr<ButtonTargetOutput>> started =
+        ButtonTargetOutput::Start(config_.server);
     if (!started.ok()) return started.status();
-    server = std::move(*started);
-    SIGHTLINE_RETURN_IF_ERROR(Waiter::ForClients(*server, run, context));
+    output_ = std::move(*started);
   }
-  const int clients_at_start = server ? server->Stats().authorised : 0;
+  std::shared_ptr<ButtonTargetOutput> output = output_;
+  commands_->SetImmediate([output](const std::string& reason) { output->PublishStop(reason); },
+                          [output] { output->Resume(); });
+  return output_->WaitForClients(config_.run.wait_clients, config_.run.wait_clients_s);
+}
 
-  MonoSlam slam(slam_options);
-  SIGHTLINE_RETURN_IF_ERROR(slam.Configure(opened->camera).WithContext(path));
-  ButtonPicker picker(picker_options);
-  Source& source = *opened->source;
-  int64_t total = source.info().frame_count;
-  if (mono_run.max_frames > 0 && (total < 0 || total > mono_run.max_frames))
-    total = mono_run.max_frames;
-  std::vector<ButtonRunRow> rows;
-  LastTarget last;
-  std::vector<LastTarget> sent;  // Every frame that sent a target, for the single-ratio figure.
-  int64_t targets = 0, first_target_index = -1, frames = 0;
-  double tap_stamp_s = 0, first_target_stamp_s = 0, processing_ms_to_first = 0;
-  std::optional<cv::Point2d> tapped_centre;
-  for (int64_t index = 0; total < 0 || index < total; ++index) {
-    if (context.Cancelled()) {
-      if (server) server->SendStopAndClose("cancelled");  // Signals land here (run --serve).
-      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
-    }
-    StatusOr<std::optional<MonoFrame>> next = NextMonoFrame(source, path);
-    if (!next.ok()) return next.status().WithContext("frame " + std::to_string(index));
-    if (!*next) break;
-    const MonoFrame& mono = **next;
-    ++frames;
-    const auto start = std::chrono::steady_clock::now();
-    StatusOr<std::shared_ptr<const MonoSlamResult>> result = slam.Process(mono);
-    if (!result.ok()) return result.status();
-    const double slam_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    context.timing->Add("slam", slam_ms);
-    const MonoSlamResult& r = **result;
-    const SlamView view = metric.Update(r, opened->camera);
-    ButtonRunRow row;
-    row.slam_ms = slam_ms;
-    row.slam_tracking = view.tracking;
-    row.scale_converged = view.scale_converged;
-    row.lambda_ml = metric.lambda_ml();
-    const int64_t frame_id = mono.stamp.sequence_id >= 0 ? mono.stamp.sequence_id : index;
-    if (index == tap->frame) {
-      const Status tapped = picker.Tap(mono.image, {tap->x, tap->y}, frame_id);
-      if (!tapped.ok()) {
-        return tapped.WithContext("tap at " + run.tap + " (frame " + std::to_string(index) + ")");
-      }
-      tapped_centre = picker.candidate()->center;
-      picker.Confirm();  // Headless: the tap is the operator's Yes.
-      tap_stamp_s = mono.stamp.sensor_time_s;
-      row.picker.frame_id = frame_id;
-      row.picker.stamp_s = mono.stamp.sensor_time_s;
-      row.picker.state = picker.state();
-      row.picker.track.found = true;
-      row.picker.track.center = *tapped_centre;
-      row.picker.track.radius_px = picker.candidate()->RadiusPx();
-      row.picker.track.confidence = 1;
-      rows.push_back(row);
-    } else if (index > tap->frame) {
-      const std::optional<Eigen::Isometry3d> base = metric.BaseFromCamera(mono.stamp.sensor_time_s);
-      SlamView gated = view;
-      if (!base) gated.tracking = false;  // No arm pose: no base frame for this image.
-      const double elapsed_s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      row.picker = picker.Process(frame_id, mono.stamp.sensor_time_s, mono.image, gated,
-                                  base.value_or(Eigen::Isometry3d::Identity()),
-                                  mono.stamp.sensor_time_s + elapsed_s);
-      context.timing->Add("tracking", row.picker.tracking_ms);
-      if (row.picker.target) {
-        ++targets;
-        if (server) server->PublishTarget(*row.picker.target);
-        last = {index, *row.picker.target, row.picker.track, r.map_from_camera, r.map, *base};
-        if (row.picker.location)
-          last.unfused_in_base = *base * row.picker.location->button_in_camera;
-        sent.push_back(last);
-      }
-      rows.push_back(row);
-    }
-    const double frame_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    context.timing->Add("total", frame_ms);
-    if (index >= tap->frame && first_target_index < 0) {
-      processing_ms_to_first += frame_ms;
-      if (last.index >= 0) {
-        first_target_index = index;
-        first_target_stamp_s = mono.stamp.sensor_time_s;
-      }
-    }
-    if (context.progress) context.progress(index + 1, total);
+void ButtonPipeline::StartRun() {
+  const bool stopped = picker_ && picker_->state() == PickerState::kStopped;
+  picker_ = std::make_unique<ButtonPicker>(config_.picker);
+  if (stopped) picker_->Stop();  // A new run does not lift the operator's STOP.
+  metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
+                                             config_.mono_run.gt_tolerance_s);
+  log_ = ButtonRunLog();
+  frames_ = 0;
+  if (config_.tap) {
+    ButtonTapRequest tap;
+    tap.x = config_.tap->x;
+    tap.y = config_.tap->y;
+    tap.frame = config_.tap->frame;
+    tap.confirm = true;  // button.run.tap is the operator's tap and Yes.
+    tap.required = headless_;
+    commands_->Tap(tap);
   }
-  slam.Stop();
-  if (frames == 0) return OutOfRange(path + " holds no frames");
-  if (tap->frame >= frames) {
-    return OutOfRange("button.run.tap: frame " + std::to_string(tap->frame) +
-                      " is past the last frame (" + std::to_string(frames - 1) + ")");
-  }
-  if (server) {
-    // Queued targets go out, then every client is told the stream is over.
-    const auto linger_end =
-        std::chrono::steady_clock::now() + std::chrono::duration<double>(run.linger_s);
-    while (std::chrono::steady_clock::now() < linger_end && !context.Cancelled())
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    server->SendStopAndClose(context.Cancelled() ? "cancelled" : "source ended");
-  }
+}
 
+void ButtonPipeline::Reset() {
+  mono_.Reset();
+  if (picker_) picker_->Cancel();
+  metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
+                                             config_.mono_run.gt_tolerance_s);
+  log_ = ButtonRunLog();
+  frames_ = 0;
+}
+
+StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Frame& frame) {
+  if (!metric_) return FailedPrecondition("button: a frame before the source was opened");
+  const double start = HostTimeS();  // For timing statistics only.
+  StatusOr<std::shared_ptr<const MonoSlamFrameResult>> mono = mono_.ProcessMono(frame);
+  if (!mono.ok()) return mono.status();
+  auto out = std::make_shared<ButtonFrameResult>();
+  static_cast<MonoSlamFrameResult&>(*out) = **mono;
+  if (!out->slam) return std::shared_ptr<const PipelineResult>(out);  // Status says why.
+  const double slam_ms = (HostTimeS() - start) * 1000.0;
+  if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
+  const MonoSlamResult& r = *out->slam;
+  const SlamView view = metric_->Update(r, mono_.camera());
+  out->scale_converged = view.scale_converged;
+  out->scale_ml = metric_->lambda_ml();
+  const int64_t index = frames_++;
+  SIGHTLINE_RETURN_IF_ERROR(ApplyCommands(r, index, out.get()));
+  const bool tap_frame = out->tap_answered && out->tap_status.ok();
+  if (!tap_frame) RunPicker(r, view, index, out.get());
+  AddStats((*mono)->stats, slam_ms, !tap_frame && log_.tap_index >= 0, out.get());
+  Record(*out, view.tracking, index, slam_ms, (HostTimeS() - start) * 1000.0);
+  return std::shared_ptr<const PipelineResult>(out);
+}
+
+Status ButtonPipeline::ApplyCommands(const MonoSlamResult& r, int64_t index,
+                                     ButtonFrameResult* out) {
+  const ButtonCommands::Pending pending = commands_->Take(index);
+  if (pending.stop) picker_->Stop();
+  if (pending.restart) picker_->Start();
+  if (pending.cancel) picker_->Cancel();
+  if (pending.tap) SIGHTLINE_RETURN_IF_ERROR(HandleTap(*pending.tap, r, index, out));
+  if (pending.confirm) picker_->Confirm();
+  if (out->tap_answered && out->tap_status.ok()) out->picker.state = picker_->state();
+  return Status::Ok();
+}
+
+Status ButtonPipeline::HandleTap(const ButtonTapRequest& tap, const MonoSlamResult& r,
+                                 int64_t index, ButtonFrameResult* out) {
+  const int64_t frame_id = FrameId(r.stamp, index);
+  out->tap_answered = true;
+  out->tap_status = picker_->Tap(r.image, {tap.x, tap.y}, frame_id);
+  if (!out->tap_status.ok()) {
+    if (!tap.required) return Status::Ok();  // The operator is asked again.
+    return out->tap_status.WithContext("tap at " + config_.run.tap + " (frame " +
+                                       std::to_string(index) + ")");
+  }
+  const ButtonModel& candidate = *picker_->candidate();
+  out->candidate_outline = candidate.contour;
+  if (tap.confirm) picker_->Confirm();
+  log_.tapped_centre = candidate.center;
+  log_.tap_index = index;
+  log_.tap_stamp_s = r.stamp.sensor_time_s;
+  log_.first_target_index = -1;
+  log_.processing_ms_to_first = 0;
+  // The tap frame's row: the candidate, tracked by the tap itself.
+  PickerFrame& p = out->picker;
+  p.frame_id = frame_id;
+  p.stamp_s = r.stamp.sensor_time_s;
+  p.track.found = true;
+  p.track.center = candidate.center;
+  p.track.radius_px = candidate.RadiusPx();
+  p.track.confidence = 1;
+  return Status::Ok();
+}
+
+// The time a target of this frame goes out, on the sensor clock. A recording runs in data time:
+// the frame's own time, however long the host takes. A live device's frames age in real time
+// while they wait and are processed: that delay is guarded by the host clock at send time.
+double ButtonPipeline::SendTimeS(const FrameStamp& stamp) const {
+  if (!source_ || !source_->info.live || stamp.host_time_s <= 0) return stamp.sensor_time_s;
+  const double live_delay_s = HostTimeS() - stamp.host_time_s;  // Live device guard.
+  return stamp.sensor_time_s + std::max(0.0, live_delay_s);
+}
+
+void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t index,
+                               ButtonFrameResult* out) {
+  const std::optional<Eigen::Isometry3d> base = metric_->BaseFromCamera(r.stamp.sensor_time_s);
+  if (!base) view.tracking = false;  // No arm pose: no base frame for this image.
+  out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
+                                 base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
+  if (!out->picker.target) return;
+  if (output_) {
+    output_->Publish(*out->picker.target);
+    out->target_published = true;
+  }
+  SentTarget sent;
+  sent.index = index;
+  sent.target = *out->picker.target;
+  sent.track = out->picker.track;
+  sent.map_from_camera = r.map_from_camera;
+  sent.map = r.map;
+  sent.base_from_camera = *base;
+  if (out->picker.location) sent.unfused_in_base = *base * out->picker.location->button_in_camera;
+  log_.sent.push_back(std::move(sent));
+}
+
+void ButtonPipeline::AddStats(const std::vector<std::pair<std::string, double>>& mono,
+                              double slam_ms, bool picker_ran, ButtonFrameResult* out) const {
+  out->stats.clear();
+  for (const auto& [key, value] : mono) {
+    if (key.size() < 3 || key.compare(key.size() - 3, 3, "_ms") != 0)
+      out->stats.emplace_back(key, value);
+  }
+  const PickerFrame& p = out->picker;
+  out->stats.emplace_back("button/slam_ms", slam_ms);
+  if (picker_ran) out->stats.emplace_back("button/tracking_ms", p.tracking_ms);
+  out->stats.emplace_back("button/scale_converged", out->scale_converged ? 1 : 0);
+  out->stats.emplace_back("button/scale_ml", out->scale_ml);
+  out->stats.emplace_back("button/track_confidence", p.track.confidence);
+  out->stats.emplace_back("button/fused_estimates", p.fused_estimates);
+  if (p.location) {
+    out->stats.emplace_back("button/uncertainty_m", p.location->uncertainty_m);
+    out->stats.emplace_back("button/distance_m", p.location->button_in_camera.norm());
+  }
+  out->stats.emplace_back("button/target_sent", p.target ? 1 : 0);
+}
+
+void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, int64_t index,
+                            double slam_ms, double frame_ms) {
+  if (log_.tap_index < 0) return;  // button.csv starts at the tap.
+  ButtonRunRow row;
+  row.picker = out.picker;
+  row.slam_ms = slam_ms;
+  row.slam_tracking = slam_tracking;
+  row.scale_converged = out.scale_converged;
+  row.lambda_ml = out.scale_ml;
+  log_.rows.push_back(std::move(row));
+  if (log_.first_target_index >= 0) return;
+  log_.processing_ms_to_first += frame_ms;  // Host time: a timing figure, decides nothing.
+  if (!log_.sent.empty() && log_.sent.back().index >= log_.tap_index) {
+    log_.first_target_index = index;
+    log_.first_target_stamp_s = out.stamp.sensor_time_s;
+  }
+}
+
+void ButtonPipeline::Abort(const std::string& reason) {
+  if (output_) output_->Close(reason);
+}
+
+StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
+  if (!source_ || frames_ == 0) {
+    return OutOfRange((source_ ? source_->info.path : std::string("button")) + " holds no frames");
+  }
+  if (headless_ && config_.tap && commands_->tap_pending()) {
+    return OutOfRange("button.run.tap: frame " + std::to_string(config_.tap->frame) +
+                      " is past the last frame (" + std::to_string(frames_ - 1) + ")");
+  }
+  if (output_ && headless_) {
+    output_->Linger(config_.run.linger_s);  // Queued targets go out first.
+    output_->Close("source ended");
+  }
   RunResult result;
-  result.dataset_format = source.info().format;
-  result.frames = frames;
-  SIGHTLINE_RETURN_IF_ERROR(
-      WriteButtonCsv(rows, (fs::path(context.out_dir) / "button.csv").string()));
+  result.dataset_format = source_->info.format;
+  result.frames = frames_;
+  SIGHTLINE_RETURN_IF_ERROR(WriteButtonCsv(log_.rows, (fs::path(out_dir) / "button.csv").string()));
   result.outputs.push_back("button.csv");
-  result.accuracy.emplace_back("targets_sent", static_cast<double>(targets));
-  if (metric.lambda_ml() > 0) result.accuracy.emplace_back("scale_ml", metric.lambda_ml());
-  if (metric.lambda_single() > 0)
-    result.accuracy.emplace_back("scale_single", metric.lambda_single());
-  if (first_target_index >= 0) {
-    result.counts.emplace_back("tap_to_first_target_frames",
-                               static_cast<double>(first_target_index - tap->frame));
-    result.counts.emplace_back("tap_to_first_target_ms",
-                               1e3 * (first_target_stamp_s - tap_stamp_s));
-    result.counts.emplace_back("tap_to_first_target_processing_ms", processing_ms_to_first);
-  } else {
-    notes.push_back("no target was sent");
-  }
-  if (server) {
-    const ArmServerStats stats = server->Stats();
-    result.counts.emplace_back("arm_clients_at_start", clients_at_start);
+  std::vector<std::string> notes;
+  AddButtonFigures(log_, *metric_, mono_.camera(), config_.picker, truth_, &result, &notes);
+  if (output_) {
+    const ArmServerStats stats = output_->Stats();
+    result.counts.emplace_back("arm_clients_at_start", output_->clients_at_start());
     result.counts.emplace_back("arm_targets_published", static_cast<double>(stats.targets));
     result.counts.emplace_back("arm_lines_sent", static_cast<double>(stats.sent_lines));
   }
-
-  // Accuracy against the simulator's true buttons.
-  if (truth && tapped_centre) {
-    const TrueButton* button = nullptr;
-    double best = 1e18;
-    for (const TrueButton& b : *truth) {
-      if (static_cast<size_t>(tap->frame) >= b.pixel.size() || !b.visible[tap->frame]) continue;
-      const double d =
-          (b.pixel[tap->frame] - Eigen::Vector2d(tapped_centre->x, tapped_centre->y)).norm();
-      if (d < best) best = d, button = &b;
-    }
-    if (button == nullptr) {
-      notes.push_back("no true button is visible in the tap frame");
-    } else {
-      result.counts.emplace_back("true_button", button->id);
-      result.accuracy.emplace_back("tap_selection_error_px", best);
-      std::vector<double> errors;
-      for (const ButtonRunRow& row : rows) {
-        const size_t f = static_cast<size_t>(row.picker.frame_id);
-        if (!row.picker.track.found || f >= button->pixel.size() || !button->visible[f]) continue;
-        errors.push_back((Eigen::Vector2d(row.picker.track.center.x, row.picker.track.center.y) -
-                          button->pixel[f])
-                             .norm());
-      }
-      if (!errors.empty()) {
-        result.accuracy.emplace_back("track_error_px_median", Median(errors));
-        result.accuracy.emplace_back("track_error_px_max",
-                                     *std::max_element(errors.begin(), errors.end()));
-        result.counts.emplace_back("track_error_frames", static_cast<double>(errors.size()));
-      }
-      if (!world_from_base) {
-        notes.push_back("hand_eye.yaml has no world_from_base: no 3D error");
-      } else if (last.index >= 0) {
-        const Eigen::Vector3d truth_in_base = world_from_base->inverse() * button->center_in_world;
-        result.accuracy.emplace_back("final_error_mm",
-                                     1e3 * (last.target.position_m - truth_in_base).norm());
-        result.accuracy.emplace_back("final_error_mm_unfused",
-                                     1e3 * (last.unfused_in_base - truth_in_base).norm());
-        // The same frames located with the single-ratio scale and fused the same way.
-        if (metric.lambda_single() > 0) {
-          std::vector<Eigen::Vector3d> single_positions;
-          for (const LastTarget& t : sent) {
-            if (!t.map) continue;
-            const SlamView single = MetricSlamView::MakeView(
-                opened->camera, true, t.map_from_camera, *t.map, metric.lambda_single());
-            LocatorInput in;
-            in.camera = single.camera;
-            in.camera_from_world = single.camera_from_world;
-            in.points_in_world = single.map_points_in_world.get();
-            in.button_px = {t.track.center.x, t.track.center.y};
-            in.button_radius_px = t.track.radius_px;
-            StatusOr<ButtonLocation> at = ButtonLocator(picker_options.locate).Locate(in);
-            if (at.ok() && at->plane_sound)
-              single_positions.push_back(t.base_from_camera * at->button_in_camera);
-          }
-          if (single_positions.empty()) {
-            notes.push_back("single-ratio relocation found no sound plane");
-          } else {
-            Eigen::Vector3d p = FuseMedian(single_positions, picker_options.fuse.window);
-            result.accuracy.emplace_back("final_error_mm_single_ratio",
-                                         1e3 * (p - truth_in_base).norm());
-          }
-        }
-      }
-    }
-  }
-  result.counts.emplace_back("scale_pairs_used", metric.pairs_used());
-  result.counts.emplace_back("lost_frames", slam.lost_frames());
-  std::ofstream log(fs::path(context.out_dir) / "button_notes.txt");
+  result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
+  result.counts.emplace_back("lost_frames", mono_.lost_frames());
+  std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("button_notes.txt");
   return result;
 }
 
-}  // namespace
-
-PipelineInfo ButtonPipeline() {
+PipelineInfo ButtonPipelineInfo(std::shared_ptr<ButtonCommands> commands,
+                                std::shared_ptr<MonoSlamCommands> mono_commands) {
   PipelineInfo info;
   info.name = "button";
-  info.summary =
-      "the operator's button picker headless: tap (--tap X,Y[@FRAME]), track, locate, gate, send";
+  info.title = "Button picker (monocular SLAM)";
+  info.summary = "the operator's button picker: tap (--tap X,Y[@FRAME]), track, locate, gate, send";
+  info.accepts = {SourceKind::kMono, SourceKind::kStereo};
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MonoSlamOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MonoSlamRunOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonPickerOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MetricViewOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmServerOptions::Describe()));
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonGuiOptions::Describe()));
     return set->Declare(ButtonRunOptions::Describe());
   };
-  info.run = RunButtonPipeline;
+  info.create = [commands, mono_commands]() -> std::unique_ptr<Pipeline> {
+    return std::make_unique<ButtonPipeline>(commands, mono_commands);
+  };
   return info;
 }
 

@@ -1,12 +1,14 @@
-// The `button` pipeline: the operator's button picker run headless on a recording. Monocular
-// SLAM (synchronous), the metric scale from the arm's poses, the tap of --tap X,Y[@FRAME]
-// (confirmed at once: the operator's Yes is implied), tracking, 3D location and the safety gate
-// per frame; targets optionally published through the arm-target server (--serve HOST:PORT).
-// Writes button.csv and, with the simulator's buttons.csv beside the images, the accuracy
-// against the true centre of the tapped button.
+// The `button` pipeline: the operator's button picker, the same object in the CLI and the GUI.
+// Monocular SLAM (the mono-slam pipeline), the metric scale from the arm's poses, the
+// operator's tap and answer (ButtonCommands: the GUI's operator panel, or --tap X,Y[@FRAME]
+// confirmed at once), tracking, 3D location and the safety gate per frame, in data time (the
+// frames' sensor timestamps); targets optionally published through the arm-target server
+// (--serve HOST:PORT, button.gui.serve). Finish writes button.csv and, with the simulator's
+// buttons.csv beside the images, the accuracy against the true centre of the tapped button.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,10 @@
 #include "core/button/button_picker.h"
 #include "core/common/status.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/button_result.h"
+#include "core/pipeline/button_target_output.h"
+#include "core/pipeline/metric_slam_view.h"
+#include "core/pipeline/mono_slam_pipeline.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline {
@@ -28,6 +34,14 @@ struct ButtonRunOptions {
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonRunOptions> Describe();
+};
+
+// The GUI's switch for the arm-target server. Key "button.gui.serve", kept so that profiles
+// saved by the GUI load; serving is on when it or button.run.serve is set.
+struct ButtonGuiOptions {
+  bool serve = false;
+
+  static OptionTable<ButtonGuiOptions> Describe();
 };
 
 // A parsed tap.
@@ -61,7 +75,100 @@ StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path);
 // Writes button.csv (one row per frame from the tap on).
 Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& path);
 
-// The registry entry.
-PipelineInfo ButtonPipeline();
+// Where a frame that sent a target was: for the final error and its single-ratio relocation.
+struct SentTarget {
+  int64_t index = -1;
+  ArmTarget target;
+  ButtonTrack track;
+  Eigen::Isometry3d map_from_camera = Eigen::Isometry3d::Identity();
+  std::shared_ptr<const MapSnapshot> map;
+  Eigen::Isometry3d base_from_camera = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d unfused_in_base = Eigen::Vector3d::Constant(std::nan(""));
+};
+
+// What the run's figures need besides button.csv.
+struct ButtonRunLog {
+  std::vector<ButtonRunRow> rows;  // One per frame from the first tap on.
+  std::vector<SentTarget> sent;    // Every frame that sent a target.
+  std::optional<cv::Point2d> tapped_centre;
+  int64_t tap_index = -1, first_target_index = -1;
+  double tap_stamp_s = 0, first_target_stamp_s = 0, processing_ms_to_first = 0;
+};
+
+// The simulator's truth beside a recording: its buttons and the arm's base in its map frame.
+struct ButtonTruth {
+  std::vector<TrueButton> buttons;
+  std::optional<Eigen::Isometry3d> world_from_base;
+};
+
+// The button pipeline. Process runs the SLAM, applies the operator's commands, tracks, locates,
+// gates and publishes; every age and staleness decision uses the frames' sensor timestamps.
+class ButtonPipeline : public Pipeline {
+ public:
+  // Headless without `commands` (button.run.tap is required and confirmed at once).
+  explicit ButtonPipeline(std::shared_ptr<ButtonCommands> commands = nullptr,
+                          std::shared_ptr<MonoSlamCommands> mono_commands = nullptr);
+  ~ButtonPipeline() override;
+
+  Status Configure(const OptionSet& options) override;
+  Status Open(const PipelineSource& source) override;
+  int64_t FrameLimit() const override { return mono_.FrameLimit(); }
+  StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
+  StatusOr<std::shared_ptr<const PipelineResult>> Reprocess(const Frame& frame) override {
+    return Process(frame);
+  }
+  void Reset() override;
+  void Abort(const std::string& reason) override;
+  StatusOr<RunResult> Finish(const std::string& out_dir) override;
+  const StatisticTable& Statistics() const override { return ButtonStatistics(); }
+
+  // For tests: sleeps this long inside every Process (a slow or loaded host). The outputs must
+  // not change, since no decision reads the host clock.
+  void SetHostDelayForTest(double seconds) { host_delay_s_ = seconds; }
+
+ private:
+  struct Config {
+    MonoSlamOptions slam;
+    MonoSlamRunOptions mono_run;
+    ButtonPickerOptions picker;
+    ButtonRunOptions run;
+    MetricViewOptions view;
+    ArmServerOptions server;
+    bool serve = false;
+    std::optional<ButtonTap> tap;  // button.run.tap.
+  };
+  static StatusOr<Config> Parse(const OptionSet& options);
+  Status StartOutput();
+  void StartRun();
+  Status ApplyCommands(const MonoSlamResult& r, int64_t index, ButtonFrameResult* out);
+  Status HandleTap(const ButtonTapRequest& tap, const MonoSlamResult& r, int64_t index,
+                   ButtonFrameResult* out);
+  void RunPicker(const MonoSlamResult& r, SlamView view, int64_t index, ButtonFrameResult* out);
+  double SendTimeS(const FrameStamp& stamp) const;
+  void Record(const ButtonFrameResult& out, bool slam_tracking, int64_t index, double slam_ms,
+              double frame_ms);
+  void AddStats(const std::vector<std::pair<std::string, double>>& mono, double slam_ms,
+                bool picker_ran, ButtonFrameResult* out) const;
+
+  bool headless_;  // No operator: the tap comes from button.run.tap.
+  std::shared_ptr<ButtonCommands> commands_;
+  Config config_;
+  std::optional<PipelineSource> source_;
+  MonoSlamPipeline mono_;
+  std::unique_ptr<ButtonPicker> picker_;
+  std::unique_ptr<MetricSlamView> metric_;
+  std::shared_ptr<ButtonTargetOutput> output_;
+  std::optional<ButtonTruth> truth_;
+  ButtonRunLog log_;
+  int64_t frames_ = 0;
+  double host_delay_s_ = 0;
+};
+
+// The figures of a finished button run: targets, scale, tap-to-target, server counts and, with
+// the simulator's truth, the errors against the tapped button. Notes explain figures left out.
+void AddButtonFigures(const ButtonRunLog& log, const MetricSlamView& metric,
+                      const PinholeCamera& camera, const ButtonPickerOptions& picker,
+                      const std::optional<ButtonTruth>& truth, RunResult* result,
+                      std::vector<std::string>* notes);
 
 }  // namespace sightline

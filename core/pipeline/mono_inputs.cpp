@@ -81,22 +81,26 @@ StatusOr<OpenedMono> OpenMono(const std::string& path) {
   return out;
 }
 
+std::optional<MonoFrame> MonoFrameOf(const Frame& frame) {
+  if (const MonoFrame* m = std::get_if<MonoFrame>(&frame)) return *m;
+  if (const StereoFrame* s = std::get_if<StereoFrame>(&frame)) {
+    MonoFrame mono;
+    mono.stamp = s->stamp;
+    mono.image = s->left;
+    return mono;
+  }
+  return std::nullopt;
+}
+
 StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::string& path) {
   const Status grabbed = source.Grab();
   if (grabbed.code() == StatusCode::kOutOfRange) return std::optional<MonoFrame>();
   if (!grabbed.ok()) return grabbed;
   StatusOr<Frame> frame = source.Retrieve();
   if (!frame.ok()) return frame.status();
-  MonoFrame mono;
-  if (const MonoFrame* m = std::get_if<MonoFrame>(&*frame)) {
-    mono = *m;
-  } else if (const StereoFrame* s = std::get_if<StereoFrame>(&*frame)) {
-    mono.stamp = s->stamp;
-    mono.image = s->left;
-  } else {
-    return InvalidArgument(path + " gives neither mono nor stereo frames");
-  }
-  return std::optional<MonoFrame>(std::move(mono));
+  std::optional<MonoFrame> mono = MonoFrameOf(*frame);
+  if (!mono) return InvalidArgument(path + " gives neither mono nor stereo frames");
+  return mono;
 }
 
 StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,

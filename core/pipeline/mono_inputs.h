@@ -42,6 +42,9 @@ struct OpenedMono {
 };
 StatusOr<OpenedMono> OpenMono(const std::string& path);
 
+// A mono frame, or a stereo frame's left image as one; nullopt for other kinds.
+std::optional<MonoFrame> MonoFrameOf(const Frame& frame);
+
 // The next frame as a mono frame (a stereo frame's left image); nullopt at the end.
 StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::string& path);
 

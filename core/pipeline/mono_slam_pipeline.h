@@ -20,6 +20,7 @@
 #include "core/mono/scale_estimator.h"
 #include "core/options/option_table.h"
 #include "core/pipeline/mono_inputs.h"
+#include "core/pipeline/mono_slam_result.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline {
@@ -53,8 +54,9 @@ struct MonoSlamRun {
   Trajectory MetricEstimate() const;
 };
 
-// Runs the SLAM over `path`. Errors: unreadable dataset, no camera calibration, invalid
-// options, an unreadable arm_poses.txt / hand_eye.yaml that was asked for, cancellation.
+// Runs the pipeline over `path` (a mono recording or a stereo one's left images) and returns
+// its run. Errors: unreadable dataset, no camera calibration, invalid options, an unreadable
+// arm_poses.txt / hand_eye.yaml that was asked for, cancellation.
 StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions& options,
                                   const MonoSlamRunOptions& run, TimingStats* timing = nullptr,
                                   const std::function<void(int64_t, int64_t)>& progress = {},
@@ -72,7 +74,61 @@ std::vector<std::pair<std::string, double>> MonoSlamAccuracy(const MonoSlamRun& 
 // into `dir` and lists them in result->outputs.
 Status WriteMonoSlamOutputs(const MonoSlamRun& run, const std::string& dir, RunResult* result);
 
-// The registry entry.
-PipelineInfo MonoSlamPipeline();
+// The mono-slam pipeline: MonoSlam over each frame (a mono image or a stereo pair's left), the
+// metric scale re-estimated whenever the map changes, and the run's files on Finish.
+class MonoSlamPipeline : public Pipeline {
+ public:
+  // `commands` (optional) carries a user's Reset map / Pause mapping from another thread.
+  explicit MonoSlamPipeline(std::shared_ptr<MonoSlamCommands> commands = nullptr);
+  ~MonoSlamPipeline() override;
+
+  Status Configure(const OptionSet& options) override;
+  // The same with parsed options (the button pipeline forces the metric source to the arm).
+  Status Configure(const MonoSlamOptions& options, const MonoSlamRunOptions& run);
+  Status Open(const PipelineSource& source) override;
+  int64_t FrameLimit() const override { return run_.max_frames; }
+  StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
+  // The typed result of Process.
+  StatusOr<std::shared_ptr<const MonoSlamFrameResult>> ProcessMono(const Frame& frame);
+  // Tracks the frame again on the map as it is (a still frame simply tracks again).
+  StatusOr<std::shared_ptr<const PipelineResult>> Reprocess(const Frame& frame) override {
+    return Process(frame);
+  }
+  void Reset() override;
+  StatusOr<RunResult> Finish(const std::string& out_dir) override;
+  const StatisticTable& Statistics() const override { return MonoSlamStatistics(); }
+
+  // The run so far, with the map's final bundle adjustment (run once per map).
+  StatusOr<MonoSlamRun> Summary();
+
+  // What Open found: the camera, the measured camera poses (metres) and where they came from.
+  const PinholeCamera& camera() const { return camera_; }
+  const Trajectory& metric_poses() const { return metric_; }
+  const std::string& metric_source() const { return metric_source_; }
+  const std::optional<Trajectory>& ground_truth() const { return ground_truth_; }
+  const MonoSlamRunOptions& run_options() const { return run_; }
+  const MonoSlamOptions& slam_options() const { return options_; }
+  int lost_frames() const;
+
+ private:
+  Status StartSlam();
+  void AddFrameStats(const MonoSlamResult& r, MonoSlamFrameResult* out);
+  void UpdateScale(const MonoSlamResult& r, MonoSlamFrameResult* out);
+
+  std::shared_ptr<MonoSlamCommands> commands_;
+  MonoSlamOptions options_;
+  MonoSlamRunOptions run_;
+  std::optional<PipelineSource> source_;
+  PinholeCamera camera_;
+  std::optional<Trajectory> ground_truth_;
+  Trajectory metric_;
+  std::string metric_source_ = "none";
+  TimingStats slam_timing_;  // MonoSlam's stages, read into each frame's statistics.
+  std::unique_ptr<MonoSlam> slam_;
+  std::vector<MonoRunFrame> frames_;
+  std::shared_ptr<const MapSnapshot> last_map_;
+  double lambda_ = 0, single_ = 0;
+  double final_bundle_ms_ = -1;  // The final bundle adjustment's time, once run.
+};
 
 }  // namespace sightline

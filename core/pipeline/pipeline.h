@@ -120,6 +120,9 @@ class Pipeline {
   }
   // Forgets the run's state (a seek, or the user's reset); options and source stay.
   virtual void Reset() = 0;
+  // The run ends early (cancelled, or an error; `reason` says which): live outputs are told at
+  // once, e.g. arm clients get a stop line naming the reason. Files are not written.
+  virtual void Abort(const std::string& reason) { (void)reason; }
   // Writes the run's files so far into `out_dir` (which exists) and returns its figures. The
   // CLI calls it after the last frame; the GUI for File > Save results, after which the run
   // may go on (Finish leaves the run's state as it is).

@@ -48,6 +48,48 @@ StatusOr<std::unique_ptr<Source>> OpenForPipeline(const PipelineInfo& info, cons
 
 }  // namespace
 
+namespace {
+
+// Feeds every wanted frame of `source` to `pipeline`; returns the frames processed.
+StatusOr<int64_t> FeedFrames(Pipeline& pipeline, Source& source, const RunContext& context) {
+  const StatisticTable& table = pipeline.Statistics();
+  int64_t total = source.info().frame_count;
+  const int64_t limit = pipeline.FrameLimit();
+  if (limit > 0 && (total < 0 || total > limit)) total = limit;
+  int64_t processed = 0;
+  for (int64_t index = 0; total < 0 || index < total; ++index) {
+    if (context.Cancelled()) {
+      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
+    }
+    const double read_start = HostTimeS();
+    const Status grabbed = source.Grab();
+    if (grabbed.code() == StatusCode::kOutOfRange) break;
+    if (!grabbed.ok()) return grabbed;
+    if (!pipeline.Wants(index)) continue;  // Grabbed but not decoded.
+    StatusOr<Frame> frame = source.Retrieve();
+    if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
+    const double process_start = HostTimeS();
+    StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline.Process(*frame);
+    const double end = HostTimeS();
+    if (!result.ok()) return result.status();
+    ++processed;
+    if (context.timing != nullptr) {
+      context.timing->Add("read", (process_start - read_start) * 1000.0);
+      AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
+    }
+    if (context.progress) context.progress(index + 1, total);
+  }
+  if (processed == 0) return OutOfRange(context.dataset_path + " gave no frame to process");
+  return processed;
+}
+
+// The reason live outputs are given when a run ends early.
+std::string AbortReason(const Status& status) {
+  return status.code() == StatusCode::kCancelled ? "cancelled" : "error";
+}
+
+}  // namespace
+
 StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context) {
   if (!info.create) return Internal("pipeline '" + info.name + "' has no object to run");
   StatusOr<std::unique_ptr<Source>> opened =
@@ -61,37 +103,16 @@ StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& cont
   std::unique_ptr<Pipeline> pipeline = info.create();
   SIGHTLINE_RETURN_IF_ERROR(pipeline->Configure(context.options));
   SIGHTLINE_RETURN_IF_ERROR(pipeline->Open(PipelineSource::From(source)));
-  const StatisticTable& table = pipeline->Statistics();
-
-  int64_t total = source.info().frame_count;
-  const int64_t limit = pipeline->FrameLimit();
-  if (limit > 0 && (total < 0 || total > limit)) total = limit;
-  int64_t processed = 0;
-  for (int64_t index = 0; total < 0 || index < total; ++index) {
-    if (context.Cancelled()) {
-      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
-    }
-    const double read_start = HostTimeS();
-    const Status grabbed = source.Grab();
-    if (grabbed.code() == StatusCode::kOutOfRange) break;
-    if (!grabbed.ok()) return grabbed;
-    if (!pipeline->Wants(index)) continue;  // Grabbed but not decoded.
-    StatusOr<Frame> frame = source.Retrieve();
-    if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
-    const double process_start = HostTimeS();
-    StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline->Process(*frame);
-    const double end = HostTimeS();
-    if (!result.ok()) return result.status();
-    ++processed;
-    if (context.timing != nullptr) {
-      context.timing->Add("read", (process_start - read_start) * 1000.0);
-      AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
-    }
-    if (context.progress) context.progress(index + 1, total);
+  StatusOr<int64_t> processed = FeedFrames(*pipeline, source, context);
+  if (!processed.ok()) {
+    pipeline->Abort(AbortReason(processed.status()));
+    return processed.status();
   }
-  if (processed == 0) return OutOfRange(context.dataset_path + " gave no frame to process");
   StatusOr<RunResult> result = pipeline->Finish(context.out_dir);
-  if (!result.ok()) return result.status();
+  if (!result.ok()) {
+    pipeline->Abort(AbortReason(result.status()));
+    return result.status();
+  }
   if (result->dataset_format.empty()) result->dataset_format = source.info().format;
   return result;
 }
@@ -185,8 +206,8 @@ PipelineRegistry BuiltinPipelines() {
   s = registry.Register(MappingPipelineInfo());
   s = registry.Register(StereoVoPipelineInfo());
   s = registry.Register(MobilityPipelineInfo());
-  s = registry.Register(MonoSlamPipeline());
-  s = registry.Register(ButtonPipeline());
+  s = registry.Register(MonoSlamPipelineInfo());
+  s = registry.Register(ButtonPipelineInfo());
   (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
   return registry;
 }

@@ -44,7 +44,9 @@ TEST(ButtonPickerPresenter, TapConfirmTargetSentAndStopOnTheSimulatedPanel) {
   server.port = port;
   server.heartbeat_s = 0.05;
   MainWindow window;
-  auto* picker = new ButtonPickerPresenter(server, /*serve=*/true);
+  auto* picker =
+      new ButtonPickerPresenter({"button.arm.port=" + std::to_string(port),
+                                 "button.arm.heartbeat_s=0.05", "button.gui.serve=true"});
   window.AddPipeline(picker);
   ASSERT_TRUE(window.ActivatePipeline(picker->Title()));
   window.show();

@@ -112,7 +112,7 @@ Driven Drive(const std::string& dir, const PipelineSource& source,
              const std::vector<std::string>& overrides, int frames,
              const std::vector<std::string>& after_open = {}) {
   Driven out;
-  const PipelineInfo& info = *BuiltinPipelines().Find("stereo-vo");
+  const PipelineInfo info = *BuiltinPipelines().Find("stereo-vo");
   OptionSet options;
   EXPECT_TRUE(info.declare_options(&options).ok());
   for (const std::string& o : overrides) EXPECT_TRUE(options.ApplyOverride(o).ok()) << o;

@@ -1,0 +1,45 @@
+// Where the button pipeline's targets go: the arm-target server (core/button/arm_server.h) when
+// button.run.serve / button.gui.serve is on. Publishing is thread-safe, so the operator's STOP
+// reaches the arm at once from any thread.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "core/button/arm_server.h"
+#include "core/common/status.h"
+
+namespace sightline {
+
+class ButtonTargetOutput {
+ public:
+  // Starts the server. Errors name the address and port that could not be bound.
+  static StatusOr<std::shared_ptr<ButtonTargetOutput>> Start(const ArmServerOptions& options);
+
+  // Live device guard by the host clock: waits until `clients` arm clients are authorised, at
+  // most `timeout_s` seconds (Unavailable saying how many came).
+  Status WaitForClients(int clients, double timeout_s);
+  void Publish(const ArmTarget& target) { server_->PublishTarget(target); }
+  void PublishStop(const std::string& reason) { server_->PublishStop(reason); }
+  void Resume() { server_->Resume(); }
+  // Live device guard by the host clock: keeps serving `seconds` so that queued lines reach the
+  // clients before the run ends. Waits only the first time.
+  void Linger(double seconds);
+
+  // Sends every client a stop line naming `reason` and closes the server (any exit path: the
+  // source ended, the run was cancelled or failed). Later calls do nothing.
+  void Close(const std::string& reason) { server_->SendStopAndClose(reason); }
+
+  ArmServerStats Stats() const { return server_->Stats(); }
+  int clients_at_start() const { return clients_at_start_; }
+
+ private:
+  explicit ButtonTargetOutput(std::unique_ptr<ArmServer> server) : server_(std::move(server)) {}
+
+  std::unique_ptr<ArmServer> server_;
+  int clients_at_start_ = 0;
+  bool lingered_ = false;
+};
+
+}  // namespace sightline
