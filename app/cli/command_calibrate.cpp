@@ -133,7 +133,7 @@ int HandEye(const std::vector<std::string>& in, const std::optional<std::string>
   auto result = CalibrateHandEye(arm, *boards, c.settings.hand_eye);
   if (!result.ok()) return Fail("calibrate handeye: " + result.status().ToString());
   std::fputs(HandEyeReport(*result).c_str(), stdout);
-  Status written = WriteHandEyeCalibration(*result, c.out);
+  Status written = SaveHandEyeCalibration(*result, c.out);
   if (!written.ok()) return Fail("calibrate handeye: " + written.ToString());
   std::printf("wrote %s\n", c.out.c_str());
   return 0;

@@ -6,6 +6,7 @@
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "core/io/floor_file.h"
 #include "core/options/option_set.h"
 #include "core/pipeline/floor_calibration.h"
 

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "app/sightline/statistics_text.h"
+#include "core/io/floor_file.h"
 #include "core/pipeline/mapping_pipeline.h"
 #include "widgets/image_view.h"
 #include "widgets/scene_view.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/sightline/pipeline_presenter.h"
-#include "core/mapping/floor_types.h"
+#include "core/common/floor.h"
 #include "core/pipeline/mapping_result.h"
 
 class QDockWidget;

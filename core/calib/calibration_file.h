@@ -1,11 +1,14 @@
-// Saving calibrations as OpenCV YAML (cv::FileStorage) that Sightline's readers accept:
+// Saving calibration results in the calibration file formats of core/io, which every reader of
+// the project and OpenCV's cv::FileStorage read:
 //
-// - mono: a camera.yaml (core/io/camera_yaml.h: model, width, height, fx, fy, cx, cy,
-//   distortion) written by cv::FileStorage, with the RMS, board and per-view errors as comments,
-//   so the image-folder and TUM readers take it as it is and OpenCV reads it too;
-// - stereo: OpenCV's stereo layout (image_width, image_height, M1 D1 M2 D2 R T E F R1 R2 P1 P2
-//   Q, rms_left, rms_right, rms_stereo, baseline_m, board) plus one camera.yaml per camera
-//   beside it (FILE_left.yaml, FILE_right.yaml).
+// - mono: a camera.yaml (core/io/camera_yaml.h) with the RMS, board, coverage and per-view
+//   errors as comments;
+// - stereo: the stereo calibration file (core/io/stereo_calibration_file.h) with E F R1 R2 P1 P2
+//   Q, rms_left, rms_right, rms_stereo, baseline_m and the board, plus one camera.yaml per camera
+//   beside it (FILE_left.yaml, FILE_right.yaml);
+// - hand-eye: a hand_eye.yaml (core/io/hand_eye_file.h) with the fit's figures.
+//
+// Reading them back is core/io's: ReadCameraYaml, ReadStereoCalibration, ReadHandEyeFile.
 #pragma once
 
 #include <string>
@@ -13,32 +16,22 @@
 #include "core/calib/hand_eye.h"
 #include "core/calib/mono_calibration.h"
 #include "core/calib/stereo_calibration.h"
-#include "core/common/camera.h"
 #include "core/common/status.h"
 
 namespace sightline {
 
-// Writes a mono calibration as a camera.yaml. Unavailable when the file cannot be written.
-Status WriteMonoCalibration(const MonoCalibration& calibration, const ChessboardOptions& board,
-                            const std::string& path);
+// Saves a mono calibration as a camera.yaml. Unavailable when the file cannot be written.
+Status SaveMonoCalibration(const MonoCalibration& calibration, const ChessboardOptions& board,
+                           const std::string& path);
 
 // The camera files written beside a stereo file: "out/rig.yaml" -> "out/rig_left.yaml".
 std::string StereoCameraFilePath(const std::string& stereo_path, const std::string& side);
 
-// Writes a stereo calibration in OpenCV's layout plus the two camera.yaml files.
-Status WriteStereoCalibration(const StereoCalibration& calibration, const ChessboardOptions& board,
-                              const std::string& path);
+// Saves a stereo calibration as a stereo calibration file plus the two camera.yaml files.
+Status SaveStereoCalibration(const StereoCalibration& calibration, const ChessboardOptions& board,
+                             const std::string& path);
 
-// Reads an OpenCV stereo file (M1 D1 M2 D2 R T, image_width/height) into a rig. NotFound when
-// missing; ParseError naming the file and the missing or malformed field.
-StatusOr<StereoRig> ReadStereoCalibration(const std::string& path);
-
-// Writes a hand-eye result in the layout of the simulator's hand_eye.yaml (end_effector_from_camera
-// with translation [m] and quaternion_xyzw), plus the rotation matrix and the fit's figures.
-Status WriteHandEyeCalibration(const HandEyeResult& result, const std::string& path);
-
-// Reads end_effector_from_camera (translation + quaternion_xyzw) from a hand-eye file: the
-// simulator's hand_eye.yaml or WriteHandEyeCalibration's. ParseError naming file and key.
-StatusOr<Eigen::Isometry3d> ReadEndEffectorFromCamera(const std::string& path);
+// Saves a hand-eye result as a hand_eye.yaml (end_effector_from_camera and the fit's figures).
+Status SaveHandEyeCalibration(const HandEyeResult& result, const std::string& path);
 
 }  // namespace sightline

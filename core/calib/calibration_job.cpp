@@ -75,9 +75,8 @@ StatusOr<CalibrationOutcome> RunCalibration(const CalibrationRequest& request,
 
 Status SaveCalibration(const CalibrationOutcome& outcome, const std::string& path) {
   if (outcome.stereo)
-    return WriteStereoCalibration(*outcome.stereo, outcome.request.settings.board, path);
-  if (outcome.mono)
-    return WriteMonoCalibration(*outcome.mono, outcome.request.settings.board, path);
+    return SaveStereoCalibration(*outcome.stereo, outcome.request.settings.board, path);
+  if (outcome.mono) return SaveMonoCalibration(*outcome.mono, outcome.request.settings.board, path);
   return FailedPrecondition("no calibration to save");
 }
 

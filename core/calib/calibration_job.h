@@ -42,7 +42,7 @@ StatusOr<CalibrationOutcome> RunCalibration(const CalibrationRequest& request,
                                             const SourceOpener& open_source,
                                             const DetectionCallbacks& callbacks = {});
 
-// Saves the outcome (WriteMonoCalibration or WriteStereoCalibration).
+// Saves the outcome (SaveMonoCalibration or SaveStereoCalibration).
 Status SaveCalibration(const CalibrationOutcome& outcome, const std::string& path);
 
 }  // namespace sightline

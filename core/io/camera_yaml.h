@@ -1,5 +1,6 @@
 // camera.yaml: the one camera file format Sightline reads beside image folders and TUM-style
-// RGB-D folders, and that the simulator writes. Plain YAML, one key per line:
+// RGB-D folders, and that the simulator, the recorder and `calibrate mono` write. Plain YAML,
+// one key per line:
 //
 //   model: pinhole                 # optional; only "pinhole" is supported
 //   width: 640                     # pixels
@@ -13,8 +14,10 @@
 //   max_depth_m: 10                # optional, RGB-D: readings beyond are invalid
 //   rate_hz: 30                    # optional: nominal frame rate
 //
-// A first line "%YAML:1.0" (cv::FileStorage) is accepted. Unknown keys are errors, so a misspelt
-// key never silently does nothing.
+// A first line "%YAML:1.0" (cv::FileStorage) is accepted and written, so OpenCV reads the file
+// too. Unknown and repeated keys are errors, so a misspelt key never silently does nothing. The
+// values are checked as calibration_checks.h says (sizes and focal lengths positive, principal
+// point inside the image, |distortion| < 1e3, optional values positive).
 #pragma once
 
 #include <optional>
@@ -22,6 +25,7 @@
 
 #include "core/common/camera.h"
 #include "core/common/status.h"
+#include "core/io/yaml_writer.h"
 
 namespace sightline {
 
@@ -36,10 +40,14 @@ struct CameraFile {
 // The file name the readers look for beside a dataset.
 inline constexpr const char* kCameraYamlName = "camera.yaml";
 
-// Reads and validates a camera.yaml. NotFound when missing; ParseError naming file and key.
+// Reads and validates a camera.yaml. NotFound when missing; other file problems as
+// CheckReadableFile says; ParseError naming file, line and key for the content.
 StatusOr<CameraFile> ReadCameraYaml(const std::string& path);
 
-// Writes `file` in the format above (optional fields only when set).
-Status WriteCameraYaml(const CameraFile& file, const std::string& path);
+// Writes `file` in the format above (optional fields only when set), with `comments`.
+// InvalidArgument (nothing written) when the reader would reject a value; Unavailable when the
+// file cannot be written.
+Status WriteCameraYaml(const CameraFile& file, const std::string& path,
+                       const FileComments& comments = {});
 
 }  // namespace sightline

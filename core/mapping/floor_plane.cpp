@@ -4,10 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <unordered_map>
 
 #include "core/mapping/option_check.h"
@@ -16,23 +13,6 @@
 namespace sightline {
 
 using mapping_internal::Invalid;
-
-double FloorPlane::PitchDownDeg() const {
-  return RadToDeg(std::asin(std::clamp(-normal.z(), -1.0, 1.0)));
-}
-
-bool FloorPlane::IsValid(std::string* error) const {
-  if (!normal.allFinite() || std::abs(normal.norm() - 1.0) > 1e-6) {
-    return Invalid(error, "floor plane normal (a, b, c) must be a finite unit vector");
-  }
-  if (!(d > 0) || !std::isfinite(d)) {
-    return Invalid(error,
-                   "floor plane d (camera height) must be positive, with (a, b, c) "
-                   "pointing up towards the camera");
-  }
-  if (!(epsilon_m > 0)) return Invalid(error, "floor plane epsilon_m must be positive");
-  return true;
-}
 
 bool FloorPlaneOptions::IsValid(std::string* error) const {
   if (!(epsilon_m > 0)) return Invalid(error, "mapping.floor.epsilon_m must be positive");
@@ -318,116 +298,6 @@ StatusOr<FloorFitResult> FloorPlaneEstimator::Fit(
   return result;
 }
 
-// --- Calibration file ---------------------------------------------------------------------
-
-Status WriteFloorCalibration(const FloorCalibration& calibration, const std::string& path) {
-  std::string error;
-  if (!calibration.plane.IsValid(&error)) return InvalidArgument(path + ": " + error);
-  std::ofstream out(path);
-  if (!out) return NotFound("cannot write floor calibration " + path);
-  const FloorPlane& p = calibration.plane;
-  char text[1024];
-  std::snprintf(text, sizeof(text),
-                "# Sightline floor plane: a x + b y + c z + d = 0 in the camera frame (x right,\n"
-                "# y down, z forward, metres); (a, b, c) is the unit normal pointing up, so d is\n"
-                "# the camera height. A point is floor when |a x + b y + c z + d| <= epsilon_m.\n"
-                "a: %.9f\nb: %.9f\nc: %.9f\nd: %.9f\nepsilon_m: %.6f\n"
-                "camera_height_m: %.6f\npitch_down_deg: %.4f\ninlier_ratio: %.4f\nframes: %d\n",
-                p.normal.x(), p.normal.y(), p.normal.z(), p.d, p.epsilon_m, p.CameraHeightM(),
-                p.PitchDownDeg(), calibration.inlier_ratio, calibration.frames);
-  out << text;
-  std::string source = calibration.source;
-  std::replace(source.begin(), source.end(), '"', '\'');
-  out << "source: \"" << source << "\"\n";
-  out.flush();
-  if (!out) return Unavailable("write to " + path + " failed (disk full?)");
-  return Status::Ok();
-}
-
-namespace {
-
-std::string Trim(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-bool ParseDouble(const std::string& text, double* value) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  *value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(*value);
-}
-
-}  // namespace
-
-StatusOr<FloorCalibration> ReadFloorCalibration(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return NotFound("floor calibration " + path + " not found");
-  FloorCalibration calibration;
-  double a = NAN, b = NAN, c = NAN, d = NAN;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::string where = path + " line " + std::to_string(number);
-    const size_t hash = line.find('#');
-    std::string text = Trim(line.substr(0, line.find('"') < hash ? std::string::npos : hash));
-    if (text.empty()) continue;
-    const size_t colon = text.find(':');
-    if (colon == std::string::npos) return ParseError(where + ": expected 'key: value'");
-    const std::string key = Trim(text.substr(0, colon));
-    std::string value = Trim(text.substr(colon + 1));
-    if (key == "source") {
-      if (value.size() >= 2 && value.front() == '"' && value.back() == '"') {
-        value = value.substr(1, value.size() - 2);
-      }
-      calibration.source = value;
-      continue;
-    }
-    double number_value = 0;
-    if (!ParseDouble(value, &number_value)) {
-      return ParseError(where + ": expected a number for '" + key + "', found '" + value + "'");
-    }
-    if (key == "a")
-      a = number_value;
-    else if (key == "b")
-      b = number_value;
-    else if (key == "c")
-      c = number_value;
-    else if (key == "d")
-      d = number_value;
-    else if (key == "epsilon_m")
-      calibration.plane.epsilon_m = number_value;
-    else if (key == "inlier_ratio")
-      calibration.inlier_ratio = number_value;
-    else if (key == "frames")
-      calibration.frames = static_cast<int>(number_value);
-    else if (key == "camera_height_m" || key == "pitch_down_deg")
-      continue;  // Derived.
-    else
-      return ParseError(where + ": unknown key '" + key + "'");
-  }
-  for (const auto& [name, v] :
-       {std::pair<const char*, double>{"a", a}, {"b", b}, {"c", c}, {"d", d}}) {
-    if (std::isnan(v)) return ParseError(path + ": missing '" + name + "'");
-  }
-  Eigen::Vector3d n(a, b, c);
-  if (n.norm() < 1e-9) return ParseError(path + ": the normal (a, b, c) is zero");
-  d /= n.norm();
-  n.normalize();
-  if (d < 0) {
-    n = -n;
-    d = -d;
-  }
-  calibration.plane.normal = n;
-  calibration.plane.d = d;
-  std::string error;
-  if (!calibration.plane.IsValid(&error)) return ParseError(path + ": " + error);
-  return calibration;
-}
-
 void FloorCalibrator::AddDepth(const cv::Mat& depth_m, const PinholeCamera& camera) {
   AppendDepthPoints(depth_m, camera, estimator_.options().max_depth_m, 2, &points_);
   ++frames_;
@@ -454,16 +324,6 @@ StatusOr<FloorCalibration> FloorCalibrator::Calibrate(const std::string& source)
 void FloorCalibrator::Clear() {
   points_.clear();
   frames_ = 0;
-}
-
-std::string DescribeFloorCalibration(const FloorCalibration& calibration) {
-  char text[160];
-  std::snprintf(text, sizeof(text),
-                "calibrated from %d frames: camera %.3f m above the floor, pitched %.1f deg "
-                "down, %.0f %% inliers",
-                calibration.frames, calibration.plane.CameraHeightM(),
-                calibration.plane.PitchDownDeg(), 100 * calibration.inlier_ratio);
-  return text;
 }
 
 }  // namespace sightline

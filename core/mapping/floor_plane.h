@@ -1,10 +1,6 @@
 // Floor plane calibration (seed 000, section 4.3.2): a RANSAC plane fit on one or more depth
-// frames or clouds, and the calibration file that stores it.
-//
-// The plane is a x + b y + c z + d = 0 in the camera frame (x right, y down, z forward), with
-// (a, b, c) a unit normal pointing up, towards the camera. Then a x + b y + c z + d is the height
-// of a point above the floor and d is the camera's height. A point is floor when its height is
-// within epsilon_floor of zero.
+// frames or clouds. The plane model is core/common/floor.h; the file that stores it is
+// core/io/floor_file.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,6 +9,7 @@
 #include <vector>
 
 #include "core/common/camera.h"
+#include "core/common/floor.h"
 #include "core/common/status.h"
 #include "core/mapping/floor_types.h"
 #include "core/options/option_table.h"
@@ -78,9 +75,5 @@ class FloorCalibrator {
   int frames_ = 0;
   std::vector<Eigen::Vector3f> points_;
 };
-
-// One line for a log: "calibrated from 5 frames: camera 0.800 m above the floor, pitched 10.0 deg
-// down, 92 % inliers".
-std::string DescribeFloorCalibration(const FloorCalibration& calibration);
 
 }  // namespace sightline

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <thread>
 
-#include "core/button/hand_eye.h"
+#include "core/io/hand_eye_file.h"
 #include "core/pipeline/mono_inputs.h"
 
 namespace sightline {

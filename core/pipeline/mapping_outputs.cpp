@@ -7,6 +7,7 @@
 
 #include "core/common/text_file.h"
 #include "core/eval/evaluation.h"
+#include "core/io/floor_file.h"
 #include "core/mapping/mapping_accuracy.h"
 #include "core/pipeline/mapping_run.h"
 

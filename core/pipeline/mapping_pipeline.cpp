@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "core/io/floor_file.h"
 #include "core/mapping/option_check.h"
 #include "core/pipeline/mapping_run.h"
 

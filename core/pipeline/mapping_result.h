@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "core/mapping/floor_types.h"
+#include "core/common/floor.h"
 #include "core/mapping/mapping_types.h"
 #include "core/pipeline/pipeline.h"
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "core/common/text_file.h"
-#include "core/mapping/floor_types.h"
+#include "core/io/floor_file.h"
 #include "core/mobility/mobility_map.h"
 #include "core/mobility/mobility_mapper.h"
 #include "core/mobility/score_plot.h"

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "core/button/hand_eye.h"
+#include "core/io/hand_eye_file.h"
 #include "core/mono/metric_motion.h"
 
 namespace sightline {

@@ -2,7 +2,7 @@
 
 #include <variant>
 
-#include "core/calib/calibration_file.h"
+#include "core/io/stereo_calibration_file.h"
 #include "core/sensors/driver_registry.h"
 
 namespace sightline {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "core/calib/calibration_file.h"
+#include "core/io/stereo_calibration_file.h"
 #include "core/sensors/aravis_source.h"
 
 namespace sightline {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/common/text_file.h"
+#include "core/io/hand_eye_file.h"
 #include "core/options/option_spec.h"
 
 namespace sightline::sim {
@@ -25,13 +26,6 @@ std::string Vec(const Eigen::Vector3d& v) {
   char text[128];
   std::snprintf(text, sizeof(text), "[%.9f, %.9f, %.9f]", v.x(), v.y(), v.z());
   return text;
-}
-
-void WritePose(std::ofstream& out, const std::string& name, const Eigen::Isometry3d& pose) {
-  const Eigen::Quaterniond q(pose.linear());
-  out << name << ":\n  translation: " << Vec(pose.translation()) << "\n  quaternion_xyzw: ["
-      << Num(q.x(), "%.9f") << ", " << Num(q.y(), "%.9f") << ", " << Num(q.z(), "%.9f") << ", "
-      << Num(q.w(), "%.9f") << "]\n";
 }
 
 // YAML scalar for a string option value: quoted when it could be misread.
@@ -109,15 +103,16 @@ Status WriteSceneYaml(const SimulationOptions& options, const Scene& scene,
 
 Status WriteHandEyeYaml(const Eigen::Isometry3d& end_effector_from_camera,
                         const Eigen::Isometry3d& world_from_base, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) return Unavailable("cannot write " + path);
-  out << "# Hand-eye calibration of the simulated arm (metres). end_effector_from_camera: the\n"
-         "# camera's optical frame (z forward, x right, y down) in the end-effector frame, as\n"
-         "# arm_poses.txt (base_from_end_effector) needs it; world_from_base: the arm's base in\n"
-         "# the map frame of buttons.csv.\n";
-  WritePose(out, "end_effector_from_camera", end_effector_from_camera);
-  WritePose(out, "world_from_base", world_from_base);
-  return Finish(out, path);
+  HandEye file;
+  file.end_effector_from_camera = end_effector_from_camera;
+  file.world_from_base = world_from_base;
+  FileComments comments;
+  comments.header = {
+      "Hand-eye calibration of the simulated arm (metres). end_effector_from_camera: the",
+      "camera's optical frame (z forward, x right, y down) in the end-effector frame, as",
+      "arm_poses.txt (base_from_end_effector) needs it; world_from_base: the arm's base in",
+      "the map frame of buttons.csv."};
+  return WriteHandEyeFile(file, path, comments);
 }
 
 Status ObservationWriter::Open(const std::string& dir, bool buttons, bool people) {

@@ -42,7 +42,8 @@ struct SceneRecord {
 Status WriteSceneYaml(const SimulationOptions& options, const Scene& scene,
                       const SceneRecord& record, const std::string& path);
 
-// Writes hand_eye.yaml: end_effector_from_camera and world_from_base (arm base in the map).
+// Writes hand_eye.yaml (core/io/hand_eye_file.h): end_effector_from_camera and world_from_base
+// (arm base in the map).
 Status WriteHandEyeYaml(const Eigen::Isometry3d& end_effector_from_camera,
                         const Eigen::Isometry3d& world_from_base, const std::string& path);
 

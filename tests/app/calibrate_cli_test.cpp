@@ -7,6 +7,8 @@
 
 #include "core/calib/calibration_file.h"
 #include "core/io/camera_yaml.h"
+#include "core/io/hand_eye_file.h"
+#include "core/io/stereo_calibration_file.h"
 #include "tests/app/process.h"
 #include "tests/core/calib/hand_eye_scene.h"
 #include "tests/support/test_data.h"
@@ -66,11 +68,12 @@ TEST(CalibrateCli, HandEyeRecoversTheSimulatedArmsCameraMount) {
                  "/views --method park --out " + dir + "/hand_eye.yaml");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("board found in 12 of 12 views, 12 paired"), std::string::npos) << run.out;
-  auto mount = ReadEndEffectorFromCamera(dir + "/hand_eye.yaml");
-  ASSERT_TRUE(mount.ok()) << mount.status().ToString();
+  auto file = ReadHandEyeFile(dir + "/hand_eye.yaml");
+  ASSERT_TRUE(file.ok()) << file.status().ToString();
+  const Eigen::Isometry3d& mount = file->end_effector_from_camera;
   const Eigen::Isometry3d& truth = scene->end_effector_from_camera;
-  EXPECT_LT((mount->translation() - truth.translation()).norm(), 0.003);
-  EXPECT_LT(RotationAngleDeg(mount->linear().transpose() * truth.linear()), 0.5);
+  EXPECT_LT((mount.translation() - truth.translation()).norm(), 0.003);
+  EXPECT_LT(RotationAngleDeg(mount.linear().transpose() * truth.linear()), 0.5);
 }
 
 TEST(CalibrateCli, BadInputFailsWithOneClearLine) {

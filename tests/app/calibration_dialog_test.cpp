@@ -10,8 +10,8 @@
 #include <QStandardItemModel>
 #include <QTest>
 
-#include "core/calib/calibration_file.h"
 #include "core/io/camera_yaml.h"
+#include "core/io/stereo_calibration_file.h"
 #include "tests/support/test_data.h"
 #include "widgets/image_view.h"
 

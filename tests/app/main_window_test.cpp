@@ -24,6 +24,7 @@
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/stereo_vo_presenter.h"
 #include "core/io/dataset.h"
+#include "core/io/floor_file.h"
 #include "core/sim/simulate.h"
 #include "tests/app/process.h"
 #include "tests/support/test_data.h"

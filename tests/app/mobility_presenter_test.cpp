@@ -12,7 +12,7 @@
 #include "app/sightline/main_window.h"
 #include "app/sightline/mobility_views.h"
 #include "app/sightline/playback_controller.h"
-#include "core/mapping/floor_types.h"
+#include "core/io/floor_file.h"
 #include "core/pipeline/mobility_pipeline.h"
 #include "tests/support/test_data.h"
 #include "widgets/image_view.h"

@@ -1,16 +1,16 @@
-// Calibration files: what is saved loads back through core/io's camera.yaml reader and the
-// image-folder source, and the stereo file through ReadStereoCalibration.
+// Saving calibrations: what is saved loads back through core/io's camera.yaml reader and the
+// image-folder source, and the stereo file through core/io's ReadStereoCalibration.
 #include "core/calib/calibration_file.h"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <opencv2/core/persistence.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "board_renderer.h"
 #include "core/io/camera_yaml.h"
 #include "core/io/dataset.h"
+#include "core/io/stereo_calibration_file.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
@@ -71,7 +71,7 @@ TEST(CalibrationFile, MonoCalibrationOfRenderedViewsIsAccurateAndLoadsBack) {
   // camera.yaml in an image folder: the reader and the source accept it as written.
   const std::string dir = ::sightline::testing::TempDir("calib_mono_roundtrip");
   const std::string yaml = dir + "/camera.yaml";
-  ASSERT_TRUE(WriteMonoCalibration(*calibration, ChessboardOptions{}, yaml).ok());
+  ASSERT_TRUE(SaveMonoCalibration(*calibration, ChessboardOptions{}, yaml).ok());
   auto read = ReadCameraYaml(yaml);
   ASSERT_TRUE(read.ok()) << read.status().ToString();
   const PinholeCamera& c = calibration->camera;
@@ -108,7 +108,7 @@ TEST(CalibrationFile, StereoCalibrationOfARenderedRigLoadsBack) {
   EXPECT_LT(calibration->rms_px, 0.3);
 
   const std::string path = ::sightline::testing::TempDir("calib_stereo_roundtrip") + "/rig.yaml";
-  ASSERT_TRUE(WriteStereoCalibration(*calibration, ChessboardOptions{}, path).ok());
+  ASSERT_TRUE(SaveStereoCalibration(*calibration, ChessboardOptions{}, path).ok());
   auto read = ReadStereoCalibration(path);
   ASSERT_TRUE(read.ok()) << read.status().ToString();
   EXPECT_TRUE(read->right_from_left.isApprox(calibration->rig.right_from_left, 1e-9));
@@ -119,45 +119,6 @@ TEST(CalibrationFile, StereoCalibrationOfARenderedRigLoadsBack) {
     ASSERT_TRUE(camera.ok()) << side << ": " << camera.status().ToString();
   }
   EXPECT_EQ(StereoCameraFilePath(path, "left"), path.substr(0, path.size() - 5) + "_left.yaml");
-}
-
-TEST(CalibrationFile, ReadsTheReferenceStereoFileOfCalibChessboard) {
-  SIGHTLINE_REQUIRE_DATA(dir, "calib_chessboard");
-  // The reference keeps intrinsics and extrinsics in two files; join them as one stereo file.
-  const std::string joined = ::sightline::testing::TempDir("calib_reference") + "/stereo.yaml";
-  {
-    std::ofstream out(joined);
-    std::ifstream a(dir + "/reference_calibration/intrinsics.yml");
-    std::ifstream b(dir + "/reference_calibration/extrinsics.yml");
-    std::string line;
-    while (std::getline(a, line)) out << line << "\n";
-    std::getline(b, line);  // %YAML:1.0
-    std::getline(b, line);  // ---
-    while (std::getline(b, line)) out << line << "\n";
-  }
-  auto rig = ReadStereoCalibration(joined);
-  ASSERT_TRUE(rig.ok()) << rig.status().ToString();
-  EXPECT_NEAR(rig->BaselineM(), 0.0836, 0.0001);
-  EXPECT_NEAR(rig->left.fx, 536.06, 0.01);
-}
-
-TEST(CalibrationFile, MalformedStereoFilesNameTheKey) {
-  const std::string dir = ::sightline::testing::TempDir("calib_bad_stereo");
-  {
-    cv::FileStorage fs(dir + "/no_t.yaml", cv::FileStorage::WRITE);
-    fs << "image_width" << 640 << "image_height" << 480;
-    fs << "M1" << cv::Mat::eye(3, 3, CV_64F) << "D1" << cv::Mat::zeros(1, 5, CV_64F);
-    fs << "M2" << cv::Mat::eye(3, 3, CV_64F) << "D2" << cv::Mat::zeros(1, 5, CV_64F);
-    fs << "R" << cv::Mat::eye(3, 3, CV_64F);
-  }
-  auto missing_t = ReadStereoCalibration(dir + "/no_t.yaml");
-  ASSERT_FALSE(missing_t.ok());
-  EXPECT_EQ(missing_t.status().code(), StatusCode::kParseError);
-  EXPECT_NE(missing_t.status().message().find("key 'T' is missing"), std::string::npos)
-      << missing_t.status().message();
-  std::ofstream(dir + "/garbage.yaml") << "this: [is not: closed\n";
-  EXPECT_EQ(ReadStereoCalibration(dir + "/garbage.yaml").status().code(), StatusCode::kParseError);
-  EXPECT_EQ(ReadStereoCalibration(dir + "/absent.yaml").status().code(), StatusCode::kNotFound);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/calib/board_detection.h"
 #include "core/calib/calibration_file.h"
+#include "core/io/hand_eye_file.h"
 #include "core/sim/simulate.h"
 #include "core/sim/simulator.h"
 #include "hand_eye_scene.h"
@@ -103,11 +104,11 @@ TEST(HandEye, ReadsTheSimulatorsHandEyeFileAndRejectsItsTranslationOnlyApproach)
   options.mono.focal_px = 262.5;
   auto summary = sim::Simulate(options, dir);
   ASSERT_TRUE(summary.ok()) << summary.status().ToString();
-  auto mount = ReadEndEffectorFromCamera(dir + "/hand_eye.yaml");
+  auto mount = ReadHandEyeFile(dir + "/hand_eye.yaml");
   ASSERT_TRUE(mount.ok()) << mount.status().ToString();
   auto simulator = sim::Simulator::Create(options);
   ASSERT_TRUE(simulator.ok());
-  EXPECT_TRUE(mount->isApprox(simulator->motion().body_from_camera, 1e-6));
+  EXPECT_TRUE(mount->end_effector_from_camera.isApprox(simulator->motion().body_from_camera, 1e-6));
 
   // The simulator's approach only translates: the solver must refuse, saying why.
   auto arm = ReadTumTrajectory(dir + "/arm_poses.txt");
@@ -134,10 +135,13 @@ TEST(HandEye, WritesAFileItReadsBack) {
   result.end_effector_from_camera = Eigen::Translation3d(0.06, -0.01, -0.03) *
                                     Eigen::AngleAxisd(1.2, Eigen::Vector3d(1, 2, 3).normalized());
   const std::string path = ::sightline::testing::TempDir("handeye_file") + "/hand_eye.yaml";
-  ASSERT_TRUE(WriteHandEyeCalibration(result, path).ok());
-  auto read = ReadEndEffectorFromCamera(path);
+  ASSERT_TRUE(SaveHandEyeCalibration(result, path).ok());
+  auto read = ReadHandEyeFile(path);
   ASSERT_TRUE(read.ok()) << read.status().ToString();
-  EXPECT_TRUE(read->isApprox(result.end_effector_from_camera, 1e-9));
+  EXPECT_TRUE(read->end_effector_from_camera.isApprox(result.end_effector_from_camera, 1e-9));
+  ASSERT_TRUE(read->fit.has_value());
+  EXPECT_EQ(read->fit->method, "park");
+  EXPECT_EQ(read->fit->pairs, 9);
 }
 
 TEST(HandEye, BadInputGivesAClearStatus) {
@@ -154,8 +158,6 @@ TEST(HandEye, BadInputGivesAClearStatus) {
   auto unknown = CalibrateHandEye(three, three, options);
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.status().message().find("calib.handeye.method"), std::string::npos);
-  auto missing = ReadEndEffectorFromCamera("/nonexistent/hand_eye.yaml");
-  EXPECT_EQ(missing.status().code(), StatusCode::kNotFound);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "core/io/pcd_source.h"
 #include "core/mapping/pose2d.h"
@@ -83,68 +82,6 @@ TEST(FloorPlane, EmptyAndAllNanInputAreClearErrors) {
   AppendDepthPoints(nan_depth, KinectCamera(160, 120), 6.0, 1, &points);
   EXPECT_TRUE(points.empty());
   EXPECT_FALSE(FloorPlaneEstimator().Fit(points).ok());
-}
-
-TEST(FloorCalibrationFile, RoundTrip) {
-  FloorCalibration calibration;
-  calibration.plane.normal = Eigen::Vector3d(0.01, -0.95, -0.3).normalized();
-  calibration.plane.d = 0.812345678;
-  calibration.plane.epsilon_m = 0.04;
-  calibration.inlier_ratio = 0.61;
-  calibration.frames = 5;
-  calibration.source = "rec/rgbd";
-  const std::string path = testing::TempDir("floor") + "/floor.yaml";
-  ASSERT_TRUE(WriteFloorCalibration(calibration, path).ok());
-  StatusOr<FloorCalibration> read = ReadFloorCalibration(path);
-  ASSERT_TRUE(read.ok()) << read.status().ToString();
-  EXPECT_LT((read->plane.normal - calibration.plane.normal).norm(), 1e-8);
-  EXPECT_NEAR(read->plane.d, calibration.plane.d, 1e-8);
-  EXPECT_DOUBLE_EQ(read->plane.epsilon_m, 0.04);
-  EXPECT_EQ(read->frames, 5);
-  EXPECT_EQ(read->source, "rec/rgbd");
-}
-
-TEST(FloorCalibrationFile, ErrorsNameFileAndLine) {
-  const std::string dir = testing::TempDir("floor_bad");
-  const std::string path = dir + "/floor.yaml";
-  {
-    std::ofstream out(path);
-    out << "# comment\na: 0\nb: -1\nc: 0\nd: zero\n";
-  }
-  StatusOr<FloorCalibration> bad_number = ReadFloorCalibration(path);
-  ASSERT_FALSE(bad_number.ok());
-  EXPECT_EQ(bad_number.status().code(), StatusCode::kParseError);
-  EXPECT_NE(bad_number.status().message().find(path + " line 5"), std::string::npos)
-      << bad_number.status().message();
-  EXPECT_NE(bad_number.status().message().find("'d'"), std::string::npos);
-  {
-    std::ofstream out(path);
-    out << "a: 0\nb: -1\nc: 0\nd: 0.5\nheight: 3\n";
-  }
-  StatusOr<FloorCalibration> unknown = ReadFloorCalibration(path);
-  ASSERT_FALSE(unknown.ok());
-  EXPECT_NE(unknown.status().message().find("line 5: unknown key 'height'"), std::string::npos)
-      << unknown.status().message();
-  {
-    std::ofstream out(path);
-    out << "a: 0\nb: -1\nd: 0.5\n";
-  }
-  StatusOr<FloorCalibration> missing = ReadFloorCalibration(path);
-  ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.status().message().find("missing 'c'"), std::string::npos);
-  EXPECT_EQ(ReadFloorCalibration(dir + "/absent.yaml").status().code(), StatusCode::kNotFound);
-}
-
-TEST(FloorCalibrationFile, NormalIsRenormalisedAndOrientedUp) {
-  const std::string path = testing::TempDir("floor_norm") + "/floor.yaml";
-  {
-    std::ofstream out(path);
-    out << "a: 0\nb: 2\nc: 0\nd: -1.6\n";  // Scaled by 2 and pointing down.
-  }
-  StatusOr<FloorCalibration> read = ReadFloorCalibration(path);
-  ASSERT_TRUE(read.ok()) << read.status().ToString();
-  EXPECT_NEAR(read->plane.normal.y(), -1.0, 1e-12);
-  EXPECT_NEAR(read->plane.d, 0.8, 1e-12);
 }
 
 // Real Kinect-class clouds from PCL's test data (pcl_clouds/SOURCES.txt).

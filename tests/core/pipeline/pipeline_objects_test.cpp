@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "core/io/dataset.h"
-#include "core/mapping/floor_types.h"
+#include "core/io/floor_file.h"
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mobility_pipeline.h"
 #include "core/pipeline/pipeline_registry.h"
