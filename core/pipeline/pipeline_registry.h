@@ -83,7 +83,8 @@ struct RunRequest {
 };
 
 // Adds one processed frame's timing to `timing`: every statistic of unit "ms" under its stage
-// name ("vo/rectify_ms" -> "rectify") and `total_ms` under "total". CLI and GUI runs alike.
+// name ("vo/rectify_ms" -> "rectify"), and `total_ms` (the caller's time around Process) under
+// "total" unless the pipeline published its own "<module>/total_ms". CLI and GUI runs alike.
 void AddFrameTiming(const StatisticTable& table, const PipelineResult& result, double total_ms,
                     TimingStats* timing);
 

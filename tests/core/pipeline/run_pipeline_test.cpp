@@ -39,6 +39,29 @@ TEST(RunPipeline, InspectOnTumWritesMetricsInTheCommonShape) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10);
 }
 
+TEST(RunPipeline, FrameTimingTakesStagesInMsAndThePipelinesOwnTotal) {
+  const StatisticTable table = {{"vo/rectify_ms", "ms", "rectify"},
+                                {"vo/total_ms", "ms", "whole frame"},
+                                {"vo/tracked", "count", "not a time"}};
+  PipelineResult own;
+  own.stats = {{"vo/rectify_ms", 2.0}, {"vo/total_ms", 7.0}, {"vo/tracked", 300.0}};
+  TimingStats timing;
+  AddFrameTiming(table, own, 99.0, &timing);
+  EXPECT_EQ(timing.Summary("rectify").count, 1u);
+  EXPECT_DOUBLE_EQ(timing.Summary("rectify").median_ms, 2.0);
+  // The pipeline's own total is the frame's total; the caller's 99 ms is not added beside it.
+  EXPECT_EQ(timing.Summary("total").count, 1u);
+  EXPECT_DOUBLE_EQ(timing.Summary("total").median_ms, 7.0);
+  EXPECT_EQ(timing.Summary("tracked").count, 0u);
+
+  // Without one, the caller's time around Process is the total.
+  PipelineResult stages_only;
+  stages_only.stats = {{"vo/rectify_ms", 3.0}};
+  AddFrameTiming(table, stages_only, 11.0, &timing);
+  EXPECT_EQ(timing.Summary("total").count, 2u);
+  EXPECT_DOUBLE_EQ(timing.Summary("total").max_ms, 11.0);
+}
+
 TEST(RunPipeline, UnknownPipelineListsKnownOnes) {
   RunRequest request;
   request.pipeline = "mapingg";
