@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/button/arm_client.h"
 #include "core/io/dataset.h"
 #include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/mono_slam_pipeline.h"
@@ -154,6 +155,9 @@ TEST_F(MonoButtonPipelines, ButtonRunsInDataTimeSoASlowHostGivesTheSameTargets) 
   EXPECT_EQ(csv_fast.find(",stale,"), std::string::npos);
 }
 
+// The operator's tap is for the frame on screen: the tap below names frame 0 (already
+// processed) and is taken with frame 1; a tap naming no processed frame, or one older than
+// button.gui.max_tap_age_s, is refused and never applied later.
 TEST_F(MonoButtonPipelines, OperatorCommandsTapConfirmAndStopReachTheButtonObject) {
   auto commands = std::make_shared<ButtonCommands>();
   ButtonPipeline pipeline(commands);
@@ -172,27 +176,182 @@ TEST_F(MonoButtonPipelines, OperatorCommandsTapConfirmAndStopReachTheButtonObjec
   ASSERT_GT(stop_at, 50);
   int sent = 0, sent_after_stop = 0;
   PickerState last = PickerState::kIdle;
+  FrameStamp first;
   for (int64_t i = 0; (*source)->Grab().ok(); ++i) {
     StatusOr<Frame> frame = (*source)->Retrieve();
     ASSERT_TRUE(frame.ok());
-    if (i == 0) commands->Tap({target->pixel[0].x(), target->pixel[0].y()});
-    if (i == 1) commands->Confirm();
+    if (i == 0) {
+      first = StampOf(*frame);
+      ButtonTapRequest unseen;  // No frame shown yet.
+      unseen.x = target->pixel[0].x();
+      unseen.y = target->pixel[0].y();
+      commands->Tap(unseen);
+    }
+    if (i == 1) {
+      ButtonTapRequest tap;
+      tap.x = target->pixel[0].x();
+      tap.y = target->pixel[0].y();
+      tap.frame = first.sequence_id;
+      tap.stamp_s = first.sensor_time_s;
+      commands->Tap(tap);
+    }
+    if (i == 2) commands->Confirm();
     if (i == stop_at) commands->Stop();
     StatusOr<std::shared_ptr<const PipelineResult>> r = pipeline.Process(*frame);
     ASSERT_TRUE(r.ok()) << r.status().ToString();
     const auto* button = dynamic_cast<const ButtonFrameResult*>(r->get());
     ASSERT_NE(button, nullptr);
     if (i == 0) {
-      EXPECT_TRUE(button->tap_answered && button->tap_status.ok());
+      EXPECT_TRUE(button->tap_answered);
+      EXPECT_EQ(button->tap_refused, TapRefusal::kNoPicture);
+      EXPECT_EQ(button->picker.state, PickerState::kIdle);
+    }
+    if (i == 1) {
+      EXPECT_TRUE(button->tap_answered && button->tap_status.ok()) << button->tap_status.ToString();
+      EXPECT_EQ(button->tap_refused, TapRefusal::kNone);
       EXPECT_EQ(button->picker.state, PickerState::kConfirm);
     }
+    if (i > 1) EXPECT_FALSE(button->tap_answered) << "frame " << i;  // Nothing kept for later.
     sent += button->picker.target ? 1 : 0;
     if (i >= stop_at) sent_after_stop += button->picker.target ? 1 : 0;
+    EXPECT_EQ(button->stopped, i >= stop_at);
     last = button->picker.state;
   }
   EXPECT_GT(sent, 0);
   EXPECT_EQ(sent_after_stop, 0);
   EXPECT_EQ(last, PickerState::kStopped);
+}
+
+// Serving switched on and off during a run, with a real arm client on loopback: the run goes on
+// (the SLAM map keeps growing from where it was), serving off sends the client a stop line, a
+// latched STOP survives new options and a new server (no target until Restart), a hold (the
+// picture paused) publishes nothing, and an old tap is refused.
+TEST_F(MonoButtonPipelines, ServingIsARuntimeSwitchAndStopStaysLatched) {
+  auto commands = std::make_shared<ButtonCommands>();
+  ButtonPipeline pipeline(commands);
+  OptionSet options;
+  ASSERT_TRUE(ButtonPipelineInfo().declare_options(&options).ok());
+  int port = 0;
+  {  // A free loopback port.
+    ArmServerOptions probe_options;
+    probe_options.port = 0;
+    auto probe = ArmServer::Start(probe_options);
+    ASSERT_TRUE(probe.ok());
+    port = (*probe)->port();
+  }
+  ASSERT_TRUE(options.ApplyOverride("button.arm.port=" + std::to_string(port)).ok());
+  ASSERT_TRUE(pipeline.Configure(options).ok());
+  StatusOr<std::unique_ptr<Source>> source = OpenDataset(*dir_, SourceKind::kMono);
+  ASSERT_TRUE(source.ok());
+  ASSERT_TRUE(pipeline.Open(PipelineSource::From(**source)).ok());
+  StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(*dir_ + "/buttons.csv");
+  ASSERT_TRUE(buttons.ok());
+  const TrueButton* target = nullptr;
+  for (const TrueButton& b : *buttons) target = b.id == 5 ? &b : target;
+  ASSERT_NE(target, nullptr);
+
+  std::vector<std::shared_ptr<const ButtonFrameResult>> results;
+  auto next = [&]() -> const ButtonFrameResult* {
+    if (!(*source)->Grab().ok()) return nullptr;
+    StatusOr<Frame> frame = (*source)->Retrieve();
+    if (!frame.ok()) return nullptr;
+    StatusOr<std::shared_ptr<const PipelineResult>> r = pipeline.Process(*frame);
+    if (!r.ok()) return nullptr;
+    results.push_back(std::dynamic_pointer_cast<const ButtonFrameResult>(*r));
+    return results.back().get();
+  };
+  auto set_serve = [&](bool on) {
+    EXPECT_TRUE(
+        options.ApplyOverride(std::string("button.gui.serve=") + (on ? "true" : "false")).ok());
+    const Status configured = pipeline.Configure(options);
+    EXPECT_TRUE(configured.ok()) << configured.ToString();
+  };
+  auto map_points = [&] { return results.back()->Stat("mono/map_points").value_or(-1); };
+
+  for (int i = 0; i < 40; ++i) ASSERT_NE(next(), nullptr);
+  const double points_before = map_points();
+  ASSERT_GT(points_before, 0);
+  set_serve(true);
+  StatusOr<ArmClient> client = ArmClient::Connect("127.0.0.1", port, "", 5000);
+  ASSERT_TRUE(client.ok()) << client.status().ToString();
+  ASSERT_NE(next(), nullptr);
+  EXPECT_TRUE(results.back()->serving);
+  // A new run would start with an empty map and an untracked frame.
+  EXPECT_GT(map_points(), 0.5 * points_before) << "serving on started the run again";
+  EXPECT_EQ(results.back()->Stat("mono/tracked").value_or(0), 1);
+
+  // The tap on the frame shown, Yes, and frames until a target goes out.
+  const ButtonFrameResult* shown = results.back().get();
+  const int64_t shown_index = static_cast<int64_t>(results.size()) - 1;
+  ButtonTapRequest tap;
+  tap.x = target->pixel.at(shown_index).x();
+  tap.y = target->pixel.at(shown_index).y();
+  tap.frame = shown->stamp.sequence_id;
+  tap.stamp_s = shown->stamp.sensor_time_s;
+  commands->Tap(tap);
+  const ButtonFrameResult* tapped = next();
+  ASSERT_NE(tapped, nullptr);
+  ASSERT_TRUE(tapped->tap_status.ok()) << tapped->tap_status.ToString();
+  commands->Confirm();
+  bool published = false;
+  for (int i = 0; i < 60 && !published; ++i) {
+    const ButtonFrameResult* r = next();
+    ASSERT_NE(r, nullptr);
+    published = r->target_published;
+  }
+  ASSERT_TRUE(published);
+
+  // Held (the picture paused): nothing is published, the gate's target is not counted as sent.
+  commands->SetHold(true);
+  for (int i = 0; i < 3; ++i) {
+    const ButtonFrameResult* r = next();
+    ASSERT_NE(r, nullptr);
+    EXPECT_TRUE(r->held);
+    EXPECT_FALSE(r->target_published);
+    EXPECT_FALSE(r->picker.target.has_value());
+  }
+  commands->SetHold(false);
+
+  // A tap on a frame older than button.gui.max_tap_age_s (0.5 s, 15 frames) is refused.
+  for (int i = 0; i < 16; ++i) ASSERT_NE(next(), nullptr);
+  ASSERT_GT(results.back()->stamp.sensor_time_s - tap.stamp_s, 0.5);
+  ButtonTapRequest old = tap;
+  commands->Tap(old);
+  const ButtonFrameResult* refused = next();
+  ASSERT_NE(refused, nullptr);
+  EXPECT_EQ(refused->tap_refused, TapRefusal::kTooOld);
+
+  // STOP, then serving off and on: the client hears "stop" (STOP, then serving off), the new
+  // server stays stopped and nothing is published until Restart.
+  commands->Stop("operator");
+  set_serve(false);
+  bool stop_seen = false, closed = false;
+  for (int i = 0; i < 2000 && !closed; ++i) {
+    StatusOr<std::string> line = client->ReadLine(5000);
+    if (!line.ok()) {
+      closed = line.status().code() == StatusCode::kUnavailable;
+      if (!closed) break;
+      continue;
+    }
+    if (stop_seen) EXPECT_EQ(line->find("\"type\":\"target\""), std::string::npos) << *line;
+    if (line->find("\"type\":\"stop\"") != std::string::npos) stop_seen = true;
+  }
+  EXPECT_TRUE(stop_seen);
+  EXPECT_TRUE(closed);
+  const double points_at_stop = map_points();
+  set_serve(true);
+  for (int i = 0; i < 5; ++i) {
+    const ButtonFrameResult* r = next();
+    ASSERT_NE(r, nullptr);
+    EXPECT_TRUE(r->stopped);
+    EXPECT_TRUE(r->serving);
+    EXPECT_FALSE(r->target_published);
+    EXPECT_EQ(r->picker.state, PickerState::kStopped);
+  }
+  EXPECT_GT(map_points(), 0.5 * points_at_stop);
+  EXPECT_EQ(results.back()->Stat("mono/tracked").value_or(0), 1);
+  commands->Restart();
+  EXPECT_FALSE(commands->stopped());
 }
 
 }  // namespace
