@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "app/sightline/builtin_presenters.h"
+#include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
@@ -41,16 +42,45 @@ int main(int argc, char** argv) {
   QCommandLineOption pipeline_option(
       "pipeline", "Run a pipeline on every frame: a word of its menu title, e.g. mapping, stereo.",
       "NAME");
-  parser.addOptions({open_option, demo_option, pipeline_option, screenshot_option, frames_option,
-                     timeout_option});
+  QCommandLineOption operator_option(
+      "operator",
+      "Open the operator's button panel alone, full screen (F11: window, Esc: leave), and play "
+      "SOURCE (a camera URI or a recording).");
+  parser.addOptions({open_option, demo_option, pipeline_option, operator_option, screenshot_option,
+                     frames_option, timeout_option});
+  parser.addPositionalArgument("SOURCE", "A dataset, recording or sensor URI to open (as --open).",
+                               "[SOURCE]");
   parser.process(app);
+  QString source = parser.value(open_option);
+  if (!parser.positionalArguments().isEmpty()) source = parser.positionalArguments().first();
 
   sightline::MainWindow window;
   // The Pipeline menu lists the core registry's pipelines, as `sightline-cli run` does.
   sightline::PipelinePresenter* mapping = nullptr;
+  sightline::ButtonPickerPresenter* picker = nullptr;
   for (sightline::PipelinePresenter* presenter : sightline::MakeBuiltinPresenters()) {
     if (qobject_cast<sightline::MappingPresenter*>(presenter) != nullptr) mapping = presenter;
+    if (auto* p = qobject_cast<sightline::ButtonPickerPresenter*>(presenter)) picker = p;
     window.AddPipeline(presenter);
+  }
+  if (parser.isSet(operator_option)) {
+    if (picker == nullptr || !window.ActivatePipeline(picker->Title())) {
+      std::fprintf(stderr, "sightline: the button picker is not available\n");
+      return 2;
+    }
+    picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
+    QObject::connect(
+        picker, &sightline::ButtonPickerPresenter::OperatorLeft, &window, [&app, &window] {
+          window.close();  // Every arm client gets a stop line ("quit") before the sockets close.
+          app.quit();
+        });
+    QObject::connect(
+        &window, &sightline::MainWindow::DatasetOpened, &window,
+        [&window] { window.playback()->Play(); }, Qt::SingleShotConnection);
+    if (!source.isEmpty()) {
+      QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
+    }
+    return app.exec();
   }
   window.show();
   if (parser.isSet(pipeline_option) &&
@@ -90,9 +120,8 @@ int main(int argc, char** argv) {
     // The demo shows the pipelines that run on its corridor drive.
     if (mapping != nullptr) window.ActivatePipeline(mapping->Title());
     demo->Start();
-  } else if (parser.isSet(open_option)) {
-    const QString path = parser.value(open_option);
-    QTimer::singleShot(0, &window, [&window, path] { window.OpenPath(path); });
+  } else if (!source.isEmpty()) {
+    QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
   }
   return app.exec();
 }
