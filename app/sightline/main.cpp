@@ -15,6 +15,51 @@
 #include "app/sightline/translation.h"
 #include "widgets/vtk_gl_widget.h"
 
+namespace {
+
+// `sightline --operator [SOURCE]`: the button picker's operator panel alone, full screen, playing
+// SOURCE. Leaving the panel closes the window: every arm client gets a stop line ("quit").
+int RunOperatorMode(QApplication* app, sightline::MainWindow* window,
+                    sightline::ButtonPickerPresenter* picker, const QString& source) {
+  if (picker == nullptr || !window->ActivatePipeline(picker->Title())) {
+    std::fprintf(stderr, "sightline: the button picker is not available\n");
+    return 2;
+  }
+  picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
+  QObject::connect(picker, &sightline::ButtonPickerPresenter::OperatorLeft, window, [app, window] {
+    window->close();
+    app->quit();
+  });
+  QObject::connect(
+      window, &sightline::MainWindow::DatasetOpened, window,
+      [window] { window->playback()->Play(); }, Qt::SingleShotConnection);
+  if (!source.isEmpty()) {
+    QTimer::singleShot(0, window, [window, source] { window->OpenPath(source); });
+  }
+  return app->exec();
+}
+
+// `sightline --demo`: generates the demo recordings once, then opens the corridor drive.
+void StartDemo(sightline::MainWindow* window, sightline::PipelinePresenter* mapping,
+               bool autoplay) {
+  auto* demo = new sightline::DemoGenerator(sightline::DemoGenerator::DefaultFolder(), window);
+  window->ShowDemoProgress(demo);
+  QObject::connect(demo, &sightline::DemoGenerator::Ready, window,
+                   [window, autoplay](const QString& corridor) {
+                     if (autoplay) {
+                       QObject::connect(
+                           window, &sightline::MainWindow::DatasetOpened, window,
+                           [window] { window->PlayLooping(); }, Qt::SingleShotConnection);
+                     }
+                     window->OpenPath(corridor);
+                   });
+  // The demo shows the pipelines that run on its corridor drive.
+  if (mapping != nullptr) window->ActivatePipeline(mapping->Title());
+  demo->Start();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
   sightline::VtkGlWidget::SetDefaultSurfaceFormat();
@@ -63,25 +108,7 @@ int main(int argc, char** argv) {
     if (auto* p = qobject_cast<sightline::ButtonPickerPresenter*>(presenter)) picker = p;
     window.AddPipeline(presenter);
   }
-  if (parser.isSet(operator_option)) {
-    if (picker == nullptr || !window.ActivatePipeline(picker->Title())) {
-      std::fprintf(stderr, "sightline: the button picker is not available\n");
-      return 2;
-    }
-    picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
-    QObject::connect(
-        picker, &sightline::ButtonPickerPresenter::OperatorLeft, &window, [&app, &window] {
-          window.close();  // Every arm client gets a stop line ("quit") before the sockets close.
-          app.quit();
-        });
-    QObject::connect(
-        &window, &sightline::MainWindow::DatasetOpened, &window,
-        [&window] { window.playback()->Play(); }, Qt::SingleShotConnection);
-    if (!source.isEmpty()) {
-      QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
-    }
-    return app.exec();
-  }
+  if (parser.isSet(operator_option)) return RunOperatorMode(&app, &window, picker, source);
   window.show();
   if (parser.isSet(pipeline_option) &&
       !window.ActivatePipelineByWord(parser.value(pipeline_option))) {
@@ -105,21 +132,7 @@ int main(int argc, char** argv) {
                                     parser.value(timeout_option).toInt());
   }
   if (parser.isSet(demo_option)) {
-    auto* demo = new sightline::DemoGenerator(sightline::DemoGenerator::DefaultFolder(), &window);
-    window.ShowDemoProgress(demo);
-    const bool autoplay = !parser.isSet(screenshot_option);
-    QObject::connect(demo, &sightline::DemoGenerator::Ready, &window,
-                     [&window, autoplay](const QString& corridor) {
-                       if (autoplay) {
-                         QObject::connect(
-                             &window, &sightline::MainWindow::DatasetOpened, &window,
-                             [&window] { window.PlayLooping(); }, Qt::SingleShotConnection);
-                       }
-                       window.OpenPath(corridor);
-                     });
-    // The demo shows the pipelines that run on its corridor drive.
-    if (mapping != nullptr) window.ActivatePipeline(mapping->Title());
-    demo->Start();
+    StartDemo(&window, mapping, /*autoplay=*/!parser.isSet(screenshot_option));
   } else if (!source.isEmpty()) {
     QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
   }

@@ -222,136 +222,151 @@ TEST_F(MonoButtonPipelines, OperatorCommandsTapConfirmAndStopReachTheButtonObjec
   EXPECT_EQ(last, PickerState::kStopped);
 }
 
-// Serving switched on and off during a run, with a real arm client on loopback: the run goes on
-// (the SLAM map keeps growing from where it was), serving off sends the client a stop line, a
-// latched STOP survives new options and a new server (no target until Restart), a hold (the
-// picture paused) publishes nothing, and an old tap is refused.
-TEST_F(MonoButtonPipelines, ServingIsARuntimeSwitchAndStopStaysLatched) {
-  auto commands = std::make_shared<ButtonCommands>();
-  ButtonPipeline pipeline(commands);
-  OptionSet options;
-  ASSERT_TRUE(ButtonPipelineInfo().declare_options(&options).ok());
-  int port = 0;
-  {  // A free loopback port.
-    ArmServerOptions probe_options;
-    probe_options.port = 0;
-    auto probe = ArmServer::Start(probe_options);
-    ASSERT_TRUE(probe.ok());
-    port = (*probe)->port();
-  }
-  ASSERT_TRUE(options.ApplyOverride("button.arm.port=" + std::to_string(port)).ok());
-  ASSERT_TRUE(pipeline.Configure(options).ok());
-  StatusOr<std::unique_ptr<Source>> source = OpenDataset(*dir_, SourceKind::kMono);
-  ASSERT_TRUE(source.ok());
-  ASSERT_TRUE(pipeline.Open(PipelineSource::From(**source)).ok());
-  StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(*dir_ + "/buttons.csv");
-  ASSERT_TRUE(buttons.ok());
-  const TrueButton* target = nullptr;
-  for (const TrueButton& b : *buttons) target = b.id == 5 ? &b : target;
-  ASSERT_NE(target, nullptr);
-
-  std::vector<std::shared_ptr<const ButtonFrameResult>> results;
-  auto next = [&]() -> const ButtonFrameResult* {
-    if (!(*source)->Grab().ok()) return nullptr;
-    StatusOr<Frame> frame = (*source)->Retrieve();
-    if (!frame.ok()) return nullptr;
-    StatusOr<std::shared_ptr<const PipelineResult>> r = pipeline.Process(*frame);
-    if (!r.ok()) return nullptr;
-    results.push_back(std::dynamic_pointer_cast<const ButtonFrameResult>(*r));
-    return results.back().get();
-  };
-  auto set_serve = [&](bool on) {
-    EXPECT_TRUE(
-        options.ApplyOverride(std::string("button.gui.serve=") + (on ? "true" : "false")).ok());
-    const Status configured = pipeline.Configure(options);
-    EXPECT_TRUE(configured.ok()) << configured.ToString();
-  };
-  auto map_points = [&] { return results.back()->Stat("mono/map_points").value_or(-1); };
-
-  for (int i = 0; i < 40; ++i) ASSERT_NE(next(), nullptr);
-  const double points_before = map_points();
-  ASSERT_GT(points_before, 0);
-  set_serve(true);
-  StatusOr<ArmClient> client = ArmClient::Connect("127.0.0.1", port, "", 5000);
-  ASSERT_TRUE(client.ok()) << client.status().ToString();
-  ASSERT_NE(next(), nullptr);
-  EXPECT_TRUE(results.back()->serving);
-  // A new run would start with an empty map and an untracked frame.
-  EXPECT_GT(map_points(), 0.5 * points_before) << "serving on started the run again";
-  EXPECT_EQ(results.back()->Stat("mono/tracked").value_or(0), 1);
-
-  // The tap on the frame shown, Yes, and frames until a target goes out.
-  const ButtonFrameResult* shown = results.back().get();
-  const int64_t shown_index = static_cast<int64_t>(results.size()) - 1;
-  ButtonTapRequest tap;
-  tap.x = target->pixel.at(shown_index).x();
-  tap.y = target->pixel.at(shown_index).y();
-  tap.frame = shown->stamp.sequence_id;
-  tap.stamp_s = shown->stamp.sensor_time_s;
-  commands->Tap(tap);
-  const ButtonFrameResult* tapped = next();
-  ASSERT_NE(tapped, nullptr);
-  ASSERT_TRUE(tapped->tap_status.ok()) << tapped->tap_status.ToString();
-  commands->Confirm();
-  bool published = false;
-  for (int i = 0; i < 60 && !published; ++i) {
-    const ButtonFrameResult* r = next();
-    ASSERT_NE(r, nullptr);
-    published = r->target_published;
-  }
-  ASSERT_TRUE(published);
-
-  // Held (the picture paused): nothing is published, the gate's target is not counted as sent.
-  commands->SetHold(true);
-  for (int i = 0; i < 3; ++i) {
-    const ButtonFrameResult* r = next();
-    ASSERT_NE(r, nullptr);
-    EXPECT_TRUE(r->held);
-    EXPECT_FALSE(r->target_published);
-    EXPECT_FALSE(r->picker.target.has_value());
-  }
-  commands->SetHold(false);
-
-  // A tap on a frame older than button.gui.max_tap_age_s (0.5 s, 15 frames) is refused.
-  for (int i = 0; i < 16; ++i) ASSERT_NE(next(), nullptr);
-  ASSERT_GT(results.back()->stamp.sensor_time_s - tap.stamp_s, 0.5);
-  ButtonTapRequest old = tap;
-  commands->Tap(old);
-  const ButtonFrameResult* refused = next();
-  ASSERT_NE(refused, nullptr);
-  EXPECT_EQ(refused->tap_refused, TapRefusal::kTooOld);
-
-  // STOP, then serving off and on: the client hears "stop" (STOP, then serving off), the new
-  // server stays stopped and nothing is published until Restart.
-  commands->Stop("operator");
-  set_serve(false);
-  bool stop_seen = false, closed = false;
-  for (int i = 0; i < 2000 && !closed; ++i) {
-    StatusOr<std::string> line = client->ReadLine(5000);
-    if (!line.ok()) {
-      closed = line.status().code() == StatusCode::kUnavailable;
-      if (!closed) break;
-      continue;
+// A button pipeline with an operator (ButtonCommands) on the simulated approach, frame by frame,
+// serving on a free loopback port when button.gui.serve is set.
+class OperatorRun {
+ public:
+  Status Start(const std::string& dir) {
+    {  // A free loopback port.
+      ArmServerOptions probe_options;
+      probe_options.port = 0;
+      StatusOr<std::unique_ptr<ArmServer>> probe = ArmServer::Start(probe_options);
+      if (!probe.ok()) return probe.status();
+      port_ = (*probe)->port();
     }
-    if (stop_seen) EXPECT_EQ(line->find("\"type\":\"target\""), std::string::npos) << *line;
+    SIGHTLINE_RETURN_IF_ERROR(ButtonPipelineInfo().declare_options(&options_));
+    SIGHTLINE_RETURN_IF_ERROR(options_.ApplyOverride("button.arm.port=" + std::to_string(port_)));
+    SIGHTLINE_RETURN_IF_ERROR(pipeline_.Configure(options_));
+    StatusOr<std::unique_ptr<Source>> source = OpenDataset(dir, SourceKind::kMono);
+    if (!source.ok()) return source.status();
+    source_ = std::move(*source);
+    SIGHTLINE_RETURN_IF_ERROR(pipeline_.Open(PipelineSource::From(*source_)));
+    StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(dir + "/buttons.csv");
+    if (!buttons.ok()) return buttons.status();
+    for (const TrueButton& b : *buttons) target_ = b.id == 5 ? b : target_;
+    return target_.id == 5 ? Status::Ok() : NotFound("button 5");
+  }
+
+  // Processes the next frame (null at the end or on an error).
+  const ButtonFrameResult* Next() {
+    if (!source_->Grab().ok()) return nullptr;
+    StatusOr<Frame> frame = source_->Retrieve();
+    if (!frame.ok()) return nullptr;
+    StatusOr<std::shared_ptr<const PipelineResult>> r = pipeline_.Process(*frame);
+    if (!r.ok()) return nullptr;
+    results_.push_back(std::dynamic_pointer_cast<const ButtonFrameResult>(*r));
+    return results_.back().get();
+  }
+  Status SetServe(bool on) {
+    SIGHTLINE_RETURN_IF_ERROR(
+        options_.ApplyOverride(std::string("button.gui.serve=") + (on ? "true" : "false")));
+    return pipeline_.Configure(options_);
+  }
+  // The operator's tap on the approached button of the last frame processed (the one shown).
+  ButtonTapRequest TapOnLast() const {
+    const ButtonFrameResult& shown = *results_.back();
+    const size_t index = results_.size() - 1;
+    ButtonTapRequest tap;
+    tap.x = target_.pixel.at(index).x();
+    tap.y = target_.pixel.at(index).y();
+    tap.frame = shown.stamp.sequence_id;
+    tap.stamp_s = shown.stamp.sensor_time_s;
+    return tap;
+  }
+  double MapPoints() const { return results_.back()->Stat("mono/map_points").value_or(-1); }
+  bool Tracked() const { return results_.back()->Stat("mono/tracked").value_or(0) == 1; }
+
+  ButtonCommands& commands() { return *commands_; }
+  const ButtonFrameResult& last() const { return *results_.back(); }
+  int port() const { return port_; }
+
+ private:
+  std::shared_ptr<ButtonCommands> commands_ = std::make_shared<ButtonCommands>();
+  ButtonPipeline pipeline_{commands_};
+  OptionSet options_;
+  std::unique_ptr<Source> source_;
+  TrueButton target_;
+  int port_ = 0;
+  std::vector<std::shared_ptr<const ButtonFrameResult>> results_;
+};
+
+// Reads lines until the server closes the connection; whether a stop came, and no target after
+// it.
+bool StopThenClosed(ArmClient* client) {
+  bool stop_seen = false;
+  for (int i = 0; i < 5000; ++i) {
+    StatusOr<std::string> line = client->ReadLine(5000);
+    if (!line.ok()) return stop_seen && line.status().code() == StatusCode::kUnavailable;
+    if (stop_seen && line->find("\"type\":\"target\"") != std::string::npos) return false;
     if (line->find("\"type\":\"stop\"") != std::string::npos) stop_seen = true;
   }
-  EXPECT_TRUE(stop_seen);
-  EXPECT_TRUE(closed);
-  const double points_at_stop = map_points();
-  set_serve(true);
-  for (int i = 0; i < 5; ++i) {
-    const ButtonFrameResult* r = next();
-    ASSERT_NE(r, nullptr);
-    EXPECT_TRUE(r->stopped);
-    EXPECT_TRUE(r->serving);
-    EXPECT_FALSE(r->target_published);
-    EXPECT_EQ(r->picker.state, PickerState::kStopped);
+  return false;
+}
+
+// Serving switched on and off during a run, with a real arm client on loopback: the run goes on
+// (the SLAM map is kept: a new run would start with an empty map and an untracked frame),
+// serving off sends the client a stop line, a latched STOP survives new options and a new server
+// (no target until Restart), a hold (the picture paused) publishes nothing, and an old tap is
+// refused.
+TEST_F(MonoButtonPipelines, ServingIsARuntimeSwitchAndStopStaysLatched) {
+  OperatorRun run;
+  const Status started = run.Start(*dir_);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  for (int i = 0; i < 40; ++i) ASSERT_NE(run.Next(), nullptr);
+  const double points_before = run.MapPoints();
+  ASSERT_GT(points_before, 0);
+  ASSERT_TRUE(run.SetServe(true).ok());
+  StatusOr<ArmClient> client = ArmClient::Connect("127.0.0.1", run.port(), "", 5000);
+  ASSERT_TRUE(client.ok()) << client.status().ToString();
+  ASSERT_NE(run.Next(), nullptr);
+  EXPECT_TRUE(run.last().serving);
+  EXPECT_GT(run.MapPoints(), 0.5 * points_before) << "serving on started the run again";
+  EXPECT_TRUE(run.Tracked());
+
+  // The tap on the frame shown, Yes, and frames until a target goes out.
+  const ButtonTapRequest tap = run.TapOnLast();
+  run.commands().Tap(tap);
+  ASSERT_NE(run.Next(), nullptr);
+  ASSERT_TRUE(run.last().tap_status.ok()) << run.last().tap_status.ToString();
+  run.commands().Confirm();
+  for (int i = 0; i < 60 && !run.last().target_published; ++i) ASSERT_NE(run.Next(), nullptr);
+  ASSERT_TRUE(run.last().target_published);
+
+  // Held (the picture paused): nothing is published, the gate's target is not counted as sent.
+  run.commands().SetHold(true);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_NE(run.Next(), nullptr);
+    EXPECT_TRUE(run.last().held);
+    EXPECT_FALSE(run.last().target_published);
+    EXPECT_FALSE(run.last().picker.target.has_value());
   }
-  EXPECT_GT(map_points(), 0.5 * points_at_stop);
-  EXPECT_EQ(results.back()->Stat("mono/tracked").value_or(0), 1);
-  commands->Restart();
-  EXPECT_FALSE(commands->stopped());
+  run.commands().SetHold(false);
+
+  // A tap on a frame older than button.gui.max_tap_age_s (0.5 s, 15 frames) is refused.
+  for (int i = 0; i < 16; ++i) ASSERT_NE(run.Next(), nullptr);
+  ASSERT_GT(run.last().stamp.sensor_time_s - tap.stamp_s, 0.5);
+  run.commands().Tap(tap);
+  ASSERT_NE(run.Next(), nullptr);
+  EXPECT_EQ(run.last().tap_refused, TapRefusal::kTooOld);
+
+  // STOP, then serving off and on: the client hears "stop" and is closed; the new server stays
+  // stopped and nothing is published until Restart.
+  run.commands().Stop("operator");
+  ASSERT_TRUE(run.SetServe(false).ok());
+  EXPECT_TRUE(StopThenClosed(&*client));
+  const double points_at_stop = run.MapPoints();
+  ASSERT_TRUE(run.SetServe(true).ok());
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_NE(run.Next(), nullptr);
+    EXPECT_TRUE(run.last().stopped);
+    EXPECT_TRUE(run.last().serving);
+    EXPECT_FALSE(run.last().target_published);
+    EXPECT_EQ(run.last().picker.state, PickerState::kStopped);
+  }
+  EXPECT_GT(run.MapPoints(), 0.5 * points_at_stop);
+  EXPECT_TRUE(run.Tracked());
+  run.commands().Restart();
+  EXPECT_FALSE(run.commands().stopped());
 }
 
 }  // namespace
