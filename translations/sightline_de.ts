@@ -4,73 +4,133 @@
 <context>
     <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="38"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="81"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
         <source>Waiting for Yes</source>
         <translation>Warte auf Ja</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="44"/>
         <source>Button lost</source>
         <translation>Knopf verloren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="44"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="46"/>
         <source>Button unclear</source>
         <translation>Knopf unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="46"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="48"/>
         <source>Measuring the button</source>
         <translation>Knopf wird vermessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="48"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="50"/>
         <source>Measuring again</source>
         <translation>Neue Messung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="50"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="52"/>
         <source>Measuring the distance</source>
         <translation>Abstand wird gemessen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="52"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="54"/>
         <source>Panel unclear</source>
         <translation>Tastenfeld unklar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="54"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="56"/>
         <source>Position not sure yet</source>
         <translation>Position noch unsicher</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="56"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
         <source>Button out of reach</source>
         <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="101"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="69"/>
+        <source>The picture changed: tap again</source>
+        <translation>Das Bild hat sich geändert: bitte neu antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
+        <source>The picture was too old: tap again</source>
+        <translation>Das Bild war zu alt: bitte neu antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
+        <source>Stopped: press Start again first</source>
+        <translation>Gestoppt: zuerst „Neu starten“ drücken</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="80"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="216"/>
+        <source>Paused</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <source>Arm link off</source>
+        <translation>Arm-Verbindung aus</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="84"/>
+        <source>No arm connected</source>
+        <translation>Kein Arm verbunden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
+        <source>Waiting</source>
+        <translation>Warten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="109"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="108"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="133"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="117"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="136"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="174"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="172"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="216"/>
+        <source>End of the recording</source>
+        <translation>Ende der Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="234"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
+        <source>The picture is paused: press Play, then tap</source>
+        <translation>Das Bild ist angehalten: erst Abspielen drücken, dann antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="241"/>
+        <source>The recording has ended: nothing to tap</source>
+        <translation>Die Aufnahme ist zu Ende: nichts zum Antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="243"/>
+        <source>No picture yet: open a camera or a recording</source>
+        <translation>Noch kein Bild: Kamera oder Aufnahme öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="280"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
@@ -793,62 +853,62 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MappingPresenter</name>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="90"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="91"/>
         <source>Indoor mapping (Manhattan walls)</source>
         <translation>Innenraumkartierung (Manhattan-Wände)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="97"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="98"/>
         <source>Occupancy, scan and walls</source>
         <translation>Belegung, Scan und Wände</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="103"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="104"/>
         <source>Calibrate floor</source>
         <translation>Boden kalibrieren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="105"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="106"/>
         <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
         <translation>Die Bodenebene aus den nächsten Bildern neu schätzen (der Roboter sollte freien Boden sehen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="109"/>
         <source>Save floor...</source>
         <translation>Boden speichern...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="110"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="111"/>
         <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
         <translation>Die verwendete Bodenkalibrierung speichern, für mapping.run.floor_file oder `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="113"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="114"/>
         <source>Save floor calibration</source>
         <translation>Bodenkalibrierung speichern</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="114"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="115"/>
         <source>YAML (*.yaml)</source>
         <translation>YAML (*.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="126"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="127"/>
         <source>Stitched map</source>
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="185"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="201"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="202"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="214"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
@@ -1003,72 +1063,94 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="190"/>
+        <location filename="../widgets/operator_panel.cpp" line="265"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="195"/>
+        <location filename="../widgets/operator_panel.cpp" line="270"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="166"/>
+        <location filename="../widgets/operator_panel.cpp" line="237"/>
         <source>Locating</source>
         <translation>Position wird gemessen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="170"/>
+        <location filename="../widgets/operator_panel.cpp" line="241"/>
         <source>Lost - hold still</source>
         <translation>Verloren - still halten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="160"/>
+        <location filename="../widgets/operator_panel.cpp" line="231"/>
         <source>No button here - tap again</source>
         <translation>Kein Knopf hier - nochmal tippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="158"/>
+        <location filename="../widgets/operator_panel.cpp" line="229"/>
         <source>Press this button?</source>
         <translation>Diesen Knopf drücken?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="196"/>
+        <location filename="../widgets/operator_panel.cpp" line="245"/>
+        <source>Holding: nothing sent</source>
+        <translation>Halt: nichts gesendet</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="247"/>
+        <source>Tap not taken</source>
+        <translation>Antippen nicht angenommen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="271"/>
         <source>STOP</source>
         <translation>STOPP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="162"/>
+        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <source>Leave</source>
+        <translation>Verlassen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <source>Leave the operator panel?</source>
+        <translation>Bedienfeld verlassen?</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="233"/>
         <source>Searching</source>
         <translation>Suche läuft</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="197"/>
+        <location filename="../widgets/operator_panel.cpp" line="272"/>
         <source>Start again</source>
         <translation>Neu starten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="172"/>
+        <location filename="../widgets/operator_panel.cpp" line="243"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="156"/>
+        <location filename="../widgets/operator_panel.cpp" line="227"/>
         <source>Tap a button</source>
         <translation>Knopf antippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="168"/>
+        <location filename="../widgets/operator_panel.cpp" line="239"/>
         <source>Target sent</source>
         <translation>Ziel gesendet</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="164"/>
+        <location filename="../widgets/operator_panel.cpp" line="235"/>
         <source>Tracking</source>
         <translation>Knopf im Blick</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="194"/>
+        <location filename="../widgets/operator_panel.cpp" line="269"/>
+        <location filename="../widgets/operator_panel.cpp" line="311"/>
         <source>Yes</source>
         <translation>Ja</translation>
     </message>

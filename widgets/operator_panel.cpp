@@ -1,10 +1,14 @@
 #include "widgets/operator_panel.h"
 
+#include <QCloseEvent>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 #include <cmath>
 #include <limits>
@@ -21,6 +25,8 @@ const char kStyle[] =
     "QLabel { color: white; }"
     "QLabel#banner { color: black; background: #ffdd00; font-weight: bold; padding: 6px; }"
     "QLabel#distance { color: #ffdd00; font-weight: bold; }"
+    "QLabel#detail { color: white; }"
+    "QMessageBox { background: black; }"
     "QPushButton { color: black; background: white; font-weight: bold; border: 3px solid white;"
     "  border-radius: 8px; padding: 6px; }"
     "QPushButton#yes { background: #00c853; border-color: #00c853; }"
@@ -34,42 +40,75 @@ OperatorPanel::OperatorPanel(QWidget* parent)
   setObjectName("OperatorPanel");
   setAttribute(Qt::WA_StyledBackground);
   setStyleSheet(kStyle);
+  setFocusPolicy(Qt::StrongFocus);  // F11 and Esc when the panel is a window of its own.
+  BuildLayout();
+  ConnectButtons();
+  Retranslate();
+  ApplyTouchSizes();
+  UpdateControls();
+}
+
+void OperatorPanel::BuildLayout() {
   view_ = new TapImageView(this);
-  banner_ = new QLabel(this);
+  side_ = new QWidget(this);
+  banner_ = new QLabel(side_);
   banner_->setObjectName("banner");
   banner_->setAlignment(Qt::AlignCenter);
-  detail_ = new QLabel(this);
-  detail_->setAlignment(Qt::AlignCenter);
+  banner_->setWordWrap(true);
+  detail_ = new QLabel(side_);
+  detail_->setObjectName("detail");
+  detail_->setAlignment(Qt::AlignHCenter | Qt::AlignTop);
   detail_->setWordWrap(true);
-  distance_ = new QLabel(this);
+  distance_ = new QLabel(side_);
   distance_->setObjectName("distance");
   distance_->setAlignment(Qt::AlignCenter);
-  yes_ = new QPushButton(this);
-  yes_->setObjectName("yes");
-  cancel_ = new QPushButton(this);
-  stop_ = new QPushButton(this);
+  stop_ = new QPushButton(side_);
   stop_->setObjectName("stop");
-  start_ = new QPushButton(this);
+  answers_ = new QStackedWidget(side_);
+  empty_page_ = new QWidget(answers_);
+  question_page_ = new QWidget(answers_);
+  yes_ = new QPushButton(question_page_);
+  yes_->setObjectName("yes");
+  cancel_ = new QPushButton(question_page_);
+  auto* question = new QVBoxLayout(question_page_);
+  question->setContentsMargins(0, 0, 0, 0);
+  question->addWidget(yes_);
+  question->addWidget(cancel_);
+  stopped_page_ = new QWidget(answers_);
+  start_ = new QPushButton(stopped_page_);
+  auto* stopped = new QVBoxLayout(stopped_page_);
+  stopped->setContentsMargins(0, 0, 0, 0);
+  stopped->addWidget(start_);
+  stopped->addStretch(1);
+  for (QWidget* page : {empty_page_, question_page_, stopped_page_}) answers_->addWidget(page);
 
-  auto* side = new QVBoxLayout;
-  side->addWidget(stop_, 2);
+  // Every region has a fixed size (ApplyTouchSizes) and keeps it when hidden: nothing moves when
+  // the words change.
+  for (QWidget* w : {static_cast<QWidget*>(detail_), static_cast<QWidget*>(distance_)}) {
+    QSizePolicy policy = w->sizePolicy();
+    policy.setRetainSizeWhenHidden(true);
+    w->setSizePolicy(policy);
+  }
+  auto* side = new QVBoxLayout(side_);
+  side->setContentsMargins(0, 0, 0, 0);
+  side->addWidget(stop_);
   side->addWidget(banner_);
   side->addWidget(detail_);
   side->addWidget(distance_);
   side->addStretch(1);
-  side->addWidget(yes_);
-  side->addWidget(cancel_);
-  side->addWidget(start_);
+  side->addWidget(answers_);
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(view_, 1);
-  layout->addLayout(side);
+  layout->addWidget(side_);
+}
 
+void OperatorPanel::ConnectButtons() {
   connect(view_, &TapImageView::Tapped, this, [this](QPointF p) {
     if (state_ != OperatorState::kStopped && state_ != OperatorState::kConfirm) emit Tapped(p);
   });
   connect(yes_, &QPushButton::clicked, this, [this] {
-    view_->SetTapsEnabled(true);
+    view_->SetOutline({});  // From now on the ring follows the tracked button.
     SetState(OperatorState::kSearching);
     emit Confirmed();
   });
@@ -87,29 +126,43 @@ OperatorPanel::OperatorPanel(QWidget* parent)
   });
   connect(start_, &QPushButton::clicked, this, [this] {
     state_ = OperatorState::kIdle;
+    detail_text_.clear();
     view_->SetOutline({});
+    view_->SetRing(std::nullopt);
     UpdateControls();
     emit StartRequested();
   });
-  Retranslate();
-  ApplyTouchSizes();
-  UpdateControls();
 }
 
 void OperatorPanel::SetImage(const cv::Mat& image) { view_->SetImage(image); }
 
 void OperatorPanel::ShowCandidate(const QPolygonF& outline_in_image) {
   if (state_ == OperatorState::kStopped) return;
+  view_->SetRing(std::nullopt);
   view_->SetOutline(outline_in_image);
   SetState(OperatorState::kConfirm);
 }
 
 void OperatorPanel::SetState(OperatorState state, const QString& detail) {
   if (state_ == OperatorState::kStopped) return;  // Only "Start again" leaves STOP.
+  if (state == state_ && detail == detail_text_) return;
   state_ = state;
   detail_text_ = detail;
-  if (state == OperatorState::kNoButton || state == OperatorState::kIdle) view_->SetOutline({});
+  if (state == OperatorState::kNoButton || state == OperatorState::kIdle ||
+      state == OperatorState::kRefused) {
+    view_->SetOutline({});
+    view_->SetRing(std::nullopt);
+  }
   UpdateControls();
+}
+
+void OperatorPanel::Refuse(const QString& why) {
+  if (state_ == OperatorState::kConfirm) return;  // The question stays open.
+  SetState(OperatorState::kRefused, why);
+}
+
+void OperatorPanel::SetRing(std::optional<QPointF> centre, double radius_px) {
+  view_->SetRing(centre, radius_px);
 }
 
 void OperatorPanel::SetDistance(double metres) {
@@ -118,36 +171,54 @@ void OperatorPanel::SetDistance(double metres) {
 }
 
 void OperatorPanel::SetFullScreenMode(bool on) {
-  if (on)
+  const QScreen* s = screen();
+  const QRect area = s ? s->geometry() : QRect();
+  if (on) {
+    // The window manager makes a full-screen window cover the screen; without one (a kiosk
+    // session) the geometry does.
+    if (!area.isEmpty()) setGeometry(area);
     showFullScreen();
-  else
-    showNormal();
+    return;
+  }
+  showNormal();
+  if (!area.isEmpty() && size() == area.size()) {
+    setGeometry(
+        QRect(area.topLeft() + QPoint(area.width() / 8, area.height() / 8), area.size() * 3 / 4));
+  }
 }
 
 int OperatorPanel::MinTouchTargetPx() const {
-  // Logical pixels per physical inch; falls back to the logical DPI when the platform does not
-  // know the screen's size.
+  // Logical pixels per physical inch. A platform that does not know the screen's size reports
+  // nonsense (0, or thousands): then 96 dpi, the common desktop figure.
   double dpi = 0;
   if (const QScreen* s = screen()) dpi = s->physicalDotsPerInch();
-  if (!(dpi > 20 && dpi < 2000)) dpi = logicalDpiX();
+  if (!(dpi >= 50 && dpi <= 1000)) dpi = 96;
   return int(std::ceil(kMinTouchTargetMm / 25.4 * dpi));
 }
 
 void OperatorPanel::ApplyTouchSizes() {
   const int side = MinTouchTargetPx();
+  const int width = 4 * side;
   QFont big = font();
-  big.setPixelSize(std::max(18, side / 2));
+  big.setPixelSize(std::max(18, side * 2 / 5));
+  QFont huge = big;
+  huge.setPixelSize(std::max(28, side * 3 / 4));
   for (QPushButton* b : {yes_, cancel_, start_}) {
-    b->setMinimumSize(3 * side, side);
+    b->setFixedSize(width, side);
     b->setFont(big);
   }
-  QFont huge = big;
-  huge.setPixelSize(std::max(28, side));
-  stop_->setMinimumSize(3 * side, 2 * side);
+  stop_->setFixedSize(width, 2 * side);
   stop_->setFont(huge);
   banner_->setFont(big);
+  banner_->setFixedSize(width, 3 * big.pixelSize() + 16);  // Two lines and the padding.
+  detail_->setFont(big);
+  detail_->setFixedSize(width, 4 * big.pixelSize() + 8);  // Three lines.
   distance_->setFont(huge);
-  banner_->setMinimumWidth(3 * side);
+  distance_->setFixedSize(width, side);
+  const int spacing = std::max(6, side / 6);
+  question_page_->layout()->setSpacing(spacing);
+  answers_->setFixedSize(width, 2 * side + spacing);
+  side_->setFixedWidth(width);
 }
 
 QString OperatorPanel::BannerText(OperatorState state) const {
@@ -170,22 +241,26 @@ QString OperatorPanel::BannerText(OperatorState state) const {
       return tr("Lost - hold still");
     case OperatorState::kStopped:
       return tr("Stopped");
+    case OperatorState::kHolding:
+      return tr("Holding: nothing sent");
+    case OperatorState::kRefused:
+      return tr("Tap not taken");
   }
   return {};
 }
 
 void OperatorPanel::UpdateControls() {
   banner_->setText(BannerText(state_));
+  // Hidden texts keep their regions (retainSizeWhenHidden): the layout never moves.
   detail_->setText(detail_text_);
   detail_->setVisible(!detail_text_.isEmpty());
   const bool asking = state_ == OperatorState::kConfirm;
-  yes_->setVisible(asking);
-  cancel_->setVisible(asking);
-  start_->setVisible(state_ == OperatorState::kStopped);
+  const bool stopped = state_ == OperatorState::kStopped;
+  answers_->setCurrentWidget(asking ? question_page_ : stopped ? stopped_page_ : empty_page_);
   stop_->setVisible(true);  // Always.
   stop_->setEnabled(true);
-  view_->SetTapsEnabled(!asking && state_ != OperatorState::kStopped);
-  const bool show_distance = std::isfinite(distance_m_) && state_ != OperatorState::kStopped;
+  view_->SetTapsEnabled(!asking && !stopped);
+  const bool show_distance = std::isfinite(distance_m_) && !stopped;
   distance_->setVisible(show_distance);
   if (show_distance) distance_->setText(tr("%1 cm").arg(std::lround(distance_m_ * 100)));
 }
@@ -206,6 +281,43 @@ void OperatorPanel::changeEvent(QEvent* event) {
 void OperatorPanel::showEvent(QShowEvent* event) {
   ApplyTouchSizes();  // The screen (and its DPI) is known now.
   QWidget::showEvent(event);
+}
+
+void OperatorPanel::keyPressEvent(QKeyEvent* event) {
+  if (isWindow() && event->key() == Qt::Key_F11) {
+    emit FullScreenToggleRequested();
+    return;
+  }
+  if (isWindow() && event->key() == Qt::Key_Escape) {
+    AskToLeave();
+    return;
+  }
+  QWidget::keyPressEvent(event);
+}
+
+void OperatorPanel::closeEvent(QCloseEvent* event) {
+  if (!isWindow()) return QWidget::closeEvent(event);
+  event->ignore();  // The owner decides what leaving means (back to the main window, or quit).
+  emit LeaveRequested();
+}
+
+void OperatorPanel::AskToLeave() {
+  if (leave_question_ != nullptr) return;
+  leave_question_ =
+      new QMessageBox(QMessageBox::Question, tr("Leave"), tr("Leave the operator panel?"),
+                      QMessageBox::Yes | QMessageBox::Cancel, this);
+  leave_question_->setAttribute(Qt::WA_DeleteOnClose);
+  leave_question_->setStyleSheet(kStyle);
+  leave_question_->button(QMessageBox::Yes)->setText(tr("Yes"));
+  leave_question_->button(QMessageBox::Cancel)->setText(tr("Cancel"));
+  for (QAbstractButton* b : leave_question_->buttons()) {
+    b->setMinimumSize(3 * MinTouchTargetPx(), MinTouchTargetPx());
+  }
+  connect(leave_question_, &QMessageBox::finished, this, [this](int result) {
+    leave_question_ = nullptr;
+    if (result == QMessageBox::Yes) emit LeaveRequested();
+  });
+  leave_question_->open();  // Window-modal, not blocking: STOP stays in reach underneath.
 }
 
 }  // namespace sightline

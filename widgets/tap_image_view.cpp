@@ -36,6 +36,12 @@ void TapImageView::SetOutline(const QPolygonF& outline_in_image) {
   update();
 }
 
+void TapImageView::SetRing(std::optional<QPointF> centre_in_image, double radius_px) {
+  ring_centre_ = centre_in_image;
+  ring_radius_ = radius_px;
+  update();
+}
+
 QRectF TapImageView::ImageRect() const {
   if (image_.isNull()) return {};
   const double s = std::min(width() / double(image_.width()), height() / double(image_.height()));
@@ -62,6 +68,7 @@ void TapImageView::paintEvent(QPaintEvent*) {
   if (image_.isNull()) return;
   painter.setRenderHint(QPainter::SmoothPixmapTransform);
   painter.drawImage(ImageRect(), image_);
+  PaintRing(&painter);
   if (outline_.size() < 2) return;
   QPolygonF shown;
   for (const QPointF& p : outline_) shown << ToWidget(p);
@@ -71,6 +78,21 @@ void TapImageView::paintEvent(QPaintEvent*) {
   painter.drawPolygon(shown);
   painter.setPen(QPen(QColor(255, 221, 0), 5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
   painter.drawPolygon(shown);
+}
+
+void TapImageView::PaintRing(QPainter* painter) const {
+  if (!ring_centre_) return;
+  const QPointF c = ToWidget(*ring_centre_);
+  const double scale = ImageRect().width() / image_.width();
+  const double r = std::max(8.0, ring_radius_ * scale + 4);  // Around the button, not on it.
+  painter->save();
+  painter->setRenderHint(QPainter::Antialiasing);
+  painter->setBrush(Qt::NoBrush);
+  painter->setPen(QPen(Qt::black, 9));
+  painter->drawEllipse(c, r, r);
+  painter->setPen(QPen(QColor(255, 221, 0), 5));
+  painter->drawEllipse(c, r, r);
+  painter->restore();
 }
 
 void TapImageView::Tap(QPointF widget_point) {

@@ -1,5 +1,6 @@
 // The live camera image for the operator's panel: fills its area (aspect kept), takes taps from
-// a finger or a mouse and reports them in image pixels, and outlines the found button.
+// a finger or a mouse and reports them in image pixels, outlines the found button and rings the
+// tracked one.
 #pragma once
 
 #include <QImage>
@@ -8,6 +9,8 @@
 #include <QWidget>
 #include <opencv2/core.hpp>
 #include <optional>
+
+class QPainter;
 
 namespace sightline {
 
@@ -23,6 +26,10 @@ class TapImageView : public QWidget {
   void SetImage(const cv::Mat& image);
   // Outlines a region given in image pixels; an empty polygon clears it.
   void SetOutline(const QPolygonF& outline_in_image);
+  // Rings the tracked button: centre and radius in image pixels; nullopt clears it.
+  void SetRing(std::optional<QPointF> centre_in_image, double radius_px = 0);
+  std::optional<QPointF> ring_centre() const { return ring_centre_; }
+  double ring_radius() const { return ring_radius_; }
   // Enables or ignores taps (e.g. while the operator answers a question).
   void SetTapsEnabled(bool enabled) { taps_enabled_ = enabled; }
 
@@ -43,10 +50,13 @@ class TapImageView : public QWidget {
 
  private:
   QRectF ImageRect() const;  // Where the image is drawn, widget coordinates.
+  void PaintRing(QPainter* painter) const;
   void Tap(QPointF widget_point);
 
   QImage image_;
   QPolygonF outline_;
+  std::optional<QPointF> ring_centre_;
+  double ring_radius_ = 0;
   bool taps_enabled_ = true;
 };
 

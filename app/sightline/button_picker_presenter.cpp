@@ -6,8 +6,10 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSignalBlocker>
 #include <cmath>
 
+#include "app/sightline/playback_controller.h"
 #include "widgets/operator_panel.h"
 
 namespace sightline {
@@ -58,26 +60,32 @@ QString OperatorReasonText(GateReason reason) {
   return {};
 }
 
-OperatorState PanelState(PickerState s) {
-  switch (s) {
-    case PickerState::kIdle:
-      return OperatorState::kIdle;
-    case PickerState::kConfirm:
-      return OperatorState::kConfirm;
-    case PickerState::kSearching:
-      return OperatorState::kSearching;
-    case PickerState::kTracking:
-      return OperatorState::kTracking;
-    case PickerState::kLocating:
-      return OperatorState::kLocating;
-    case PickerState::kTargetSent:
-      return OperatorState::kTargetSent;
-    case PickerState::kLost:
-      return OperatorState::kLost;
-    case PickerState::kStopped:
-      return OperatorState::kStopped;
+// Why the operator's tap was not taken.
+QString TapRefusalText(TapRefusal refusal) {
+  switch (refusal) {
+    case TapRefusal::kNone:
+      return {};
+    case TapRefusal::kNoPicture:
+      return ButtonPickerPresenter::tr("The picture changed: tap again");
+    case TapRefusal::kTooOld:
+      return ButtonPickerPresenter::tr("The picture was too old: tap again");
+    case TapRefusal::kStopped:
+      return ButtonPickerPresenter::tr("Stopped: press Start again first");
   }
-  return OperatorState::kIdle;
+  return {};
+}
+
+// Why no target goes to the arm on a frame after Yes (the picture plays).
+QString HoldText(const ButtonFrameResult& view) {
+  if (view.held) return ButtonPickerPresenter::tr("Paused");
+  if (view.stopped) return ButtonPickerPresenter::tr("Stopped");
+  if (view.picker.verdict.send || view.picker.target) {  // The gate let it out, the link did not.
+    if (!view.serving) return ButtonPickerPresenter::tr("Arm link off");
+    if (view.arm_clients == 0) return ButtonPickerPresenter::tr("No arm connected");
+    return ButtonPickerPresenter::tr("Stopped");
+  }
+  const QString reason = OperatorReasonText(view.picker.verdict.reason);
+  return reason.isEmpty() ? ButtonPickerPresenter::tr("Waiting") : reason;
 }
 
 }  // namespace
@@ -103,29 +111,24 @@ const char* ButtonPickerPresenter::TitleSource() const {
 
 void ButtonPickerPresenter::Attach(QMainWindow* window) {
   MonoSlamPresenter::Attach(window);
+  window_ = window;
   if (panel_dock_ == nullptr) {
     panel_ = new OperatorPanel(window);
     panel_dock_ = new QDockWidget(tr("Operator panel"), window);
     panel_dock_->setObjectName("button_operator_dock");
     panel_dock_->setWidget(panel_);
-    connect(panel_, &OperatorPanel::Tapped, this, [this](QPointF px) {
-      ButtonTapRequest tap;
-      tap.x = px.x();
-      tap.y = px.y();
-      commands_->Tap(tap);
-    });
-    connect(panel_, &OperatorPanel::Confirmed, this, [this] { commands_->Confirm(); });
-    connect(panel_, &OperatorPanel::Cancelled, this, [this] { commands_->Cancel(); });
-    // STOP reaches the arm at once, not at the next frame.
-    connect(panel_, &OperatorPanel::StopPressed, this, [this] { commands_->Stop("operator"); });
-    connect(panel_, &OperatorPanel::StartRequested, this, [this] { commands_->Restart(); });
+    ConnectPanel();
     full_screen_action_ = new QAction(tr("Operator panel full screen"), window);
     full_screen_action_->setShortcut(QKeySequence(Qt::Key_F11));
     full_screen_action_->setCheckable(true);
-    connect(full_screen_action_, &QAction::toggled, this, [this](bool on) {
-      panel_dock_->setFloating(on);
-      panel_->SetFullScreenMode(on);
-    });
+    connect(full_screen_action_, &QAction::toggled, this,
+            [this](bool on) { SetPanelWindowed(on); });
+  }
+  // The picture's state decides about taps and holding: paused, stepped or ended holds.
+  if (auto* playback = window->findChild<PlaybackController*>()) {
+    connect(playback, &PlaybackController::PlayStateChanged, this,
+            &ButtonPickerPresenter::OnPlayState, Qt::UniqueConnection);
+    OnPlayState(playback->playing(), playback->ended());
   }
   window->addDockWidget(Qt::RightDockWidgetArea, panel_dock_);
   window->addAction(full_screen_action_);
@@ -139,9 +142,64 @@ void ButtonPickerPresenter::Attach(QMainWindow* window) {
   panel_dock_->show();
 }
 
+void ButtonPickerPresenter::ConnectPanel() {
+  connect(panel_, &OperatorPanel::Tapped, this, &ButtonPickerPresenter::OnTapped);
+  connect(panel_, &OperatorPanel::Confirmed, this, [this] { commands_->Confirm(); });
+  connect(panel_, &OperatorPanel::Cancelled, this, [this] { commands_->Cancel(); });
+  // STOP reaches the arm at once, not at the next frame.
+  connect(panel_, &OperatorPanel::StopPressed, this, [this] { commands_->Stop("operator"); });
+  connect(panel_, &OperatorPanel::StartRequested, this, [this] {
+    commands_->Restart();  // The only way out of STOP.
+    if (!playing_) HoldForPicture();
+  });
+  connect(panel_, &OperatorPanel::FullScreenToggleRequested, this, [this] {
+    if (!operator_mode_) return full_screen_action_->setChecked(false);  // Back to the dock.
+    panel_->SetFullScreenMode(!panel_->isFullScreen());
+  });
+  connect(panel_, &OperatorPanel::LeaveRequested, this, &ButtonPickerPresenter::OnLeave);
+}
+
+void ButtonPickerPresenter::EnterOperatorMode() {
+  if (panel_ == nullptr) return;
+  operator_mode_ = true;
+  panel_dock_->hide();
+  SetPanelWindowed(true);
+}
+
+void ButtonPickerPresenter::SetPanelWindowed(bool on) {
+  if (panel_ == nullptr || on == panel_windowed_) return;
+  panel_windowed_ = on;
+  if (on) {
+    panel_->setParent(window_, Qt::Window);  // Still owned by the window, shown on its own.
+    panel_->setWindowTitle(tr("Operator panel"));
+    panel_->SetFullScreenMode(true);
+    panel_->activateWindow();
+    panel_->setFocus();
+  } else {
+    panel_->setWindowState(Qt::WindowNoState);
+    panel_dock_->setWidget(panel_);
+    panel_->show();
+  }
+  const QSignalBlocker block(full_screen_action_);
+  full_screen_action_->setChecked(on);
+}
+
+void ButtonPickerPresenter::OnLeave() {
+  if (operator_mode_) {
+    emit OperatorLeft();
+  } else {
+    SetPanelWindowed(false);
+  }
+}
+
 void ButtonPickerPresenter::Detach() {
   MonoSlamPresenter::Detach();
   if (panel_dock_ == nullptr) return;
+  SetPanelWindowed(false);
+  if (auto* playback = window_ ? window_->findChild<PlaybackController*>() : nullptr) {
+    disconnect(playback, &PlaybackController::PlayStateChanged, this,
+               &ButtonPickerPresenter::OnPlayState);
+  }
   if (auto* window = qobject_cast<QMainWindow*>(panel_dock_->parentWidget())) {
     for (QAction* menu : window->menuBar()->actions()) {
       if (menu->menu() != nullptr) {
@@ -154,34 +212,103 @@ void ButtonPickerPresenter::Detach() {
   panel_dock_->hide();
 }
 
+QString ButtonPickerPresenter::PictureReason() const {
+  return ended_ ? tr("End of the recording") : tr("Paused");
+}
+
+void ButtonPickerPresenter::HoldForPicture() {
+  const OperatorState s = panel_->state();
+  if (s == OperatorState::kStopped || s == OperatorState::kConfirm) return;
+  panel_->SetState(OperatorState::kHolding, PictureReason());
+  panel_->SetRing(std::nullopt);
+}
+
+void ButtonPickerPresenter::OnPlayState(bool playing, bool ended) {
+  playing_ = playing;
+  ended_ = ended;
+  // At once, before the next frame: the pipeline publishes nothing while the picture stands
+  // still, and a tap it has not taken yet is dropped (never applied to a later frame).
+  const bool dropped = commands_->SetHold(!playing);
+  if (panel_ == nullptr || playing) return;
+  if (dropped) {
+    panel_->Refuse(tr("The picture is paused: press Play, then tap"));
+  } else {
+    HoldForPicture();
+  }
+}
+
+void ButtonPickerPresenter::OnTapped(QPointF image_px) {
+  if (ended_) return panel_->Refuse(tr("The recording has ended: nothing to tap"));
+  if (!playing_) return panel_->Refuse(tr("The picture is paused: press Play, then tap"));
+  if (!shown_) return panel_->Refuse(tr("No picture yet: open a camera or a recording"));
+  ButtonTapRequest tap;
+  tap.x = image_px.x();
+  tap.y = image_px.y();
+  tap.frame = shown_id_;  // The frame on screen: the pipeline finds the button on it.
+  tap.stamp_s = shown_stamp_s_;
+  commands_->Tap(tap);
+}
+
 void ButtonPickerPresenter::Show(const PlaybackResult& result) {
   MonoSlamPresenter::Show(result);
-  const auto* view = dynamic_cast<const ButtonFrameResult*>(result.pipeline.get());
+  auto view = std::dynamic_pointer_cast<const ButtonFrameResult>(result.pipeline);
   if (view == nullptr || panel_ == nullptr || !view->slam) return;
+  last_result_ = view;
   panel_->SetImage(view->slam->image);
-  if (view->tap_answered) {
-    if (view->tap_status.ok()) {
-      QPolygonF outline;
-      for (const cv::Point& p : view->candidate_outline) outline << QPointF(p.x, p.y);
-      panel_->ShowCandidate(outline);
-    } else {
-      // The banner says it plainly; the detector's reason is for the log.
-      panel_->SetState(OperatorState::kNoButton);
-      emit Message(
-          0,
-          tr("No button at the tap: %1").arg(QString::fromStdString(view->tap_status.message())));
-    }
-  }
-  const PickerFrame& f = view->picker;
-  last_state_ = f.state;
+  shown_ = true;
+  shown_id_ = result.stamp.sequence_id;
+  shown_stamp_s_ = result.stamp.sensor_time_s;
+  last_state_ = view->picker.state;
   scale_converged_ = view->scale_converged;
-  if (f.state != PickerState::kIdle && f.state != PickerState::kConfirm) {
-    panel_->SetState(PanelState(f.state),
-                     f.verdict.send ? QString() : OperatorReasonText(f.verdict.reason));
-    panel_->detail_label()->setToolTip(f.verdict.send ? QString()
-                                                      : QString::fromStdString(f.verdict.message));
-  }
+  if (std::optional<ButtonTapAnswer> answer = commands_->TakeAnswer()) ShowTapAnswer(*answer);
+  ShowLink(*view);
+  ShowRing(*view);
   panel_->SetDistance(view->Stat("button/distance_m").value_or(std::nan("")));
+}
+
+void ButtonPickerPresenter::ShowTapAnswer(const ButtonTapAnswer& answer) {
+  if (answer.refused != TapRefusal::kNone) {
+    panel_->Refuse(TapRefusalText(answer.refused));
+  } else if (answer.status.ok()) {
+    QPolygonF outline;
+    for (const cv::Point& p : answer.candidate_outline) outline << QPointF(p.x, p.y);
+    panel_->ShowCandidate(outline);
+  } else {
+    // The banner says it plainly; the detector's reason is for the log.
+    panel_->SetState(OperatorState::kNoButton);
+    emit Message(
+        0, tr("No button at the tap: %1").arg(QString::fromStdString(answer.status.message())));
+  }
+}
+
+// "Target sent" only while targets really go out to a connected arm; otherwise holding, and why.
+void ButtonPickerPresenter::ShowLink(const ButtonFrameResult& view) {
+  const PickerFrame& f = view.picker;
+  if (!playing_) return HoldForPicture();  // Whatever a late frame says.
+  if (f.state == PickerState::kConfirm || f.state == PickerState::kStopped) return;
+  if (f.state == PickerState::kIdle) {
+    // "No button here" and refusals stay until the next tap; a hold ends with the picture's.
+    if (panel_->state() == OperatorState::kHolding) panel_->SetState(OperatorState::kIdle);
+    return;
+  }
+  if (view.target_published && view.arm_clients > 0) {
+    panel_->SetState(OperatorState::kTargetSent);
+    panel_->detail_label()->setToolTip({});
+    return;
+  }
+  panel_->SetState(OperatorState::kHolding, HoldText(view));
+  panel_->detail_label()->setToolTip(QString::fromStdString(f.verdict.message));
+}
+
+void ButtonPickerPresenter::ShowRing(const ButtonFrameResult& view) {
+  const PickerFrame& f = view.picker;
+  const bool tracking = f.state != PickerState::kIdle && f.state != PickerState::kConfirm &&
+                        f.state != PickerState::kStopped && f.track.found;
+  if (tracking && panel_->state() != OperatorState::kConfirm) {
+    panel_->SetRing(QPointF(f.track.center.x, f.track.center.y), f.track.radius_px);
+  } else if (panel_->state() != OperatorState::kConfirm) {
+    panel_->SetRing(std::nullopt);
+  }
 }
 
 }  // namespace sightline

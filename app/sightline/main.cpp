@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "app/sightline/builtin_presenters.h"
+#include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
@@ -13,6 +14,51 @@
 #include "app/sightline/screenshot_driver.h"
 #include "app/sightline/translation.h"
 #include "widgets/vtk_gl_widget.h"
+
+namespace {
+
+// `sightline --operator [SOURCE]`: the button picker's operator panel alone, full screen, playing
+// SOURCE. Leaving the panel closes the window: every arm client gets a stop line ("quit").
+int RunOperatorMode(QApplication* app, sightline::MainWindow* window,
+                    sightline::ButtonPickerPresenter* picker, const QString& source) {
+  if (picker == nullptr || !window->ActivatePipeline(picker->Title())) {
+    std::fprintf(stderr, "sightline: the button picker is not available\n");
+    return 2;
+  }
+  picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
+  QObject::connect(picker, &sightline::ButtonPickerPresenter::OperatorLeft, window, [app, window] {
+    window->close();
+    app->quit();
+  });
+  QObject::connect(
+      window, &sightline::MainWindow::DatasetOpened, window,
+      [window] { window->playback()->Play(); }, Qt::SingleShotConnection);
+  if (!source.isEmpty()) {
+    QTimer::singleShot(0, window, [window, source] { window->OpenPath(source); });
+  }
+  return app->exec();
+}
+
+// `sightline --demo`: generates the demo recordings once, then opens the corridor drive.
+void StartDemo(sightline::MainWindow* window, sightline::PipelinePresenter* mapping,
+               bool autoplay) {
+  auto* demo = new sightline::DemoGenerator(sightline::DemoGenerator::DefaultFolder(), window);
+  window->ShowDemoProgress(demo);
+  QObject::connect(demo, &sightline::DemoGenerator::Ready, window,
+                   [window, autoplay](const QString& corridor) {
+                     if (autoplay) {
+                       QObject::connect(
+                           window, &sightline::MainWindow::DatasetOpened, window,
+                           [window] { window->PlayLooping(); }, Qt::SingleShotConnection);
+                     }
+                     window->OpenPath(corridor);
+                   });
+  // The demo shows the pipelines that run on its corridor drive.
+  if (mapping != nullptr) window->ActivatePipeline(mapping->Title());
+  demo->Start();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
@@ -41,17 +87,28 @@ int main(int argc, char** argv) {
   QCommandLineOption pipeline_option(
       "pipeline", "Run a pipeline on every frame: a word of its menu title, e.g. mapping, stereo.",
       "NAME");
-  parser.addOptions({open_option, demo_option, pipeline_option, screenshot_option, frames_option,
-                     timeout_option});
+  QCommandLineOption operator_option(
+      "operator",
+      "Open the operator's button panel alone, full screen (F11: window, Esc: leave), and play "
+      "SOURCE (a camera URI or a recording).");
+  parser.addOptions({open_option, demo_option, pipeline_option, operator_option, screenshot_option,
+                     frames_option, timeout_option});
+  parser.addPositionalArgument("SOURCE", "A dataset, recording or sensor URI to open (as --open).",
+                               "[SOURCE]");
   parser.process(app);
+  QString source = parser.value(open_option);
+  if (!parser.positionalArguments().isEmpty()) source = parser.positionalArguments().first();
 
   sightline::MainWindow window;
   // The Pipeline menu lists the core registry's pipelines, as `sightline-cli run` does.
   sightline::PipelinePresenter* mapping = nullptr;
+  sightline::ButtonPickerPresenter* picker = nullptr;
   for (sightline::PipelinePresenter* presenter : sightline::MakeBuiltinPresenters()) {
     if (qobject_cast<sightline::MappingPresenter*>(presenter) != nullptr) mapping = presenter;
+    if (auto* p = qobject_cast<sightline::ButtonPickerPresenter*>(presenter)) picker = p;
     window.AddPipeline(presenter);
   }
+  if (parser.isSet(operator_option)) return RunOperatorMode(&app, &window, picker, source);
   window.show();
   if (parser.isSet(pipeline_option) &&
       !window.ActivatePipelineByWord(parser.value(pipeline_option))) {
@@ -75,24 +132,9 @@ int main(int argc, char** argv) {
                                     parser.value(timeout_option).toInt());
   }
   if (parser.isSet(demo_option)) {
-    auto* demo = new sightline::DemoGenerator(sightline::DemoGenerator::DefaultFolder(), &window);
-    window.ShowDemoProgress(demo);
-    const bool autoplay = !parser.isSet(screenshot_option);
-    QObject::connect(demo, &sightline::DemoGenerator::Ready, &window,
-                     [&window, autoplay](const QString& corridor) {
-                       if (autoplay) {
-                         QObject::connect(
-                             &window, &sightline::MainWindow::DatasetOpened, &window,
-                             [&window] { window.PlayLooping(); }, Qt::SingleShotConnection);
-                       }
-                       window.OpenPath(corridor);
-                     });
-    // The demo shows the pipelines that run on its corridor drive.
-    if (mapping != nullptr) window.ActivatePipeline(mapping->Title());
-    demo->Start();
-  } else if (parser.isSet(open_option)) {
-    const QString path = parser.value(open_option);
-    QTimer::singleShot(0, &window, [&window, path] { window.OpenPath(path); });
+    StartDemo(&window, mapping, /*autoplay=*/!parser.isSet(screenshot_option));
+  } else if (!source.isEmpty()) {
+    QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
   }
   return app.exec();
 }

@@ -439,7 +439,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  playback_->Close();
+  playback_->Close("quit");  // The pipeline's live outputs (e.g. arm clients) are told first.
   QMainWindow::closeEvent(event);
 }
 

@@ -21,6 +21,7 @@ PlaybackController::PlaybackController(QObject* parent) : QObject(parent) {
 PlaybackController::~PlaybackController() {
   for (QFuture<void>& f : background_) f.waitForFinished();
   StopWorker();
+  AbortProcessor("shutdown");
 }
 
 void PlaybackController::Open(const QString& path) {
@@ -47,7 +48,8 @@ void PlaybackController::Open(const QString& path) {
           }
           // The pipeline is made before the player takes the source: keep its ground truth.
           self->source_ground_truth_ = PipelineSource::From(***opened).ground_truth;
-          self->RebuildProcessor();
+          self->RebuildProcessor("source changed");
+          self->SetPlayState(false, false);
           self->live_ = dynamic_cast<const LiveSource*>(opened->value().get());
           self->StartWorker(std::make_unique<Player>(std::move(**opened)));
           emit self->Opened(path);
@@ -63,7 +65,7 @@ void PlaybackController::Track(QFuture<void> future) {
   background_.push_back(std::move(future));
 }
 
-void PlaybackController::Close() {
+void PlaybackController::Close(const std::string& reason) {
   ++open_generation_;
   StopWorker();
   {
@@ -71,7 +73,15 @@ void PlaybackController::Close() {
     info_.reset();
   }
   source_ground_truth_.reset();
-  RebuildProcessor();
+  RebuildProcessor(reason);
+  SetPlayState(false, false);
+}
+
+void PlaybackController::SetPlayState(bool playing, bool ended) {
+  if (playing == playing_ && ended == ended_) return;
+  playing_ = playing;
+  ended_ = ended;
+  emit PlayStateChanged(playing, ended);
 }
 
 const Trajectory* PlaybackController::ground_truth() const {
@@ -89,16 +99,24 @@ std::optional<SensorStats> PlaybackController::live_stats() const {
 }
 
 void PlaybackController::Play() {
-  if (player_) player_->Play();
+  if (!player_) return;
+  player_->Play();
+  SetPlayState(true, false);
 }
 void PlaybackController::Pause() {
-  if (player_) player_->Pause();
+  if (!player_) return;
+  player_->Pause();
+  SetPlayState(false, ended_);
 }
 void PlaybackController::Step() {
-  if (player_) player_->Step();
+  if (!player_) return;
+  player_->Step();
+  SetPlayState(false, false);
 }
 void PlaybackController::Seek(int64_t index) {
-  if (player_) player_->Seek(index);
+  if (!player_) return;
+  player_->Seek(index);
+  SetPlayState(playing_, false);
 }
 void PlaybackController::SetSpeed(double factor) {
   if (player_) player_->SetSpeed(factor);
@@ -126,10 +144,15 @@ void PlaybackController::SetProcessorFactory(ProcessorFactory factory, const Opt
     processor_options_ = options;
     processor_options_dirty_ = true;
   }
-  RebuildProcessor();
+  RebuildProcessor("pipeline switched");
 }
 
-void PlaybackController::RebuildProcessor() {
+void PlaybackController::AbortProcessor(const std::string& reason) {
+  std::lock_guard<std::mutex> lock(processor_mutex_);
+  if (processor_ && processor_opened_) processor_->Abort(reason);
+}
+
+void PlaybackController::RebuildProcessor(const std::string& reason) {
   std::unique_ptr<Pipeline> processor;
   PipelineSource source;
   if (info_) {
@@ -137,7 +160,12 @@ void PlaybackController::RebuildProcessor() {
     source.ground_truth = source_ground_truth_;
   }
   if (processor_factory_ && info_) processor = processor_factory_(source);
+  std::unique_ptr<Pipeline> previous;
   std::lock_guard<std::mutex> lock(processor_mutex_);
+  // Explicitly, not by the destructor, and before the next one may open: e.g. every arm client
+  // gets a stop line naming `reason` before the server's port is free again.
+  if (processor_ && processor_opened_) processor_->Abort(reason);
+  previous = std::move(processor_);
   processor_ = std::move(processor);
   processor_source_ = std::move(source);
   processor_opened_ = false;
@@ -271,8 +299,14 @@ void PlaybackController::WorkerLoop() {
       const StatusCode code = frame.status().code();
       if (code == StatusCode::kCancelled) break;
       if (code == StatusCode::kOutOfRange) {
+        AbortProcessor("source ended");  // Live outputs hear of it before the GUI does.
         QMetaObject::invokeMethod(
-            this, [this] { emit EndOfStream(); }, Qt::QueuedConnection);
+            this,
+            [this] {
+              SetPlayState(false, true);
+              emit EndOfStream();
+            },
+            Qt::QueuedConnection);
         continue;  // Next() waits for Play, Step or Seek.
       }
       const QString message = QString::fromStdString(frame.status().ToString());
@@ -288,7 +322,12 @@ void PlaybackController::WorkerLoop() {
       }
       player_->Pause();
       QMetaObject::invokeMethod(
-          this, [this, message] { emit ReadError(message); }, Qt::QueuedConnection);
+          this,
+          [this, message] {
+            SetPlayState(false, false);
+            emit ReadError(message);
+          },
+          Qt::QueuedConnection);
       continue;
     }
     live_outage_ = false;

@@ -41,7 +41,9 @@ class PlaybackController : public QObject {
   // Opens a dataset, a recording (.oni) or a sensor URI (openni2://, aravis://, v4l2://) in the
   // background; emits Opened or OpenFailed.
   void Open(const QString& path);
-  void Close();
+  // Closes the source; the running pipeline is told first (Pipeline::Abort with `reason`, e.g.
+  // arm clients get a stop line naming it).
+  void Close(const std::string& reason = "source closed");
   void Play();
   void Pause();
   void Step();
@@ -71,6 +73,10 @@ class PlaybackController : public QObject {
   std::optional<SensorStats> live_stats() const;
 
   bool is_open() const { return static_cast<bool>(info_); }
+  // Frames are being played (Play), not paused, stepped or at the end (GUI thread).
+  bool playing() const { return playing_; }
+  // Playback reached the end of a recording and waits (GUI thread).
+  bool ended() const { return ended_; }
   // Valid after Opened().
   const SourceInfo* info() const { return info_.get(); }
   const Trajectory* ground_truth() const;
@@ -82,6 +88,8 @@ class PlaybackController : public QObject {
   // A frame could not be read; playback pauses. The message names the file.
   void ReadError(const QString& message);
   void EndOfStream();
+  // playing() or ended() changed: emitted at once on Pause, Step, Seek and the end.
+  void PlayStateChanged(bool playing, bool ended);
   // SaveResults finished: the folder and the files written in it.
   void ResultsSaved(const QString& folder, const QStringList& files);
   void SaveFailed(const QString& message);
@@ -95,8 +103,12 @@ class PlaybackController : public QObject {
   // Stores the newest result and notifies the GUI unless a notification is already pending.
   void Publish(std::shared_ptr<const PlaybackResult> result);
   void DeliverLatest();
-  // Builds the processor for the current source from the factory (GUI thread).
-  void RebuildProcessor();
+  // Builds the processor for the current source from the factory (GUI thread); the previous
+  // one is aborted with `reason` first (its live outputs, e.g. arm clients, are told).
+  void RebuildProcessor(const std::string& reason);
+  // Tells the running processor that its run ends (any thread).
+  void AbortProcessor(const std::string& reason);
+  void SetPlayState(bool playing, bool ended);
   // Runs the processor on a frame (any thread; serialised by processor_mutex_).
   std::shared_ptr<const PipelineFrameResult> RunProcessor(const Frame& frame, bool replay);
   // A result that says why a frame gave none.
@@ -112,6 +124,8 @@ class PlaybackController : public QObject {
   bool live_outage_ = false;  // Worker thread only: a live source is currently not delivering.
   uint64_t open_generation_ = 0;
   std::vector<QFuture<void>> background_;  // GUI thread only.
+  bool playing_ = false;                   // GUI thread only.
+  bool ended_ = false;                     // GUI thread only.
 
   ProcessorFactory processor_factory_;                     // GUI thread only.
   std::shared_ptr<const Trajectory> source_ground_truth_;  // The open source's; GUI thread only.

@@ -46,7 +46,11 @@ OptionTable<ButtonGuiOptions> ButtonGuiOptions::Describe() {
   return OptionTable<O>("button.gui")
       .Bool("serve", &O::serve,
             "Serve the targets to the arm over TCP (button.arm.bind_address, port, token); "
-            "127.0.0.1:5757 by default. The same as button.run.serve.");
+            "127.0.0.1:5757 by default. The same as button.run.serve. Switching it keeps the "
+            "run (map, button, STOP); switching it off sends the arm a stop line.")
+      .Double("max_tap_age_s", &O::max_tap_age_s, "s", 0.01, 10, 0.1,
+              "The operator's tap is refused when the frame it was made on is older than this "
+              "(data time) by the time the pipeline takes it.");
 }
 
 StatusOr<ButtonTap> ParseButtonTap(const std::string& text) {
@@ -90,20 +94,40 @@ void ButtonCommands::Cancel() {
 void ButtonCommands::Stop(const std::string& reason) {
   std::lock_guard<std::mutex> lock(mutex_);
   pending_.stop = true;
+  stopped_ = true;
   if (stop_now_) stop_now_(reason);  // At once, not at the next frame.
 }
 
 void ButtonCommands::Restart() {
   std::lock_guard<std::mutex> lock(mutex_);
   pending_.restart = true;
+  stopped_ = false;
   if (restart_now_) restart_now_();
 }
 
-ButtonCommands::Pending ButtonCommands::Take(int64_t frame) {
+bool ButtonCommands::SetHold(bool hold) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  held_ = hold;
+  if (!hold || !pending_.tap || pending_.tap->ahead) return false;
+  pending_.tap.reset();  // A tap on a picture that is no longer live is never applied later.
+  return true;
+}
+
+bool ButtonCommands::held() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return held_;
+}
+
+bool ButtonCommands::stopped() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return stopped_;
+}
+
+ButtonCommands::Pending ButtonCommands::Take(int64_t index) {
   std::lock_guard<std::mutex> lock(mutex_);
   Pending out = pending_;
   pending_ = Pending();
-  if (out.tap && out.tap->frame > frame) {  // For a later frame: it waits.
+  if (out.tap && out.tap->ahead && out.tap->frame > index) {  // For a later frame: it waits.
     pending_.tap = out.tap;
     out.tap.reset();
   }
@@ -115,11 +139,32 @@ bool ButtonCommands::tap_pending() const {
   return pending_.tap.has_value();
 }
 
-void ButtonCommands::SetImmediate(std::function<void(const std::string&)> stop,
+void ButtonCommands::PostAnswer(ButtonTapAnswer answer) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  answer_ = std::move(answer);
+}
+
+std::optional<ButtonTapAnswer> ButtonCommands::TakeAnswer() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<ButtonTapAnswer> out = std::move(answer_);
+  answer_.reset();
+  return out;
+}
+
+void ButtonCommands::SetImmediate(const void* owner, std::function<void(const std::string&)> stop,
                                   std::function<void()> restart) {
   std::lock_guard<std::mutex> lock(mutex_);
+  immediate_owner_ = owner;
   stop_now_ = std::move(stop);
   restart_now_ = std::move(restart);
+}
+
+void ButtonCommands::ClearImmediate(const void* owner) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (immediate_owner_ != owner) return;  // A newer pipeline object took over.
+  immediate_owner_ = nullptr;
+  stop_now_ = nullptr;
+  restart_now_ = nullptr;
 }
 
 const StatisticTable& ButtonStatistics() {
@@ -151,9 +196,7 @@ ButtonPipeline::ButtonPipeline(std::shared_ptr<ButtonCommands> commands,
       commands_(commands ? std::move(commands) : std::make_shared<ButtonCommands>()),
       mono_(std::move(mono_commands)) {}
 
-ButtonPipeline::~ButtonPipeline() {
-  if (output_) commands_->SetImmediate({}, {});
-}
+ButtonPipeline::~ButtonPipeline() { commands_->ClearImmediate(this); }
 
 StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options) {
   Config c;
@@ -163,7 +206,9 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
   c.run = options.Extract(ButtonRunOptions::Describe());
   c.view = options.Extract(MetricViewOptions::Describe());
   c.server = options.Extract(ArmServerOptions::Describe());
-  c.serve = c.run.serve || options.Extract(ButtonGuiOptions::Describe()).serve;
+  const ButtonGuiOptions gui = options.Extract(ButtonGuiOptions::Describe());
+  c.serve = c.run.serve || gui.serve;
+  c.max_tap_age_s = gui.max_tap_age_s;
   std::string error;
   if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error)) {
     return InvalidArgument(error);
@@ -182,14 +227,42 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
   return c;
 }
 
+namespace {
+
+// Options of the arm-target server and of the operator panel: changing them keeps the run.
+bool IsLinkKey(const std::string& key) {
+  return key.rfind("button.arm.", 0) == 0 || key.rfind("button.gui.", 0) == 0 ||
+         key == "button.run.serve" || key == "button.run.wait_clients" ||
+         key == "button.run.wait_clients_s" || key == "button.run.linger_s";
+}
+
+bool IsArmKey(const std::string& key) { return key.rfind("button.arm.", 0) == 0; }
+
+// Whether `a` and `b` differ in a key for which `pick(key) == picked`.
+bool Differ(const OptionSet& a, const OptionSet& b, bool (*pick)(const std::string&), bool picked) {
+  for (const OptionSpec& spec : b.specs()) {
+    if (pick(spec.key) != picked) continue;
+    StatusOr<OptionValue> x = a.Get(spec.key), y = b.Get(spec.key);
+    if (x.ok() != y.ok() || (x.ok() && *x != *y)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Status ButtonPipeline::Configure(const OptionSet& options) {
   StatusOr<Config> parsed = Parse(options);
   if (!parsed.ok()) return parsed.status();
   if (headless_ && !parsed->tap) return ParseButtonTap("").status();  // "--tap is required".
+  const bool run_changed = !options_ || Differ(*options_, options, IsLinkKey, false);
+  const bool arm_changed = options_ && Differ(*options_, options, IsArmKey, true);
   config_ = std::move(*parsed);
-  SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, config_.mono_run));
+  options_ = options;
+  if (run_changed) SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, config_.mono_run));
   if (!source_) return Status::Ok();
-  return Open(*source_);  // New options start the run again.
+  if (arm_changed) StopOutput("arm settings changed");
+  if (!run_changed) return StartOutput();  // Serving switched: the map and the button stay.
+  return Open(*source_);                   // New options start the run again.
 }
 
 namespace {
@@ -232,8 +305,7 @@ Status ButtonPipeline::Open(const PipelineSource& source) {
 
 Status ButtonPipeline::StartOutput() {
   if (!config_.serve) {
-    if (output_) commands_->SetImmediate({}, {});
-    output_.reset();
+    StopOutput("serving turned off");
     return Status::Ok();
   }
   if (!output_) {
@@ -241,26 +313,39 @@ Status ButtonPipeline::StartOutput() {
         ButtonTargetOutput::Start(config_.server);
     if (!started.ok()) return started.status();
     output_ = std::move(*started);
+    std::shared_ptr<ButtonTargetOutput> output = output_;
+    commands_->SetImmediate(
+        this, [output](const std::string& reason) { output->PublishStop(reason); },
+        [output] { output->Resume(); });
+    // After SetImmediate: a STOP pressed from now on reaches this server at once.
+    if (commands_->stopped()) output_->PublishStop("operator");
   }
-  std::shared_ptr<ButtonTargetOutput> output = output_;
-  commands_->SetImmediate([output](const std::string& reason) { output->PublishStop(reason); },
-                          [output] { output->Resume(); });
   return output_->WaitForClients(config_.run.wait_clients, config_.run.wait_clients_s);
 }
 
+void ButtonPipeline::StopOutput(const std::string& reason) {
+  if (!output_) return;
+  commands_->ClearImmediate(this);
+  output_->Close(reason);
+  output_.reset();
+}
+
 void ButtonPipeline::StartRun() {
-  const bool stopped = picker_ && picker_->state() == PickerState::kStopped;
   picker_ = std::make_unique<ButtonPicker>(config_.picker);
-  if (stopped) picker_->Stop();  // A new run does not lift the operator's STOP.
+  if (commands_->stopped()) picker_->Stop();  // A new run does not lift the operator's STOP.
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
   log_ = ButtonRunLog();
   frames_ = 0;
+  seen_.clear();
+  last_.reset();
+  fresh_run_ = true;
   if (config_.tap) {
     ButtonTapRequest tap;
     tap.x = config_.tap->x;
     tap.y = config_.tap->y;
     tap.frame = config_.tap->frame;
+    tap.ahead = true;
     tap.confirm = true;  // button.run.tap is the operator's tap and Yes.
     tap.required = headless_;
     commands_->Tap(tap);
@@ -274,10 +359,15 @@ void ButtonPipeline::Reset() {
                                              config_.mono_run.gt_tolerance_s);
   log_ = ButtonRunLog();
   frames_ = 0;
+  seen_.clear();
+  last_.reset();
+  fresh_run_ = true;
 }
 
 StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Frame& frame) {
   if (!metric_) return FailedPrecondition("button: a frame before the source was opened");
+  // Serving is on but the server was closed (Abort: the source ended): it starts again.
+  if (config_.serve && !output_) SIGHTLINE_RETURN_IF_ERROR(StartOutput());
   const double start = HostTimeS();  // For timing statistics only.
   StatusOr<std::shared_ptr<const MonoSlamFrameResult>> mono = mono_.ProcessMono(frame);
   if (!mono.ok()) return mono.status();
@@ -295,17 +385,57 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   const bool tap_frame = out->tap_answered && out->tap_status.ok();
   if (!tap_frame) RunPicker(r, view, index, out.get());
   AddStats((*mono)->stats, slam_ms, !tap_frame && log_.tap_index >= 0, out.get());
+  AddLinkState(out.get());
   Record(*out, view.tracking, index, slam_ms, (HostTimeS() - start) * 1000.0);
+  Remember(r, index);
+  last_ = out;
+  fresh_run_ = false;
   return std::shared_ptr<const PipelineResult>(out);
+}
+
+StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Reprocess(const Frame& frame) {
+  if (fresh_run_ || !last_ || last_->stamp.sequence_id != StampOf(frame).sequence_id) {
+    return Process(frame);  // A new run (new options) starts on the shown frame.
+  }
+  auto again = std::make_shared<ButtonFrameResult>(*last_);
+  again->tap_answered = false;
+  again->tap_status = Status::Ok();
+  again->tap_refused = TapRefusal::kNone;
+  again->target_published = false;
+  AddLinkState(again.get());
+  return std::shared_ptr<const PipelineResult>(again);
+}
+
+void ButtonPipeline::AddLinkState(ButtonFrameResult* out) const {
+  out->held = commands_->held();
+  out->stopped = commands_->stopped();
+  out->serving = output_ != nullptr;
+  out->arm_clients = output_ ? output_->Stats().authorised : 0;
+}
+
+void ButtonPipeline::Remember(const MonoSlamResult& r, int64_t index) {
+  if (headless_) return;  // Headless taps are for a frame ahead.
+  seen_.push_back({FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image});
+  while (seen_.size() > 64 || (seen_.size() > 1 && r.stamp.sensor_time_s - seen_.front().stamp_s >
+                                                       config_.max_tap_age_s)) {
+    seen_.pop_front();
+  }
 }
 
 Status ButtonPipeline::ApplyCommands(const MonoSlamResult& r, int64_t index,
                                      ButtonFrameResult* out) {
   const ButtonCommands::Pending pending = commands_->Take(index);
-  if (pending.stop) picker_->Stop();
-  if (pending.restart) picker_->Start();
+  const bool stopped = commands_->stopped();  // The latch decides, whatever came in between.
+  if (pending.stop || stopped) picker_->Stop();
+  if (pending.restart && !stopped) picker_->Start();
   if (pending.cancel) picker_->Cancel();
-  if (pending.tap) SIGHTLINE_RETURN_IF_ERROR(HandleTap(*pending.tap, r, index, out));
+  if (pending.tap) {
+    SIGHTLINE_RETURN_IF_ERROR(HandleTap(*pending.tap, r, index, out));
+    if (!pending.tap->ahead) {
+      commands_->PostAnswer(
+          {pending.tap->frame, out->tap_status, out->tap_refused, out->candidate_outline});
+    }
+  }
   if (pending.confirm) picker_->Confirm();
   if (out->tap_answered && out->tap_status.ok()) out->picker.state = picker_->state();
   return Status::Ok();
@@ -313,9 +443,24 @@ Status ButtonPipeline::ApplyCommands(const MonoSlamResult& r, int64_t index,
 
 Status ButtonPipeline::HandleTap(const ButtonTapRequest& tap, const MonoSlamResult& r,
                                  int64_t index, ButtonFrameResult* out) {
-  const int64_t frame_id = FrameId(r.stamp, index);
+  int64_t frame_id = FrameId(r.stamp, index);
+  cv::Mat still = r.image;
   out->tap_answered = true;
-  out->tap_status = picker_->Tap(r.image, {tap.x, tap.y}, frame_id);
+  if (!tap.ahead) {  // The operator's: found on the frame the operator saw, or refused.
+    const SeenFrame* seen = nullptr;
+    out->tap_refused = FindTapped(tap, r.stamp.sensor_time_s, &seen);
+    if (out->tap_refused != TapRefusal::kNone) {
+      out->tap_status =
+          FailedPrecondition("tap on frame " + std::to_string(tap.frame) + " refused");
+      return Status::Ok();
+    }
+    frame_id = seen->id;
+    still = seen->image;
+  }
+  out->tap_status = picker_->Tap(still, {tap.x, tap.y}, frame_id);
+  if (!tap.ahead && out->tap_status.code() == StatusCode::kFailedPrecondition) {
+    out->tap_refused = TapRefusal::kStopped;
+  }
   if (!out->tap_status.ok()) {
     if (!tap.required) return Status::Ok();  // The operator is asked again.
     return out->tap_status.WithContext("tap at " + config_.run.tap + " (frame " +
@@ -340,6 +485,20 @@ Status ButtonPipeline::HandleTap(const ButtonTapRequest& tap, const MonoSlamResu
   return Status::Ok();
 }
 
+TapRefusal ButtonPipeline::FindTapped(const ButtonTapRequest& tap, double now_s,
+                                      const SeenFrame** seen) const {
+  if (commands_->stopped()) return TapRefusal::kStopped;
+  for (const SeenFrame& f : seen_) {
+    if (f.id != tap.frame || std::abs(f.stamp_s - tap.stamp_s) > 1e-6) continue;
+    if (now_s - f.stamp_s > config_.max_tap_age_s) return TapRefusal::kTooOld;
+    *seen = &f;
+    return TapRefusal::kNone;
+  }
+  return tap.frame >= 0 && !seen_.empty() && tap.stamp_s < seen_.front().stamp_s
+             ? TapRefusal::kTooOld
+             : TapRefusal::kNoPicture;
+}
+
 // The time a target of this frame goes out, on the sensor clock. A recording runs in data time:
 // the frame's own time, however long the host takes. A live device's frames age in real time
 // while they wait and are processed: that delay is guarded by the host clock at send time.
@@ -356,10 +515,11 @@ void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t i
   out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
                                  base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
   if (!out->picker.target) return;
-  if (output_) {
-    output_->Publish(*out->picker.target);
-    out->target_published = true;
+  if (commands_->held()) {  // The picture is paused: nothing goes to the arm.
+    out->picker.target.reset();
+    return;
   }
+  Publish(out);
   SentTarget sent;
   sent.index = index;
   sent.target = *out->picker.target;
@@ -369,6 +529,10 @@ void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t i
   sent.base_from_camera = *base;
   if (out->picker.location) sent.unfused_in_base = *base * out->picker.location->button_in_camera;
   log_.sent.push_back(std::move(sent));
+}
+
+void ButtonPipeline::Publish(ButtonFrameResult* out) {
+  out->target_published = output_ && output_->Publish(*out->picker.target);
 }
 
 void ButtonPipeline::AddStats(const std::vector<std::pair<std::string, double>>& mono,
@@ -410,9 +574,7 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
   }
 }
 
-void ButtonPipeline::Abort(const std::string& reason) {
-  if (output_) output_->Close(reason);
-}
+void ButtonPipeline::Abort(const std::string& reason) { StopOutput(reason); }
 
 StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   if (!source_ || frames_ == 0) {

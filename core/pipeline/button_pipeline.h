@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,10 +37,12 @@ struct ButtonRunOptions {
   static OptionTable<ButtonRunOptions> Describe();
 };
 
-// The GUI's switch for the arm-target server. Key "button.gui.serve", kept so that profiles
-// saved by the GUI load; serving is on when it or button.run.serve is set.
+// The operator panel's options. Keys "button.gui.*". Serving is on when button.gui.serve or
+// button.run.serve is set; switching it on or off while a run goes on keeps the run (the SLAM
+// map, the tracked button and the operator's STOP).
 struct ButtonGuiOptions {
   bool serve = false;
+  double max_tap_age_s = 0.5;  // An operator's tap on a frame older than this is refused [s].
 
   static OptionTable<ButtonGuiOptions> Describe();
 };
@@ -114,9 +117,9 @@ class ButtonPipeline : public Pipeline {
   Status Open(const PipelineSource& source) override;
   int64_t FrameLimit() const override { return mono_.FrameLimit(); }
   StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
-  StatusOr<std::shared_ptr<const PipelineResult>> Reprocess(const Frame& frame) override {
-    return Process(frame);
-  }
+  // New options on a paused picture: unless they started the run again, the shown frame keeps
+  // its result (the SLAM never sees a frame twice, no command is taken, nothing is published).
+  StatusOr<std::shared_ptr<const PipelineResult>> Reprocess(const Frame& frame) override;
   void Reset() override;
   void Abort(const std::string& reason) override;
   StatusOr<RunResult> Finish(const std::string& out_dir) override;
@@ -135,15 +138,31 @@ class ButtonPipeline : public Pipeline {
     MetricViewOptions view;
     ArmServerOptions server;
     bool serve = false;
+    double max_tap_age_s = 0.5;    // button.gui.max_tap_age_s.
     std::optional<ButtonTap> tap;  // button.run.tap.
   };
+  // A frame already processed, kept for the operator's tap on it.
+  struct SeenFrame {
+    int64_t id = -1;
+    double stamp_s = 0;
+    cv::Mat image;
+  };
   static StatusOr<Config> Parse(const OptionSet& options);
+  // Starts the arm-target server when serving is on (STOP stays on for a new one); closes it
+  // with a stop line when serving is off.
   Status StartOutput();
+  // Every client gets a stop line naming `reason`, then the server closes.
+  void StopOutput(const std::string& reason);
   void StartRun();
   Status ApplyCommands(const MonoSlamResult& r, int64_t index, ButtonFrameResult* out);
   Status HandleTap(const ButtonTapRequest& tap, const MonoSlamResult& r, int64_t index,
                    ButtonFrameResult* out);
+  // The frame an operator's tap was made on, or why the tap is refused.
+  TapRefusal FindTapped(const ButtonTapRequest& tap, double now_s, const SeenFrame** seen) const;
+  void Remember(const MonoSlamResult& r, int64_t index);
   void RunPicker(const MonoSlamResult& r, SlamView view, int64_t index, ButtonFrameResult* out);
+  void Publish(ButtonFrameResult* out);
+  void AddLinkState(ButtonFrameResult* out) const;
   double SendTimeS(const FrameStamp& stamp) const;
   void Record(const ButtonFrameResult& out, bool slam_tracking, int64_t index, double slam_ms,
               double frame_ms);
@@ -153,6 +172,7 @@ class ButtonPipeline : public Pipeline {
   bool headless_;  // No operator: the tap comes from button.run.tap.
   std::shared_ptr<ButtonCommands> commands_;
   Config config_;
+  std::optional<OptionSet> options_;  // As last configured.
   std::optional<PipelineSource> source_;
   MonoSlamPipeline mono_;
   std::unique_ptr<ButtonPicker> picker_;
@@ -162,6 +182,9 @@ class ButtonPipeline : public Pipeline {
   ButtonRunLog log_;
   int64_t frames_ = 0;
   double host_delay_s_ = 0;
+  std::deque<SeenFrame> seen_;  // Recent frames, oldest first (max_tap_age_s of data time).
+  std::shared_ptr<const ButtonFrameResult> last_;  // The last frame's result.
+  bool fresh_run_ = true;                          // No frame processed since the run started.
 };
 
 // The figures of a finished button run: targets, scale, tap-to-target, server counts and, with

@@ -20,7 +20,8 @@ class ButtonTargetOutput {
   // Live device guard by the host clock: waits until `clients` arm clients are authorised, at
   // most `timeout_s` seconds (Unavailable saying how many came).
   Status WaitForClients(int clients, double timeout_s);
-  void Publish(const ArmTarget& target) { server_->PublishTarget(target); }
+  // Whether the server took the target (false while stopped or closed).
+  bool Publish(const ArmTarget& target) { return server_->PublishTarget(target) >= 0; }
   void PublishStop(const std::string& reason) { server_->PublishStop(reason); }
   void Resume() { server_->Resume(); }
   // Live device guard by the host clock: keeps serving `seconds` so that queued lines reach the

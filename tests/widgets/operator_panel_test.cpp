@@ -1,15 +1,18 @@
 // The operator's panel clicked through as an operator would: tap -> outline and question ->
 // Yes -> state banners and distance -> STOP at any time -> Start again; touch works like the
-// mouse; touch targets are at least 9 mm.
+// mouse; touch targets are at least 15 mm; the regions never move with the words; holding and
+// refused taps say why; F11 and Esc as a window of its own.
 #include "widgets/operator_panel.h"
 
 #include <gtest/gtest.h>
 
 #include <QLabel>
+#include <QMessageBox>
 #include <QPointingDevice>
 #include <QPushButton>
 #include <QScreen>
 #include <QTest>
+#include <cmath>
 #include <vector>
 
 #include "widgets/tap_image_view.h"
@@ -134,12 +137,12 @@ TEST_F(OperatorPanelTest, TouchTapsLikeTheMouse) {
   EXPECT_NEAR(taps_[0].y(), 240, 1.5);
 }
 
-TEST_F(OperatorPanelTest, TouchTargetsAreAtLeastNineMillimetres) {
+TEST_F(OperatorPanelTest, TouchTargetsAreAtLeastFifteenMillimetres) {
   panel_.ShowCandidate(QPolygonF({{10, 10}, {30, 10}, {30, 30}}));
   const int min_px = panel_.MinTouchTargetPx();
   double dpi = panel_.screen()->physicalDotsPerInch();
-  if (!(dpi > 20 && dpi < 2000)) dpi = panel_.logicalDpiX();
-  EXPECT_GE(min_px, 9.0 / 25.4 * dpi - 0.5);
+  if (!(dpi >= 50 && dpi <= 1000)) dpi = 96;  // A screen that does not know its size.
+  EXPECT_GE(min_px, 15.0 / 25.4 * dpi - 0.5);
   for (QPushButton* b : {panel_.stop_button(), panel_.yes_button(), panel_.cancel_button()}) {
     EXPECT_GE(b->width(), min_px) << b->text().toStdString();
     EXPECT_GE(b->height(), min_px) << b->text().toStdString();
@@ -156,6 +159,81 @@ TEST_F(OperatorPanelTest, TapsOutsideTheImageAreIgnored) {
     EXPECT_GE(p.y(), -0.5);
     EXPECT_LE(p.y(), 480);
   }
+}
+
+TEST_F(OperatorPanelTest, HoldingAndRefusedTapsSayWhy) {
+  panel_.SetState(OperatorState::kHolding, "Paused");
+  EXPECT_EQ(panel_.banner()->text(), "Holding: nothing sent");
+  EXPECT_EQ(panel_.detail_label()->text(), "Paused");
+  panel_.Refuse("The picture is paused: press Play, then tap");
+  EXPECT_EQ(panel_.state(), OperatorState::kRefused);
+  EXPECT_EQ(panel_.banner()->text(), "Tap not taken");
+  EXPECT_EQ(panel_.detail_label()->text(), "The picture is paused: press Play, then tap");
+  TapImage({100, 100});  // The operator may tap again.
+  EXPECT_EQ(taps_.size(), 1u);
+}
+
+TEST_F(OperatorPanelTest, RegionsStayPutWhateverTheWords) {
+  panel_.SetState(OperatorState::kTargetSent);
+  panel_.SetDistance(0.5);
+  QCoreApplication::processEvents();
+  const QRect banner = panel_.banner()->geometry(), detail = panel_.detail_label()->geometry();
+  const QRect stop = panel_.stop_button()->geometry(), image = panel_.image_view()->geometry();
+  const QRect distance = panel_.distance_label()->geometry();
+  for (const QString& words :
+       {QString("Button out of reach: move a little closer, please, and hold still"), QString()}) {
+    panel_.SetState(OperatorState::kHolding, words);
+    panel_.SetDistance(std::nan(""));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(panel_.banner()->geometry(), banner);
+    EXPECT_EQ(panel_.detail_label()->geometry(), detail);
+    EXPECT_EQ(panel_.distance_label()->geometry(), distance);
+    EXPECT_EQ(panel_.stop_button()->geometry(), stop);
+    EXPECT_EQ(panel_.image_view()->geometry(), image);
+  }
+  panel_.ShowCandidate(QPolygonF({{10, 10}, {30, 10}, {30, 30}}));  // Yes / Cancel appear.
+  QCoreApplication::processEvents();
+  EXPECT_EQ(panel_.banner()->geometry(), banner);
+  EXPECT_EQ(panel_.stop_button()->geometry(), stop);
+  EXPECT_EQ(panel_.image_view()->geometry(), image);
+}
+
+TEST_F(OperatorPanelTest, TheRingIsDrawnWhereItIsSet) {
+  panel_.SetRing(QPointF(320, 240), 20);
+  ASSERT_TRUE(panel_.image_view()->ring_centre().has_value());
+  EXPECT_EQ(*panel_.image_view()->ring_centre(), QPointF(320, 240));
+  const QImage shot = panel_.image_view()->grab().toImage();
+  const QPointF c = panel_.image_view()->ToWidget({320, 240});
+  const double r = 20 * panel_.image_view()->width() / 640.0;
+  // Yellow on the ring, the grey image at its centre.
+  const QColor on_ring = shot.pixelColor(QPointF(c.x() + r + 4, c.y()).toPoint());
+  EXPECT_GT(on_ring.red(), 200);
+  EXPECT_GT(on_ring.green(), 180);
+  EXPECT_LT(on_ring.blue(), 80);
+  EXPECT_LT(shot.pixelColor(c.toPoint()).red(), 120);
+  panel_.SetRing(std::nullopt);
+  EXPECT_FALSE(panel_.image_view()->ring_centre().has_value());
+}
+
+TEST(OperatorPanelWindow, F11AsksForFullScreenAndEscAsksBeforeLeaving) {
+  OperatorPanel panel;
+  panel.SetFullScreenMode(true);
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+  EXPECT_TRUE(panel.isFullScreen());
+  int toggles = 0, leaves = 0;
+  QObject::connect(&panel, &OperatorPanel::FullScreenToggleRequested, [&] { ++toggles; });
+  QObject::connect(&panel, &OperatorPanel::LeaveRequested, [&] { ++leaves; });
+  QTest::keyClick(&panel, Qt::Key_F11);
+  EXPECT_EQ(toggles, 1);
+  QTest::keyClick(&panel, Qt::Key_Escape);
+  ASSERT_NE(panel.leave_question(), nullptr);
+  panel.leave_question()->button(QMessageBox::Cancel)->click();
+  EXPECT_EQ(leaves, 0);
+  EXPECT_EQ(panel.leave_question(), nullptr);
+  QTest::keyClick(&panel, Qt::Key_Escape);
+  ASSERT_NE(panel.leave_question(), nullptr);
+  panel.leave_question()->button(QMessageBox::Yes)->click();
+  EXPECT_EQ(leaves, 1);
 }
 
 }  // namespace
