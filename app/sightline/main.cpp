@@ -17,14 +17,27 @@
 
 namespace {
 
+// Applies --profile and --set to the active pipeline's options; false (reported) on an error.
+bool ApplyOptionArguments(sightline::MainWindow* window, const QString& profile,
+                          const QStringList& assignments) {
+  if (profile.isEmpty() && assignments.isEmpty()) return true;
+  const sightline::Status applied = window->ApplyOptionArguments(profile, assignments);
+  if (applied.ok()) return true;
+  std::fprintf(stderr, "sightline: %s\n", applied.ToString().c_str());
+  return false;
+}
+
 // `sightline --operator [SOURCE]`: the button picker's operator panel alone, full screen, playing
 // SOURCE. Leaving the panel closes the window: every arm client gets a stop line ("quit").
+// `--profile` and `--set` (e.g. button.gui.serve=true) apply to the button picker's options.
 int RunOperatorMode(QApplication* app, sightline::MainWindow* window,
-                    sightline::ButtonPickerPresenter* picker, const QString& source) {
+                    sightline::ButtonPickerPresenter* picker, const QString& source,
+                    const QString& profile, const QStringList& assignments) {
   if (picker == nullptr || !window->ActivatePipeline(picker->Title())) {
     std::fprintf(stderr, "sightline: the button picker is not available\n");
     return 2;
   }
+  if (!ApplyOptionArguments(window, profile, assignments)) return 2;
   picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
   QObject::connect(picker, &sightline::ButtonPickerPresenter::OperatorLeft, window, [app, window] {
     window->close();
@@ -58,18 +71,16 @@ void StartDemo(sightline::MainWindow* window, sightline::PipelinePresenter* mapp
   demo->Start();
 }
 
-}  // namespace
+// The command line, parsed (Qt's parser exits on --help, --version and unknown options).
+struct Arguments {
+  QString source;  // --open PATH or the positional SOURCE.
+  QString pipeline, profile, screenshot;
+  QStringList assignments;  // --set KEY=VALUE, in order.
+  bool demo = false, operator_mode = false, open_given = false;
+  QString frames, timeout;
+};
 
-int main(int argc, char** argv) {
-  // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
-  sightline::VtkGlWidget::SetDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QApplication::setOrganizationName("Sightline");
-  QApplication::setApplicationName("Sightline");
-  QApplication::setApplicationVersion(SIGHTLINE_VERSION);
-
-  sightline::InstallTranslation(QLocale(), &app);
-
+Arguments ParseArguments(const QApplication& app) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
       "Sightline: robot perception on live sensors and recorded data.");
@@ -91,13 +102,59 @@ int main(int argc, char** argv) {
       "operator",
       "Open the operator's button panel alone, full screen (F11: window, Esc: leave), and play "
       "SOURCE (a camera URI or a recording).");
-  parser.addOptions({open_option, demo_option, pipeline_option, operator_option, screenshot_option,
-                     frames_option, timeout_option});
+  QCommandLineOption profile_option(
+      "profile", "Load a YAML profile into the pipeline's options (as sightline-cli run).", "FILE");
+  QCommandLineOption set_option(
+      "set", "Set one of the pipeline's options, e.g. button.gui.serve=true (repeatable).",
+      "KEY=VALUE");
+  parser.addOptions({open_option, demo_option, pipeline_option, operator_option, profile_option,
+                     set_option, screenshot_option, frames_option, timeout_option});
   parser.addPositionalArgument("SOURCE", "A dataset, recording or sensor URI to open (as --open).",
                                "[SOURCE]");
   parser.process(app);
-  QString source = parser.value(open_option);
-  if (!parser.positionalArguments().isEmpty()) source = parser.positionalArguments().first();
+  Arguments args;
+  args.source = parser.value(open_option);
+  if (!parser.positionalArguments().isEmpty()) args.source = parser.positionalArguments().first();
+  args.open_given = !args.source.isEmpty();
+  args.pipeline = parser.value(pipeline_option);
+  args.profile = parser.value(profile_option);
+  args.assignments = parser.values(set_option);
+  args.screenshot = parser.value(screenshot_option);
+  args.frames = parser.value(frames_option);
+  args.timeout = parser.value(timeout_option);
+  args.demo = parser.isSet(demo_option);
+  args.operator_mode = parser.isSet(operator_option);
+  return args;
+}
+
+// --screenshot FILE: plays --frames frames, saves the window and exits. False on bad arguments.
+bool StartScreenshot(sightline::MainWindow* window, const Arguments& args) {
+  if (!args.open_given && !args.demo) {
+    std::fprintf(stderr, "sightline: --screenshot needs --open PATH or --demo\n");
+    return false;
+  }
+  bool ok = false;
+  const int frames = args.frames.toInt(&ok);
+  if (!ok || frames < 1) {
+    std::fprintf(stderr, "sightline: --frames must be a positive number\n");
+    return false;
+  }
+  new sightline::ScreenshotDriver(window, args.screenshot, frames, args.timeout.toInt());
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
+  sightline::VtkGlWidget::SetDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("Sightline");
+  QApplication::setApplicationName("Sightline");
+  QApplication::setApplicationVersion(SIGHTLINE_VERSION);
+
+  sightline::InstallTranslation(QLocale(), &app);
+  const Arguments args = ParseArguments(app);
 
   sightline::MainWindow window;
   // The Pipeline menu lists the core registry's pipelines, as `sightline-cli run` does.
@@ -108,32 +165,21 @@ int main(int argc, char** argv) {
     if (auto* p = qobject_cast<sightline::ButtonPickerPresenter*>(presenter)) picker = p;
     window.AddPipeline(presenter);
   }
-  if (parser.isSet(operator_option)) return RunOperatorMode(&app, &window, picker, source);
+  if (args.operator_mode) {
+    return RunOperatorMode(&app, &window, picker, args.source, args.profile, args.assignments);
+  }
   window.show();
-  if (parser.isSet(pipeline_option) &&
-      !window.ActivatePipelineByWord(parser.value(pipeline_option))) {
+  if (!args.pipeline.isEmpty() && !window.ActivatePipelineByWord(args.pipeline)) {
     std::fprintf(stderr, "sightline: no pipeline matches '%s' (see the Pipeline menu)\n",
-                 qPrintable(parser.value(pipeline_option)));
+                 qPrintable(args.pipeline));
     return 2;
   }
-
-  if (parser.isSet(screenshot_option)) {
-    if (!parser.isSet(open_option) && !parser.isSet(demo_option)) {
-      std::fprintf(stderr, "sightline: --screenshot needs --open PATH or --demo\n");
-      return 2;
-    }
-    bool ok = false;
-    const int frames = parser.value(frames_option).toInt(&ok);
-    if (!ok || frames < 1) {
-      std::fprintf(stderr, "sightline: --frames must be a positive number\n");
-      return 2;
-    }
-    new sightline::ScreenshotDriver(&window, parser.value(screenshot_option), frames,
-                                    parser.value(timeout_option).toInt());
-  }
-  if (parser.isSet(demo_option)) {
-    StartDemo(&window, mapping, /*autoplay=*/!parser.isSet(screenshot_option));
-  } else if (!source.isEmpty()) {
+  if (!ApplyOptionArguments(&window, args.profile, args.assignments)) return 2;
+  if (!args.screenshot.isEmpty() && !StartScreenshot(&window, args)) return 2;
+  if (args.demo) {
+    StartDemo(&window, mapping, /*autoplay=*/args.screenshot.isEmpty());
+  } else if (!args.source.isEmpty()) {
+    const QString source = args.source;
     QTimer::singleShot(0, &window, [&window, source] { window.OpenPath(source); });
   }
   return app.exec();

@@ -325,6 +325,18 @@ bool MainWindow::ActivatePipeline(const QString& title) {
   return true;
 }
 
+Status MainWindow::ApplyOptionArguments(const QString& profile, const QStringList& assignments) {
+  // Both on a copy first, so that a bad assignment leaves the profile unapplied as well.
+  OptionSet edited = options_;
+  if (!profile.isEmpty()) SIGHTLINE_RETURN_IF_ERROR(edited.LoadYaml(profile.toStdString()));
+  for (const QString& assignment : assignments) {
+    SIGHTLINE_RETURN_IF_ERROR(edited.ApplyOverride(assignment.toStdString()));
+  }
+  parameter_panel_->SetOptions(edited);
+  OnOptionsChanged(edited);
+  return Status::Ok();
+}
+
 bool MainWindow::ActivatePipelineByWord(const QString& word) {
   for (PipelinePresenter* p : pipelines_) {
     if (p->Title().contains(word, Qt::CaseInsensitive) ||

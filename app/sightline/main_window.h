@@ -53,6 +53,10 @@ class MainWindow : public QMainWindow {
   // Activates the first pipeline whose title, translated or English, contains `word` (any
   // case), e.g. "stereo".
   bool ActivatePipelineByWord(const QString& word);
+  // Applies a YAML profile (when `profile` is not empty), then "key=value" assignments, to the
+  // active pipeline's options, as `sightline-cli run --profile --set` does: all or nothing, the
+  // error naming the file, line or key.
+  Status ApplyOptionArguments(const QString& profile, const QStringList& assignments);
   PipelinePresenter* active_pipeline() const { return active_pipeline_; }
 
   SceneView* scene_view() const { return scene_view_; }

@@ -100,5 +100,39 @@ TEST(GuiPipelines, ProfilesRoundTripBetweenTheGuiAndTheCliForEveryPipeline) {
   }
 }
 
+// `sightline --profile FILE --set KEY=VALUE` (and --operator with them): the profile, then the
+// assignments, reach the active pipeline's options; a bad one changes nothing and names itself.
+TEST(GuiPipelines, CommandLineProfileAndSetReachThePipelinesOptionsAllOrNothing) {
+  MainWindow window;
+  for (PipelinePresenter* p : MakeBuiltinPresenters()) window.AddPipeline(p);
+  auto* panel = window.findChild<ParameterPanel*>();
+  ASSERT_NE(panel, nullptr);
+  ASSERT_TRUE(window.ActivatePipelineByWord("button"));
+  const std::string profile = testing::TempDir("gui_arguments") + "/serve.yaml";
+  {
+    OptionSet written;
+    ASSERT_TRUE(BuiltinPipelines().Find("button")->declare_options(&written).ok());
+    ASSERT_TRUE(written.ApplyOverride("button.arm.port=6001").ok());
+    ASSERT_TRUE(written.SaveYaml(profile).ok());
+  }
+  const Status applied = window.ApplyOptionArguments(
+      QString::fromStdString(profile), {"button.gui.serve=true", "button.arm.port=6002"});
+  ASSERT_TRUE(applied.ok()) << applied.ToString();
+  EXPECT_EQ(FormatOptionValue(*panel->options().Get("button.gui.serve")), "true");
+  EXPECT_EQ(FormatOptionValue(*panel->options().Get("button.arm.port")), "6002");  // --set last.
+
+  // A bad assignment after good ones: nothing changes, and the error names the key.
+  const Status bad =
+      window.ApplyOptionArguments({}, {"button.gui.serve=false", "button.arm.no_such_key=1"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.message().find("button.arm.no_such_key"), std::string::npos) << bad.ToString();
+  EXPECT_EQ(FormatOptionValue(*panel->options().Get("button.gui.serve")), "true");
+  // A missing profile names its file and changes nothing either.
+  const Status missing = window.ApplyOptionArguments("/nonexistent/profile.yaml", {});
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.message().find("/nonexistent/profile.yaml"), std::string::npos);
+  EXPECT_EQ(FormatOptionValue(*panel->options().Get("button.arm.port")), "6002");
+}
+
 }  // namespace
 }  // namespace sightline
