@@ -70,6 +70,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent), last_dir_(QDi
   auto* content_layout = new QVBoxLayout(content_);
   content_layout->addStretch(1);
   scroll->setWidget(content_);
+  scroll->setMinimumHeight(fontMetrics().height() * 2);  // The rows scroll; the window stays small.
   layout->addWidget(scroll, 1);
 }
 

@@ -131,6 +131,11 @@ void ButtonPickerPresenter::Attach(QMainWindow* window) {
     OnPlayState(playback->playing(), playback->ended());
   }
   window->addDockWidget(Qt::RightDockWidgetArea, panel_dock_);
+  // A tab beside the log, not a third dock under it: with its 15 mm controls a stacked panel
+  // makes the window taller than a laptop's screen.
+  if (auto* log_dock = window->findChild<QDockWidget*>("log_dock")) {
+    window->tabifyDockWidget(log_dock, panel_dock_);
+  }
   window->addAction(full_screen_action_);
   panel_action_ = panel_dock_->toggleViewAction();
   panel_action_->setText(tr("Operator panel"));
@@ -140,6 +145,7 @@ void ButtonPickerPresenter::Attach(QMainWindow* window) {
     view_menu->addAction(full_screen_action_);
   }
   panel_dock_->show();
+  panel_dock_->raise();
 }
 
 void ButtonPickerPresenter::ConnectPanel() {

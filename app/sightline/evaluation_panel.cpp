@@ -9,6 +9,7 @@
 #include <QLineEdit>
 #include <QPointer>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QStandardItemModel>
 #include <QTabWidget>
 #include <QTableView>
@@ -117,11 +118,23 @@ EvaluationPanel::EvaluationPanel(QWidget* parent) : QWidget(parent) {
   tabs->addTab(top_view_, tr("Top view"));
   tabs->addTab(error_view_, tr("Error over time"));
 
-  auto* layout = new QVBoxLayout(this);
+  // In a scroll area: the panel shares the window's right column with the log and the operator
+  // panel, and must not make the window taller than a laptop's screen.
+  auto* content = new QWidget(this);
+  auto* layout = new QVBoxLayout(content);
   layout->addLayout(form);
   layout->addWidget(run_button_);
   layout->addWidget(summary_label_);
   layout->addWidget(tabs, 1);
+  content->setMinimumHeight(content->minimumSizeHint().height());
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(content);
+  scroll->setMinimumHeight(fontMetrics().height() * 4);
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  outer->addWidget(scroll);
 }
 
 EvaluationPanel::~EvaluationPanel() { QThreadPool::globalInstance()->waitForDone(); }

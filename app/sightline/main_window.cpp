@@ -14,6 +14,7 @@
 #include <QMimeData>
 #include <QPointer>
 #include <QProgressBar>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -43,7 +44,12 @@ const char kRecentKey[] = "recent_paths";
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("Sightline"));
   setAcceptDrops(true);
-  resize(1400, 900);
+  // 1400x900, or 90 % of a smaller screen.
+  QSize size(1400, 900);
+  if (const QScreen* screen = QGuiApplication::primaryScreen()) {
+    size = size.boundedTo(screen->availableSize() * 0.9);
+  }
+  resize(size);
   playback_ = new PlaybackController(this);
   Status declared = options_.Declare(ViewOptions::Describe());
   BuildViews();

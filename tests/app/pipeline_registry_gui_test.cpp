@@ -2,6 +2,8 @@
 // saved by either front end loads in the other, for every pipeline.
 #include <gtest/gtest.h>
 
+#include <QApplication>
+
 #include "app/sightline/builtin_presenters.h"
 #include "app/sightline/main_window.h"
 #include "core/pipeline/pipeline_registry.h"
@@ -97,6 +99,23 @@ TEST(GuiPipelines, ProfilesRoundTripBetweenTheGuiAndTheCliForEveryPipeline) {
       EXPECT_EQ(FormatOptionValue(*cli_again.Get(spec.key)), FormatOptionValue(*cli.Get(spec.key)))
           << spec.key;
     }
+  }
+}
+
+// A lab laptop's 1280x800 screen holds the window with any pipeline's docks (the operator panel's
+// 15 mm controls included): no pipeline makes the window's minimum size larger than the screen.
+TEST(GuiPipelines, EveryPipelinesWindowFitsA1280By800Screen) {
+  MainWindow window;
+  std::vector<PipelinePresenter*> presenters = MakeBuiltinPresenters();
+  for (PipelinePresenter* p : presenters) window.AddPipeline(p);
+  window.show();
+  for (PipelinePresenter* p : presenters) {
+    SCOPED_TRACE(p->info().name);
+    ASSERT_TRUE(window.ActivatePipeline(p->Title()));
+    QApplication::processEvents();
+    const QSize least = window.minimumSizeHint().expandedTo(window.minimumSize());
+    EXPECT_LE(least.width(), 1280);
+    EXPECT_LE(least.height(), 800 - 40);  // Room for a panel or title bar.
   }
 }
 
