@@ -16,7 +16,7 @@ namespace {
 
 const char kHelp[] =
     "usage: sightline-cli record SOURCE --out DIR [--seconds S] [--frames N]\n"
-    "                            [--set KEY=VALUE]... [--ack] [--quiet]\n"
+    "                            [--set KEY=VALUE]... [--overwrite] [--ack] [--quiet]\n"
     "\n"
     "Records SOURCE into DIR in the formats Sightline reads, with the calibration beside it:\n"
     "  RGB-D   DIR/rgbd/    TUM RGB-D (rgb/, depth/, rgb.txt, depth.txt, associations.txt,\n"
@@ -35,6 +35,9 @@ const char kHelp[] =
     "  --frames N    stop after N frames taken from the source\n"
     "  --set K=V     a sensors.* or record.* option, e.g. record.queue_capacity=128,\n"
     "                record.png_compression=0, sensors.replay.fps=60\n"
+    "  --overwrite   DIR may already hold files: its rgbd/, stereo/ or mono/ folder is replaced\n"
+    "                (record.overwrite=true). Without it a DIR that holds anything is refused,\n"
+    "                so that an earlier recording is never truncated.\n"
     "  --ack         print 'written N T' after every frame that is on disk\n"
     "  --quiet       print only the closing counts\n"
     "\n"
@@ -64,6 +67,8 @@ StatusOr<OptionSet> RecordOptions(const CliArgs& args) {
   for (const std::string& assignment : args.Values("--set")) {
     SIGHTLINE_RETURN_IF_ERROR(set.ApplyOverride(assignment));
   }
+  if (args.Has("--overwrite"))
+    SIGHTLINE_RETURN_IF_ERROR(set.Set("record.overwrite", OptionValue(true)));
   return set;
 }
 
@@ -106,7 +111,7 @@ void PrintSummary(const RecordSummary& s, bool quiet) {
 
 int RecordCommand(const std::vector<std::string>& args) {
   StatusOr<CliArgs> parsed = CliArgs::Parse(args, {"--out", "--seconds", "--frames", "--set"},
-                                            {"--help", "--ack", "--quiet"});
+                                            {"--help", "--ack", "--quiet", "--overwrite"});
   if (!parsed.ok()) return Fail("record: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(kHelp, stdout);

@@ -1,7 +1,13 @@
 #include "core/common/text_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -9,12 +15,41 @@
 
 namespace sightline {
 
-StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    if (!FileExists(path)) return NotFound(path + ": no such file");
-    return NotFound(path + ": cannot be opened for reading");
+std::string SystemReason(int error) {
+  std::string text = std::strerror(error);
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+Status CheckRegularFile(const std::string& path, const std::string& name) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    if (errno == ENOENT || errno == ENOTDIR) return NotFound(name + ": no such file");
+    return Unavailable(name + " cannot be read: " + SystemReason(errno));
   }
+  if (S_ISDIR(info.st_mode)) return InvalidArgument(name + " is a folder, not a file");
+  if (!S_ISREG(info.st_mode)) {
+    return InvalidArgument(name + " is not a regular file (a device, pipe or socket)");
+  }
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return Unavailable(name + " cannot be read: " + SystemReason(errno));
+  ::close(fd);
+  return Status::Ok();
+}
+
+Status CheckTimeIncreases(double previous_s, double time_s, const std::string& path, int line) {
+  if (time_s > previous_s) return Status::Ok();
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                ": timestamp %.9g is %s the previous one (%.9g): timestamps must increase", time_s,
+                time_s == previous_s ? "equal to" : "before", previous_s);
+  return ParseError(path + " line " + std::to_string(line) + text);
+}
+
+StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
+  SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, path));
+  std::ifstream in(path);
+  if (!in) return Unavailable(path + " cannot be read: " + SystemReason(errno));
   std::vector<DataLine> lines;
   std::string text;
   int number = 0;
@@ -34,13 +69,8 @@ StatusOr<std::string> ReadWholeTextFile(const std::string& path, size_t max_byte
                                         const std::string& what) {
   namespace fs = std::filesystem;
   const std::string name = what + " " + path;
+  SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, name));
   std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) return NotFound(name + ": no such file");
-  if (fs::is_directory(status)) return InvalidArgument(name + " is a folder, not a file");
-  if (!fs::is_regular_file(status)) {
-    return InvalidArgument(name + " is not a regular file (a device, pipe or socket)");
-  }
   const uintmax_t size = fs::file_size(path, ec);
   if (ec) return Unavailable(name + ": cannot read its size: " + ec.message());
   if (size > max_bytes) {
@@ -104,6 +134,11 @@ StatusOr<std::vector<double>> ParseNumbers(const DataLine& line, size_t min_coun
 bool FileExists(const std::string& path) {
   std::error_code ec;
   return std::filesystem::is_regular_file(path, ec);
+}
+
+bool PathExists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::exists(std::filesystem::symlink_status(path, ec));
 }
 
 bool DirectoryExists(const std::string& path) {

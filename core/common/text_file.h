@@ -15,7 +15,24 @@ struct DataLine {
 };
 
 // Reads a text file, dropping blank lines and lines starting with '#' (after a UTF-8 BOM).
+// Fails naming the path when it is not a regular, readable file (CheckRegularFile): a folder or
+// a device such as /dev/zero given as a list says so instead of being read.
 StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path);
+
+// Checks that `path` names a regular file that can be opened for reading. `name` is how
+// messages name it (e.g. "profile /x.yaml" or just the path). NotFound "<name>: no such file";
+// InvalidArgument "<name> is a folder, not a file" / "<name> is not a regular file (a device,
+// pipe or socket)"; Unavailable "<name> cannot be read: <the system's reason, e.g. permission
+// denied>".
+Status CheckRegularFile(const std::string& path, const std::string& name);
+
+// The system's reason for an errno, lower-case first: "permission denied".
+std::string SystemReason(int error);
+
+// Timestamps of a list must increase strictly. ParseError "<path> line <line>: timestamp
+// <time> is not after the previous one (<previous>): timestamps must increase (a repeated or
+// backwards time)" when time_s <= previous_s.
+Status CheckTimeIncreases(double previous_s, double time_s, const std::string& path, int line);
 
 // Splits on white space and commas.
 std::vector<std::string> SplitFields(const std::string& text);
@@ -34,6 +51,10 @@ StatusOr<std::string> ReadWholeTextFile(const std::string& path, size_t max_byte
 
 // Whole-file helpers.
 bool FileExists(const std::string& path);
+// True when anything (a file, a folder, a device, a dangling link) is at `path`: readers use it
+// for optional files, so that a folder or device where a file belongs is an error rather than
+// silently ignored.
+bool PathExists(const std::string& path);
 bool DirectoryExists(const std::string& path);
 // Joins two path pieces with one '/'.
 std::string JoinPath(const std::string& a, const std::string& b);

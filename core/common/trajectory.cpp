@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -43,6 +44,40 @@ double Trajectory::DurationS() const {
   return poses_.size() < 2 ? 0.0 : poses_.back().time_s - poses_.front().time_s;
 }
 
+std::optional<std::string> RotationProblem(const Eigen::Matrix3d& r, double tolerance) {
+  char text[160];
+  if (!r.allFinite()) return std::string("is not a rotation: it holds a value that is not finite");
+  const double off = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(off <= tolerance)) {
+    std::snprintf(text, sizeof(text),
+                  "is not a rotation: R^T R differs from the identity by %.10g (limit %.10g)", off,
+                  tolerance);
+    return std::string(text);
+  }
+  const double det = r.determinant();
+  if (!(std::abs(det - 1) <= tolerance)) {
+    std::snprintf(text, sizeof(text), "is not a rotation: its determinant is %.10g, not +1%s", det,
+                  det < 0 ? " (a reflection)" : "");
+    return std::string(text);
+  }
+  return std::nullopt;
+}
+
+StatusOr<Eigen::Quaterniond> PoseFileQuaternion(double w, double x, double y, double z,
+                                                const std::string& path, int line) {
+  const Eigen::Quaterniond q(w, x, y, z);
+  const double norm = q.norm();
+  if (!(std::abs(norm - 1.0) <= kPoseFileQuaternionTolerance)) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  ": quaternion (qx qy qz qw) = (%.6g %.6g %.6g %.6g) has length %.6g, not 1 "
+                  "(a rotation needs a unit quaternion)",
+                  x, y, z, w, norm);
+    return ParseError(path + " line " + std::to_string(line) + text);
+  }
+  return q.normalized();
+}
+
 StatusOr<Trajectory> ReadTumTrajectory(const std::string& path) {
   auto lines = ReadDataLines(path);
   if (!lines.ok()) return lines.status();
@@ -56,14 +91,10 @@ StatusOr<Trajectory> ReadTumTrajectory(const std::string& path) {
                         std::to_string(numbers->size()));
     }
     const std::vector<double>& v = *numbers;
-    Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-    const double norm = q.norm();
-    if (!(std::abs(norm - 1.0) < 0.1)) {
-      return ParseError(path + " line " + std::to_string(line.number) + ": quaternion norm " +
-                        std::to_string(norm) + " is not 1");
-    }
+    StatusOr<Eigen::Quaterniond> q = PoseFileQuaternion(v[7], v[4], v[5], v[6], path, line.number);
+    if (!q.ok()) return q.status();
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.linear() = q.normalized().toRotationMatrix();
+    pose.linear() = q->toRotationMatrix();
     pose.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
     if (!trajectory.empty() && v[0] < trajectory.poses().back().time_s) {
       return ParseError(path + " line " + std::to_string(line.number) +
@@ -112,6 +143,11 @@ StatusOr<Trajectory> ReadKittiTrajectory(const std::string& path,
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) pose.linear()(r, c) = v[r * 4 + c];
       pose.translation()(r) = v[r * 4 + 3];
+    }
+    if (std::optional<std::string> problem =
+            RotationProblem(pose.linear(), kPoseFileRotationTolerance)) {
+      return ParseError(path + " line " + std::to_string((*lines)[i].number) +
+                        ": the 3x3 block (numbers 1-3, 5-7, 9-11) " + *problem);
     }
     trajectory.Add(use_times ? times_s[i] : static_cast<double>(i) * period_s, pose);
   }

@@ -41,11 +41,30 @@ class Trajectory {
   std::vector<TimedPose> poses_;
 };
 
-// Reads "timestamp tx ty tz qx qy qz qw" lines ('#' comments). Errors name file and line.
+// Pose files print rotations with a few digits: a 3x3 block is a rotation when every entry of
+// R^T R - I is within this and det R within it of +1. A wrong matrix is off by far more.
+inline constexpr double kPoseFileRotationTolerance = 1e-3;
+// A pose file's quaternion is normalised when its length is within this of 1, else rejected.
+inline constexpr double kPoseFileQuaternionTolerance = 0.1;
+
+// Why `r` is not a rotation (a value not finite, R^T R off the identity by more than
+// `tolerance`, det R not within `tolerance` of +1, a reflection), or nothing when it is one.
+std::optional<std::string> RotationProblem(const Eigen::Matrix3d& r, double tolerance);
+
+// The unit quaternion (w, x, y, z) of line `line` of pose file `path`: ParseError naming both
+// when its length is not within kPoseFileQuaternionTolerance of 1 (a zero quaternion included).
+StatusOr<Eigen::Quaterniond> PoseFileQuaternion(double w, double x, double y, double z,
+                                                const std::string& path, int line);
+
+// Reads "timestamp tx ty tz qx qy qz qw" lines ('#' comments). Errors name file and line: a
+// value that is not a finite number, a quaternion that is not of unit length, a timestamp
+// before the previous one.
 StatusOr<Trajectory> ReadTumTrajectory(const std::string& path);
 Status WriteTumTrajectory(const Trajectory& trajectory, const std::string& path);
 
-// Reads KITTI poses (12 numbers per line: the top 3x4 of world_from_camera). Times are taken
+// Reads KITTI poses (12 numbers per line: the top 3x4 of world_from_camera); a line whose 3x3
+// block is not a rotation (kPoseFileRotationTolerance) or holds a value that is not finite is a
+// ParseError naming file and line. Times are taken
 // from `times_s` (which must then have one entry per pose), else set to index * period_s.
 StatusOr<Trajectory> ReadKittiTrajectory(const std::string& path,
                                          const std::vector<double>& times_s = {},

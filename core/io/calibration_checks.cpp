@@ -1,25 +1,16 @@
 #include "core/io/calibration_checks.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <Eigen/LU>
-#include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <filesystem>
+#include <tuple>
+
+#include "core/common/text_file.h"
+#include "core/common/trajectory.h"
 
 namespace sightline {
 namespace {
-
-// strerror's text with a lower-case first letter: "permission denied".
-std::string Reason(int error) {
-  std::string text = std::strerror(error);
-  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  return text;
-}
 
 std::optional<FieldProblem> CheckSize(const PinholeCamera& c, const CameraKeys& keys) {
   if (c.width <= 0)
@@ -31,13 +22,17 @@ std::optional<FieldProblem> CheckSize(const PinholeCamera& c, const CameraKeys& 
 }
 
 std::optional<FieldProblem> CheckFocalAndCentre(const PinholeCamera& c, const CameraKeys& keys) {
-  if (!(c.fx > 0) || !std::isfinite(c.fx)) {
-    return FieldProblem{keys.fx,
-                        "focal length fx = " + NumberText(c.fx) + " must be positive and finite"};
-  }
-  if (!(c.fy > 0) || !std::isfinite(c.fy)) {
-    return FieldProblem{keys.fy,
-                        "focal length fy = " + NumberText(c.fy) + " must be positive and finite"};
+  for (const auto& [value, key, name] : {std::tuple{c.fx, keys.fx, "fx"}, {c.fy, keys.fy, "fy"}}) {
+    if (!(value > 0) || !std::isfinite(value)) {
+      return FieldProblem{key, std::string("focal length ") + name + " = " + NumberText(value) +
+                                   " must be positive and finite"};
+    }
+    if (!(value >= kMinFocalLengthPx && value <= kMaxFocalLengthPx)) {
+      return FieldProblem{
+          key, std::string("focal length ") + name + " = " + NumberText(value) +
+                   " px is not plausible (accepted: " + NumberText(kMinFocalLengthPx) + " to " +
+                   NumberText(kMaxFocalLengthPx) + " px)"};
+    }
   }
   if (!(c.cx >= 0 && c.cx <= c.width)) {
     return FieldProblem{keys.cx, "principal point cx = " + NumberText(c.cx) +
@@ -60,19 +55,9 @@ std::string NumberText(double value) {
 }
 
 Status CheckReadableFile(const std::string& path) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) {
-    if (errno == ENOENT || errno == ENOTDIR) return NotFound(path + ": no such file");
-    return Unavailable(path + " cannot be read: " + Reason(errno));
-  }
-  if (S_ISDIR(info.st_mode)) return InvalidArgument(path + " is a folder, not a file");
-  if (!S_ISREG(info.st_mode)) {
-    return InvalidArgument(path + " is not a regular file (a device, pipe or socket)");
-  }
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return Unavailable(path + " cannot be read: " + Reason(errno));
-  ::close(fd);
-  if (info.st_size == 0) return ParseError(path + " is empty");
+  SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, path));
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) == 0 && !ec) return ParseError(path + " is empty");
   return Status::Ok();
 }
 
@@ -93,18 +78,7 @@ std::optional<FieldProblem> CheckCameraValues(const PinholeCamera& c, const Came
 }
 
 std::optional<std::string> CheckRotation(const Eigen::Matrix3d& r) {
-  if (!r.allFinite()) return "is not a rotation: it holds a value that is not finite";
-  const double off = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (!(off <= kRotationTolerance)) {
-    return "is not a rotation: R^T R differs from the identity by " + NumberText(off) + " (limit " +
-           NumberText(kRotationTolerance) + ")";
-  }
-  const double det = r.determinant();
-  if (!(std::abs(det - 1) <= kRotationTolerance)) {
-    return "is not a rotation: its determinant is " + NumberText(det) + ", not +1" +
-           (det < 0 ? " (a reflection)" : "");
-  }
-  return std::nullopt;
+  return RotationProblem(r, kRotationTolerance);
 }
 
 }  // namespace sightline

@@ -15,6 +15,11 @@ namespace sightline {
 // Largest accepted magnitude of a distortion coefficient (k1 k2 p1 p2 k3). Real lenses stay far
 // below; larger values are a unit or field mix-up.
 inline constexpr double kMaxDistortionMagnitude = 1e3;
+// Accepted focal lengths [px]. Below one pixel a pinhole camera would see almost 180 degrees
+// across a single pixel; above a million pixels its view is narrower than a thousandth of a
+// degree. Values outside are unit mix-ups (metres for pixels) or corrupt files.
+inline constexpr double kMinFocalLengthPx = 1;
+inline constexpr double kMaxFocalLengthPx = 1e6;
 // A rotation matrix R is accepted when every entry of R^T R - I is within this and det R is
 // within it of +1; a quaternion when its length is within it of 1. Nothing is re-orthonormalised.
 inline constexpr double kRotationTolerance = 1e-6;
@@ -44,7 +49,8 @@ struct FieldProblem {
   std::string what;
 };
 
-// Image size positive; focal lengths positive and finite; principal point finite and inside the
+// Image size positive; focal lengths finite in [kMinFocalLengthPx, kMaxFocalLengthPx]; principal
+// point finite and inside the
 // image ([0, width] x [0, height]); distortion finite with |k| < kMaxDistortionMagnitude.
 std::optional<FieldProblem> CheckCameraValues(const PinholeCamera& camera, const CameraKeys& keys);
 

@@ -6,7 +6,9 @@
 #include <optional>
 
 #include "core/common/text_file.h"
+#include "core/io/calibration_checks.h"
 #include "core/io/image_loading.h"
+#include "core/io/timed_file_list.h"
 #include "core/io/yaml_file.h"
 
 namespace sightline {
@@ -41,6 +43,18 @@ StatusOr<Eigen::Isometry3d> ReadTbs(const YAML::Node& root, const std::string& p
   return transform;
 }
 
+// The checks of every calibration file, naming sensor.yaml's keys.
+Status CheckEurocCamera(const YAML::Node& root, const PinholeCamera& c, const std::string& path) {
+  CameraKeys keys;
+  keys.width = keys.height = "resolution";
+  keys.fx = keys.fy = keys.cx = keys.cy = "intrinsics";
+  keys.distortion = "distortion_coefficients";
+  if (std::optional<FieldProblem> problem = CheckCameraValues(c, keys)) {
+    return YamlKeyError(path, root[problem->key], problem->key, problem->what);
+  }
+  return Status::Ok();
+}
+
 StatusOr<EurocCamera> ReadEurocCamera(const std::string& path) {
   auto root = LoadYamlFile(path);
   if (!root.ok()) return root.status();
@@ -72,7 +86,7 @@ StatusOr<EurocCamera> ReadEurocCamera(const std::string& path) {
     if (!d.ok()) return d.status();
     for (size_t i = 0; i < d->size(); ++i) c.distortion[i] = (*d)[i];
   }
-  if (Status valid = c.Validate(); !valid.ok()) return ParseError(path + ": " + valid.message());
+  SIGHTLINE_RETURN_IF_ERROR(CheckEurocCamera(*root, c, path));
   auto body_from_camera = ReadTbs(*root, path);
   if (!body_from_camera.ok()) return body_from_camera.status();
   result.body_from_camera = *body_from_camera;
@@ -108,8 +122,12 @@ StatusOr<std::vector<CsvImage>> ReadImageCsv(const std::string& path) {
       return ParseError(where + ": timestamp '" + f[0] + "' is not an integer of nanoseconds");
     }
     if (!images.empty() && image.time_ns <= images.back().time_ns) {
-      return ParseError(where + ": timestamps must increase");
+      return ParseError(where + ": timestamp " + f[0] + " is " +
+                        (image.time_ns == images.back().time_ns ? "equal to" : "before") +
+                        " the previous one (" + std::to_string(images.back().time_ns) +
+                        "): timestamps must increase");
     }
+    SIGHTLINE_RETURN_IF_ERROR(CheckListedPath(f[1], path, line.number));
     image.file = f[1];
     images.push_back(std::move(image));
   }
@@ -124,13 +142,11 @@ StatusOr<Trajectory> ReadEurocGroundTruthCsv(const std::string& path) {
   for (const DataLine& line : *lines) {
     auto v = ParseNumbers(line, 8, path);
     if (!v.ok()) return v.status();
-    const Eigen::Quaterniond q((*v)[4], (*v)[5], (*v)[6], (*v)[7]);
-    if (std::abs(q.norm() - 1.0) > 0.1) {
-      return ParseError(path + " line " + std::to_string(line.number) +
-                        ": quaternion norm is not 1");
-    }
+    StatusOr<Eigen::Quaterniond> q =
+        PoseFileQuaternion((*v)[4], (*v)[5], (*v)[6], (*v)[7], path, line.number);
+    if (!q.ok()) return q.status();
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.linear() = q.normalized().toRotationMatrix();
+    pose.linear() = q->toRotationMatrix();
     pose.translation() = Eigen::Vector3d((*v)[1], (*v)[2], (*v)[3]);
     const double t = (*v)[0] * 1e-9;
     if (!trajectory.empty() && t < trajectory.poses().back().time_s) {
@@ -148,12 +164,12 @@ StatusOr<std::optional<Trajectory>> ReadGroundTruth(const std::string& mav0,
                                                     std::string* source_file) {
   const std::string folder = JoinPath(mav0, "state_groundtruth_estimate0");
   std::optional<Trajectory> gt;
-  if (const std::string tum = JoinPath(folder, "groundtruth_tum.txt"); FileExists(tum)) {
+  if (const std::string tum = JoinPath(folder, "groundtruth_tum.txt"); PathExists(tum)) {
     auto read = ReadTumTrajectory(tum);
     if (!read.ok()) return read.status();
     gt = std::move(*read);
     *source_file = tum;
-  } else if (const std::string csv = JoinPath(folder, "data.csv"); FileExists(csv)) {
+  } else if (const std::string csv = JoinPath(folder, "data.csv"); PathExists(csv)) {
     auto read = ReadEurocGroundTruthCsv(csv);
     if (!read.ok()) return read.status();
     gt = std::move(*read);
@@ -163,7 +179,7 @@ StatusOr<std::optional<Trajectory>> ReadGroundTruth(const std::string& mav0,
   }
   // The estimate is of its own "sensor" frame S, body_from_S = its T_BS (identity in EuRoC).
   Eigen::Isometry3d body_from_gt = Eigen::Isometry3d::Identity();
-  if (const std::string yaml = JoinPath(folder, "sensor.yaml"); FileExists(yaml)) {
+  if (const std::string yaml = JoinPath(folder, "sensor.yaml"); PathExists(yaml)) {
     auto root = LoadYamlFile(yaml);
     if (!root.ok()) return root.status();
     if ((*root)["T_BS"]) {
@@ -285,6 +301,10 @@ StatusOr<Frame> EurocSource::Load(int64_t index) {
   StereoFrame frame = std::move(*pair);
   frame.stamp = MakeStamp(index);
   return Frame(std::move(frame));
+}
+
+std::string EurocSource::FrameFile(int64_t index) const {
+  return left_files_[static_cast<size_t>(index)];
 }
 
 }  // namespace sightline

@@ -39,6 +39,7 @@ class EurocSource : public RecordedSource {
  protected:
   // Decodes frame `index`.
   StatusOr<Frame> Load(int64_t index) override;
+  std::string FrameFile(int64_t index) const override;
 
  private:
   std::string path_;

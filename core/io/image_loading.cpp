@@ -24,10 +24,7 @@ StatusOr<cv::Mat> Decode(const std::string& path, int flags) {
 
 }  // namespace
 
-Status CheckFileExists(const std::string& path) {
-  if (!FileExists(path)) return NotFound(path + ": no such file");
-  return Status::Ok();
-}
+Status CheckFileExists(const std::string& path) { return CheckRegularFile(path, path); }
 
 std::string DescribeMatType(int type) {
   const char* depth = "?";

@@ -10,7 +10,10 @@
 
 namespace sightline {
 
-// NotFound naming `path` when it is not a regular file.
+// Checks that `path` is a regular file that can be opened (CheckRegularFile): NotFound when
+// nothing is there, InvalidArgument for a folder or device, Unavailable with the system's reason
+// (e.g. "permission denied") when it cannot be read. The loaders below check this first, so that
+// "cannot decode" means the bytes are not an image.
 Status CheckFileExists(const std::string& path);
 
 // Loads an 8-bit image as CV_8UC3 BGR (grey images are expanded, alpha dropped).

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/common/text_file.h"
+#include "core/io/calibration_checks.h"
 #include "core/io/file_listing.h"
 #include "core/io/image_loading.h"
 #include "core/io/timed_file_list.h"
@@ -119,11 +120,10 @@ Status KittiSource::Open() {
   rig.left = CameraFromProjection(projections->first, info.width, info.height);
   rig.right = CameraFromProjection(projections->second, info.width, info.height);
   rig.rectified = true;
-  if (Status valid = rig.left.Validate(); !valid.ok()) {
-    return ParseError(calib_path + ": P0: " + valid.message());
-  }
-  if (Status valid = rig.right.Validate(); !valid.ok()) {
-    return ParseError(calib_path + ": P1: " + valid.message());
+  for (const auto& [name, camera] : {std::pair{"P0", rig.left}, std::pair{"P1", rig.right}}) {
+    if (std::optional<FieldProblem> problem = CheckCameraValues(camera, CameraKeys{})) {
+      return ParseError(calib_path + ": " + name + ": " + problem->what);
+    }
   }
   // Rectified cameras share a rotation; x_in_right = x_in_left + (t1 - t0).
   rig.right_from_left.translation() =
@@ -135,7 +135,7 @@ Status KittiSource::Open() {
   info.stereo = rig;
 
   std::vector<double> times;
-  if (const std::string times_path = JoinPath(folder_, "times.txt"); FileExists(times_path)) {
+  if (const std::string times_path = JoinPath(folder_, "times.txt"); PathExists(times_path)) {
     auto read = ReadTimesFile(times_path);
     if (!read.ok()) return read.status();
     if (read->size() != n) {
@@ -151,11 +151,11 @@ Status KittiSource::Open() {
 
   std::optional<Trajectory> ground_truth;
   std::string poses_path = JoinPath(folder_, "poses.txt");
-  if (!FileExists(poses_path)) {
+  if (!PathExists(poses_path)) {
     // KITTI's own tree: dataset/sequences/NN/ and dataset/poses/NN.txt.
     poses_path = JoinPath(JoinPath(folder_, "../../poses"), BaseName(folder_) + ".txt");
   }
-  if (FileExists(poses_path)) {
+  if (PathExists(poses_path)) {
     auto read = ReadKittiTrajectory(poses_path);
     if (!read.ok()) return read.status();
     if (read->size() != n) {
@@ -179,6 +179,10 @@ StatusOr<Frame> KittiSource::Load(int64_t index) {
   StereoFrame frame = std::move(*pair);
   frame.stamp = MakeStamp(index);
   return Frame(std::move(frame));
+}
+
+std::string KittiSource::FrameFile(int64_t index) const {
+  return left_files_[static_cast<size_t>(index)];
 }
 
 }  // namespace sightline

@@ -34,6 +34,7 @@ class KittiSource : public RecordedSource {
  protected:
   // Decodes frame `index`.
   StatusOr<Frame> Load(int64_t index) override;
+  std::string FrameFile(int64_t index) const override;
 
  private:
   std::string folder_;

@@ -1,6 +1,7 @@
 #include "core/io/recorded_source.h"
 
 #include <algorithm>
+#include <variant>
 
 #include "core/common/timing.h"
 
@@ -19,7 +20,34 @@ Status RecordedSource::Grab() {
 
 StatusOr<Frame> RecordedSource::Retrieve() {
   if (grabbed_ < 0) return FailedPrecondition("Retrieve() without a successful Grab()");
-  return Load(grabbed_);
+  StatusOr<Frame> frame = Load(grabbed_);
+  if (!frame.ok()) return frame;
+  SIGHTLINE_RETURN_IF_ERROR(CheckFrameSize(*frame, grabbed_));
+  return frame;
+}
+
+std::string RecordedSource::FrameFile(int64_t index) const {
+  return info_.path + " frame " + std::to_string(index);
+}
+
+Status RecordedSource::CheckFrameSize(const Frame& frame, int64_t index) const {
+  if (info_.width <= 0 || info_.height <= 0) return Status::Ok();
+  cv::Size size;
+  if (const auto* mono = std::get_if<MonoFrame>(&frame)) {
+    size = mono->image.size();
+  } else if (const auto* stereo = std::get_if<StereoFrame>(&frame)) {
+    size = stereo->left.size();  // The readers check that the right image matches.
+  } else if (const auto* rgbd = std::get_if<RgbdFrame>(&frame)) {
+    size = rgbd->color.empty() ? rgbd->depth_m.size() : rgbd->color.size();
+  } else {
+    return Status::Ok();  // Point clouds have no image size.
+  }
+  if (size.width == info_.width && size.height == info_.height) return Status::Ok();
+  return ParseError(FrameFile(index) + ": image is " + std::to_string(size.width) + "x" +
+                    std::to_string(size.height) + " but the recording's frames are " +
+                    std::to_string(info_.width) + "x" + std::to_string(info_.height) +
+                    " (the first frame and the calibration): frame " + std::to_string(index) +
+                    " changes size mid-sequence");
 }
 
 Status RecordedSource::Seek(int64_t index) {

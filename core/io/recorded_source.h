@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/io/source.h"
@@ -36,8 +37,12 @@ class RecordedSource : public Source {
   double FrameTimeS(int64_t index) const;
 
  protected:
-  // Decodes frame `index`, 0 <= index < frame_count. Called by Retrieve().
+  // Decodes frame `index`, 0 <= index < frame_count. Called by Retrieve(), which then checks
+  // that the frame's images have info().width x info().height pixels (the size of the first
+  // frame and of the calibration): a frame of another size is a ParseError naming FrameFile().
   virtual StatusOr<Frame> Load(int64_t index) = 0;
+  // The file frame `index` is read from (the left or colour image), for messages.
+  virtual std::string FrameFile(int64_t index) const;
 
   // Publishes what Open() found and rewinds to frame 0. `times_s` has one entry per frame.
   // Fills frame_count, duration_s, rate_hz (when 0: estimated from the times), seekable and
@@ -52,6 +57,9 @@ class RecordedSource : public Source {
   static double EstimateRateHz(const std::vector<double>& times_s);
 
  private:
+  // ParseError naming the frame's file when its images are not info().width x info().height.
+  Status CheckFrameSize(const Frame& frame, int64_t index) const;
+
   SourceInfo info_;
   std::vector<double> times_s_;
   std::optional<Trajectory> ground_truth_;

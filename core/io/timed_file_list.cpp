@@ -1,5 +1,6 @@
 #include "core/io/timed_file_list.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include "core/common/text_file.h"
@@ -20,6 +21,11 @@ StatusOr<std::vector<TimedFile>> ReadTimedFileList(const std::string& path) {
     }
     StatusOr<std::vector<double>> time = ParseNumbers(DataLine{line.number, fields[0]}, 1, path);
     if (!time.ok()) return time.status();
+    if (!files.empty()) {
+      SIGHTLINE_RETURN_IF_ERROR(
+          CheckTimeIncreases(files.back().time_s, (*time)[0], path, line.number));
+    }
+    SIGHTLINE_RETURN_IF_ERROR(CheckListedPath(fields[1], path, line.number));
     files.push_back({(*time)[0], fields[1], line.number});
   }
   return files;
@@ -35,9 +41,33 @@ StatusOr<std::vector<double>> ReadTimesFile(const std::string& path) {
     StatusOr<std::vector<double>> time =
         ParseNumbers(DataLine{line.number, fields.empty() ? "" : fields[0]}, 1, path);
     if (!time.ok()) return time.status();
+    if (!times.empty()) {
+      SIGHTLINE_RETURN_IF_ERROR(CheckTimeIncreases(times.back(), (*time)[0], path, line.number));
+    }
     times.push_back((*time)[0]);
   }
   return times;
+}
+
+Status CheckListedPath(const std::string& file, const std::string& list_path, int line) {
+  const std::string where = list_path + " line " + std::to_string(line) + ": file '" + file + "'";
+  if (file.empty()) return ParseError(list_path + " line " + std::to_string(line) + ": no file");
+  const std::filesystem::path path(file);
+  if (path.is_absolute() || path.has_root_name()) {
+    return ParseError(where +
+                      " is an absolute path; listed files must be relative to the dataset folder");
+  }
+  int depth = 0;
+  for (const std::filesystem::path& part : path) {
+    if (part == "..") {
+      if (--depth < 0) {
+        return ParseError(where + " leaves the dataset folder ('..' climbs out of it)");
+      }
+    } else if (part != "." && !part.empty()) {
+      ++depth;
+    }
+  }
+  return Status::Ok();
 }
 
 std::vector<std::string> ReadCommentLines(const std::string& path, int max_lines) {

@@ -9,6 +9,7 @@
 #include "core/io/camera_yaml.h"
 #include "core/io/file_listing.h"
 #include "core/io/image_loading.h"
+#include "core/io/timed_file_list.h"
 
 namespace sightline {
 namespace {
@@ -29,6 +30,12 @@ StatusOr<std::vector<TumAssociation>> ReadAssociations(const std::string& path) 
     if (!t_rgb.ok()) return t_rgb.status();
     auto t_depth = ParseNumbers(DataLine{line.number, f[2]}, 1, path);
     if (!t_depth.ok()) return t_depth.status();
+    if (!pairs.empty()) {
+      SIGHTLINE_RETURN_IF_ERROR(
+          CheckTimeIncreases(pairs.back().rgb.time_s, (*t_rgb)[0], path, line.number));
+    }
+    SIGHTLINE_RETURN_IF_ERROR(CheckListedPath(f[1], path, line.number));
+    SIGHTLINE_RETURN_IF_ERROR(CheckListedPath(f[3], path, line.number));
     pairs.push_back({{(*t_rgb)[0], f[1], line.number}, {(*t_depth)[0], f[3], line.number}});
   }
   return pairs;
@@ -130,7 +137,7 @@ Status TumRgbdSource::Open() {
   std::vector<TumAssociation> pairs;
   std::string assoc_path;
   for (const char* name : {"associations.txt", "associate.txt"}) {
-    if (FileExists(JoinPath(folder_, name))) {
+    if (PathExists(JoinPath(folder_, name))) {
       assoc_path = JoinPath(folder_, name);
       break;
     }
@@ -153,13 +160,8 @@ Status TumRgbdSource::Open() {
     }
     info.notes.push_back(note);
   }
+  // The lists' readers checked that times increase and files stay inside the folder.
   if (pairs.empty()) return ParseError(folder_ + ": no colour/depth pairs listed");
-  for (size_t i = 1; i < pairs.size(); ++i) {
-    if (pairs[i].rgb.time_s < pairs[i - 1].rgb.time_s) {
-      return ParseError(assoc_path + " line " + std::to_string(pairs[i].rgb.line) +
-                        ": timestamps must increase");
-    }
-  }
   for (TumAssociation& p : pairs) {
     p.rgb.file = JoinPath(folder_, p.rgb.file);
     p.depth.file = JoinPath(folder_, p.depth.file);
@@ -172,7 +174,7 @@ Status TumRgbdSource::Open() {
   calibration.depth_scale = 5000;
   bool camera_from_file = false;
   std::optional<double> nominal_rate;
-  if (const std::string yaml = JoinPath(folder_, kCameraYamlName); FileExists(yaml)) {
+  if (const std::string yaml = JoinPath(folder_, kCameraYamlName); PathExists(yaml)) {
     auto file = ReadCameraYaml(yaml);
     if (!file.ok()) return file.status();
     calibration.color = file->camera;
@@ -238,7 +240,7 @@ Status TumRgbdSource::Open() {
 
   // 4. Ground truth: pose of the colour camera in the mocap world.
   std::optional<Trajectory> ground_truth;
-  if (const std::string gt_path = JoinPath(folder_, "groundtruth.txt"); FileExists(gt_path)) {
+  if (const std::string gt_path = JoinPath(folder_, "groundtruth.txt"); PathExists(gt_path)) {
     auto gt = ReadTumTrajectory(gt_path);
     if (!gt.ok()) return gt.status();
     size_t covered = 0;
@@ -274,6 +276,10 @@ StatusOr<Frame> TumRgbdSource::Load(int64_t index) {
   frame.depth_m = std::move(*depth);
   frame.stamp = MakeStamp(index);
   return Frame(std::move(frame));
+}
+
+std::string TumRgbdSource::FrameFile(int64_t index) const {
+  return pairs_[static_cast<size_t>(index)].rgb.file;
 }
 
 }  // namespace sightline

@@ -61,6 +61,7 @@ class TumRgbdSource : public RecordedSource {
  protected:
   // Decodes frame `index`.
   StatusOr<Frame> Load(int64_t index) override;
+  std::string FrameFile(int64_t index) const override;
 
  private:
   std::string folder_;

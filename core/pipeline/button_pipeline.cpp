@@ -576,6 +576,20 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
 
 void ButtonPipeline::Abort(const std::string& reason) { StopOutput(reason); }
 
+namespace {
+
+// Why a run achieved nothing: no target went out. Empty when one did.
+std::string NoTargetSent(const ButtonRunLog& log, int64_t frames) {
+  if (!log.sent.empty()) return "";
+  if (log.tap_index < 0)
+    return "no target sent: no button was tapped in " + std::to_string(frames) + " frame(s)";
+  return "no target sent: the button tapped at frame " + std::to_string(log.tap_index) +
+         " was never located well enough to pass the safety gate in the " +
+         std::to_string(frames - log.tap_index) + " frame(s) from the tap on";
+}
+
+}  // namespace
+
 StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   if (!source_ || frames_ == 0) {
     return OutOfRange((source_ ? source_->info.path : std::string("button")) + " holds no frames");
@@ -603,6 +617,8 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   }
   result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
   result.counts.emplace_back("lost_frames", mono_.lost_frames());
+  result.nothing_achieved = NoTargetSent(log_, frames_);
+  if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("button_notes.txt");

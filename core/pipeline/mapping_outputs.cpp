@@ -205,6 +205,19 @@ Status WriteLog(const MappingRunView& run, const std::vector<std::string>& lines
   return Status::Ok();
 }
 
+// Why a run mapped nothing: no frame had a wall line (so no heading, no map). Empty otherwise.
+std::string NoWallFound(const MappingRunRecord& record) {
+  for (const MappedFrameLines& frame : record.frames) {
+    if (!frame.lines.empty()) return "";
+  }
+  std::string statuses;
+  for (const auto& [status, count] : record.statuses) {
+    statuses += (statuses.empty() ? "" : ", ") + std::to_string(count) + " " + status;
+  }
+  return "no wall line found in any of the " + std::to_string(record.frames.size()) +
+         " mapped frame(s)" + (statuses.empty() ? std::string() : " (" + statuses + ")");
+}
+
 }  // namespace
 
 StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
@@ -227,6 +240,8 @@ StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
   SIGHTLINE_RETURN_IF_ERROR(WriteTrajectoryAndMap(run, out_dir, &result, &log));
   AddCounts(run, &result);
   AddAccuracy(run, &result, &log);
+  result.nothing_achieved = NoWallFound(state.record);
+  if (!result.nothing_achieved.empty()) log.insert(log.begin(), result.nothing_achieved);
   SIGHTLINE_RETURN_IF_ERROR(WriteLog(run, log, JoinPath(out_dir, "mapping_log.txt")));
   result.outputs.push_back("mapping_log.txt");
   return result;

@@ -149,6 +149,12 @@ StatusOr<RunResult> FinishMobilityRun(const MobilityRunRecord& record,
   result.outputs.push_back("segments.csv");
   std::vector<std::string> log = record.log;
   AddFigures(record, &result, &log);
+  if (record.frames > 0 && record.stats.Values("mobility/ground_height_m").empty()) {
+    result.nothing_achieved = "no ground found in any of the " + std::to_string(record.frames) +
+                              " frame(s) (" + (record.log.empty() ? "" : record.log.front()) +
+                              "): nothing is mapped relative to a ground";
+    log.insert(log.begin(), result.nothing_achieved);
+  }
   std::string log_text;
   for (const std::string& line : log) log_text += line + "\n";
   SIGHTLINE_RETURN_IF_ERROR(WriteTextFile(JoinPath(out_dir, "mobility_log.txt"), log_text));

@@ -282,6 +282,19 @@ StatusOr<MonoSlamRun> MonoSlamPipeline::Summary() {
   return out;
 }
 
+namespace {
+
+// Why a run achieved nothing: no frame was tracked (the map never initialised). Empty otherwise.
+std::string NeverInitialised(const MonoSlamRun& run) {
+  if (!run.estimate.empty()) return "";
+  const std::string last = run.frames.empty() ? "" : run.frames.back().stats.status;
+  return "never initialised: no frame tracked in " + std::to_string(run.frames.size()) +
+         " frame(s) (two views with enough texture and parallax are needed" +
+         (last.empty() ? std::string(")") : "; last frame: " + last + ")");
+}
+
+}  // namespace
+
 StatusOr<RunResult> MonoSlamPipeline::Finish(const std::string& out_dir) {
   StatusOr<MonoSlamRun> run = Summary();
   if (!run.ok()) return run.status();
@@ -299,6 +312,8 @@ StatusOr<RunResult> MonoSlamPipeline::Finish(const std::string& out_dir) {
   result.counts.emplace_back("metric_scale_from_arm", run->metric_source == "arm" ? 1 : 0);
   result.counts.emplace_back("final_bundle_adjustment_ms", final_bundle_ms_);
   notes.push_back("metric scale source: " + run->metric_source);
+  result.nothing_achieved = NeverInitialised(*run);
+  if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   std::ofstream log(fs::path(out_dir) / "mono_slam_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("mono_slam_notes.txt");

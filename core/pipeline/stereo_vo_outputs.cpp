@@ -49,6 +49,25 @@ class EstimateOnlyPipeline : public StereoVoPipeline {
   std::shared_ptr<StereoVoRun> out_;
 };
 
+// Why a run tracked nothing: no frame after the first got an accepted motion estimate (every
+// one gated or lost). Empty when at least one did.
+std::string NothingTracked(const std::vector<FrameStats>& frames) {
+  size_t tracked = 0;
+  const FrameStats* first_rejected = nullptr;
+  for (size_t i = 1; i < frames.size(); ++i) {
+    if (!frames[i].gated && frames[i].status == "ok") ++tracked;
+    if (first_rejected == nullptr && frames[i].status != "ok") first_rejected = &frames[i];
+  }
+  if (tracked > 0) return "";
+  if (frames.size() < 2) {
+    return "no frame tracked: stereo-vo needs at least two frames, the run had " +
+           std::to_string(frames.size());
+  }
+  return "no frame tracked: every one of the " + std::to_string(frames.size() - 1) +
+         " frames after the first was gated or lost (first reason: " +
+         (first_rejected ? first_rejected->status : std::string("none")) + ")";
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, double>> StereoVoAccuracy(const StereoVoRun& run,
@@ -110,6 +129,8 @@ StatusOr<RunResult> StereoVoPipeline::Finish(const std::string& out_dir) {
   result.counts.emplace_back("frames_gated", log_.Sum("vo/gated"));
   result.counts.emplace_back("inliers_per_frame", log_.Sum("vo/inliers") / n);
   result.counts.emplace_back("stereo_matches_per_frame", log_.Sum("vo/stereo_matches") / n);
+  result.nothing_achieved = NothingTracked(run_.frames);
+  if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   if (!notes.empty()) {
     SIGHTLINE_RETURN_IF_ERROR(
         WriteNotes(notes, (fs::path(out_dir) / "stereo_vo_notes.txt").string()));

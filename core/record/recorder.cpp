@@ -1,8 +1,47 @@
 #include "core/record/recorder.h"
 
+#include <algorithm>
+#include <filesystem>
+
 #include "core/common/timing.h"
 
 namespace sightline {
+namespace {
+
+// Checks that `dir` may receive a recording of `kind`: absent or an empty folder, or with
+// `overwrite` any folder, whose sensor folder is then removed (no image of the old recording may
+// stay beside the new index files).
+Status PrepareRecordingFolder(const std::string& dir, SourceKind kind, bool overwrite) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(dir, ec);
+  if (!fs::exists(status)) return Status::Ok();
+  if (!fs::is_directory(status)) {
+    return FailedPrecondition("cannot record into " + dir + ": it is a file, not a folder");
+  }
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+    names.push_back(entry.path().filename().string());
+  }
+  if (ec) return Unavailable("cannot record into " + dir + ": " + ec.message());
+  if (names.empty()) return Status::Ok();
+  const fs::path sensor = fs::path(dir) / SensorFolderName(kind);
+  if (!overwrite) {
+    std::sort(names.begin(), names.end());
+    return FailedPrecondition(
+        "cannot record into " + dir + ": the folder already holds " + std::to_string(names.size()) +
+        " file(s) or folder(s) (e.g. '" + names.front() +
+        "'); recording there would truncate or mix with what is there. Choose a new or empty "
+        "folder, or overwrite (record.overwrite=true, sightline-cli record --overwrite) to "
+        "replace " +
+        sensor.string());
+  }
+  fs::remove_all(sensor, ec);
+  if (ec) return Unavailable("cannot replace " + sensor.string() + ": " + ec.message());
+  return Status::Ok();
+}
+
+}  // namespace
 
 bool RecorderOptions::IsValid(std::string* error) const {
   auto fail = [&](const std::string& m) {
@@ -28,7 +67,10 @@ OptionTable<RecorderOptions> RecorderOptions::Describe() {
            "PNG zlib level: 0 is fastest and largest, 9 smallest and slowest.")
       .Bool("sync", &RecorderOptions::sync,
             "fsync every image and index line, so that a pulled plug loses at most the frame "
-            "being written.");
+            "being written.")
+      .Bool("overwrite", &RecorderOptions::overwrite,
+            "Record into a folder that already holds files; its sensor folder (rgbd/, stereo/ "
+            "or mono/) is replaced as a whole, other files stay. Off: such a folder is refused.");
 }
 
 StatusOr<std::unique_ptr<Recorder>> Recorder::Start(
@@ -36,6 +78,9 @@ StatusOr<std::unique_ptr<Recorder>> Recorder::Start(
     std::function<void(const WrittenFrame&)> on_written) {
   std::string error;
   if (!options.IsValid(&error)) return InvalidArgument(error);
+  if (info.kind != SourceKind::kCloud) {  // Point clouds are refused by CreateFrameWriter.
+    SIGHTLINE_RETURN_IF_ERROR(PrepareRecordingFolder(dir, info.kind, options.overwrite));
+  }
   FrameWriterSettings settings;
   settings.png_compression = options.png_compression;
   settings.sync = options.sync;

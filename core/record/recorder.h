@@ -26,6 +26,8 @@ struct RecorderOptions {
   int png_compression = 1;       // zlib level 0 (fast, large) to 9 (slow, small).
   bool sync = true;              // fsync every image and index line (a pulled plug loses at most
                                  // the frame being written).
+  bool overwrite = false;        // Record into a folder that already holds files: its sensor
+                                 // folder (e.g. DIR/mono) is removed first, other files stay.
 
   bool IsValid(std::string* error) const;
   static OptionTable<RecorderOptions> Describe();
@@ -63,7 +65,10 @@ struct WrittenFrame {
 class Recorder {
  public:
   // Creates the folders and calibration, starts the writer thread. `on_written`, if set, is
-  // called on the writer thread after each frame is durable.
+  // called on the writer thread after each frame is durable. `dir` must be new or empty (or a
+  // file there is an error): a folder that already holds files is FailedPrecondition naming it,
+  // so that an earlier recording is never truncated or left with orphan images, unless
+  // options.overwrite, which replaces DIR/<sensor>/ as a whole.
   static StatusOr<std::unique_ptr<Recorder>> Start(
       const std::string& dir, const SourceInfo& info, const RecorderOptions& options,
       std::function<void(const WrittenFrame&)> on_written = nullptr);

@@ -1,7 +1,9 @@
 #include "core/sensors/driver_registry.h"
 
 #include <cctype>
+#include <fstream>
 
+#include "core/common/text_file.h"
 #include "core/io/dataset.h"
 #include "core/sensors/aravis_options.h"
 #include "core/sensors/openni2_options.h"
@@ -203,13 +205,33 @@ bool IsSensorUri(const std::string& uri) {
          StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) || OpenNi2IsRecording(uri);
 }
 
+Status CheckOniFile(const std::string& path) {
+  SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, path));
+  std::ifstream in(path, std::ios::binary);
+  char header[kOniHeaderBytes] = {};
+  in.read(header, sizeof(header));
+  const std::streamsize got = in.gcount();
+  if (got < static_cast<std::streamsize>(kOniHeaderBytes)) {
+    return ParseError(path + " is too short for an ONI recording (" + std::to_string(got) +
+                      " bytes; its header alone is " + std::to_string(kOniHeaderBytes) + ")");
+  }
+  if (std::string(header, 4) != "NI10") {
+    return ParseError(path +
+                      " is not an ONI recording (it does not start with the ONI header 'NI10')");
+  }
+  return Status::Ok();
+}
+
 StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const OptionSet& options) {
   const std::vector<DriverInfo> drivers = BuiltinDrivers();
   const DriverInfo* driver = nullptr;
   for (const DriverInfo& d : drivers) {
     if (StartsWith(uri, d.scheme)) driver = &d;
   }
-  if (driver == nullptr && OpenNi2IsRecording(uri)) driver = FindDriver(drivers, "openni2");
+  if (driver == nullptr && OpenNi2IsRecording(uri)) {
+    SIGHTLINE_RETURN_IF_ERROR(CheckOniFile(uri));
+    driver = FindDriver(drivers, "openni2");
+  }
   if (driver == nullptr) {
     const size_t scheme_end = uri.find("://");
     if (scheme_end != std::string::npos && uri.find('/') > scheme_end) {

@@ -48,6 +48,16 @@ Status DeclareSensorOptions(OptionSet* options);
 // True for "openni2://...", "aravis://...", "v4l2://...", "replay://..." and paths ending in .oni.
 bool IsSensorUri(const std::string& uri);
 
+// Bytes of an ONI recording's file header ("NI10", version, largest timestamp, largest node id).
+inline constexpr size_t kOniHeaderBytes = 24;
+
+// Why `path` cannot be an .oni recording, before OpenNI2 (which only says "could not be opened")
+// tries it: NotFound "<path>: no such file"; InvalidArgument when it is a folder or a device;
+// Unavailable with the system's reason (permission denied); ParseError "<path> is too short for
+// an ONI recording (N bytes; its header alone is 24)" or "<path> is not an ONI recording (it
+// does not start with the ONI header 'NI10')". Ok for a file that starts like one.
+Status CheckOniFile(const std::string& path);
+
 // Opens anything Sightline can read frames from and returns the open source:
 //   "openni2://" (first device), "openni2://DEVICE_URI", "openni2://file.oni" or "file.oni";
 //   "aravis://" (first camera), "aravis://DEVICE_ID", "aravis://LEFT_ID,RIGHT_ID" (stereo;

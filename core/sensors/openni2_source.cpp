@@ -11,6 +11,7 @@
 
 #include "core/common/timing.h"
 #include "core/sensors/depth_conversion.h"
+#include "core/sensors/driver_registry.h"
 #include "core/sensors/openni2_runtime.h"
 #include "core/sensors/openni2_streams.h"
 #include "core/sensors/timestamp_pairer.h"
@@ -154,10 +155,7 @@ std::string OpenNi2Source::DeviceLabel() const {
 Status OpenNi2Source::Connect(SourceInfo* info) {
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
-  std::error_code ec;
-  if (is_file_ && !std::filesystem::is_regular_file(uri_, ec)) {
-    return NotFound(DeviceLabel() + " not found (no such file)");
-  }
+  if (is_file_) SIGHTLINE_RETURN_IF_ERROR(CheckOniFile(uri_).WithContext(DeviceLabel()));
   Impl& m = *impl_;
   std::lock_guard<std::mutex> lock(m.mutex);
   m.ResetState();

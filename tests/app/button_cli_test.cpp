@@ -183,6 +183,20 @@ TEST_F(ButtonCli, ServingBeyondLoopbackNeedsAToken) {
   EXPECT_NE(r.out.find("button.arm.token"), std::string::npos) << r.out;
 }
 
+TEST_F(ButtonCli, ARunThatSendsNoTargetExitsThreeWithTheReasonInMetrics) {
+  // Three frames: the tap finds the button, but no target can be located and gated that soon.
+  const std::string out = testing::TempDir("button_cli_nothing");
+  const testing::ProcessResult r =
+      testing::RunProcess(kCli + " run button " + *dir_ + " --tap " + TapOnTarget() + " --out " +
+                          out + " --quiet --set mono.run.max_frames=3");
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_EQ(r.out.rfind("sightline-cli: run button achieved nothing: no target sent", 0), 0u)
+      << r.out;
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_NE(metrics.find("\"failure\""), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("no target sent"), std::string::npos) << metrics;
+}
+
 TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {
   const std::string out = testing::TempDir("button_cli_wall");
   const testing::ProcessResult r =

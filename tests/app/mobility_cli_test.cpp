@@ -65,13 +65,19 @@ TEST(MobilityCli, TerrainReportsSlopeAndRoughnessAccuracy) {
   EXPECT_NEAR(*height, 1.0, 0.02);  // The simulated camera is 1.0 m above the floor.
 }
 
+// No frame of the recording shows the floor: the run writes its files but achieved nothing, so
+// it exits 3 saying so, and metrics.json states the failure.
 TEST(MobilityCli, OniRecordingWithoutVisibleFloorSaysSoPerFrame) {
   SIGHTLINE_REQUIRE_DATA(path, "oni_livingroom/test.oni");
   const std::string out = testing::TempDir("mobility_oni");
   const auto r =
       Cli("run mobility " + path + " --out " + out + " --set mobility.run.cloud_format=none");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
+  ASSERT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("achieved nothing: no ground found in any of the 12 frame(s)"),
+            std::string::npos)
+      << r.out;
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_NE(metrics.find("\"failure\""), std::string::npos) << metrics;
   EXPECT_EQ(testing::JsonNumber(metrics, "counts", "frames_without_map").value_or(-1), 12);
   EXPECT_NE(testing::ReadTextFile(out + "/mobility_log.txt").find("no ground plane"),
             std::string::npos);

@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
 
@@ -167,6 +169,32 @@ TEST(RecordCli, FullDiskGivesAClearErrorAndAReadablePartialRecording) {
   EXPECT_EQ(static_cast<int>(recorded.size()), written);
   EXPECT_EQ(testing::ExpectRecordedFramesMatch(testing::ReadAllFrames(Corridor()), recorded),
             written);
+}
+
+TEST(RecordCli, RecordingIntoAFolderThatHoldsFilesIsRefusedUnlessOverwriting) {
+  const std::string source = testing::TempDir("record_cli_source");
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(cv::imwrite(source + "/00000" + std::to_string(i) + ".png",
+                            cv::Mat(24, 32, CV_8UC1, cv::Scalar(40 * i))));
+  }
+  const std::string out = testing::TempDir("record_cli_again") + "/rec";
+  auto r = testing::RunProcess(kCli + " record " + source + " --out " + out + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string times = testing::ReadAll(out + "/mono/times.txt");
+  ASSERT_EQ(testing::ReadAllFrames(out).size(), 4u);
+
+  r = testing::RunProcess(kCli + " record " + source + " --out " + out + " --frames 2 --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("cannot record into " + out), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--overwrite"), std::string::npos) << r.out;
+  EXPECT_EQ(testing::ReadAll(out + "/mono/times.txt"), times);  // Not truncated.
+  EXPECT_EQ(testing::ReadAllFrames(out).size(), 4u);
+
+  r = testing::RunProcess(kCli + " record " + source + " --out " + out +
+                          " --frames 2 --overwrite --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(testing::ReadAllFrames(out).size(), 2u);
+  EXPECT_FALSE(std::filesystem::exists(out + "/mono/000003.png"));  // No orphan image.
 }
 
 TEST(RecordCli, HelpAndBadArgumentsFailWithOneLine) {

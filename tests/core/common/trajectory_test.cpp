@@ -120,5 +120,52 @@ TEST(Trajectory, ReadsRealTumGroundTruth) {
   EXPECT_NEAR(t->poses()[0].world_from_sensor.translation().x(), 1.2334, 1e-9);
 }
 
+// A message of a failed read, or "" when the read succeeded.
+template <typename T>
+std::string ErrorOf(const StatusOr<T>& read) {
+  return read.ok() ? std::string() : read.status().message();
+}
+
+TEST(Trajectory, KittiPoseThatIsNotARotationIsParseErrorNamingLine) {
+  const std::string dir = testing::TempDir("traj_not_rotation");
+  const std::string identity = "1 0 0 0 0 1 0 0 0 0 1 0\n";
+  struct Case {
+    const char* line;
+    const char* says;
+  };
+  for (const Case& c : {
+           Case{"2 0 0 1 0 2 0 2 0 0 2 3\n", "R^T R differs from the identity by 3"},  // Scaled.
+           Case{"1 0 0 1 0 1 0 2 0 0 -1 3\n", "determinant is -1"},                    // Mirror.
+           Case{"1 0.5 0 1 0 1 0 2 0 0 1 3\n", "is not a rotation"},                   // Sheared.
+           Case{"1 0 0 1 0 1 0 2 0 0 inf 3\n", "not finite"},
+       }) {
+    std::ofstream(dir + "/p.txt") << identity << identity << c.line << identity;
+    const std::string error = ErrorOf(ReadKittiTrajectory(dir + "/p.txt"));
+    EXPECT_NE(error.find("p.txt line 3"), std::string::npos) << error;
+    EXPECT_NE(error.find(c.says), std::string::npos) << error;
+  }
+  // Printed with 7 significant digits (KITTI's own files) a rotation is still one.
+  std::ofstream(dir + "/p.txt") << "9.999995e-01 7.196824e-04 -6.870876e-04 -1.401751e-02 "
+                                   "-7.197717e-04 9.999997e-01 -1.295633e-04 -2.820321e-02 "
+                                   "6.869946e-04 1.300585e-04 9.999998e-01 1.198998e+00\n";
+  EXPECT_EQ(ErrorOf(ReadKittiTrajectory(dir + "/p.txt")), "");
+}
+
+TEST(Trajectory, TumQuaternionThatIsZeroOrNotUnitIsParseErrorNamingLine) {
+  const std::string dir = testing::TempDir("traj_quaternion");
+  for (const char* q : {"0 0 0 0", "0 0 0 2", "nan 0 0 1"}) {
+    std::ofstream(dir + "/t.txt") << "# t x y z qx qy qz qw\n1 0 0 0 0 0 0 1\n2 0 0 0 " << q
+                                  << "\n";
+    const std::string error = ErrorOf(ReadTumTrajectory(dir + "/t.txt"));
+    EXPECT_NE(error.find("t.txt line 3"), std::string::npos) << q << ": " << error;
+  }
+  std::ofstream(dir + "/t.txt") << "1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 0\n";
+  EXPECT_NE(ErrorOf(ReadTumTrajectory(dir + "/t.txt")).find("has length 0, not 1"),
+            std::string::npos);
+  // Four printed decimals (TUM's ground truth) normalise.
+  std::ofstream(dir + "/t.txt") << "1 0 0 0 0.7907 0.4393 -0.1770 -0.3879\n";
+  EXPECT_EQ(ErrorOf(ReadTumTrajectory(dir + "/t.txt")), "");
+}
+
 }  // namespace
 }  // namespace sightline

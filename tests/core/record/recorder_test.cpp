@@ -168,6 +168,48 @@ TEST(Recorder, EveryFrameIsWrittenOrCountedAsDroppedWhenTheQueueOverflows) {
   EXPECT_EQ(ExpectRecordedFramesMatch(pushed, recorded), static_cast<int>(recorded.size()));
 }
 
+// Records `count` noise frames into `out`; the recorder's status.
+Status RecordNoise(const std::string& out, int count, bool overwrite) {
+  RecorderOptions options;
+  options.block_when_full = true;
+  options.overwrite = overwrite;
+  StatusOr<std::unique_ptr<Recorder>> recorder = Recorder::Start(out, MonoInfo(), options);
+  if (!recorder.ok()) return recorder.status();
+  std::mt19937 random(5);
+  for (int i = 0; i < count; ++i) (*recorder)->Push(NoiseFrame(i, &random));
+  return (*recorder)->Stop();
+}
+
+TEST(Recorder, AFolderThatHoldsARecordingIsRefusedUnlessOverwriting) {
+  const std::string out = testing::TempDir("record_again") + "/rec";
+  ASSERT_TRUE(RecordNoise(out, 5, false).ok());
+  const std::string times_before = testing::ReadAll(out + "/mono/times.txt");
+  ASSERT_EQ(ReadAllFrames(out).size(), 5u);
+
+  // Again into the same folder: refused before anything is written.
+  const Status again = RecordNoise(out, 2, false);
+  EXPECT_EQ(again.code(), StatusCode::kFailedPrecondition);
+  EXPECT_NE(again.message().find("cannot record into " + out), std::string::npos)
+      << again.message();
+  EXPECT_NE(again.message().find("record.overwrite"), std::string::npos) << again.message();
+  EXPECT_EQ(testing::ReadAll(out + "/mono/times.txt"), times_before);
+  EXPECT_EQ(ReadAllFrames(out).size(), 5u);
+
+  // Any file counts, not only a recording; a file given as the folder is refused too.
+  const std::string other = testing::TempDir("record_other");
+  std::ofstream(other + "/notes.txt") << "mine\n";
+  EXPECT_EQ(RecordNoise(other, 1, false).code(), StatusCode::kFailedPrecondition);
+  EXPECT_EQ(RecordNoise(other + "/notes.txt", 1, false).code(), StatusCode::kFailedPrecondition);
+  EXPECT_EQ(testing::ReadAll(other + "/notes.txt"), "mine\n");
+
+  // Overwriting replaces the sensor folder as a whole: no image of the longer recording stays.
+  std::ofstream(out + "/keep.txt") << "kept\n";
+  ASSERT_TRUE(RecordNoise(out, 2, true).ok());
+  EXPECT_EQ(ReadAllFrames(out).size(), 2u);
+  EXPECT_FALSE(FileExists(out + "/mono/000004.png"));
+  EXPECT_EQ(testing::ReadAll(out + "/keep.txt"), "kept\n");
+}
+
 TEST(Recorder, FramesWithoutIncreasingTimesAreDroppedAndCounted) {
   const std::string out = testing::TempDir("record_order") + "/rec";
   RecorderOptions options;

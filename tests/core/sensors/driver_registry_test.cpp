@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "tests/support/test_data.h"
@@ -112,6 +113,37 @@ TEST(DriverRegistry, MissingRecordingNamesTheFile) {
 #else
   EXPECT_NE(source.status().message().find("not built"), std::string::npos);
 #endif
+}
+
+// A broken .oni said only "could not be opened:" (OpenNI2's own words); each now says why.
+TEST(DriverRegistry, ABrokenOniSaysWhatIsWrongWithIt) {
+  const std::string dir = testing::TempDir("broken_oni");
+  struct Case {
+    std::string path;
+    StatusCode code;
+    std::string says;
+  };
+  std::filesystem::create_directories(dir + "/folder.oni");
+  std::ofstream(dir + "/short.oni") << "NI10";
+  std::ofstream(dir + "/text.oni") << std::string(64, 'x');
+  std::filesystem::create_symlink("/dev/zero", dir + "/device.oni");
+  for (const Case& c : {
+           Case{dir + "/missing.oni", StatusCode::kNotFound, "missing.oni: no such file"},
+           Case{dir + "/folder.oni", StatusCode::kInvalidArgument, "folder.oni is a folder"},
+           Case{dir + "/device.oni", StatusCode::kInvalidArgument,
+                "device.oni is not a regular file"},
+           Case{dir + "/short.oni", StatusCode::kParseError,
+                "short.oni is too short for an ONI recording (4 bytes"},
+           Case{dir + "/text.oni", StatusCode::kParseError, "text.oni is not an ONI recording"},
+       }) {
+    const StatusOr<std::unique_ptr<Source>> source = OpenSource(c.path);
+    ASSERT_FALSE(source.ok()) << c.path;
+    EXPECT_EQ(source.status().code(), c.code) << source.status().ToString();
+    EXPECT_NE(source.status().message().find(c.says), std::string::npos)
+        << source.status().ToString();
+  }
+  const std::string real = testing::DataPath("oni_livingroom/test.oni");
+  if (!real.empty()) EXPECT_TRUE(CheckOniFile(real).ok()) << CheckOniFile(real).ToString();
 }
 
 }  // namespace
