@@ -1,6 +1,7 @@
 #include "app/sightline/recording_controller.h"
 
 #include <QAction>
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QTimer>
@@ -38,7 +39,19 @@ RecordingController::~RecordingController() {
 void RecordingController::ChooseFolderAndStart() {
   const QString dir =
       QFileDialog::getExistingDirectory(dialog_parent_, tr("Record into folder"), QDir::homePath());
-  if (!dir.isEmpty()) Start(dir);
+  if (!dir.isEmpty()) Start(FolderFor(dir));
+}
+
+QString RecordingController::FolderFor(const QString& chosen) {
+  const QDir dir(chosen);
+  if (!dir.exists() ||
+      dir.isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System)) {
+    return chosen;
+  }
+  const QString stamp = QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss");
+  QString name = "sightline-" + stamp;
+  for (int n = 2; dir.exists(name); ++n) name = QString("sightline-%1-%2").arg(stamp).arg(n);
+  return dir.filePath(name);
 }
 
 bool RecordingController::Start(const QString& dir) {

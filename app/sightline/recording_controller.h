@@ -39,6 +39,10 @@ class RecordingController : public QObject {
   // Starts recording the open source into `dir` (created). False, with Failed(), when nothing
   // is open or the folder cannot be written.
   bool Start(const QString& dir);
+  // Where Record... records when the operator picks `chosen`: the folder itself when it is empty
+  // or new, otherwise a new sub-folder "sightline-YYYYMMDD-HHMMSS" in it, so that nothing in a
+  // used folder is overwritten (Start refuses a folder that holds files).
+  static QString FolderFor(const QString& chosen);
   // Writes what is queued and closes the recording; emits Finished(). No-op when idle.
   void Stop();
   bool recording() const { return static_cast<bool>(recorder_); }

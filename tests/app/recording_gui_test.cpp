@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QSignalSpy>
 #include <QTest>
+#include <fstream>
 
 #include "app/sightline/live_status_widget.h"
 #include "app/sightline/main_window.h"
@@ -126,6 +127,39 @@ TEST(Recording, ARecordedDatasetIsCopiedWithoutDrops) {
   EXPECT_EQ(
       testing::ExpectRecordedFramesMatch(testing::ReadAllFrames(tum), testing::ReadAllFrames(out)),
       9);
+}
+
+// Record... into a folder that holds files (the home folder, an earlier recording) records into
+// a new sub-folder of it; the files there stay untouched and the recording reads back whole.
+TEST(Recording, RecordIntoAUsedFolderMakesANewSubFolderAndKeepsTheFiles) {
+  SIGHTLINE_REQUIRE_DATA(tum, "tum_fr1_desk");
+  const QString empty = QString::fromStdString(testing::TempDir("gui_record_empty"));
+  EXPECT_EQ(RecordingController::FolderFor(empty), empty);
+  EXPECT_EQ(RecordingController::FolderFor(empty + "/new"), empty + "/new");
+
+  const QString used = QString::fromStdString(testing::TempDir("gui_record_used"));
+  { std::ofstream(used.toStdString() + "/notes.txt") << "keep me\n"; }
+  const QString folder = RecordingController::FolderFor(used);
+  ASSERT_NE(folder, used);
+  EXPECT_EQ(QFileInfo(folder).absolutePath(), QFileInfo(used).absoluteFilePath());
+  EXPECT_TRUE(QFileInfo(folder).fileName().startsWith("sightline-"));
+
+  MainWindow window;
+  window.show();
+  QSignalSpy opened(&window, &MainWindow::DatasetOpened);
+  window.OpenPath(QString::fromStdString(tum));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 20000));
+  ASSERT_TRUE(window.recording()->Start(folder));
+  // A second pick of the same folder gets another sub-folder, not the running recording's.
+  EXPECT_NE(RecordingController::FolderFor(used), folder);
+  QSignalSpy ended(window.playback(), &PlaybackController::EndOfStream);
+  window.playback()->SetSpeed(0);
+  window.playback()->Play();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return ended.count() >= 1; }, 30000));
+  window.recording()->Stop();
+  EXPECT_EQ(window.recording()->stats().frames_written, 9u);
+  EXPECT_EQ(testing::ReadAll(used.toStdString() + "/notes.txt"), "keep me\n");
+  EXPECT_EQ(testing::ReadAllFrames(folder.toStdString()).size(), 9u);
 }
 
 TEST(Recording, NothingOpenIsReportedNotFatal) {
