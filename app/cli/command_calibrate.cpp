@@ -119,6 +119,7 @@ int HandEye(const std::vector<std::string>& in, const std::optional<std::string>
   const std::vector<Eigen::Isometry3d> arm =
       ArmPosesForViews(*poses, detections->views, c.settings.hand_eye.max_time_offset_s, &kept);
   std::vector<BoardView> views;
+  views.reserve(kept.size());
   for (int i : kept) views.push_back(detections->views[i]);
   std::printf("board found in %zu of %d views, %zu paired with an arm pose within %.3f s\n",
               detections->views.size(), detections->inputs, views.size(),

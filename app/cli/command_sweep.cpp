@@ -54,6 +54,7 @@ cv::Mat DrawSweep(const std::vector<SubsampleRow>& rows) {
   canvas.DrawAxes("subsampling factor k", "length error [%]");
   canvas.DrawTitle("stereo-vo: path length error per subsampling factor");
   std::vector<Eigen::Vector2d> points;
+  points.reserve(rows.size());
   for (const SubsampleRow& r : rows) points.emplace_back(r.factor, r.length_error_pct);
   canvas.DrawPolyline(points, PlotCanvas::kRed);
   for (const Eigen::Vector2d& p : points) canvas.DrawMarker(p, PlotCanvas::kRed, true);

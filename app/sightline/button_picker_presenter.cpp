@@ -17,7 +17,7 @@ namespace sightline {
 namespace {
 
 // The "button" entry whose declared options take `defaults` ("key=value") at once.
-PipelineInfo WithDefaults(PipelineInfo info, std::vector<std::string> defaults) {
+PipelineInfo WithDefaults(PipelineInfo info, const std::vector<std::string>& defaults) {
   if (defaults.empty()) return info;
   auto declare = info.declare_options;
   info.declare_options = [declare, defaults](OptionSet* set) {
@@ -102,7 +102,7 @@ ButtonPickerPresenter::ButtonPickerPresenter(std::shared_ptr<ButtonCommands> com
                                              QObject* parent)
     : MonoSlamPresenter(
           WithDefaults(ButtonPipelineInfo(commands, mono_commands), std::move(option_defaults)),
-          mono_commands, parent),
+          std::move(mono_commands), parent),
       commands_(std::move(commands)) {}
 
 const char* ButtonPickerPresenter::TitleSource() const {

@@ -209,7 +209,7 @@ void CalibrationDialog::StartFromForm() {
   });
 }
 
-void CalibrationDialog::Show(std::shared_ptr<const StatusOr<CalibrationOutcome>> result) {
+void CalibrationDialog::Show(const std::shared_ptr<const StatusOr<CalibrationOutcome>>& result) {
   run_button_->setEnabled(true);
   progress_->setRange(0, 1);
   progress_->setValue(1);

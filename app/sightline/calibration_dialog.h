@@ -61,7 +61,7 @@ class CalibrationDialog : public QDialog {
  private:
   void BuildUi();
   void StartFromForm();
-  void Show(std::shared_ptr<const StatusOr<CalibrationOutcome>> result);
+  void Show(const std::shared_ptr<const StatusOr<CalibrationOutcome>>& result);
   void FillTable();
   void ShowView(int row);
   void ShowCoverage();

@@ -168,7 +168,7 @@ void EvaluationPanel::Evaluate(const QString& estimate_path, const QString& grou
   });
 }
 
-void EvaluationPanel::Show(std::shared_ptr<const EvaluationOutcome> outcome) {
+void EvaluationPanel::Show(const std::shared_ptr<const EvaluationOutcome>& outcome) {
   run_button_->setEnabled(true);
   figures_->removeRows(0, figures_->rowCount());
   if (!outcome->status.ok()) {

@@ -45,7 +45,7 @@ class EvaluationPanel : public QWidget {
   void Failed(const QString& message);
 
  private:
-  void Show(std::shared_ptr<const EvaluationOutcome> outcome);
+  void Show(const std::shared_ptr<const EvaluationOutcome>& outcome);
   QString Browse(const QString& title);
 
   QLineEdit* estimate_edit_ = nullptr;

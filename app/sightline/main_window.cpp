@@ -391,7 +391,7 @@ void MainWindow::OnOpened(const QString& path) {
   emit DatasetOpened(path);
 }
 
-void MainWindow::ShowFrame(std::shared_ptr<const PlaybackResult> result) {
+void MainWindow::ShowFrame(const std::shared_ptr<const PlaybackResult>& result) {
   if (!result) return;
   if (!result->primary_image.empty()) {
     primary_view_->SetImage(result->primary_image);

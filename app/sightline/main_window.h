@@ -97,7 +97,7 @@ class MainWindow : public QMainWindow {
   void BuildResults(QMenu* file);
   void EvaluateSavedRun(const QString& folder);
   void ConnectPlayback();
-  void ShowFrame(std::shared_ptr<const PlaybackResult> result);
+  void ShowFrame(const std::shared_ptr<const PlaybackResult>& result);
   void OnOpened(const QString& path);
   void OnOptionsChanged(const OptionSet& options);
   void ShowWelcome();

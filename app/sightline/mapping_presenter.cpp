@@ -204,13 +204,13 @@ void MappingPresenter::RecalibrateFloor() {
 
 Status MappingPresenter::SaveFloor(const QString& path) {
   if (!floor_) {
-    const Status none = FailedPrecondition("no floor calibration yet: play a few frames first");
+    Status none = FailedPrecondition("no floor calibration yet: play a few frames first");
     emit Message(2, QString::fromStdString(none.message()));
     return none;
   }
   FloorCalibration calibration;
   calibration.plane = *floor_;
-  const Status written = WriteFloorCalibration(calibration, path.toStdString());
+  Status written = WriteFloorCalibration(calibration, path.toStdString());
   emit Message(written.ok() ? 0 : 2, written.ok()
                                          ? tr("Saved the floor calibration to %1").arg(path)
                                          : QString::fromStdString(written.ToString()));

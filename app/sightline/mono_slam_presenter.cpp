@@ -115,7 +115,7 @@ MonoSlamPresenter::MonoSlamPresenter(QObject* parent)
     : MonoSlamPresenter(std::make_shared<MonoSlamCommands>(), parent) {}
 
 MonoSlamPresenter::MonoSlamPresenter(std::shared_ptr<MonoSlamCommands> commands, QObject* parent)
-    : MonoSlamPresenter(MonoSlamPipelineInfo(commands), commands, parent) {}
+    : MonoSlamPresenter(MonoSlamPipelineInfo(commands), std::move(commands), parent) {}
 
 MonoSlamPresenter::MonoSlamPresenter(PipelineInfo info, std::shared_ptr<MonoSlamCommands> commands,
                                      QObject* parent)

@@ -9,9 +9,12 @@
 namespace sightline {
 
 StatisticsPresenter::StatisticsPresenter(PipelineInfo info, QObject* parent)
-    : PipelinePresenter(info, parent), title_(info.title.empty() ? info.name : info.title) {
-  if (info.create) {
-    if (std::unique_ptr<Pipeline> pipeline = info.create()) statistics_ = pipeline->Statistics();
+    : PipelinePresenter(std::move(info), parent),
+      title_(this->info().title.empty() ? this->info().name : this->info().title) {
+  if (this->info().create) {
+    if (std::unique_ptr<Pipeline> pipeline = this->info().create()) {
+      statistics_ = pipeline->Statistics();
+    }
   }
 }
 

@@ -15,6 +15,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
+#include <utility>
 
 #include "core/button/button_model.h"
 #include "core/common/status.h"
@@ -67,7 +68,7 @@ struct ButtonDetectorOptions {
 //   if (model.status().code() == StatusCode::kNotFound) AskAgain(model.status().message());
 class ButtonDetector {
  public:
-  explicit ButtonDetector(ButtonDetectorOptions options = {}) : options_(options) {}
+  explicit ButtonDetector(ButtonDetectorOptions options = {}) : options_(std::move(options)) {}
 
   // The button under (or nearest) the tap. NotFound ("no button here ...") when no compact
   // region lies within the limit, or when it has too few features to track; InvalidArgument

@@ -168,6 +168,7 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
       input.camera.Unproject(input.button_px.x(), input.button_px.y(), 1.0).normalized();
   const std::vector<int> inlier_ids = RansacPlane(near, ray, options_);
   std::vector<Eigen::Vector3d> inliers;
+  inliers.reserve(inlier_ids.size());
   for (int i : inlier_ids) inliers.push_back(near[i]);
   Plane plane = FitPlane(inliers);
   double sum2 = 0;
@@ -178,6 +179,7 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   double face_sigma = 0;
   if (!face_alone && int(face.size()) >= options_.min_face_points) {
     std::vector<double> signed_distance;
+    signed_distance.reserve(face.size());
     for (const auto& x : face) signed_distance.push_back(plane.normal.dot(x) + plane.offset);
     std::nth_element(signed_distance.begin(), signed_distance.begin() + signed_distance.size() / 2,
                      signed_distance.end());

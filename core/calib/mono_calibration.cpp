@@ -115,6 +115,7 @@ Fit Calibrate(const std::vector<BoardView>& views, const std::vector<int>& used,
   const std::vector<cv::Point3f> object = board.ObjectPoints();
   std::vector<std::vector<cv::Point3f>> objects(used.size(), object);
   std::vector<std::vector<cv::Point2f>> images;
+  images.reserve(used.size());
   for (int i : used) images.push_back(views[i].corners);
   Fit fit;
   fit.k = cv::Mat::eye(3, 3, CV_64F);

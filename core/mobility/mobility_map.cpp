@@ -115,7 +115,8 @@ StatusOr<PinholeCamera> EstimateIntrinsics(const PointCloud& cloud) {
     const Eigen::Vector3f& p = cloud.points[i];
     if (!p.allFinite() || p.z() <= 0) continue;
     const double a = p.x() / p.z(), b = p.y() / p.z();
-    const double u = static_cast<double>(i % cloud.width), v = static_cast<double>(i / cloud.width);
+    const size_t column = i % cloud.width, row = i / cloud.width;
+    const double u = static_cast<double>(column), v = static_cast<double>(row);
     au += Eigen::Vector2d(a, 1) * Eigen::Vector2d(a, 1).transpose();
     bu += Eigen::Vector2d(a, 1) * u;
     av += Eigen::Vector2d(b, 1) * Eigen::Vector2d(b, 1).transpose();

@@ -28,7 +28,7 @@ Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
 
 }  // namespace
 
-KeyFrameStats LocalMapper::ProcessKeyFrame(std::shared_ptr<KeyFrame> keyframe) {
+KeyFrameStats LocalMapper::ProcessKeyFrame(const std::shared_ptr<KeyFrame>& keyframe) {
   KeyFrameStats stats;
   const double start = HostTimeS();
   KeyFrame* current = keyframe.get();

@@ -36,7 +36,7 @@ class LocalMapper {
               SlamMap* map, std::mutex* map_mutex);
 
   // Adds `keyframe` (its point_ids say which points tracking matched) and maps with it.
-  KeyFrameStats ProcessKeyFrame(std::shared_ptr<KeyFrame> keyframe);
+  KeyFrameStats ProcessKeyFrame(const std::shared_ptr<KeyFrame>& keyframe);
 
   // Bundle adjustment of every keyframe and point with the first keyframe fixed (used after
   // initialisation), then rescaled so the first two keyframes are `baseline` apart.

@@ -124,7 +124,7 @@ class OptionTable {
     return a.empty() ? b : a + "." + b;
   }
   OptionTable& Add(const std::string& key, OptionType type, const std::string& unit, double min,
-                   double max, double step, std::vector<std::string> choices,
+                   double max, double step, const std::vector<std::string>& choices,
                    const std::string& description, std::function<OptionValue(const T&)> get,
                    std::function<void(T*, const OptionValue&)> set) {
     Entry e;

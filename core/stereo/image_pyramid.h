@@ -15,9 +15,9 @@ struct ImagePyramid {
 
   bool empty() const { return levels.empty(); }
   // The image at level l (0 = full resolution).
-  const cv::Mat& Level(int l) const { return levels[static_cast<size_t>(2 * l)]; }
+  const cv::Mat& Level(int l) const { return levels[2 * static_cast<size_t>(l)]; }
   // The Scharr derivatives (dx, dy; CV_16SC2) of level l.
-  const cv::Mat& Derivatives(int l) const { return levels[static_cast<size_t>(2 * l + 1)]; }
+  const cv::Mat& Derivatives(int l) const { return levels[2 * static_cast<size_t>(l) + 1]; }
 };
 
 // Builds levels 0..max_level for KLT windows up to window_px.

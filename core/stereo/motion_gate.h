@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "core/options/option_table.h"
 
@@ -50,7 +51,7 @@ struct GateDecision {
 //   world_from_camera = world_from_camera * d.current_from_previous.inverse();
 class MotionGate {
  public:
-  explicit MotionGate(MotionGateOptions options = {}) : options_(options) {}
+  explicit MotionGate(MotionGateOptions options = {}) : options_(std::move(options)) {}
 
   // Decides over a candidate spanning dt_s seconds (<= 0: unknown, speed checks skipped).
   GateDecision Check(const MotionCandidate& candidate, double dt_s);

@@ -81,7 +81,7 @@ void SetMotionStats(const Eigen::Isometry3d& current_from_previous, FrameStats* 
 
 }  // namespace
 
-StereoOdometry::StereoOdometry(StereoOdometryOptions options)
+StereoOdometry::StereoOdometry(const StereoOdometryOptions& options)
     : options_(options),
       rectifier_(options.rectify),
       tracker_(options.tracking),

@@ -64,7 +64,7 @@ struct StereoOdometryOptions {
 // stats say why and the gate holds the pose.
 class StereoOdometry {
  public:
-  explicit StereoOdometry(StereoOdometryOptions options = {});
+  explicit StereoOdometry(const StereoOdometryOptions& options = {});
 
   // Checks the options and sets up rectification. Fails naming the bad option or calibration field.
   Status Configure(const StereoRig& rig);
