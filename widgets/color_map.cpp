@@ -1,6 +1,7 @@
 #include "widgets/color_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -31,7 +32,7 @@ Rgb8 TurboColor(double value, double low, double high) {
   const double span = high - low;
   double t = span > 0 ? (value - low) / span : 0.5;
   t = std::clamp(t, 0.0, 1.0);
-  return TurboColorMap()[static_cast<int>(t * 255.0 + 0.5)];
+  return TurboColorMap()[static_cast<size_t>(std::lround(t * 255.0))];
 }
 
 }  // namespace sightline

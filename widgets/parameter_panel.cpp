@@ -157,7 +157,7 @@ void ParameterPanel::ResetAll() {
 }
 
 Status ParameterPanel::LoadProfile(const QString& path) {
-  const Status status = options_.LoadYaml(path.toStdString());  // All or nothing.
+  Status status = options_.LoadYaml(path.toStdString());  // All or nothing.
   if (!status.ok()) {
     ShowMessage(QString::fromStdString(status.ToString()), true);
     return status;
@@ -169,9 +169,8 @@ Status ParameterPanel::LoadProfile(const QString& path) {
 }
 
 Status ParameterPanel::SaveProfile(const QString& path) {
-  const Status status =
-      (profile_exclusion_.empty() ? options_ : options_.Without(profile_exclusion_))
-          .SaveYaml(path.toStdString());
+  Status status = (profile_exclusion_.empty() ? options_ : options_.Without(profile_exclusion_))
+                      .SaveYaml(path.toStdString());
   if (!status.ok()) {
     ShowMessage(QString::fromStdString(status.ToString()), true);
   } else {

@@ -71,7 +71,7 @@ struct SceneView::Impl {
 
   static void ApplyPose(vtkActor* actor, const Eigen::Isometry3d& world_from_layer) {
     vtkNew<vtkMatrix4x4> matrix;
-    const Eigen::Matrix4d m = world_from_layer.matrix();
+    const Eigen::Matrix4d& m = world_from_layer.matrix();
     for (int r = 0; r < 4; ++r) {
       for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, m(r, c));
     }
@@ -90,11 +90,11 @@ struct SceneView::Impl {
   }
 
   // Puts `actor` in place of the layer's previous one, keeping its pose and visibility.
-  void Replace(const std::string& name, vtkSmartPointer<vtkActor> actor) {
+  void Replace(const std::string& name, const vtkSmartPointer<vtkActor>& actor) {
     const bool was_empty = !ShowsGeometry();
     Layer& layer = layers[name];
     if (layer.actor) renderer->RemoveActor(layer.actor);
-    layer.actor = std::move(actor);
+    layer.actor = actor;
     ApplyPose(layer.actor, layer.world_from_layer);
     layer.actor->SetVisibility(layer.visible);
     renderer->AddActor(layer.actor);
@@ -137,8 +137,9 @@ SceneView::SceneView(QWidget* parent) : VtkGlWidget(parent), impl_(std::make_uni
 
 SceneView::~SceneView() = default;
 
-void SceneView::SetPointCloud(const std::string& layer, std::shared_ptr<const PointCloud> cloud,
-                              ColorMode mode, double point_size_px) {
+void SceneView::SetPointCloud(const std::string& layer,
+                              const std::shared_ptr<const PointCloud>& cloud, ColorMode mode,
+                              double point_size_px) {
   PointCloud empty;
   const PointCloud& points = cloud ? *cloud : empty;
   CloudColoring coloring;

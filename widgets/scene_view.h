@@ -50,7 +50,7 @@ class SceneView : public VtkGlWidget {
   ~SceneView() override;
 
   // Shows a point cloud; NaN points are skipped. The cloud is converted at once and not kept.
-  void SetPointCloud(const std::string& layer, std::shared_ptr<const PointCloud> cloud,
+  void SetPointCloud(const std::string& layer, const std::shared_ptr<const PointCloud>& cloud,
                      ColorMode mode = ColorMode::kAuto, double point_size_px = 2.0);
   // Shows line segments in one colour.
   void SetLines(const std::string& layer, const std::vector<Segment>& segments, QColor color,

@@ -155,8 +155,9 @@ void TimeSeriesPlot::paintEvent(QPaintEvent*) {
   const double column = width() / 3.0;
   for (size_t i = 0; i < series_.size(); ++i) {
     const Series& s = series_[i];
+    const size_t row = i / 3;  // Three legend entries per line.
     const QPointF at(4 + column * static_cast<double>(i % 3),
-                     area.bottom() + line * (1 + static_cast<double>(i / 3)) + 2);
+                     area.bottom() + line * (1 + static_cast<double>(row)) + 2);
     painter.setPen(s.color);
     const QString value = s.samples.empty() ? QString("-") : Compact(s.samples.back().y());
     painter.drawText(at, s.name + " " + value);

@@ -19,6 +19,7 @@
 #include <QScreen>
 #include <QWheelEvent>
 #include <QtDebug>
+#include <cmath>
 
 namespace sightline {
 namespace {
@@ -256,14 +257,14 @@ void VtkGlWidget::initializeGL() {
 
 void VtkGlWidget::resizeGL(int w, int h) {
   const double dpr = devicePixelRatioF();
-  const int device_w = static_cast<int>(w * dpr + 0.5);
-  const int device_h = static_cast<int>(h * dpr + 0.5);
+  const int device_w = static_cast<int>(std::lround(w * dpr));
+  const int device_h = static_cast<int>(std::lround(h * dpr));
   impl_->interactor->UpdateSize(device_w, device_h);  // Also resizes the render window.
   if (const QScreen* s = screen()) {
     impl_->window->SetScreenSize(static_cast<int>(s->size().width() * dpr),
                                  static_cast<int>(s->size().height() * dpr));
   }
-  impl_->window->SetDPI(static_cast<int>(72 * dpr + 0.5));
+  impl_->window->SetDPI(static_cast<int>(std::lround(72 * dpr)));
   impl_->render_pending = true;
 }
 
@@ -295,8 +296,8 @@ void VtkGlWidget::paintGL() {
     gl->glDisable(GL_SCISSOR_TEST);
   }
   const double dpr = devicePixelRatioF();
-  const int target_w = static_cast<int>(width() * dpr + 0.5);
-  const int target_h = static_cast<int>(height() * dpr + 0.5);
+  const int target_w = static_cast<int>(std::lround(width() * dpr));
+  const int target_h = static_cast<int>(std::lround(height() * dpr));
   int* source_size = window->GetRenderFramebuffer()->GetLastSize();
   window->BlitDisplayFramebuffer(0, 0, 0, source_size[0], source_size[1], 0, 0, target_w, target_h,
                                  GL_COLOR_BUFFER_BIT, GL_LINEAR);

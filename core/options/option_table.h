@@ -63,9 +63,9 @@ class OptionTable {
         [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
   }
   OptionTable& Choice(const std::string& key, std::string T::*field,
-                      std::vector<std::string> choices, const std::string& description) {
+                      const std::vector<std::string>& choices, const std::string& description) {
     return Add(
-        key, OptionType::kChoice, "", 0, 0, 1, std::move(choices), description,
+        key, OptionType::kChoice, "", 0, 0, 1, choices, description,
         [field](const T& o) { return OptionValue(o.*field); },
         [field](T* o, const OptionValue& v) { o->*field = std::get<std::string>(v); });
   }
@@ -134,7 +134,7 @@ class OptionTable {
     e.spec.min = min;
     e.spec.max = max;
     e.spec.step = step;
-    e.spec.choices = std::move(choices);
+    e.spec.choices = choices;
     e.spec.description = description;
     e.get = std::move(get);
     e.set = std::move(set);

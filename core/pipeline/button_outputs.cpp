@@ -44,6 +44,7 @@ StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path) {
     b.visible[frame] = v[7] != 0 && std::isfinite(v[2]) && std::isfinite(v[3]);
   }
   std::vector<TrueButton> out;
+  out.reserve(buttons.size());
   for (auto& [id, b] : buttons) out.push_back(std::move(b));
   return out;
 }

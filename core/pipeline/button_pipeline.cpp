@@ -625,8 +625,8 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   return result;
 }
 
-PipelineInfo ButtonPipelineInfo(std::shared_ptr<ButtonCommands> commands,
-                                std::shared_ptr<MonoSlamCommands> mono_commands) {
+PipelineInfo ButtonPipelineInfo(const std::shared_ptr<ButtonCommands>& commands,
+                                const std::shared_ptr<MonoSlamCommands>& mono_commands) {
   PipelineInfo info;
   info.name = "button";
   info.title = "Button picker (monocular SLAM)";

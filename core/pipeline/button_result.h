@@ -124,7 +124,7 @@ const StatisticTable& ButtonStatistics();
 // The registry entry of "button". Without `commands` every object is headless: the tap comes
 // from button.run.tap (--tap) and is confirmed at once. With them (the GUI's operator panel) the
 // operator's commands drive it; `mono_commands` carry Reset map / Pause mapping.
-PipelineInfo ButtonPipelineInfo(std::shared_ptr<ButtonCommands> commands = nullptr,
-                                std::shared_ptr<MonoSlamCommands> mono_commands = nullptr);
+PipelineInfo ButtonPipelineInfo(const std::shared_ptr<ButtonCommands>& commands = nullptr,
+                                const std::shared_ptr<MonoSlamCommands>& mono_commands = nullptr);
 
 }  // namespace sightline

@@ -139,7 +139,7 @@ Status MappingPipeline::State::StartRun(bool keep_floor) {
 Status MappingPipeline::State::StartChain() {
   record.Clear();
   chain = std::make_unique<MappingFrameProcessor>(options);
-  const Status configured = chain->Configure(floor->plane, recording.camera);
+  Status configured = chain->Configure(floor->plane, recording.camera);
   if (!configured.ok()) ForgetFloor();  // The next frames calibrate a usable one.
   return configured;
 }
@@ -245,7 +245,7 @@ Status MappingPipeline::Configure(const OptionSet& options) {
   std::swap(s.run, run);
   s.configured = true;
   if (!s.source) return Status::Ok();
-  const Status started = s.StartRun(/*keep_floor=*/true);
+  Status started = s.StartRun(/*keep_floor=*/true);
   if (started.ok()) return started;
   std::swap(s.options, mapping);  // The previous options stay in force.
   std::swap(s.run, run);
@@ -263,7 +263,7 @@ Status MappingPipeline::Open(const PipelineSource& source) {
   s.source = source;
   s.floor.reset();
   s.floor_log.clear();
-  const Status started = s.StartRun(/*keep_floor=*/false);
+  Status started = s.StartRun(/*keep_floor=*/false);
   if (!started.ok()) s.source.reset();
   return started;
 }
@@ -312,7 +312,7 @@ Status DeclareMappingOptions(OptionSet* options) {
   return options->Declare(MappingRunOptions::Describe());
 }
 
-PipelineInfo MappingPipelineInfo(std::shared_ptr<const MappingRequests> requests) {
+PipelineInfo MappingPipelineInfo(const std::shared_ptr<const MappingRequests>& requests) {
   PipelineInfo info;
   info.name = "mapping";
   info.title = "Indoor mapping (Manhattan walls)";

@@ -72,6 +72,6 @@ class MappingPipeline : public Pipeline {
 Status DeclareMappingOptions(OptionSet* options);
 
 // The pipeline's registry entry; its objects share `requests` when given.
-PipelineInfo MappingPipelineInfo(std::shared_ptr<const MappingRequests> requests = nullptr);
+PipelineInfo MappingPipelineInfo(const std::shared_ptr<const MappingRequests>& requests = nullptr);
 
 }  // namespace sightline

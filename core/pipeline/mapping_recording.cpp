@@ -33,7 +33,7 @@ std::optional<double> CameraForwardFromSceneYaml(const std::string& path) {
 std::string MappingRecordingRoot(const std::string& path) {
   namespace fs = std::filesystem;
   if (!DetectDataset(path)) return path;  // A recording with sensor sub-folders.
-  const std::string parent = fs::path(path).lexically_normal().parent_path().string();
+  std::string parent = fs::path(path).lexically_normal().parent_path().string();
   for (const char* name : {"odometry.txt", "walls.csv", "people.csv", "scene.yaml"}) {
     if (!parent.empty() && FileExists(JoinPath(parent, name))) return parent;
   }

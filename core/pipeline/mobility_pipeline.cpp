@@ -55,7 +55,7 @@ namespace {
 std::string FindRegionsFile(const std::string& source_path) {
   for (const std::string& folder :
        {source_path, std::filesystem::path(source_path).parent_path().string()}) {
-    const std::string path = JoinPath(folder, "regions.csv");
+    std::string path = JoinPath(folder, "regions.csv");
     if (FileExists(path)) return path;
   }
   return "";

@@ -49,7 +49,7 @@ OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
 }
 
 std::string FindBeside(const std::string& path, const std::string& name) {
-  for (fs::path dir : {fs::path(path), fs::path(path).parent_path()}) {
+  for (const fs::path& dir : {fs::path(path), fs::path(path).parent_path()}) {
     if (fs::exists(dir / name)) return (dir / name).string();
   }
   return "";

@@ -355,7 +355,7 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
   return pipeline.Summary();
 }
 
-PipelineInfo MonoSlamPipelineInfo(std::shared_ptr<MonoSlamCommands> commands) {
+PipelineInfo MonoSlamPipelineInfo(const std::shared_ptr<MonoSlamCommands>& commands) {
   PipelineInfo info;
   info.name = "mono-slam";
   info.title = "Monocular SLAM (PTAM point cloud)";

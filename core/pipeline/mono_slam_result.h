@@ -45,6 +45,6 @@ const StatisticTable& MonoSlamStatistics();
 
 // The registry entry of "mono-slam"; `commands` reach every pipeline object it creates (the
 // GUI's Reset map and Pause mapping).
-PipelineInfo MonoSlamPipelineInfo(std::shared_ptr<MonoSlamCommands> commands = nullptr);
+PipelineInfo MonoSlamPipelineInfo(const std::shared_ptr<MonoSlamCommands>& commands = nullptr);
 
 }  // namespace sightline

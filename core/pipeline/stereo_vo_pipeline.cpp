@@ -128,7 +128,7 @@ Status StereoVoPipeline::Configure(const StereoOdometryOptions& odometry,
   run_options_ = run;
   if (!source_info_) return Status::Ok();
   // Opened: the odometry starts over with the new options (the old one stays on an error).
-  const Status started = StartOdometry();
+  Status started = StartOdometry();
   if (!started.ok()) {
     odometry_options_ = previous_odometry;
     run_options_ = previous_run;
@@ -149,7 +149,7 @@ Status StereoVoPipeline::Open(const PipelineSource& source) {
   }
   run_ = StereoVoRun();
   run_.dataset_format = info.format;
-  const Status started = StartOdometry();  // Also starts the run.
+  Status started = StartOdometry();  // Also starts the run.
   if (!started.ok()) {
     source_info_.reset();
     odometry_.reset();

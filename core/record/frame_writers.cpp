@@ -261,7 +261,7 @@ class EurocStereoWriter : public FrameWriter {
     yaml.precision(17);
     yaml << "%YAML:1.0\nsensor_type: camera\ncomment: Sightline recording\nT_BS:\n"
          << "  cols: 4\n  rows: 4\n  data: [";
-    const Eigen::Matrix4d m = body_from_cam.matrix();
+    const Eigen::Matrix4d& m = body_from_cam.matrix();
     for (int i = 0; i < 16; ++i) yaml << (i ? ", " : "") << m(i / 4, i % 4);
     yaml << "]\n";
     if (rate_hz > 0) yaml << "rate_hz: " << rate_hz << "\n";

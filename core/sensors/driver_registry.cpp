@@ -57,7 +57,7 @@ bool OpenNi2IsRecording(const std::string& path) {
                                    const std::string& package) {
   const Status off = Unavailable("not built: Sightline was configured with " + option +
                                  "=OFF (install " + package + " and reconfigure)");
-  d->available = [off] { return off; };
+  d->available = [off] { return off; };  // NOLINT(performance-no-automatic-move): called often
   d->enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
   d->create = [off](const std::string&, const OptionSet&) -> StatusOr<std::unique_ptr<Source>> {
     return off;

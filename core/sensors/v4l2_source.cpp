@@ -72,7 +72,7 @@ OptionTable<V4l2Options> V4l2Options::Describe() {
       .Nested(&V4l2Options::live, LiveSourceOptions::Describe());
 }
 
-V4l2Source::V4l2Source(std::string device, V4l2Options options)
+V4l2Source::V4l2Source(const std::string& device, V4l2Options options)
     : LiveSource(options.live), path_(DevicePath(device)), options_(std::move(options)) {}
 
 V4l2Source::~V4l2Source() { Close(); }

@@ -40,7 +40,7 @@ struct V4l2Options {
 class V4l2Source : public LiveSource {
  public:
   // `device` is a device node ("/dev/video2") or an index ("2").
-  V4l2Source(std::string device, V4l2Options options);
+  V4l2Source(const std::string& device, V4l2Options options);
   ~V4l2Source() override;
 
   // Ok when at least one /dev/video* node exists; else kUnavailable saying so.

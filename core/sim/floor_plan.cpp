@@ -29,7 +29,7 @@ std::vector<WallLine> BoundaryWalls(const std::vector<FreeRect>& rects) {
   };
   std::vector<WallLine> walls;
   // Appends the edge, merging it with the previous one when it continues it.
-  auto add = [&](Eigen::Vector2d start, Eigen::Vector2d end) {
+  auto add = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& end) {
     if (!walls.empty()) {
       WallLine& last = walls.back();
       const Eigen::Vector2d d0 = (last.end - last.start).normalized();

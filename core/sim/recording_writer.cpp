@@ -52,7 +52,7 @@ std::string TumLine(double time_s, const Eigen::Isometry3d& pose) {
 }
 
 std::string KittiLine(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix4d m = pose.matrix();
+  const Eigen::Matrix4d& m = pose.matrix();
   std::string line;
   char number[40];
   for (int r = 0; r < 3; ++r) {

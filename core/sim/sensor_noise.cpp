@@ -39,9 +39,8 @@ void ApplyDepthModel(const RenderedView& view, const RgbdSensorOptions& sensor,
         continue;
       }
       float d = fb / z + sigma_d * n;
-      // Round to the nearest step (d > 0 here; a cast is much cheaper than std::round).
-      if (step > 0 && d > 0)
-        d = static_cast<float>(static_cast<int32_t>(d * inverse_step + 0.5f)) * step;
+      // Round to the nearest step (lrint is one instruction, unlike std::round).
+      if (step > 0 && d > 0) d = static_cast<float>(std::lrint(d * inverse_step)) * step;
       out[u] = d > 0 ? fb / d : nan;
     }
   }

@@ -100,7 +100,7 @@ StatusOr<Scene> BuildTerrain(const TerrainOptions& o, uint64_t seed) {
   Scene scene("terrain");
   scene.background = {0.6f, 0.66f, 0.72f};
   int region = 0;
-  auto material = [&](Eigen::Vector3f color, Eigen::Vector3f accent, float scale,
+  auto material = [&](const Eigen::Vector3f& color, const Eigen::Vector3f& accent, float scale,
                       float density = 0.6f) {
     return scene.AddMaterial({TextureKind::kSpeckle, JitterColor(rng, color, 0.04), accent, scale,
                               NextSeed(rng), density});

@@ -226,19 +226,19 @@ class CornerSearch {
   }
 
  private:
-  std::vector<cv::Point2f>& Bucket(int bx, int by) {
-    return in_bucket_[static_cast<size_t>(by * cols_ + bx)];
+  size_t Cell(int bx, int by) const {
+    return static_cast<size_t>(by) * static_cast<size_t>(cols_) + static_cast<size_t>(bx);
   }
+  std::vector<cv::Point2f>& Bucket(int bx, int by) { return in_bucket_[Cell(bx, by)]; }
   bool Needy(int bx, int by) const {
-    return static_cast<int>(in_bucket_[static_cast<size_t>(by * cols_ + bx)].size()) <
-           refill_below_;
+    return static_cast<int>(in_bucket_[Cell(bx, by)].size()) < refill_below_;
   }
 
   // No corner in the 3 x 3 buckets around (bx, by) closer to p than min_distance_px.
   bool FarFrom(const cv::Point2f& p, int bx, int by) const {
     for (int y = std::max(0, by - 1); y <= std::min(rows_ - 1, by + 1); ++y) {
       for (int x = std::max(0, bx - 1); x <= std::min(cols_ - 1, bx + 1); ++x) {
-        for (const cv::Point2f& q : in_bucket_[static_cast<size_t>(y * cols_ + x)]) {
+        for (const cv::Point2f& q : in_bucket_[Cell(x, y)]) {
           const cv::Point2f d = p - q;
           if (d.x * d.x + d.y * d.y < min_d2_) return false;
         }

@@ -146,17 +146,22 @@ bool PatchWarp(const RectifiedStereoCamera& camera, const TrackAnchor& anchor,
 // The anchor's patch (half-size h) resampled through `inverse` (current to anchor pixels) into
 // the current image's pixel grid, with one pixel of border for the gradients: (2h + 3)^2 values
 // into *templ. False when it leaves the anchor image.
+// Index of offset (i, j) in a template of half-size h with a one-pixel border (side 2h + 3).
+size_t TemplateIndex(int i, int j, int h) {
+  const size_t side = 2 * static_cast<size_t>(h) + 3;
+  return static_cast<size_t>(j + h + 1) * side + static_cast<size_t>(i + h + 1);
+}
+
 bool ResampleTemplate(const cv::Mat& anchor_image, const cv::Point2f& at,
                       const Eigen::Matrix2d& inverse, int h, std::vector<float>* templ) {
   const int side = 2 * h + 3;
-  templ->assign(static_cast<size_t>(side * side), 0.f);
+  templ->assign(static_cast<size_t>(side) * static_cast<size_t>(side), 0.f);
   for (int j = -h - 1; j <= h + 1; ++j) {
     for (int i = -h - 1; i <= h + 1; ++i) {
       const float sx = at.x + static_cast<float>(inverse(0, 0) * i + inverse(0, 1) * j);
       const float sy = at.y + static_cast<float>(inverse(1, 0) * i + inverse(1, 1) * j);
       if (!Inside(anchor_image, sx, sy)) return false;
-      (*templ)[static_cast<size_t>((j + h + 1) * side + (i + h + 1))] =
-          Sample(anchor_image, sx, sy);
+      (*templ)[TemplateIndex(i, j, h)] = Sample(anchor_image, sx, sy);
     }
   }
   return true;
@@ -175,7 +180,7 @@ Eigen::Matrix3d TemplateJacobian(const std::vector<float>& templ, int h,
   int k = 0;
   for (int j = -h; j <= h; ++j) {
     for (int i = -h; i <= h; ++i, ++k) {
-      const size_t c = static_cast<size_t>((j + h + 1) * side + (i + h + 1));
+      const size_t c = TemplateIndex(i, j, h);
       const float gx = 0.5f * (templ[c + 1] - templ[c - 1]);
       const float gy =
           0.5f * (templ[c + static_cast<size_t>(side)] - templ[c - static_cast<size_t>(side)]);
@@ -284,7 +289,7 @@ std::vector<Eigen::Vector3f> SurfaceNormals(const std::vector<Eigen::Vector3d>& 
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
     for (const Eigen::Vector3d& p : near) scatter += (p - mean) * (p - mean).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-    const Eigen::Vector3d values = eigen.eigenvalues();  // Ascending.
+    const Eigen::Vector3d& values = eigen.eigenvalues();  // Ascending.
     // A plane: thin across, spread along both of its directions.
     if (!(values(0) < 0.05 * values(1)) || !(values(1) > 0)) continue;
     normals[w] = eigen.eigenvectors().col(0).normalized().cast<float>();
