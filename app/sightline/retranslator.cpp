@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include "widgets/image_view.h"
+#include "widgets/operator_panel.h"
 
 namespace sightline {
 
@@ -150,6 +151,11 @@ void Retranslator::Retranslate(QWidget* w) const {
   if (auto* image = qobject_cast<ImageView*>(w)) {
     Apply(image->title(), [image](const QString& t) { image->SetTitle(t); });
     Apply(image->message(), [image](const QString& t) { image->SetMessage(t); });
+  }
+  if (auto* panel = qobject_cast<OperatorPanel*>(w)) {
+    // Its own LanguageChange handler redraws the banner and buttons from the state, the detail
+    // line from this text.
+    Apply(panel->detail_text(), [panel](const QString& t) { panel->SetDetailText(t); });
   }
   RetranslateItems(w);
 }

@@ -269,8 +269,11 @@ TEST_F(LanguageSwitch, OperatorPanelSpeaksTheNewLanguageAtOnce) {
   SwitchAndFindForeignTexts("it", &checked);
   EXPECT_EQ(picker_->panel()->stop_button()->text(),
             TranslationOf("it", "sightline::OperatorPanel", "STOP"));
+  // No picture yet: the panel holds, and says why in the detail line.
   EXPECT_EQ(picker_->panel()->banner()->text(),
-            TranslationOf("it", "sightline::OperatorPanel", "Tap a button"));
+            TranslationOf("it", "sightline::OperatorPanel", "Holding: nothing sent"));
+  EXPECT_EQ(picker_->panel()->detail_label()->text(),
+            TranslationOf("it", "sightline::ButtonPickerPresenter", "Paused"));
   SwitchAndFindForeignTexts("es", &checked);
   EXPECT_EQ(picker_->panel()->stop_button()->text(), "PARAR");
   EXPECT_EQ(picker_->panel()->start_button()->text(), "Empezar de nuevo");
