@@ -41,7 +41,7 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/sightline.png
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/256x256/apps)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/org.sightline.Sightline.metainfo.xml
         DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
-install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/sightline)
 
 # The translations are compiled into sightline (:/i18n); the .qm files are installed beside it
 # as well, for translators checking what the package ships.

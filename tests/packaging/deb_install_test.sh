@@ -49,7 +49,7 @@ for file in /usr/bin/sightline /usr/bin/sightline-cli /usr/share/man/man1/sightl
             /usr/share/icons/hicolor/scalable/apps/sightline.svg \
             /usr/share/icons/hicolor/256x256/apps/sightline.png \
             /usr/share/metainfo/org.sightline.Sightline.metainfo.xml \
-            /usr/share/sightline/translations/sightline_de.qm; do
+            /usr/share/doc/sightline/README.md; do
   grep -qx "$file" files.txt || fail "the package lacks $file"
 done
 for ts in "$source_dir"/translations/sightline_*.ts; do
