@@ -28,3 +28,17 @@ function(sightline_add_gtest module name)
   endif()
   gtest_discover_tests(${target} TEST_PREFIX "${module}/" DISCOVERY_TIMEOUT 60 ${props})
 endfunction()
+
+# sightline_version_header(): the target sightline_version, whose generated header
+# "sightline_version.h" defines SIGHTLINE_VERSION and SIGHTLINE_GIT_COMMIT for --version.
+function(sightline_version_header)
+  set(dir ${CMAKE_BINARY_DIR}/generated)
+  add_custom_target(sightline_version_header
+    COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DOUTPUT=${dir}/sightline_version.h
+            -DVERSION=${PROJECT_VERSION} -P ${PROJECT_SOURCE_DIR}/cmake/SightlineVersionHeader.cmake
+    BYPRODUCTS ${dir}/sightline_version.h
+    COMMENT "Version header (git commit)")
+  add_library(sightline_version INTERFACE)
+  target_include_directories(sightline_version INTERFACE ${dir})
+  add_dependencies(sightline_version sightline_version_header)
+endfunction()

@@ -72,7 +72,7 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="80"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
         <source>Paused</source>
         <translation>Angehalten</translation>
     </message>
@@ -98,8 +98,8 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="117"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="136"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="174"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="141"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="180"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
@@ -109,28 +109,28 @@
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
         <source>End of the recording</source>
         <translation>Ende der Aufnahme</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="234"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="240"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="248"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>Das Bild ist angehalten: erst Abspielen drücken, dann antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="241"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="247"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>Die Aufnahme ist zu Ende: nichts zum Antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="243"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Noch kein Bild: Kamera oder Aufnahme öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="280"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="286"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
@@ -345,6 +345,29 @@
     </message>
 </context>
 <context>
+    <name>sightline::CoreText</name>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp" line="11"/>
+        <source>OpenNI2 RGB-D cameras (Kinect, Xtion, Carmine) and .oni recordings</source>
+        <translation>OpenNI2-RGB-D-Kameras (Kinect, Xtion, Carmine) und .oni-Aufnahmen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp" line="13"/>
+        <source>GigE Vision / USB3 Vision cameras through Aravis: one camera, or a stereo pair as aravis://LEFT_ID,RIGHT_ID</source>
+        <translation>GigE-Vision-/USB3-Vision-Kameras über Aravis: eine Kamera oder ein Stereopaar als aravis://LEFT_ID,RIGHT_ID</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp" line="16"/>
+        <source>USB webcams through OpenCV&apos;s V4L2 backend</source>
+        <translation>USB-Webcams über das V4L2-Backend von OpenCV</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp" line="17"/>
+        <source>A recording played as a live camera (replay://PATH?fps=30&amp;loop=1)</source>
+        <translation>Eine Aufnahme, als Live-Kamera abgespielt (replay://PATH?fps=30&amp;loop=1)</translation>
+    </message>
+</context>
+<context>
     <name>sightline::DemoGenerator</name>
     <message>
         <location filename="../app/sightline/demo_generator.cpp" line="48"/>
@@ -360,117 +383,117 @@
 <context>
     <name>sightline::EvaluationPanel</name>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="74"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="75"/>
         <source>estimated trajectory (TUM or KITTI file)</source>
         <translation>geschätzte Trajektorie (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="76"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="77"/>
         <source>ground truth (TUM or KITTI file)</source>
         <translation>Ground Truth (TUM- oder KITTI-Datei)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="80"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="81"/>
         <source>Browse...</source>
         <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="89"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
         <source>SE(3): rotation and translation</source>
         <translation>SE(3): Rotation und Translation</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="90"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
         <source>Sim(3): also scale (monocular)</source>
         <translation>Sim(3): auch Maßstab (monokular)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="91"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="92"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="92"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="93"/>
         <source>Evaluate</source>
         <translation>Auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
         <source>Estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="99"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
         <source>Estimated trajectory</source>
         <translation>Geschätzte Trajektorie</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="100"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="101"/>
         <source>Ground truth</source>
         <translation>Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="101"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="102"/>
         <source>Alignment</source>
         <translation>Ausrichtung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="103"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="104"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="107"/>
         <source>Figure</source>
         <translation>Kennzahl</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="107"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="107"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="106"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="107"/>
         <source>Meaning</source>
         <translation>Bedeutung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="116"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
         <source>Figures</source>
         <translation>Kennzahlen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="117"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="118"/>
         <source>Top view</source>
         <translation>Draufsicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="118"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="119"/>
         <source>Error over time</source>
         <translation>Fehler im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="131"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="144"/>
         <source>Trajectories (*.txt *.csv);;All files (*)</source>
         <translation>Trajektorien (*.txt *.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="139"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="152"/>
         <source>Evaluating...</source>
         <translation>Auswertung läuft...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="163"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
         <source>Evaluation failed: %1</source>
         <translation>Auswertung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="189"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
     </message>
@@ -524,273 +547,273 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="44"/>
+        <location filename="../app/sightline/main_window.cpp" line="46"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="74"/>
-        <location filename="../app/sightline/main_window.cpp" line="351"/>
+        <location filename="../app/sightline/main_window.cpp" line="81"/>
+        <location filename="../app/sightline/main_window.cpp" line="374"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="75"/>
-        <location filename="../app/sightline/main_window.cpp" line="352"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="375"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="80"/>
+        <location filename="../app/sightline/main_window.cpp" line="87"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="89"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="85"/>
+        <location filename="../app/sightline/main_window.cpp" line="92"/>
         <source>Evaluation</source>
         <translation>Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="93"/>
+        <location filename="../app/sightline/main_window.cpp" line="100"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="103"/>
+        <location filename="../app/sightline/main_window.cpp" line="110"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="104"/>
+        <location filename="../app/sightline/main_window.cpp" line="111"/>
         <source>&amp;Open dataset folder...</source>
         <translation>Datensatz-Ordner &amp;öffnen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="107"/>
+        <location filename="../app/sightline/main_window.cpp" line="114"/>
         <source>Open dataset folder</source>
         <translation>Datensatz-Ordner öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="112"/>
+        <location filename="../app/sightline/main_window.cpp" line="119"/>
         <source>Open point cloud</source>
         <translation>Punktwolke öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="113"/>
+        <location filename="../app/sightline/main_window.cpp" line="120"/>
         <source>Recordings (*.pcd *.oni)</source>
         <translation>Aufnahmen (*.pcd *.oni)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="116"/>
+        <location filename="../app/sightline/main_window.cpp" line="123"/>
         <source>Open &amp;recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="121"/>
+        <location filename="../app/sightline/main_window.cpp" line="128"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="125"/>
+        <location filename="../app/sightline/main_window.cpp" line="132"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="127"/>
+        <location filename="../app/sightline/main_window.cpp" line="134"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <location filename="../app/sightline/main_window.cpp" line="142"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="140"/>
+        <location filename="../app/sightline/main_window.cpp" line="148"/>
         <source> (unavailable)</source>
         <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="145"/>
+        <location filename="../app/sightline/main_window.cpp" line="153"/>
         <source>Connect to the first %1 device</source>
         <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="151"/>
+        <location filename="../app/sightline/main_window.cpp" line="159"/>
         <source>Replay recording</source>
         <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="157"/>
+        <location filename="../app/sightline/main_window.cpp" line="165"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="159"/>
-        <location filename="../app/sightline/main_window.cpp" line="289"/>
+        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="300"/>
         <source>None (show frames only)</source>
         <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="166"/>
+        <location filename="../app/sightline/main_window.cpp" line="174"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>Trajektorie &amp;auswerten...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="172"/>
+        <location filename="../app/sightline/main_window.cpp" line="180"/>
         <source>Evaluate &amp;current run</source>
         <translation>&amp;Aktuellen Lauf auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="182"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Vergleicht die Trajektorie der laufenden Pipeline mit der Referenz des Datensatzes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="181"/>
+        <location filename="../app/sightline/main_window.cpp" line="191"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="182"/>
+        <location filename="../app/sightline/main_window.cpp" line="192"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="183"/>
+        <location filename="../app/sightline/main_window.cpp" line="193"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="184"/>
+        <location filename="../app/sightline/main_window.cpp" line="194"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
 Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <location filename="../app/sightline/main_window.cpp" line="206"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="197"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="205"/>
+        <location filename="../app/sightline/main_window.cpp" line="215"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="229"/>
+        <location filename="../app/sightline/main_window.cpp" line="239"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="236"/>
+        <location filename="../app/sightline/main_window.cpp" line="246"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="245"/>
+        <location filename="../app/sightline/main_window.cpp" line="255"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="252"/>
+        <location filename="../app/sightline/main_window.cpp" line="262"/>
         <source>The demo could not be made: %1</source>
         <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="307"/>
+        <location filename="../app/sightline/main_window.cpp" line="318"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="318"/>
+        <location filename="../app/sightline/main_window.cpp" line="329"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="322"/>
+        <location filename="../app/sightline/main_window.cpp" line="333"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="339"/>
-        <location filename="../app/sightline/main_window.cpp" line="340"/>
+        <location filename="../app/sightline/main_window.cpp" line="362"/>
+        <location filename="../app/sightline/main_window.cpp" line="363"/>
         <source>Opening %1 ...</source>
         <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="351"/>
+        <location filename="../app/sightline/main_window.cpp" line="374"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="351"/>
+        <location filename="../app/sightline/main_window.cpp" line="374"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="352"/>
+        <location filename="../app/sightline/main_window.cpp" line="375"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="358"/>
+        <location filename="../app/sightline/main_window.cpp" line="381"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="363"/>
+        <location filename="../app/sightline/main_window.cpp" line="386"/>
         <source>, ground truth</source>
         <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="365"/>
+        <location filename="../app/sightline/main_window.cpp" line="388"/>
         <source>Opened %1</source>
         <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="370"/>
+        <location filename="../app/sightline/main_window.cpp" line="393"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="405"/>
+        <location filename="../app/sightline/main_window.cpp" line="428"/>
         <source>frame %1, read in %2 ms</source>
         <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="427"/>
+        <location filename="../app/sightline/main_window.cpp" line="450"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="429"/>
+        <location filename="../app/sightline/main_window.cpp" line="452"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="176"/>
+        <location filename="../app/sightline/main_window.cpp" line="184"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
@@ -848,6 +871,31 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/main_window_results.cpp" line="94"/>
         <source>%1 writes no trajectory to evaluate.</source>
         <translation>%1 schreibt keine Trajektorie, die sich auswerten ließe.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_settings.cpp" line="26"/>
+        <source>Reset &amp;layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_settings.cpp" line="60"/>
+        <source>Setti&amp;ngs</source>
+        <translation>&amp;Einstellungen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_settings.cpp" line="62"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_settings.cpp" line="67"/>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_settings.cpp" line="96"/>
+        <source>Language: %1</source>
+        <translation>Sprache: %1</translation>
     </message>
 </context>
 <context>
@@ -1201,37 +1249,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Alle zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="154"/>
+        <location filename="../widgets/parameter_panel.cpp" line="155"/>
         <source>All options reset to their defaults.</source>
         <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="165"/>
+        <location filename="../widgets/parameter_panel.cpp" line="166"/>
         <source>Loaded profile %1</source>
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="177"/>
+        <location filename="../widgets/parameter_panel.cpp" line="178"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="184"/>
+        <location filename="../widgets/parameter_panel.cpp" line="185"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="184"/>
+        <location filename="../widgets/parameter_panel.cpp" line="185"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="191"/>
+        <location filename="../widgets/parameter_panel.cpp" line="192"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="192"/>
+        <location filename="../widgets/parameter_panel.cpp" line="193"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>
@@ -1272,37 +1320,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::RecordingController</name>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="15"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="16"/>
         <source>&amp;Record...</source>
         <translation>&amp;Aufnehmen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="19"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="20"/>
         <source>Record what is playing (live sensor or recording) into a folder, in the formats Sightline reads</source>
         <translation>Das Laufende (Live-Sensor oder Aufnahme) in einen Ordner aufnehmen, in den Formaten, die Sightline liest</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="21"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="22"/>
         <source>&amp;Stop recording</source>
         <translation>Aufnahme &amp;beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="40"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="41"/>
         <source>Record into folder</source>
         <translation>In Ordner aufnehmen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="47"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="60"/>
         <source>Nothing to record: open a sensor or a recording first.</source>
         <translation>Nichts aufzunehmen: zuerst einen Sensor oder eine Aufnahme öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="89"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="102"/>
         <source>Recorded %1 frames into %2 (%3 dropped by the recorder), %4 MB at %5 MB/s</source>
         <translation>%1 Bilder in %2 aufgenommen (%3 vom Rekorder verworfen), %4 MB mit %5 MB/s</translation>
     </message>
     <message>
-        <location filename="../app/sightline/recording_controller.cpp" line="109"/>
+        <location filename="../app/sightline/recording_controller.cpp" line="122"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
         <translation>REC %1 geschrieben, %2 verworfen, %3 MB/s</translation>
     </message>
@@ -1323,32 +1371,32 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::StatisticsPresenter</name>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="24"/>
         <source>Statistic</source>
         <translation>Kennzahl</translation>
     </message>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="24"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="24"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="21"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="24"/>
         <source>Meaning</source>
         <translation>Bedeutung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="27"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="30"/>
         <source>Statistics: %1</source>
         <translation>Kennzahlen: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/statistics_presenter.cpp" line="51"/>
+        <location filename="../app/sightline/statistics_presenter.cpp" line="54"/>
         <source>status</source>
         <translation>Status</translation>
     </message>

@@ -137,6 +137,11 @@ void ImageView::SetTitle(const QString& title) {
   update();
 }
 
+void ImageView::SetMessage(const QString& message) {
+  message_ = message;
+  update();
+}
+
 void ImageView::SetDepthRange(double low_m, double high_m) {
   fixed_low_m_ = low_m;
   fixed_high_m_ = high_m;

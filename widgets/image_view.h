@@ -45,6 +45,11 @@ class ImageView : public QWidget {
   void Clear();
   // Text above the image.
   void SetTitle(const QString& title);
+  const QString& title() const { return title_; }
+  // The text shown instead of an image ("No image"); the next SetImage replaces it. Switching
+  // the GUI's language turns both texts into the new language through these.
+  const QString& message() const { return message_; }
+  void SetMessage(const QString& message);
   // Fixes the depth colour range in metres; low >= high restores automatic range (2nd to 98th
   // percentile of the valid depths).
   void SetDepthRange(double low_m, double high_m);

@@ -156,6 +156,11 @@ void OperatorPanel::SetState(OperatorState state, const QString& detail) {
   UpdateControls();
 }
 
+void OperatorPanel::SetDetailText(const QString& detail) {
+  detail_text_ = detail;
+  UpdateControls();
+}
+
 void OperatorPanel::Refuse(const QString& why) {
   if (state_ == OperatorState::kConfirm) return;  // The question stays open.
   SetState(OperatorState::kRefused, why);

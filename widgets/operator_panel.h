@@ -62,6 +62,10 @@ class OperatorPanel : public QWidget {
   // Shows the state in the banner; `detail` (e.g. the reason for holding) below it.
   // Ignored while stopped: only "Start again" leaves STOP.
   void SetState(OperatorState state, const QString& detail = {});
+  // The detail line as it is, and the same line in the GUI's new language after a language
+  // switch (the state stays).
+  const QString& detail_text() const { return detail_text_; }
+  void SetDetailText(const QString& detail);
   // The operator's tap was not taken: says why, and the operator may tap again.
   void Refuse(const QString& why);
   // The tracked button's centre and radius in image pixels; nullopt hides the ring.

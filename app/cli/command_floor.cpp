@@ -1,4 +1,4 @@
-// sightline-cli floor: calibrates the floor plane for indoor mapping (seed 000) from the first
+// sightline-cli floor: calibrates the floor plane for indoor mapping from the first
 // frames of an RGB-D dataset or recording, or from PCD clouds, and writes the calibration file
 // that `run mapping --set mapping.run.floor_file=FILE` and the GUI read.
 #include <cstdio>

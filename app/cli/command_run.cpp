@@ -60,6 +60,13 @@ int RunCommand(const std::vector<std::string>& args) {
   if (!parsed.ok()) return Fail("run: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(help.c_str(), stdout);
+    // `run PIPELINE --help`: that pipeline's options too, as `options PIPELINE` lists them.
+    if (!parsed->positionals().empty() && registry.Find(parsed->positionals()[0]) != nullptr) {
+      std::printf("\nOptions of %s (key, type, default, range, unit, meaning):\n",
+                  parsed->positionals()[0].c_str());
+      std::fflush(stdout);
+      return OptionsCommand({parsed->positionals()[0]});
+    }
     return 0;
   }
   if (parsed->positionals().size() != 2)

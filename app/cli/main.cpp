@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/cli/commands.h"
+#include "sightline_version.h"
 
 namespace {
 
@@ -32,7 +33,8 @@ const char kUsage[] =
     "  record SOURCE --out DIR [--seconds S] [--frames N]\n"
     "                             record a sensor or replayed recording (TUM, EuRoC, images)\n"
     "\n"
-    "Run 'sightline-cli COMMAND --help' for a command's details.\n";
+    "Run 'sightline-cli COMMAND --help' for a command's details;\n"
+    "'sightline-cli --version' prints the version and the git commit it was built from.\n";
 
 }  // namespace
 
@@ -40,6 +42,10 @@ int main(int argc, char** argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
+  }
+  if (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-v") == 0) {
+    std::printf("sightline-cli %s (commit %s)\n", SIGHTLINE_VERSION, SIGHTLINE_GIT_COMMIT);
+    return 0;
   }
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);

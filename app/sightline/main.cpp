@@ -1,6 +1,7 @@
 // sightline: the desktop application.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QLocale>
 #include <QTimer>
 #include <cstdio>
@@ -8,11 +9,12 @@
 #include "app/sightline/builtin_presenters.h"
 #include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/demo_generator.h"
+#include "app/sightline/language.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
-#include "app/sightline/translation.h"
+#include "sightline_version.h"
 #include "widgets/vtk_gl_widget.h"
 
 namespace {
@@ -78,6 +80,7 @@ struct Arguments {
   QStringList assignments;  // --set KEY=VALUE, in order.
   bool demo = false, operator_mode = false, open_given = false;
   QString frames, timeout;
+  QString language;  // --lang CODE: this run only; "" = the saved choice or the system's.
 };
 
 Arguments ParseArguments(const QApplication& app) {
@@ -107,8 +110,13 @@ Arguments ParseArguments(const QApplication& app) {
   QCommandLineOption set_option(
       "set", "Set one of the pipeline's options, e.g. button.gui.serve=true (repeatable).",
       "KEY=VALUE");
+  QCommandLineOption lang_option(
+      "lang",
+      "The GUI's language for this run: it, es, de or en (default: the one chosen in Settings > "
+      "Language, else the system's).",
+      "CODE");
   parser.addOptions({open_option, demo_option, pipeline_option, operator_option, profile_option,
-                     set_option, screenshot_option, frames_option, timeout_option});
+                     set_option, screenshot_option, frames_option, timeout_option, lang_option});
   parser.addPositionalArgument("SOURCE", "A dataset, recording or sensor URI to open (as --open).",
                                "[SOURCE]");
   parser.process(app);
@@ -124,6 +132,7 @@ Arguments ParseArguments(const QApplication& app) {
   args.timeout = parser.value(timeout_option);
   args.demo = parser.isSet(demo_option);
   args.operator_mode = parser.isSet(operator_option);
+  args.language = parser.value(lang_option);
   return args;
 }
 
@@ -143,18 +152,42 @@ bool StartScreenshot(sightline::MainWindow* window, const Arguments& args) {
   return true;
 }
 
+// --help and --version print without a display: Qt's offscreen platform stands in for X11.
+void AllowHelpWithoutDisplay(int argc, char** argv) {
+  if (qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
+      qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) {
+    return;
+  }
+  for (int i = 1; i < argc; ++i) {
+    const QByteArray arg(argv[i]);
+    if (arg == "--help" || arg == "-h" || arg == "--version" || arg == "-v" ||
+        arg == "--help-all") {
+      qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  AllowHelpWithoutDisplay(argc, argv);
   // VTK needs an OpenGL 3.2 core context: set the format before QApplication exists.
   sightline::VtkGlWidget::SetDefaultSurfaceFormat();
   QApplication app(argc, argv);
   QApplication::setOrganizationName("Sightline");
   QApplication::setApplicationName("Sightline");
-  QApplication::setApplicationVersion(SIGHTLINE_VERSION);
+  QApplication::setApplicationVersion(SIGHTLINE_VERSION " (commit " SIGHTLINE_GIT_COMMIT ")");
+  QApplication::setWindowIcon(QIcon(":/icons/sightline.png"));
+  QApplication::setDesktopFileName("sightline");
 
-  sightline::InstallTranslation(QLocale(), &app);
   const Arguments args = ParseArguments(app);
+  if (!args.language.isEmpty() && !sightline::IsLanguage(args.language)) {
+    std::fprintf(stderr, "sightline: --lang %s: not one of it, es, de, en\n",
+                 qPrintable(args.language));
+    return 2;
+  }
+  sightline::SwitchLanguage(args.language.isEmpty() ? sightline::SavedLanguage() : args.language,
+                            &app);
 
   sightline::MainWindow window;
   // The Pipeline menu lists the core registry's pipelines, as `sightline-cli run` does.

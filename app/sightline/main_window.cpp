@@ -22,6 +22,7 @@
 #include <QToolBar>
 
 #include "app/sightline/calibration_dialog.h"
+#include "app/sightline/core_texts.h"
 #include "app/sightline/demo_generator.h"
 #include "app/sightline/evaluation_panel.h"
 #include "app/sightline/pipeline_presenter.h"
@@ -142,7 +143,8 @@ void MainWindow::BuildMenus() {
   sensors->setToolTipsVisible(true);
   for (const DriverInfo& driver : BuiltinDrivers()) {
     const Status available = driver.available ? driver.available() : Status::Ok();
-    QString text = QString::fromStdString(driver.description);
+    QString text = CoreText(driver.description);
+    text.replace('&', QStringLiteral("&&"));  // "?fps=30&loop=1" is no accelerator.
     if (!available.ok()) text += tr(" (unavailable)");
     QAction* connect_action = sensors->addAction(text);
     connect_action->setEnabled(available.ok());
@@ -184,6 +186,8 @@ void MainWindow::BuildMenus() {
     OpenCalibrationDialog(this, info ? QString::fromStdString(info->path) : QString());
   });
 
+  BuildSettings();
+  BuildLayoutMemory();
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   connect(help->addAction(tr("&About Sightline")), &QAction::triggered, this, [this] {
     QMessageBox::about(this, tr("About Sightline"),
@@ -273,8 +277,9 @@ void MainWindow::AddPipeline(PipelinePresenter* presenter) {
   QAction* action = pipeline_menu_->addAction(presenter->Title());
   action->setCheckable(true);
   pipeline_actions_->addAction(action);
+  // The title at the time of the click: the language may have changed since.
   connect(action, &QAction::triggered, this,
-          [this, title = presenter->Title()] { ActivatePipeline(title); });
+          [this, presenter] { ActivatePipeline(presenter->Title()); });
   connect(presenter, &PipelinePresenter::Message, this, [this](int severity, const QString& text) {
     log_panel_->AddMessage(severity >= 2   ? LogPanel::Severity::kError
                            : severity == 1 ? LogPanel::Severity::kWarning
@@ -457,7 +462,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  playback_->Close("quit");  // The pipeline's live outputs (e.g. arm clients) are told first.
+  playback_->Close("quit");       // The pipeline's live outputs (e.g. arm clients) are told first.
+  if (isVisible()) SaveLayout();  // Not the hidden window behind the operator mode.
   QMainWindow::closeEvent(event);
 }
 

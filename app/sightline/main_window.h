@@ -71,6 +71,14 @@ class MainWindow : public QMainWindow {
   // Tools > Evaluate current run: the run's trajectory against the dataset's ground truth, in
   // the evaluation dock.
   void EvaluateCurrentRun();
+  // Settings > Language: switches the GUI's language now ("" = the system's, else a code of
+  // Languages()) and, when `save`, keeps the choice for the next start. Returns the code in
+  // effect.
+  QString SetLanguage(const QString& code, bool save);
+  // The docks, their sizes and the visible views are saved on close and restored at the next
+  // start; View > Reset layout brings back the layout the window opens with the first time.
+  void SaveLayout();
+  void ResetLayout();
   // Frames shown since the last open.
   int64_t frames_shown() const { return frames_shown_; }
 
@@ -95,6 +103,8 @@ class MainWindow : public QMainWindow {
   void BuildRecording(QMenu* sensors);
   // File > Save results (main_window_results.cpp).
   void BuildResults(QMenu* file);
+  void BuildSettings();
+  void BuildLayoutMemory();
   void EvaluateSavedRun(const QString& folder);
   void ConnectPlayback();
   void ShowFrame(const std::shared_ptr<const PlaybackResult>& result);
@@ -122,6 +132,8 @@ class MainWindow : public QMainWindow {
   QMenu* view_menu_ = nullptr;
   QMenu* pipeline_menu_ = nullptr;
   QActionGroup* pipeline_actions_ = nullptr;
+  QActionGroup* language_actions_ = nullptr;
+  QByteArray default_state_;  // The dock layout before any saved one was restored.
   std::vector<PipelinePresenter*> pipelines_;
   PipelinePresenter* active_pipeline_ = nullptr;
   OptionSet options_;

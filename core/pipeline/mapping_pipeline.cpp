@@ -316,7 +316,8 @@ PipelineInfo MappingPipelineInfo(const std::shared_ptr<const MappingRequests>& r
   PipelineInfo info;
   info.name = "mapping";
   info.title = "Indoor mapping (Manhattan walls)";
-  info.summary = "indoor Manhattan mapping from a Kinect: walls, heading, stitched map (seed 000)";
+  info.summary =
+      "indoor Manhattan mapping from RGB-D: floor, wall lines, heading, stitched occupancy map";
   info.accepts = {SourceKind::kRgbd};
   info.declare_options = DeclareMappingOptions;
   info.create = [requests]() -> std::unique_ptr<Pipeline> {

@@ -310,7 +310,7 @@ PipelineInfo MobilityPipelineInfo() {
   info.title = "Mobility map";
   info.summary =
       "mobility map from RGB-D frames or point clouds: ground, segments, slope, "
-      "roughness, rule and GPR scores (seed 001)";
+      "roughness, rule and GPR traversability scores";
   info.accepts = {SourceKind::kRgbd, SourceKind::kCloud};
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MobilityOptions::Describe()));

@@ -31,6 +31,23 @@ TEST(Cli, HelpOnEveryCommand) {
   }
 }
 
+TEST(Cli, VersionPrintsTheVersionAndTheGitCommit) {
+  const auto r = Cli("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.rfind("sightline-cli 0.", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("(commit "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("(commit unknown"), std::string::npos) << "built outside git? " << r.out;
+}
+
+TEST(Cli, RunPipelineHelpListsThatPipelinesOptions) {
+  const auto r = Cli("run stereo-vo --help");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("usage: sightline-cli run"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Options of stereo-vo"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stereo.subsample"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("mapping.run.floor_file"), std::string::npos) << "another pipeline's";
+}
+
 TEST(Cli, UnknownCommandFailsWithOneLine) {
   const auto r = Cli("frobnicate");
   EXPECT_NE(r.exit_code, 0);

@@ -1,0 +1,298 @@
+// Every language the GUI speaks, as a user meets it: each translations/sightline_<code>.ts is
+// complete (every message finished, placeholders, accelerators and ellipses kept, the same
+// messages as the others), the core texts the GUI shows are marked for translation, and after
+// Settings > Language switches the open window (the main window with every dock and menu, and the
+// operator panel) no visible text is left in another language. The choice is saved.
+#include <gtest/gtest.h>
+
+#include <QAbstractButton>
+#include <QAbstractItemView>
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QHash>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSet>
+#include <QSettings>
+#include <QTabBar>
+#include <QXmlStreamReader>
+#include <algorithm>
+#include <vector>
+
+#include "app/sightline/builtin_presenters.h"
+#include "app/sightline/button_picker_presenter.h"
+#include "app/sightline/core_texts.h"
+#include "app/sightline/language.h"
+#include "app/sightline/main_window.h"
+#include "core/sensors/driver_registry.h"
+#include "widgets/image_view.h"
+#include "widgets/operator_panel.h"
+
+namespace sightline {
+namespace {
+
+struct TsEntry {
+  QString key;  // "context\nsource"
+  QString source, translation, type;
+};
+
+std::vector<TsEntry> ReadTs(const QString& code) {
+  std::vector<TsEntry> entries;
+  QFile file(QStringLiteral("%1/sightline_%2.ts").arg(QString(SIGHTLINE_TS_DIR), code));
+  EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << file.fileName().toStdString();
+  QXmlStreamReader xml(&file);
+  QString context;
+  TsEntry entry;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (!xml.isStartElement()) continue;
+    if (xml.name() == u"name") context = xml.readElementText();
+    if (xml.name() == u"source") entry.source = xml.readElementText();
+    if (xml.name() == u"translation") {
+      entry.key = context + '\n' + entry.source;
+      entry.type = xml.attributes().value("type").toString();
+      entry.translation = xml.readElementText();
+      entries.push_back(entry);
+    }
+  }
+  EXPECT_FALSE(xml.hasError()) << file.fileName().toStdString() << ": "
+                               << xml.errorString().toStdString();
+  return entries;
+}
+
+QSet<QString> Placeholders(const QString& text) {
+  QSet<QString> found;
+  static const QRegularExpression re("%(\\d+|p)");
+  for (const QRegularExpressionMatch& m : re.globalMatch(text)) found.insert(m.captured(0));
+  return found;
+}
+
+int Accelerators(QString text) {
+  static const QRegularExpression entity("&#?\\w+;");
+  text.remove(entity);
+  text.remove("&&");
+  return static_cast<int>(text.count('&'));
+}
+
+class LanguageTs : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(LanguageTs, EveryMessageIsFinishedWithItsPlaceholdersAndAccelerators) {
+  const QString code = GetParam();
+  const std::vector<TsEntry> entries = ReadTs(code);
+  ASSERT_GT(entries.size(), 280u);
+  int finished = 0;
+  for (const TsEntry& e : entries) {
+    const std::string where = (code + ": " + e.key.section('\n', 0, 0) + " \"" + e.source +
+                               "\" -> \"" + e.translation + "\"")
+                                  .toStdString();
+    EXPECT_TRUE(e.type.isEmpty()) << where << " is " << e.type.toStdString();
+    EXPECT_FALSE(e.translation.trimmed().isEmpty()) << where;
+    EXPECT_EQ(Placeholders(e.translation), Placeholders(e.source)) << where;
+    EXPECT_EQ(Accelerators(e.translation), Accelerators(e.source)) << where;
+    EXPECT_EQ(e.translation.startsWith(' '), e.source.startsWith(' ')) << where;
+    for (const QString ellipsis : {QStringLiteral("..."), QStringLiteral("…")}) {
+      EXPECT_EQ(e.translation.endsWith(ellipsis), e.source.endsWith(ellipsis)) << where;
+    }
+    finished += e.type.isEmpty() && !e.translation.trimmed().isEmpty();
+  }
+  std::printf("%s: %d of %zu messages finished\n", qPrintable(code), finished, entries.size());
+}
+
+TEST_P(LanguageTs, HoldsTheSameMessagesAsEveryOtherLanguage) {
+  const QString code = GetParam();
+  QStringList mine, german;
+  for (const TsEntry& e : ReadTs(code)) mine << e.key;
+  for (const TsEntry& e : ReadTs("de")) german << e.key;
+  for (const QString& key : german) {
+    EXPECT_TRUE(mine.contains(key)) << code.toStdString() << " lacks " << key.toStdString();
+  }
+  for (const QString& key : mine) {
+    EXPECT_TRUE(german.contains(key)) << "de lacks " << key.toStdString();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Languages, LanguageTs, ::testing::Values("de", "it", "es"));
+
+TEST(CoreTexts, EverySensorDescriptionTheGuiShowsIsMarkedForTranslation) {
+  const std::vector<std::string> known = KnownCoreTexts();
+  for (const DriverInfo& driver : BuiltinDrivers()) {
+    EXPECT_NE(std::find(known.begin(), known.end(), driver.description), known.end())
+        << "\"" << driver.description << "\" (driver " << driver.name
+        << ") is not in app/sightline/core_texts.cpp: the Sensors menu would show it in English";
+  }
+}
+
+// Every text a user can read in `root` and below: labels, buttons, group and dock titles, tabs,
+// table headers, placeholders, and every menu of a menu bar with its entries.
+void CollectTexts(QWidget* root, QStringList* texts) {
+  std::vector<QWidget*> widgets = {root};
+  for (QWidget* w : root->findChildren<QWidget*>()) {
+    if (w->isVisibleTo(root)) widgets.push_back(w);
+  }
+  for (QWidget* w : widgets) {
+    if (auto* label = qobject_cast<QLabel*>(w)) *texts << label->text();
+    if (auto* button = qobject_cast<QAbstractButton*>(w)) *texts << button->text();
+    if (auto* group = qobject_cast<QGroupBox*>(w)) *texts << group->title();
+    if (auto* dock = qobject_cast<QDockWidget*>(w)) *texts << dock->windowTitle();
+    if (auto* line = qobject_cast<QLineEdit*>(w)) *texts << line->placeholderText();
+    if (auto* image = qobject_cast<ImageView*>(w)) *texts << image->title() << image->message();
+    if (auto* tabs = qobject_cast<QTabBar*>(w)) {
+      for (int i = 0; i < tabs->count(); ++i) *texts << tabs->tabText(i);
+    }
+    if (auto* view = qobject_cast<QAbstractItemView*>(w); view && view->model()) {
+      for (int i = 0; i < view->model()->columnCount(); ++i) {
+        *texts << view->model()->headerData(i, Qt::Horizontal).toString();
+      }
+    }
+    if (auto* bar = qobject_cast<QMenuBar*>(w)) {
+      std::vector<QMenu*> menus;
+      for (QAction* a : bar->actions()) {
+        if (a->menu()) menus.push_back(a->menu());
+      }
+      for (size_t i = 0; i < menus.size(); ++i) {
+        *texts << menus[i]->title();
+        for (QAction* a : menus[i]->actions()) {
+          if (a->menu()) menus.push_back(a->menu());
+          if (!a->isSeparator() && !a->menu()) *texts << a->text();
+        }
+      }
+    }
+  }
+  texts->removeAll(QString());
+}
+
+// For one language: every text of every language, with the language it is right for.
+struct Texts {
+  QHash<QString, QSet<QString>> languages_of;  // text -> codes whose translation it is
+};
+
+Texts AllTexts() {
+  Texts all;
+  for (const QString& key : AllMessages()) {
+    const QString source = key.section('\n', 1);
+    all.languages_of[source].insert("en");
+    for (const QString code : {"de", "it", "es"}) {
+      const QString text = TranslationOf(code, key.section('\n', 0, 0), source);
+      if (!text.isEmpty()) all.languages_of[text].insert(code);
+    }
+  }
+  return all;
+}
+
+class LanguageSwitch : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    SwitchLanguage("en", qApp);
+    window_ = std::make_unique<MainWindow>();
+    for (PipelinePresenter* presenter : MakeBuiltinPresenters()) {
+      if (auto* p = qobject_cast<ButtonPickerPresenter*>(presenter)) picker_ = p;
+      window_->AddPipeline(presenter);
+    }
+    ASSERT_NE(picker_, nullptr);
+    window_->show();
+    // The button picker brings the operator panel (a tab beside the log).
+    ASSERT_TRUE(window_->ActivatePipeline(picker_->Title()));
+    QApplication::processEvents();
+  }
+  void TearDown() override {
+    window_.reset();
+    SwitchLanguage("en", qApp);
+  }
+
+  // Switches through Settings > Language as a user does and returns the texts left in another
+  // language, with the language they belong to.
+  QStringList SwitchAndFindForeignTexts(const QString& code, int* checked) {
+    QMenu* menu = window_->findChild<QMenu*>("language_menu");
+    EXPECT_NE(menu, nullptr);
+    if (menu == nullptr) return {};
+    for (QAction* action : menu->actions()) {
+      if (action->data().toString() == code && !action->isSeparator()) action->trigger();
+    }
+    QApplication::processEvents();
+    QStringList texts;
+    CollectTexts(window_.get(), &texts);
+    CollectTexts(picker_->panel(), &texts);
+    *checked = static_cast<int>(texts.size());
+    const Texts all = AllTexts();
+    QStringList foreign;
+    for (const QString& text : texts) {
+      const auto it = all.languages_of.find(text);
+      if (it == all.languages_of.end() || it->contains(code)) continue;
+      foreign << QStringLiteral("\"%1\" (%2)").arg(text, QStringList(it->values()).join('/'));
+    }
+    foreign.removeDuplicates();
+    return foreign;
+  }
+
+  // SIGHTLINE_LANGUAGE_SHOTS=DIR: the operator panel and the window in each language, as PNGs
+  // (docs/images/operator-panel-<code>.png were made so).
+  void SaveShots(const QString& code) {
+    const QString dir = qEnvironmentVariable("SIGHTLINE_LANGUAGE_SHOTS");
+    if (dir.isEmpty()) return;
+    picker_->panel()->grab().save(dir + "/operator-panel-" + code + ".png");
+    window_->grab().save(dir + "/window-" + code + ".png");
+  }
+
+  std::unique_ptr<MainWindow> window_;
+  ButtonPickerPresenter* picker_ = nullptr;
+};
+
+TEST_F(LanguageSwitch, EveryLanguageInTurnLeavesNoTextOfAnotherOneAndIsSaved) {
+  for (const QString code : {"it", "es", "de", "en", "es", "it"}) {
+    int checked = 0;
+    const QStringList foreign = SwitchAndFindForeignTexts(code, &checked);
+    EXPECT_GT(checked, 60) << "too few texts found to judge the switch to " << code.toStdString();
+    EXPECT_TRUE(foreign.isEmpty())
+        << "after switching to " << code.toStdString() << ", " << foreign.size()
+        << " texts of other languages: " << foreign.join(", ").toStdString();
+    EXPECT_EQ(CurrentLanguage(), code);
+    SaveShots(code);
+    EXPECT_EQ(QSettings().value("language").toString(), code) << "the choice is not saved";
+    EXPECT_EQ(SavedLanguage(), code);
+    const QString view = code == "en" ? QStringLiteral("&View")
+                                      : TranslationOf(code, "sightline::MainWindow", "&View");
+    EXPECT_EQ(window_->findChild<QMenu*>("view_menu")->title(), view);
+    // The pipeline stays selectable by its (now translated) title.
+    EXPECT_TRUE(window_->ActivatePipeline(picker_->Title())) << code.toStdString();
+  }
+}
+
+TEST_F(LanguageSwitch, OperatorPanelSpeaksTheNewLanguageAtOnce) {
+  int checked = 0;
+  SwitchAndFindForeignTexts("it", &checked);
+  EXPECT_EQ(picker_->panel()->stop_button()->text(),
+            TranslationOf("it", "sightline::OperatorPanel", "STOP"));
+  // No picture yet: the panel holds, and says why in the detail line.
+  EXPECT_EQ(picker_->panel()->banner()->text(),
+            TranslationOf("it", "sightline::OperatorPanel", "Holding: nothing sent"));
+  EXPECT_EQ(picker_->panel()->detail_label()->text(),
+            TranslationOf("it", "sightline::ButtonPickerPresenter", "Paused"));
+  SwitchAndFindForeignTexts("es", &checked);
+  EXPECT_EQ(picker_->panel()->stop_button()->text(), "PARAR");
+  EXPECT_EQ(picker_->panel()->start_button()->text(), "Empezar de nuevo");
+}
+
+TEST(LanguageChoice, SystemLanguageIsTheDefaultAndUnknownCodesAreRefused) {
+  QSettings().remove("language");
+  EXPECT_EQ(SavedLanguage(), QString()) << "nothing saved: the system's language applies";
+  QLocale::setDefault(QLocale(QLocale::Italian, QLocale::Italy));
+  EXPECT_EQ(SystemLanguage(), "it");
+  EXPECT_EQ(SwitchLanguage(QString(), qApp), "it");
+  QLocale::setDefault(QLocale(QLocale::French, QLocale::France));
+  EXPECT_EQ(SystemLanguage(), "en") << "no French translation: English";
+  QLocale::setDefault(QLocale::c());
+  EXPECT_FALSE(IsLanguage("fr"));
+  EXPECT_TRUE(IsLanguage("es"));
+  EXPECT_EQ(SwitchLanguage("en", qApp), "en");
+  EXPECT_EQ(QCoreApplication::translate("sightline::OperatorPanel", "STOP"), "STOP");
+}
+
+}  // namespace
+}  // namespace sightline
