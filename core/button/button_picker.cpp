@@ -198,7 +198,8 @@ void ButtonPicker::UpdateApproach(const SlamView& slam, const ButtonLocation& at
   }
   if (panel_normal_.empty()) return;
   out->approach_in_base = -panel_normal_.normal();
-  out->approach_sigma_deg = panel_normal_.sigma_rad() * 180.0 / M_PI;
+  out->approach_sigma_deg =
+      std::max(panel_normal_.sigma_rad() * 180.0 / M_PI, options_.normal.stated_min_sigma_deg);
 }
 
 PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Mat& image,

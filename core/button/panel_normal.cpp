@@ -20,6 +20,9 @@ bool PanelNormalOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.normal.ransac_threshold_m must be > 0");
   }
   if (!(min_sigma_deg > 0)) return Invalid(error, "button.normal.min_sigma_deg must be > 0");
+  if (!(stated_min_sigma_deg > 0)) {
+    return Invalid(error, "button.normal.stated_min_sigma_deg must be > 0");
+  }
   if (!(smoothing_s >= 0)) return Invalid(error, "button.normal.smoothing_s must be >= 0");
   if (!(outlier_sigmas > 0)) return Invalid(error, "button.normal.outlier_sigmas must be > 0");
   return true;
@@ -40,6 +43,10 @@ OptionTable<PanelNormalOptions> PanelNormalOptions::Describe() {
       .Double("min_sigma_deg", &O::min_sigma_deg, "deg", 0.01, 45, 0.1,
               "Smallest 1-sigma stated for one frame's normal (the map points' errors are "
               "correlated, so the fit's own figure is optimistic).")
+      .Double("stated_min_sigma_deg", &O::stated_min_sigma_deg, "deg", 0.01, 45, 0.1,
+              "Smallest approach_sigma_deg a target states: the average of frames that share one "
+              "map does not beat the map's own bias (on the simulated approach with the SLAM's "
+              "map, up to 4.3 deg against per-frame fits of 0.5 deg).")
       .Double("smoothing_s", &O::smoothing_s, "s", 0, 600, 0.1,
               "Older frames' normals fade with exp(-age / this) in the average (data time); "
               "0 = this frame's normal only.")

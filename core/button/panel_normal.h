@@ -19,7 +19,8 @@ struct PanelNormalOptions {
   int min_points = 12;                // Fewer points (or inliers): no normal this frame.
   int ransac_iterations = 300;        // Plane hypotheses.
   double ransac_threshold_m = 0.003;  // Plane inlier distance [m].
-  double min_sigma_deg = 0.5;         // Floor of a frame's 1-sigma (map errors are correlated).
+  double min_sigma_deg = 0.5;         // Floor of a frame's 1-sigma (weights, outlier test).
+  double stated_min_sigma_deg = 1.5;  // Floor of the sigma a target states [deg].
   double smoothing_s = 2.0;           // Time constant of the data-time average [s]; 0 = none.
   double outlier_sigmas = 4;          // A frame this many sigmas off the average is skipped.
   uint64_t seed = 7;                  // RANSAC random seed (deterministic runs).

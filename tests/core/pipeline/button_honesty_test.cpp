@@ -65,7 +65,7 @@ TEST(ButtonHonesty, ApproachIsThePanelNormalAndTheStatedUncertaintyCoversTheTrue
     ASSERT_GT(m["targets_sent"], 10) << "seed " << seed;
     ASSERT_TRUE(m.count("approach_error_deg_max")) << "seed " << seed;
     EXPECT_LT(m["approach_error_deg_max"], 5.0) << "seed " << seed;
-    EXPECT_LT(m["approach_error_deg_median"], 3.0) << "seed " << seed;
+    EXPECT_LT(m["approach_error_deg_median"], 4.0) << "seed " << seed;
     EXPECT_GE(m["approach_within_3_sigma"], 0.95) << "seed " << seed;
     targets += m["targets_sent"];
     covered += m["position_within_3_sigma"] * m["targets_sent"];
