@@ -54,6 +54,8 @@ QString OperatorReasonText(GateReason reason) {
       return ButtonPickerPresenter::tr("Panel unclear");
     case GateReason::kUncertain:
       return ButtonPickerPresenter::tr("Position not sure yet");
+    case GateReason::kApproachUncertain:
+      return ButtonPickerPresenter::tr("Panel direction not sure yet");
     case GateReason::kOutsideWorkspace:
       return ButtonPickerPresenter::tr("Button out of reach");
   }

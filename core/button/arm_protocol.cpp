@@ -45,6 +45,7 @@ std::string TargetLine(int64_t seq, double now_s, const ArmTarget& t) {
   w.Key("approach");
   Vector(w, t.approach);
   w.Key("uncertainty_m").Double(t.uncertainty_m);
+  w.Key("approach_sigma_deg").Double(t.approach_sigma_deg);
   w.Key("source_frames").BeginArray();
   for (int64_t f : t.source_frames) w.Int(f);
   w.EndArray();

@@ -20,6 +20,7 @@ struct ArmTarget {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // Button centre [m].
   Eigen::Vector3d approach = Eigen::Vector3d::UnitX();   // Unit push direction.
   double uncertainty_m = 0;                              // 1-sigma position uncertainty [m].
+  double approach_sigma_deg = 0;                         // 1-sigma of `approach` [deg].
   std::vector<int64_t> source_frames;                    // Frame ids the estimate used.
 };
 

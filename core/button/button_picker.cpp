@@ -38,9 +38,34 @@ OptionTable<ButtonFuseOptions> ButtonFuseOptions::Describe() {
            "plane, converged scale); 0 = every one since the tap, 1 = no fusion.");
 }
 
+bool ButtonUncertaintyOptions::IsValid(std::string* error) const {
+  if (!(tracking_sigma_px >= 0 && hand_eye_sigma_m >= 0 && hand_eye_sigma_deg >= 0 &&
+        spread_factor >= 0)) {
+    return button_internal::Invalid(error, "button.uncertainty.* must be >= 0");
+  }
+  return true;
+}
+
+OptionTable<ButtonUncertaintyOptions> ButtonUncertaintyOptions::Describe() {
+  using O = ButtonUncertaintyOptions;
+  return OptionTable<O>("button.uncertainty")
+      .Double("tracking_sigma_px", &O::tracking_sigma_px, "px", 0, 100, 0.1,
+              "1-sigma error of the tracked button centre; moves the point across the viewing "
+              "ray (the target's stated uncertainty includes it).")
+      .Double("hand_eye_sigma_m", &O::hand_eye_sigma_m, "m", 0, 1, 0.0005,
+              "1-sigma translation error of the hand-eye calibration (end effector to camera).")
+      .Double("hand_eye_sigma_deg", &O::hand_eye_sigma_deg, "deg", 0, 45, 0.05,
+              "1-sigma rotation error of the hand-eye calibration; times the distance to the "
+              "button.")
+      .Double("spread_factor", &O::spread_factor, "", 0, 10, 0.1,
+              "Weight of the fused positions' spread (1.4826 x median absolute deviation from "
+              "the fused target) in the stated uncertainty.");
+}
+
 bool ButtonPickerOptions::IsValid(std::string* error) const {
   return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) &&
-         gate.IsValid(error) && fuse.IsValid(error);
+         gate.IsValid(error) && fuse.IsValid(error) && normal.IsValid(error) &&
+         uncertainty.IsValid(error);
 }
 
 OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
@@ -50,7 +75,9 @@ OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
       .Nested(&O::track, ButtonTrackerOptions::Describe())
       .Nested(&O::locate, ButtonLocatorOptions::Describe())
       .Nested(&O::gate, SafetyGateOptions::Describe())
-      .Nested(&O::fuse, ButtonFuseOptions::Describe());
+      .Nested(&O::fuse, ButtonFuseOptions::Describe())
+      .Nested(&O::normal, PanelNormalOptions::Describe())
+      .Nested(&O::uncertainty, ButtonUncertaintyOptions::Describe());
 }
 
 const char* PickerStateKey(PickerState state) {
@@ -88,7 +115,7 @@ Status ButtonPicker::Tap(const cv::Mat& still, cv::Point2d tap, int64_t frame_id
   tracker_.reset();
   button_in_world_.reset();
   fused_positions_.clear();
-  fused_approaches_.clear();
+  panel_normal_.Reset();
   state_ = PickerState::kConfirm;
   return Status::Ok();
 }
@@ -104,7 +131,7 @@ void ButtonPicker::Cancel() {
   tracker_.reset();
   button_in_world_.reset();
   fused_positions_.clear();
-  fused_approaches_.clear();
+  panel_normal_.Reset();
   if (!stopped_) state_ = PickerState::kIdle;
 }
 
@@ -128,6 +155,51 @@ TrackPrediction ButtonPicker::Predict(const SlamView& slam) const {
   p.center = {px.x(), px.y()};
   p.scale = last_scale_ * last_depth_m_ / x.z();
   return p;
+}
+
+double ButtonPicker::TargetUncertainty(const SlamView& slam, const ButtonLocation& at,
+                                       bool fused) const {
+  const ButtonUncertaintyOptions& o = options_.uncertainty;
+  const double distance = at.button_in_camera.norm();
+  const double focal = std::max(1.0, 0.5 * (slam.camera.fx + slam.camera.fy));
+  const double tracking = o.tracking_sigma_px / focal * distance / std::max(0.2, at.incidence_cos);
+  const double hand_eye_rot = o.hand_eye_sigma_deg * M_PI / 180.0 * distance;
+  double spread = 0;
+  if (fused && fused_positions_.size() >= 3) {
+    const Eigen::Vector3d centre = Median(fused_positions_, options_.fuse.window);
+    const size_t n = options_.fuse.window > 0
+                         ? std::min(fused_positions_.size(), size_t(options_.fuse.window))
+                         : fused_positions_.size();
+    std::vector<double> d;
+    for (size_t i = fused_positions_.size() - n; i < fused_positions_.size(); ++i) {
+      d.push_back((fused_positions_[i] - centre).norm());
+    }
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    spread = o.spread_factor * 1.4826 * d[d.size() / 2];
+  }
+  const double sum2 = at.uncertainty_m * at.uncertainty_m + tracking * tracking +
+                      o.hand_eye_sigma_m * o.hand_eye_sigma_m + hand_eye_rot * hand_eye_rot +
+                      spread * spread;
+  return std::sqrt(sum2);
+}
+
+void ButtonPicker::UpdateApproach(const SlamView& slam, const ButtonLocation& at,
+                                  const Eigen::Isometry3d& base_from_camera, PickerFrame* out) {
+  std::vector<Eigen::Vector3d> in_camera;
+  in_camera.reserve(slam.map_points_in_world->size());
+  for (const Eigen::Vector3d& x : *slam.map_points_in_world) {
+    in_camera.push_back(slam.camera_from_world * x);
+  }
+  StatusOr<PanelNormal> normal =
+      EstimatePanelNormal(in_camera, at.button_in_camera, options_.normal);
+  if (normal.ok()) {
+    panel_normal_.Add(out->stamp_s, base_from_camera.linear() * normal->normal_in_camera,
+                      normal->sigma_rad);
+  }
+  if (panel_normal_.empty()) return;
+  out->approach_in_base = -panel_normal_.normal();
+  out->approach_sigma_deg =
+      std::max(panel_normal_.sigma_rad() * 180.0 / M_PI, options_.normal.stated_min_sigma_deg);
 }
 
 PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Mat& image,
@@ -166,20 +238,20 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
       last_scale_ = out.track.scale;
       last_depth_m_ = at->button_in_camera.z();
       out.button_in_base = base_from_camera * at->button_in_camera;
-      out.approach_in_base = base_from_camera.linear() * at->approach_in_camera;
+      UpdateApproach(slam, *at, base_from_camera, &out);
       out.fused_estimates = 1;
       if (at->plane_sound && slam.scale_converged && options_.fuse.window != 1) {
         fused_positions_.push_back(out.button_in_base);
-        fused_approaches_.push_back(out.approach_in_base);
         out.button_in_base = Median(fused_positions_, options_.fuse.window);
-        out.approach_in_base = Median(fused_approaches_, options_.fuse.window).normalized();
         out.fused_estimates = options_.fuse.window > 0
                                   ? std::min(int(fused_positions_.size()), options_.fuse.window)
                                   : int(fused_positions_.size());
       }
       safety.has_estimate = true;
       safety.plane_sound = at->plane_sound;
-      safety.uncertainty_m = at->uncertainty_m;
+      out.uncertainty_m = TargetUncertainty(slam, *at, out.fused_estimates > 1);
+      safety.uncertainty_m = out.uncertainty_m;
+      safety.approach_sigma_deg = out.approach_sigma_deg;
       safety.target_in_base = out.button_in_base;
     }
   }
@@ -191,7 +263,8 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
     t.stamp_s = stamp_s;
     t.position_m = out.button_in_base;
     t.approach = out.approach_in_base;
-    t.uncertainty_m = out.location->uncertainty_m;
+    t.uncertainty_m = out.uncertainty_m;
+    t.approach_sigma_deg = out.approach_sigma_deg;
     t.source_frames = {frame_id};
     if (tap_frame_ >= 0) t.source_frames.insert(t.source_frames.begin(), tap_frame_);
     out.target = t;

@@ -18,6 +18,7 @@
 #include "core/button/button_locator.h"
 #include "core/button/button_tracker.h"
 #include "core/button/button_types.h"
+#include "core/button/panel_normal.h"
 #include "core/button/safety_gate.h"
 
 namespace sightline {
@@ -33,6 +34,18 @@ struct ButtonFuseOptions {
   static OptionTable<ButtonFuseOptions> Describe();
 };
 
+// What the target's stated uncertainty adds to the located button's own (plane fit and scale),
+// so that it covers the true error. Keys "button.uncertainty.*".
+struct ButtonUncertaintyOptions {
+  double tracking_sigma_px = 1.0;   // Tracked centre error, moves the point across the ray [px].
+  double hand_eye_sigma_m = 0.001;  // Hand-eye calibration, translation [m].
+  double hand_eye_sigma_deg = 0.1;  // Hand-eye calibration, rotation (times the distance) [deg].
+  double spread_factor = 1.0;       // Weight of the fused positions' spread (1.4826 MAD) [-].
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<ButtonUncertaintyOptions> Describe();
+};
+
 // All button options. Keys "button.*".
 struct ButtonPickerOptions {
   ButtonDetectorOptions detect;
@@ -40,6 +53,8 @@ struct ButtonPickerOptions {
   ButtonLocatorOptions locate;
   SafetyGateOptions gate;
   ButtonFuseOptions fuse;
+  PanelNormalOptions normal;
+  ButtonUncertaintyOptions uncertainty;
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonPickerOptions> Describe();
@@ -65,7 +80,8 @@ struct SlamView {
 //   picker.Stop(); server->PublishStop("operator");
 class ButtonPicker {
  public:
-  explicit ButtonPicker(ButtonPickerOptions options = {}) : options_(std::move(options)) {}
+  explicit ButtonPicker(ButtonPickerOptions options = {})
+      : options_(std::move(options)), panel_normal_(options_.normal) {}
 
   // Finds the button at the tap on the still frame; asks for confirmation. NotFound = "no
   // button here"; InvalidArgument for bad input. Ignored (FailedPrecondition) while stopped.
@@ -88,6 +104,12 @@ class ButtonPicker {
 
  private:
   TrackPrediction Predict(const SlamView& slam) const;
+  // The target's 1-sigma position uncertainty: the location's own, tracking, hand-eye and the
+  // spread of the fused positions.
+  double TargetUncertainty(const SlamView& slam, const ButtonLocation& at, bool fused) const;
+  // Adds this frame's panel normal to the average; sets out->approach_in_base and its sigma.
+  void UpdateApproach(const SlamView& slam, const ButtonLocation& at,
+                      const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
 
   ButtonPickerOptions options_;
   PickerState state_ = PickerState::kIdle;
@@ -97,7 +119,8 @@ class ButtonPicker {
   std::unique_ptr<ButtonTracker> tracker_;
   std::optional<Eigen::Vector3d> button_in_world_;  // Last located position.
   double last_scale_ = 1.0, last_depth_m_ = 0;      // Track scale and depth at that time.
-  std::vector<Eigen::Vector3d> fused_positions_, fused_approaches_;  // Base frame, since the tap.
+  std::vector<Eigen::Vector3d> fused_positions_;    // Base frame, since the tap.
+  NormalAverage panel_normal_;                      // Base frame, since the tap (data time).
 };
 
 }  // namespace sightline

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "core/button/arm_protocol.h"
@@ -37,7 +38,13 @@ struct PickerFrame {
   std::optional<ButtonLocation> location;  // Camera frame.
   Eigen::Vector3d button_in_base = Eigen::Vector3d::Constant(std::nan(""));  // Fused.
   int fused_estimates = 0;  // Estimates in button_in_base.
+  // 1-sigma of button_in_base: the location's own (fit, scale), tracking, hand-eye and the
+  // fused positions' spread (ButtonUncertaintyOptions); 0 without a location.
+  double uncertainty_m = 0;
+  // The push direction: the averaged panel normal, inward (NaN while none is known), and its
+  // 1-sigma [deg] (infinite while none is known).
   Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  double approach_sigma_deg = std::numeric_limits<double>::infinity();
   GateVerdict verdict;
   std::optional<ArmTarget> target;  // Set when the gate lets it out.
 };

@@ -15,6 +15,9 @@ bool SafetyGateOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.gate.min_confidence must lie in [0, 1]");
   }
   if (!(max_uncertainty_m > 0)) return Invalid(error, "button.gate.max_uncertainty_m must be > 0");
+  if (!(max_approach_sigma_deg > 0)) {
+    return Invalid(error, "button.gate.max_approach_sigma_deg must be > 0");
+  }
   if (!(workspace_min_x_m < workspace_max_x_m && workspace_min_y_m < workspace_max_y_m &&
         workspace_min_z_m < workspace_max_z_m)) {
     return Invalid(error, "button.gate.workspace: every min must be below its max");
@@ -30,6 +33,9 @@ OptionTable<SafetyGateOptions> SafetyGateOptions::Describe() {
               "Weaker tracking confidence: no target.")
       .Double("max_uncertainty_m", &O::max_uncertainty_m, "m", 1e-4, 1, 0.001,
               "Larger 1-sigma position uncertainty: no target.")
+      .Double("max_approach_sigma_deg", &O::max_approach_sigma_deg, "deg", 0.1, 90, 0.5,
+              "Larger 1-sigma uncertainty of the approach direction (the panel normal): no "
+              "target.")
       .Double("workspace_min_x_m", &O::workspace_min_x_m, "m", -10, 10, 0.01,
               "Workspace box, base x min.")
       .Double("workspace_max_x_m", &O::workspace_max_x_m, "m", -10, 10, 0.01,
@@ -66,6 +72,8 @@ const char* GateReasonKey(GateReason reason) {
       return "plane_unsound";
     case GateReason::kUncertain:
       return "uncertain";
+    case GateReason::kApproachUncertain:
+      return "approach_uncertain";
     case GateReason::kOutsideWorkspace:
       return "outside_workspace";
   }
@@ -112,6 +120,11 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
     std::snprintf(text, sizeof(text), "uncertainty %.1f mm above %.1f mm", s.uncertainty_m * 1e3,
                   o.max_uncertainty_m * 1e3);
     return Refuse(GateReason::kUncertain, text);
+  }
+  if (!(s.approach_sigma_deg <= o.max_approach_sigma_deg)) {
+    std::snprintf(text, sizeof(text), "approach direction uncertain: %.1f deg above %.1f deg",
+                  s.approach_sigma_deg, o.max_approach_sigma_deg);
+    return Refuse(GateReason::kApproachUncertain, text);
   }
   if (!Inside(s.target_in_base, o)) {
     std::snprintf(text, sizeof(text), "target (%.2f, %.2f, %.2f) m outside the workspace",

@@ -1,10 +1,12 @@
 // The safety gate between the button estimate and the arm: a target goes out only when the
 // operator confirmed, STOP is not active, tracking is good, the estimate is fresh, the metric
-// scale has converged, the plane fit is sound and the point lies inside the workspace box.
+// scale has converged, the plane fit is sound, position and approach direction are certain
+// enough and the point lies inside the workspace box.
 // A pure function of its inputs, so every rule is testable on its own.
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 
 #include "core/options/option_table.h"
@@ -13,9 +15,10 @@ namespace sightline {
 
 // Gate options. Keys "button.gate.*". The workspace box is in the arm base frame.
 struct SafetyGateOptions {
-  double max_age_ms = 200;          // Older estimates are not sent [ms].
-  double min_confidence = 0.3;      // Weaker tracking confidence is "tracking poor".
-  double max_uncertainty_m = 0.02;  // Larger 1-sigma position uncertainty is not sent [m].
+  double max_age_ms = 200;            // Older estimates are not sent [ms].
+  double min_confidence = 0.3;        // Weaker tracking confidence is "tracking poor".
+  double max_uncertainty_m = 0.02;    // Larger 1-sigma position uncertainty is not sent [m].
+  double max_approach_sigma_deg = 5;  // Larger 1-sigma approach uncertainty is not sent [deg].
   double workspace_min_x_m = 0.1, workspace_max_x_m = 1.3;  // Base frame box [m].
   double workspace_min_y_m = -0.6, workspace_max_y_m = 0.6;
   double workspace_min_z_m = -0.5, workspace_max_z_m = 0.9;
@@ -35,6 +38,9 @@ struct SafetyState {
   bool scale_converged = false;     // The SLAM's metric scale estimate has converged.
   bool plane_sound = false;         // ButtonLocation::plane_sound.
   double uncertainty_m = 0;         // ButtonLocation::uncertainty_m.
+  // 1-sigma angular uncertainty of the approach direction (the panel normal) [deg]; infinite
+  // when no normal is known.
+  double approach_sigma_deg = std::numeric_limits<double>::infinity();
   Eigen::Vector3d target_in_base = Eigen::Vector3d::Zero();
 };
 
@@ -50,6 +56,7 @@ enum class GateReason {
   kScaleNotConverged,
   kPlaneUnsound,
   kUncertain,
+  kApproachUncertain,
   kOutsideWorkspace,
 };
 

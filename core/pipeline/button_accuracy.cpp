@@ -27,21 +27,6 @@ Eigen::Vector3d FuseMedian(const std::vector<Eigen::Vector3d>& values, int windo
   return out;
 }
 
-// The true button nearest the tapped candidate in the tap frame, and its distance [px].
-const TrueButton* TappedButton(const ButtonRunLog& log, const ButtonTruth& truth,
-                               double* distance_px) {
-  const TrueButton* button = nullptr;
-  *distance_px = 1e18;
-  const size_t f = static_cast<size_t>(log.tap_index);
-  const Eigen::Vector2d tapped(log.tapped_centre->x, log.tapped_centre->y);
-  for (const TrueButton& b : truth.buttons) {
-    if (f >= b.pixel.size() || !b.visible[f]) continue;
-    const double d = (b.pixel[f] - tapped).norm();
-    if (d < *distance_px) *distance_px = d, button = &b;
-  }
-  return button;
-}
-
 void AddTrackErrors(const ButtonRunLog& log, const TrueButton& button, RunResult* result) {
   std::vector<double> errors;
   for (const ButtonRunRow& row : log.rows) {
@@ -101,7 +86,54 @@ void AddFinalErrors(const ButtonRunLog& log, const MetricSlamView& metric,
                                 1e3 * (*single - truth_in_base).norm());
 }
 
+// The approach's angle to the truth and the share of targets whose true errors lie within 3 of
+// their stated sigmas (position and approach).
+void AddHonestyFigures(const ButtonRunLog& log, const TrueButton& button,
+                       const Eigen::Isometry3d& world_from_base, RunResult* result) {
+  const Eigen::Vector3d truth_in_base = world_from_base.inverse() * button.center_in_world;
+  std::vector<double> angles;
+  int position_covered = 0, approach_covered = 0;
+  for (const SentTarget& t : log.sent) {
+    const double angle = ApproachAngleDeg(t.target.approach, button, world_from_base);
+    if (std::isfinite(angle)) angles.push_back(angle);
+    approach_covered += angle <= 3 * t.target.approach_sigma_deg;
+    position_covered += (t.target.position_m - truth_in_base).norm() <= 3 * t.target.uncertainty_m;
+  }
+  if (log.sent.empty()) return;
+  const double n = static_cast<double>(log.sent.size());
+  result->accuracy.emplace_back("position_within_3_sigma", position_covered / n);
+  if (angles.empty()) return;
+  result->accuracy.emplace_back("approach_error_deg_median", Median(angles));
+  result->accuracy.emplace_back("approach_error_deg_max",
+                                *std::max_element(angles.begin(), angles.end()));
+  result->accuracy.emplace_back("approach_error_deg_final", angles.back());
+  result->accuracy.emplace_back("approach_within_3_sigma", approach_covered / n);
+}
+
 }  // namespace
+
+const TrueButton* TappedTrueButton(const ButtonRunLog& log, const ButtonTruth& truth,
+                                   double* distance_px) {
+  const TrueButton* button = nullptr;
+  *distance_px = 1e18;
+  if (!log.tapped_centre || log.tap_index < 0) return nullptr;
+  const size_t f = static_cast<size_t>(log.tap_index);
+  const Eigen::Vector2d tapped(log.tapped_centre->x, log.tapped_centre->y);
+  for (const TrueButton& b : truth.buttons) {
+    if (f >= b.pixel.size() || !b.visible[f]) continue;
+    const double d = (b.pixel[f] - tapped).norm();
+    if (d < *distance_px) *distance_px = d, button = &b;
+  }
+  return button;
+}
+
+double ApproachAngleDeg(const Eigen::Vector3d& approach_in_base, const TrueButton& button,
+                        const Eigen::Isometry3d& world_from_base) {
+  if (!approach_in_base.allFinite() || !button.normal_in_world.allFinite()) return std::nan("");
+  const Eigen::Vector3d push = -(world_from_base.linear().transpose() * button.normal_in_world);
+  const double c = approach_in_base.normalized().dot(push.normalized());
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
+}
 
 void AddButtonFigures(const ButtonRunLog& log, const MetricSlamView& metric,
                       const PinholeCamera& camera, const ButtonPickerOptions& picker,
@@ -123,7 +155,7 @@ void AddButtonFigures(const ButtonRunLog& log, const MetricSlamView& metric,
   }
   if (!truth || !log.tapped_centre) return;
   double distance_px = 0;
-  const TrueButton* button = TappedButton(log, *truth, &distance_px);
+  const TrueButton* button = TappedTrueButton(log, *truth, &distance_px);
   if (button == nullptr) {
     notes->push_back("no true button is visible in the tap frame");
     return;
@@ -137,6 +169,7 @@ void AddButtonFigures(const ButtonRunLog& log, const MetricSlamView& metric,
     const Eigen::Vector3d truth_in_base =
         truth->world_from_base->inverse() * button->center_in_world;
     AddFinalErrors(log, metric, camera, picker, truth_in_base, result, notes);
+    AddHonestyFigures(log, *button, *truth->world_from_base, result);
   }
 }
 

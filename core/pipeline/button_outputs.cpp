@@ -49,6 +49,48 @@ StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path) {
   return out;
 }
 
+namespace {
+
+// The three numbers of "[a, b, c]" after `key` in `text`; nullopt when absent or malformed.
+std::optional<Eigen::Vector3d> YamlVector(const std::string& text, const std::string& key) {
+  const size_t at = text.find(key + ": [");
+  if (at == std::string::npos) return std::nullopt;
+  Eigen::Vector3d v;
+  const char* s = text.c_str() + at + key.size() + 3;
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtod(s, &end);
+    if (end == s || *end != (i < 2 ? ',' : ']')) return std::nullopt;
+    s = end + 1;
+  }
+  if (!v.allFinite()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+Status AddTrueButtonNormals(const std::string& scene_yaml, std::vector<TrueButton>* buttons) {
+  std::ifstream in(scene_yaml);
+  if (!in) return NotFound("scene file '" + scene_yaml + "' not found");
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const size_t at = line.find("- {id: ");
+    if (at == std::string::npos || line.find("normal: ") == std::string::npos) continue;
+    const int id = std::atoi(line.c_str() + at + 7);
+    const std::optional<Eigen::Vector3d> normal = YamlVector(line, "normal");
+    if (!normal || normal->norm() < 1e-9) {
+      return ParseError(scene_yaml + ":" + std::to_string(number) + ": button " +
+                        std::to_string(id) + " has no valid normal: [x, y, z]");
+    }
+    for (TrueButton& b : *buttons) {
+      if (b.id == id) b.normal_in_world = normal->normalized();
+    }
+  }
+  return Status::Ok();
+}
+
 Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& path) {
   std::ofstream out(path);
   if (!out) return Unavailable("cannot write " + path);

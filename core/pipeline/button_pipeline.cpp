@@ -180,9 +180,14 @@ const StatisticTable& ButtonStatistics() {
         {"button/scale_ml", "", "Map units per metre (ML estimate), 0 = unknown."},
         {"button/track_confidence", "", "Confidence of the button's track, 0..1."},
         {"button/fused_estimates", "count", "Positions in the fused target."},
-        {"button/uncertainty_m", "m", "1-sigma uncertainty of the located button."},
+        {"button/uncertainty_m", "m",
+         "1-sigma uncertainty of the target (fit, scale, tracking, hand-eye, spread)."},
         {"button/distance_m", "m", "Distance from the camera to the located button."},
         {"button/target_sent", "", "The safety gate let a target out."},
+        {"button/approach_sigma_deg", "deg",
+         "1-sigma of the approach direction (the averaged panel normal)."},
+        {"button/approach_err_deg", "deg",
+         "Angle between the approach and the tapped button's true push direction (simulator)."},
     };
     table.insert(table.end(), button.begin(), button.end());
     return table;
@@ -276,6 +281,8 @@ StatusOr<std::optional<ButtonTruth>> LoadTruth(const std::string& path,
   if (!read.ok()) return read.status();
   ButtonTruth truth;
   truth.buttons = std::move(*read);
+  const std::string scene = FindBeside(path, "scene.yaml");
+  if (!scene.empty()) SIGHTLINE_RETURN_IF_ERROR(AddTrueButtonNormals(scene, &truth.buttons));
   std::string hand_eye = run.hand_eye;
   if (hand_eye.empty()) hand_eye = FindBeside(path, "hand_eye.yaml");
   if (!hand_eye.empty() && hand_eye != "none") {
@@ -297,6 +304,7 @@ Status ButtonPipeline::Open(const PipelineSource& source) {
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
   if (!truth.ok()) return truth.status();
   truth_ = std::move(*truth);
+  true_button_ = nullptr;
   source_ = source;
   SIGHTLINE_RETURN_IF_ERROR(StartOutput());
   StartRun();
@@ -336,6 +344,7 @@ void ButtonPipeline::StartRun() {
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
   log_ = ButtonRunLog();
+  true_button_ = nullptr;
   frames_ = 0;
   seen_.clear();
   last_.reset();
@@ -471,6 +480,8 @@ Status ButtonPipeline::HandleTap(const ButtonTapRequest& tap, const MonoSlamResu
   if (tap.confirm) picker_->Confirm();
   log_.tapped_centre = candidate.center;
   log_.tap_index = index;
+  double distance_px = 0;
+  true_button_ = truth_ ? TappedTrueButton(log_, *truth_, &distance_px) : nullptr;
   log_.tap_stamp_s = r.stamp.sensor_time_s;
   log_.first_target_index = -1;
   log_.processing_ms_to_first = 0;
@@ -550,10 +561,20 @@ void ButtonPipeline::AddStats(const std::vector<std::pair<std::string, double>>&
   out->stats.emplace_back("button/track_confidence", p.track.confidence);
   out->stats.emplace_back("button/fused_estimates", p.fused_estimates);
   if (p.location) {
-    out->stats.emplace_back("button/uncertainty_m", p.location->uncertainty_m);
+    out->stats.emplace_back("button/uncertainty_m", p.uncertainty_m);
     out->stats.emplace_back("button/distance_m", p.location->button_in_camera.norm());
   }
   out->stats.emplace_back("button/target_sent", p.target ? 1 : 0);
+  if (std::isfinite(p.approach_sigma_deg)) {
+    out->stats.emplace_back("button/approach_sigma_deg", p.approach_sigma_deg);
+  }
+  const double error_deg = ApproachErrorDeg(p.approach_in_base);
+  if (std::isfinite(error_deg)) out->stats.emplace_back("button/approach_err_deg", error_deg);
+}
+
+double ButtonPipeline::ApproachErrorDeg(const Eigen::Vector3d& approach_in_base) const {
+  if (!true_button_ || !truth_ || !truth_->world_from_base) return std::nan("");
+  return ApproachAngleDeg(approach_in_base, *true_button_, *truth_->world_from_base);
 }
 
 void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, int64_t index,

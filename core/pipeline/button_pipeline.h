@@ -69,11 +69,17 @@ struct ButtonRunRow {
 struct TrueButton {
   int id = -1;
   Eigen::Vector3d center_in_world = Eigen::Vector3d::Zero();
+  // Out of the panel, toward the viewer (scene.yaml); NaN when unknown.
+  Eigen::Vector3d normal_in_world = Eigen::Vector3d::Constant(std::nan(""));
   std::vector<Eigen::Vector2d> pixel;  // Indexed by frame.
   std::vector<bool> visible;
 };
 // Reads buttons.csv. NotFound / ParseError naming the file and line.
 StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path);
+
+// Sets the buttons' normals from the simulator's scene.yaml ("- {id: N, ..., normal: [x, y, z]").
+// NotFound / ParseError naming the file and line.
+Status AddTrueButtonNormals(const std::string& scene_yaml, std::vector<TrueButton>* buttons);
 
 // Writes button.csv (one row per frame from the tap on).
 Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& path);
@@ -168,6 +174,8 @@ class ButtonPipeline : public Pipeline {
               double frame_ms);
   void AddStats(const std::vector<std::pair<std::string, double>>& mono, double slam_ms,
                 bool picker_ran, ButtonFrameResult* out) const;
+  // Angle to the tapped true button's push direction [deg]; NaN without the simulator's truth.
+  double ApproachErrorDeg(const Eigen::Vector3d& approach_in_base) const;
 
   bool headless_;  // No operator: the tap comes from button.run.tap.
   std::shared_ptr<ButtonCommands> commands_;
@@ -179,6 +187,7 @@ class ButtonPipeline : public Pipeline {
   std::unique_ptr<MetricSlamView> metric_;
   std::shared_ptr<ButtonTargetOutput> output_;
   std::optional<ButtonTruth> truth_;
+  const TrueButton* true_button_ = nullptr;  // The tapped one, in truth_.
   ButtonRunLog log_;
   int64_t frames_ = 0;
   double host_delay_s_ = 0;
@@ -186,6 +195,16 @@ class ButtonPipeline : public Pipeline {
   std::shared_ptr<const ButtonFrameResult> last_;  // The last frame's result.
   bool fresh_run_ = true;                          // No frame processed since the run started.
 };
+
+// The true button nearest the tapped candidate in the tap frame, and its distance [px]; null
+// when none is visible there.
+const TrueButton* TappedTrueButton(const ButtonRunLog& log, const ButtonTruth& truth,
+                                   double* distance_px);
+
+// The angle between `approach_in_base` and the true push direction of `button` (against its
+// normal) [deg]; NaN when either is unknown.
+double ApproachAngleDeg(const Eigen::Vector3d& approach_in_base, const TrueButton& button,
+                        const Eigen::Isometry3d& world_from_base);
 
 // The figures of a finished button run: targets, scale, tap-to-target, server counts and, with
 // the simulator's truth, the errors against the tapped button. Notes explain figures left out.

@@ -53,6 +53,7 @@ ArmTarget Target() {
   t.position_m = {0.512, -0.031, 0.318};
   t.approach = {1, 0, 0};
   t.uncertainty_m = 0.0021;
+  t.approach_sigma_deg = 1.5;
   t.source_frames = {41, 42};
   return t;
 }
@@ -68,7 +69,7 @@ TEST(ArmServer, AClientReceivesTargetsWithTheSchema) {
   const std::regex schema(
       R"(\{"version":2,"type":"target","seq":(\d+),"stamp":\d{10}\.\d{6},"frame_stamp":12\.500000,)"
       R"("frame_id":"arm_base","position_m":\[0\.512,-0\.031,0\.318\],"approach":\[1,0,0\],)"
-      R"("uncertainty_m":0\.0021,"source_frames":\[41,42\]\})");
+      R"("uncertainty_m":0\.0021,"approach_sigma_deg":1\.5,"source_frames":\[41,42\]\})");
   std::smatch m;
   ASSERT_TRUE(std::regex_match(line, m, schema)) << line;
   EXPECT_EQ(std::stoll(m[1]), seq);

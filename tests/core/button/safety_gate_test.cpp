@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <limits>
 
 namespace sightline {
 namespace {
@@ -19,6 +20,7 @@ SafetyState Good() {
   s.scale_converged = true;
   s.plane_sound = true;
   s.uncertainty_m = 0.003;
+  s.approach_sigma_deg = 1.5;
   s.target_in_base = {0.5, 0.0, 0.3};
   return s;
 }
@@ -47,6 +49,11 @@ TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
       {"scale", [](SafetyState& s) { s.scale_converged = false; }, GateReason::kScaleNotConverged},
       {"plane", [](SafetyState& s) { s.plane_sound = false; }, GateReason::kPlaneUnsound},
       {"uncertain", [](SafetyState& s) { s.uncertainty_m = 0.05; }, GateReason::kUncertain},
+      {"approach uncertain", [](SafetyState& s) { s.approach_sigma_deg = 6; },
+       GateReason::kApproachUncertain},
+      {"approach unknown",
+       [](SafetyState& s) { s.approach_sigma_deg = std::numeric_limits<double>::infinity(); },
+       GateReason::kApproachUncertain},
       {"outside x", [](SafetyState& s) { s.target_in_base.x() = 2.0; },
        GateReason::kOutsideWorkspace},
       {"outside z", [](SafetyState& s) { s.target_in_base.z() = -1.0; },

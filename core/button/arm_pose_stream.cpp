@@ -1,0 +1,227 @@
+#include "core/button/arm_pose_stream.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+
+#include "core/button/option_check.h"
+
+namespace sightline {
+
+using button_internal::Invalid;
+
+bool ArmPoseStreamOptions::IsValid(std::string* error) const {
+  if (max_joints < 0) return Invalid(error, "button.arm_pose.max_joints must be >= 0");
+  if (!(max_position_m > 0)) return Invalid(error, "button.arm_pose.max_position_m must be > 0");
+  if (!(max_rate_hz > 0)) return Invalid(error, "button.arm_pose.max_rate_hz must be > 0");
+  if (!std::isfinite(clock_offset_s))
+    return Invalid(error, "button.arm_pose.clock_offset_s must be finite");
+  if (!(max_gap_s > 0)) return Invalid(error, "button.arm_pose.max_gap_s must be > 0");
+  if (!(keep_s > 0)) return Invalid(error, "button.arm_pose.keep_s must be > 0");
+  return true;
+}
+
+OptionTable<ArmPoseStreamOptions> ArmPoseStreamOptions::Describe() {
+  using O = ArmPoseStreamOptions;
+  return OptionTable<O>("button.arm_pose")
+      .Int("max_joints", &O::max_joints, "", 0, 64, 1,
+           "An arm_pose message with more joint positions is refused.")
+      .Double("max_position_m", &O::max_position_m, "m", 0.1, 100, 0.1,
+              "An arm_pose position farther than this from the base is refused.")
+      .Double("max_rate_hz", &O::max_rate_hz, "Hz", 1, 10000, 10,
+              "arm_pose messages closer than 1/this in the arm's time are dropped (counted).")
+      .Double("clock_offset_s", &O::clock_offset_s, "s", -1e9, 1e9, 0.001,
+              "The arm's clock minus the camera's (configured; arm stamp = frame stamp + this).")
+      .Double("max_gap_s", &O::max_gap_s, "s", 0.001, 10, 0.005,
+              "No pose is interpolated across a larger gap between two arm_pose messages.")
+      .Double("keep_s", &O::keep_s, "s", 0.1, 600, 0.5,
+              "arm_pose messages older than this behind the newest are forgotten.");
+}
+
+namespace {
+
+// A member's value: a string, a number, a numeric array, or another scalar (bool, null).
+struct Value {
+  enum Kind { kString, kNumber, kArray, kOther } kind = kOther;
+  std::string text;
+  double number = 0;
+  std::vector<double> array;
+};
+
+// A strict reader of one flat JSON object whose members are scalars or numeric arrays.
+class Reader {
+ public:
+  explicit Reader(const std::string& s) : s_(s) {}
+
+  Status Object(std::map<std::string, Value>* members) {
+    if (!Eat('{')) return Bad("expected one JSON object");
+    if (Eat('}')) return End();
+    do {
+      std::string key;
+      if (!String(&key)) return Bad("expected a member name");
+      if (!Eat(':')) return Bad("expected ':' after \"" + key + "\"");
+      Value value;
+      SIGHTLINE_RETURN_IF_ERROR(Member(key, &value));
+      if (!members->emplace(key, std::move(value)).second) return Bad("duplicate \"" + key + "\"");
+    } while (Eat(','));
+    if (!Eat('}')) return Bad("expected ',' or '}'");
+    return End();
+  }
+
+ private:
+  static Status Bad(const std::string& what) { return InvalidArgument("arm_pose: " + what); }
+  void Skip() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  }
+  bool Eat(char c) {
+    Skip();
+    if (i_ >= s_.size() || s_[i_] != c) return false;
+    ++i_;
+    return true;
+  }
+  Status End() {
+    Skip();
+    return i_ == s_.size() ? Status::Ok() : Bad("text after the object");
+  }
+  bool String(std::string* out) {
+    if (!Eat('"')) return false;
+    while (i_ < s_.size()) {
+      const char c = s_[i_++];
+      if (c == '"') return true;
+      if (static_cast<unsigned char>(c) < 0x20 || c == '\\') return false;  // No escapes here.
+      out->push_back(c);
+    }
+    return false;
+  }
+  bool Number(double* out) {
+    Skip();
+    const char* start = s_.c_str() + i_;
+    if (*start != '-' && !std::isdigit(static_cast<unsigned char>(*start))) return false;
+    char* end = nullptr;
+    *out = std::strtod(start, &end);
+    if (end == start) return false;
+    for (const char* c = start; c < end; ++c) {  // Plain decimal JSON numbers only (no hex,
+      if (!std::isdigit(static_cast<unsigned char>(*c)) && !std::strchr("+-.eE", *c))  // inf).
+        return false;
+    }
+    i_ += static_cast<size_t>(end - start);
+    return true;
+  }
+  Status Member(const std::string& key, Value* v) {
+    Skip();
+    const char c = i_ < s_.size() ? s_[i_] : '\0';
+    if (c == '"') {
+      v->kind = Value::kString;
+      return String(&v->text) ? Status::Ok() : Bad("bad string in \"" + key + "\"");
+    }
+    if (c == '[') {
+      ++i_;
+      v->kind = Value::kArray;
+      if (Eat(']')) return Status::Ok();
+      do {
+        double x = 0;
+        if (!Number(&x) || v->array.size() >= 64) return Bad("\"" + key + "\": numbers only");
+        v->array.push_back(x);
+      } while (Eat(','));
+      return Eat(']') ? Status::Ok() : Bad("\"" + key + "\": expected ']'");
+    }
+    for (const char* word : {"true", "false", "null"}) {
+      if (s_.compare(i_, std::strlen(word), word) == 0) {
+        i_ += std::strlen(word);
+        return Status::Ok();
+      }
+    }
+    v->kind = Value::kNumber;
+    return Number(&v->number) ? Status::Ok() : Bad("bad value of \"" + key + "\"");
+  }
+
+  const std::string& s_;
+  size_t i_ = 0;
+};
+
+// The finite numeric array `key` of `size` numbers (any size when `size` < 0).
+StatusOr<std::vector<double>> Numbers(const std::map<std::string, Value>& m, const std::string& key,
+                                      int size) {
+  auto it = m.find(key);
+  if (it == m.end() || it->second.kind != Value::kArray) {
+    return InvalidArgument("arm_pose: \"" + key + "\" must be an array of numbers");
+  }
+  const std::vector<double>& a = it->second.array;
+  if (size >= 0 && int(a.size()) != size) {
+    return InvalidArgument("arm_pose: \"" + key + "\" needs " + std::to_string(size) + " numbers");
+  }
+  for (double x : a) {
+    if (!std::isfinite(x)) return InvalidArgument("arm_pose: \"" + key + "\" is not finite");
+  }
+  return a;
+}
+
+}  // namespace
+
+StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
+                                          const ArmPoseStreamOptions& options) {
+  std::map<std::string, Value> m;
+  SIGHTLINE_RETURN_IF_ERROR(Reader(line).Object(&m));
+  auto type = m.find("type");
+  if (type == m.end() || type->second.kind != Value::kString || type->second.text != "arm_pose")
+    return InvalidArgument("arm_pose: \"type\" must be \"arm_pose\"");
+  auto stamp = m.find("stamp");
+  if (stamp == m.end() || stamp->second.kind != Value::kNumber ||
+      !std::isfinite(stamp->second.number) || stamp->second.number < 0) {
+    return InvalidArgument("arm_pose: \"stamp\" must be a finite number >= 0 (seconds)");
+  }
+  StatusOr<std::vector<double>> p = Numbers(m, "position_m", 3);
+  if (!p.ok()) return p.status();
+  StatusOr<std::vector<double>> q = Numbers(m, "quaternion_xyzw", 4);
+  if (!q.ok()) return q.status();
+  const Eigen::Vector3d position((*p)[0], (*p)[1], (*p)[2]);
+  if (position.norm() > options.max_position_m)
+    return InvalidArgument("arm_pose: \"position_m\" beyond button.arm_pose.max_position_m");
+  Eigen::Quaterniond quaternion((*q)[3], (*q)[0], (*q)[1], (*q)[2]);
+  if (std::abs(quaternion.norm() - 1) > 0.1)
+    return InvalidArgument("arm_pose: \"quaternion_xyzw\" is not a unit quaternion");
+  ArmPoseMessage out;
+  out.stamp_s = stamp->second.number;
+  out.base_from_end_effector = Eigen::Translation3d(position) * quaternion.normalized();
+  if (m.count("joints")) {
+    StatusOr<std::vector<double>> joints = Numbers(m, "joints", -1);
+    if (!joints.ok()) return joints.status();
+    if (int(joints->size()) > options.max_joints)
+      return InvalidArgument("arm_pose: more \"joints\" than button.arm_pose.max_joints");
+    out.joints = std::move(*joints);
+  }
+  return out;
+}
+
+bool ArmPoseBuffer::Add(const ArmPoseMessage& pose) {
+  if (!poses_.empty() && !(pose.stamp_s >= poses_.back().stamp_s + 1.0 / options_.max_rate_hz)) {
+    ++dropped_;
+    return false;
+  }
+  poses_.push_back(pose);
+  while (poses_.front().stamp_s < pose.stamp_s - options_.keep_s) poses_.pop_front();
+  return true;
+}
+
+std::optional<Eigen::Isometry3d> ArmPoseBuffer::At(double camera_stamp_s) const {
+  const double t = camera_stamp_s + options_.clock_offset_s;
+  if (poses_.empty() || t < poses_.front().stamp_s || t > poses_.back().stamp_s) {
+    return std::nullopt;
+  }
+  size_t hi = 0;
+  while (poses_[hi].stamp_s < t) ++hi;
+  if (poses_[hi].stamp_s == t) return poses_[hi].base_from_end_effector;
+  const ArmPoseMessage& a = poses_[hi - 1];
+  const ArmPoseMessage& b = poses_[hi];
+  if (b.stamp_s - a.stamp_s > options_.max_gap_s) return std::nullopt;
+  const double w = (t - a.stamp_s) / (b.stamp_s - a.stamp_s);
+  const Eigen::Quaterniond qa(a.base_from_end_effector.linear());
+  const Eigen::Quaterniond qb(b.base_from_end_effector.linear());
+  const Eigen::Vector3d p =
+      (1 - w) * a.base_from_end_effector.translation() + w * b.base_from_end_effector.translation();
+  return Eigen::Isometry3d(Eigen::Translation3d(p) * qa.slerp(w, qb));
+}
+
+}  // namespace sightline

@@ -1,0 +1,70 @@
+// The arm's pose streamed in by an authenticated arm client (PROTOCOL.md, `arm_pose`): a strict
+// parser of one message line, and the buffer that keeps the recent poses and interpolates
+// base_from_end_effector at a camera frame's stamp (data time, with an explicit clock offset).
+// Not yet read by the arm-target server nor used by the metric scale (issue 17, part B).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/status.h"
+#include "core/options/option_table.h"
+
+namespace sightline {
+
+// One `arm_pose` message:
+//   {"type":"arm_pose","stamp":12.345678,"position_m":[x,y,z],"quaternion_xyzw":[x,y,z,w],
+//    "joints":[q1,...]}
+// stamp: seconds on the arm's clock; position and quaternion: base_from_end_effector; joints
+// optional (radians or metres). Other members (string, number, bool, null or numeric arrays)
+// are ignored.
+struct ArmPoseMessage {
+  double stamp_s = 0;
+  Eigen::Isometry3d base_from_end_effector = Eigen::Isometry3d::Identity();
+  std::vector<double> joints;
+};
+
+// Limits of the stream. Keys "button.arm_pose.*".
+struct ArmPoseStreamOptions {
+  int max_joints = 16;         // More joint positions: the message is refused.
+  double max_position_m = 10;  // A position farther from the base is refused [m].
+  double max_rate_hz = 200;    // Poses closer in arm time than 1/this are dropped [Hz].
+  double clock_offset_s = 0;   // arm clock = camera clock + this [s].
+  double max_gap_s = 0.05;     // No interpolation across a larger gap between poses [s].
+  double keep_s = 5;           // Poses older than this behind the newest are dropped [s].
+
+  bool IsValid(std::string* error) const;
+  static OptionTable<ArmPoseStreamOptions> Describe();
+};
+
+// Parses one line (without its '\n'). InvalidArgument naming the member for anything else:
+// not one flat JSON object, another `type`, a missing or non-finite member, a quaternion whose
+// norm is not within 10 % of 1 (it is normalised otherwise), too many joints, a duplicate key.
+StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
+                                          const ArmPoseStreamOptions& options = {});
+
+// The recent poses of one arm, in arm time. Not thread-safe.
+class ArmPoseBuffer {
+ public:
+  explicit ArmPoseBuffer(ArmPoseStreamOptions options = {}) : options_(options) {}
+
+  // Adds a pose. False (and counted) when its stamp is not after the newest one by at least
+  // 1 / max_rate_hz.
+  bool Add(const ArmPoseMessage& pose);
+  // base_from_end_effector at camera time `camera_stamp_s` (shifted by clock_offset_s): the
+  // interpolation of the two poses around it (linear position, slerp rotation); nullopt outside
+  // the buffered span or across a gap above max_gap_s.
+  std::optional<Eigen::Isometry3d> At(double camera_stamp_s) const;
+  size_t size() const { return poses_.size(); }
+  int64_t dropped() const { return dropped_; }
+
+ private:
+  ArmPoseStreamOptions options_;
+  std::deque<ArmPoseMessage> poses_;
+  int64_t dropped_ = 0;
+};
+
+}  // namespace sightline

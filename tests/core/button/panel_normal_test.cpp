@@ -1,0 +1,117 @@
+// The panel normal: a robust plane through the map points around the button, oriented toward the
+// camera, with a sigma that covers its error; and its average over frames in data time.
+#include "core/button/panel_normal.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace sightline {
+namespace {
+
+double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / M_PI;
+}
+
+// A 40 x 40 cm panel 0.6 m in front of the camera, tilted by `tilt_deg` about the camera's y
+// axis, sampled with `noise_m` of noise and `outliers` of the points off the plane.
+struct Panel {
+  Eigen::Vector3d normal_toward_camera;
+  Eigen::Vector3d button;
+  std::vector<Eigen::Vector3d> points;
+};
+
+Panel MakePanel(double tilt_deg, double noise_m, double outliers, uint64_t seed, int n = 400) {
+  Panel p;
+  const double t = tilt_deg * M_PI / 180;
+  p.normal_toward_camera = Eigen::Vector3d(std::sin(t), 0, -std::cos(t));
+  p.button = {0.02, -0.01, 0.6};
+  const Eigen::Vector3d u = Eigen::Vector3d::UnitY().cross(p.normal_toward_camera).normalized();
+  const Eigen::Vector3d v = p.normal_toward_camera.cross(u);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> in(-0.2, 0.2), unit(0, 1);
+  std::normal_distribution<double> noise(0, noise_m);
+  for (int i = 0; i < n; ++i) {
+    Eigen::Vector3d x = p.button + in(rng)*u + in(rng)*v + noise(rng) * p.normal_toward_camera;
+    if (unit(rng) < outliers) x += (0.02 + 0.1 * unit(rng)) * p.normal_toward_camera;
+    p.points.push_back(x);
+  }
+  return p;
+}
+
+TEST(PanelNormal, TheNormalOfANoisyPanelWithOutliersFacesTheCamera) {
+  for (double tilt : {0.0, 25.0, -50.0}) {
+    const Panel p = MakePanel(tilt, 0.001, 0.2, 3);
+    StatusOr<PanelNormal> n = EstimatePanelNormal(p.points, p.button, {});
+    ASSERT_TRUE(n.ok()) << n.status().ToString();
+    EXPECT_LT(AngleDeg(n->normal_in_camera, p.normal_toward_camera), 0.5) << tilt;
+    EXPECT_LT(n->normal_in_camera.z(), 0) << tilt;  // Toward the camera at the origin.
+    EXPECT_GT(n->inliers, 250);
+    EXPECT_LT(n->inliers, 340);  // The outliers stay out.
+  }
+}
+
+TEST(PanelNormal, TheStatedSigmaCoversTheErrorOnNinetyFivePercentOfPanels) {
+  PanelNormalOptions o;
+  o.min_sigma_deg = 0.01;  // The fit's own figure, without the floor.
+  int covered = 0;
+  const int trials = 200;
+  for (int seed = 0; seed < trials; ++seed) {
+    // Noise well inside the inlier distance (3 mm): the residual is not truncated.
+    const Panel p = MakePanel(10, 0.001, 0.0, 100 + seed, 40);
+    StatusOr<PanelNormal> n = EstimatePanelNormal(p.points, p.button, o);
+    ASSERT_TRUE(n.ok()) << n.status().ToString();
+    covered +=
+        AngleDeg(n->normal_in_camera, p.normal_toward_camera) <= 3 * n->sigma_rad * 180 / M_PI;
+  }
+  std::printf("fit sigma covers the error on %d of %d panels\n", covered, trials);
+  EXPECT_GE(covered, trials * 95 / 100);
+}
+
+TEST(PanelNormal, TooFewPointsNearTheButtonGiveNoNormal) {
+  Panel p = MakePanel(0, 0.001, 0, 4, 400);
+  PanelNormalOptions o;
+  o.radius_m = 0.01;
+  StatusOr<PanelNormal> n = EstimatePanelNormal(p.points, p.button, o);
+  EXPECT_EQ(n.status().code(), StatusCode::kNotFound);
+  EXPECT_NE(n.status().message().find("map points within"), std::string::npos);
+  o = PanelNormalOptions();
+  o.min_points = 2;
+  EXPECT_EQ(EstimatePanelNormal(p.points, p.button, o).status().code(),
+            StatusCode::kInvalidArgument);
+}
+
+TEST(NormalAverage, WeighsBySigmaSkipsOutliersAndFadesInDataTime) {
+  PanelNormalOptions o;
+  o.smoothing_s = 1.0;
+  NormalAverage avg(o);
+  EXPECT_TRUE(avg.empty());
+  EXPECT_FALSE(std::isfinite(avg.sigma_rad()));
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d tilted = Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitZ()) * x;
+  EXPECT_TRUE(avg.Add(0.0, x, 0.01));
+  EXPECT_TRUE(avg.Add(0.1, tilted, 0.01));
+  EXPECT_TRUE(avg.Add(0.2, x, 0.01));
+  EXPECT_LT(AngleDeg(avg.normal(), x), 0.02 * 180 / M_PI);
+  // A normal far off the average (a wrong plane in one frame) is skipped.
+  EXPECT_FALSE(avg.Add(0.3, Eigen::Vector3d::UnitY(), 0.01));
+  EXPECT_EQ(avg.frames(), 3);
+  // A less certain frame weighs less.
+  NormalAverage weighted(o);
+  weighted.Add(0.0, x, 0.01);
+  weighted.Add(0.0, tilted, 0.1);
+  EXPECT_LT(AngleDeg(weighted.normal(), x), 0.1 * AngleDeg(tilted, x));
+  // Ten time constants later the old frames have faded: the new direction wins.
+  NormalAverage fading(o);
+  fading.Add(0.0, x, 0.01);
+  fading.Add(10.0, tilted, 0.01);
+  EXPECT_LT(AngleDeg(fading.normal(), tilted), 0.01);
+  // Data time going back starts again.
+  fading.Add(5.0, x, 0.01);
+  EXPECT_EQ(fading.frames(), 1);
+}
+
+}  // namespace
+}  // namespace sightline
