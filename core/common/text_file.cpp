@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/common/input_limits.h"
+
 namespace sightline {
 
 std::string SystemReason(int error) {
@@ -48,6 +50,7 @@ Status CheckTimeIncreases(double previous_s, double time_s, const std::string& p
 
 StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
   SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, path));
+  SIGHTLINE_RETURN_IF_ERROR(CheckFileSize(path, kMaxIndexFileBytes, "list"));
   std::ifstream in(path);
   if (!in) return Unavailable(path + " cannot be read: " + SystemReason(errno));
   std::vector<DataLine> lines;
@@ -63,6 +66,17 @@ StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path) {
   }
   if (in.bad()) return Unavailable(path + ": read error after line " + std::to_string(number));
   return lines;
+}
+
+Status CheckFileSize(const std::string& path, size_t max_bytes, const std::string& what) {
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) return Unavailable(path + ": cannot read its size: " + ec.message());
+  if (size > max_bytes) {
+    return InvalidArgument(path + " is " + std::to_string(size) + " bytes; a " + what +
+                           " file holds at most " + std::to_string(max_bytes) + " bytes");
+  }
+  return Status::Ok();
 }
 
 StatusOr<std::string> ReadWholeTextFile(const std::string& path, size_t max_bytes,

@@ -15,6 +15,7 @@ struct DataLine {
 };
 
 // Reads a text file, dropping blank lines and lines starting with '#' (after a UTF-8 BOM).
+// Files larger than kMaxIndexFileBytes (core/common/input_limits.h) are refused unread.
 // Fails naming the path when it is not a regular, readable file (CheckRegularFile): a folder or
 // a device such as /dev/zero given as a list says so instead of being read.
 StatusOr<std::vector<DataLine>> ReadDataLines(const std::string& path);
@@ -41,6 +42,10 @@ std::vector<std::string> SplitFields(const std::string& text);
 // fewer than `min_count` fields, when a field is not a number, or when a number is NaN or infinite.
 StatusOr<std::vector<double>> ParseNumbers(const DataLine& line, size_t min_count,
                                            const std::string& path);
+
+// Checks that the file at `path` holds at most `max_bytes`: InvalidArgument "<path> is N bytes;
+// a <what> file holds at most M bytes" otherwise (nothing is read).
+Status CheckFileSize(const std::string& path, size_t max_bytes, const std::string& what);
 
 // Checks that `path` is a regular, readable file of at most `max_bytes` and reads it whole.
 // Errors name the path and the cause: no such file, a folder, not a regular file (a device or

@@ -96,9 +96,9 @@ StatusOr<Trajectory> ReadTumTrajectory(const std::string& path) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.linear() = q->toRotationMatrix();
     pose.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
-    if (!trajectory.empty() && v[0] < trajectory.poses().back().time_s) {
-      return ParseError(path + " line " + std::to_string(line.number) +
-                        ": timestamps must increase");
+    if (!trajectory.empty()) {
+      SIGHTLINE_RETURN_IF_ERROR(
+          CheckTimeIncreases(trajectory.poses().back().time_s, v[0], path, line.number));
     }
     trajectory.Add(v[0], pose);
   }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <tuple>
 
+#include "core/common/input_limits.h"
 #include "core/common/text_file.h"
 #include "core/common/trajectory.h"
 
@@ -17,6 +18,16 @@ std::optional<FieldProblem> CheckSize(const PinholeCamera& c, const CameraKeys& 
     return FieldProblem{keys.width, "image width " + NumberText(c.width) + " must be positive"};
   if (c.height <= 0) {
     return FieldProblem{keys.height, "image height " + NumberText(c.height) + " must be positive"};
+  }
+  if (c.width > kMaxImageSidePx) {
+    return FieldProblem{keys.width, "image width " + NumberText(c.width) +
+                                        " is above the limit of " + NumberText(kMaxImageSidePx) +
+                                        " px"};
+  }
+  if (c.height > kMaxImageSidePx) {
+    return FieldProblem{keys.height, "image height " + NumberText(c.height) +
+                                         " is above the limit of " + NumberText(kMaxImageSidePx) +
+                                         " px"};
   }
   return std::nullopt;
 }

@@ -149,9 +149,9 @@ StatusOr<Trajectory> ReadEurocGroundTruthCsv(const std::string& path) {
     pose.linear() = q->toRotationMatrix();
     pose.translation() = Eigen::Vector3d((*v)[1], (*v)[2], (*v)[3]);
     const double t = (*v)[0] * 1e-9;
-    if (!trajectory.empty() && t < trajectory.poses().back().time_s) {
-      return ParseError(path + " line " + std::to_string(line.number) +
-                        ": timestamps must increase");
+    if (!trajectory.empty()) {
+      SIGHTLINE_RETURN_IF_ERROR(
+          CheckTimeIncreases(trajectory.poses().back().time_s, t, path, line.number));
     }
     trajectory.Add(t, pose);
   }

@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/common/input_limits.h"
 #include "core/common/text_file.h"
 #include "core/io/file_listing.h"
 
@@ -29,10 +30,6 @@ bool HasField(const pcl::PCLPointCloud2& blob, const std::string& name) {
   }
   return false;
 }
-
-// The most points a PCD file may declare: 50 million (a 640x480 cloud is 307,200; an
-// aggregated map a few million). Larger headers are refused before anything is allocated.
-constexpr double kMaxPcdPoints = 50e6;
 
 // The header's numbers as written, before PCL sees them.
 struct HeaderNumbers {

@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "core/common/input_limits.h"
+#include "core/common/text_file.h"
 #include "core/io/calibration_checks.h"
 
 namespace sightline {
@@ -69,6 +71,7 @@ StatusOr<std::string> ReadText(const std::string& path) {
 
 StatusOr<YAML::Node> LoadYamlFile(const std::string& path) {
   SIGHTLINE_RETURN_IF_ERROR(CheckReadableFile(path));
+  SIGHTLINE_RETURN_IF_ERROR(CheckFileSize(path, kMaxCalibrationFileBytes, "calibration"));
   StatusOr<std::string> text = ReadText(path);
   if (!text.ok()) return text.status();
   YAML::Node root;

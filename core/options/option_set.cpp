@@ -81,12 +81,6 @@ void OptionSet::Reset(const std::string& key) {
 
 namespace {
 
-// A profile is a short list of options: anything far larger is not one (and a small file of
-// nested aliases would otherwise expand to gigabytes).
-constexpr size_t kMaxProfileBytes = 1 << 20;
-constexpr size_t kMaxProfileEntries = 10000;
-constexpr int kMaxProfileDepth = 16;
-
 using ProfileEntries = std::vector<std::tuple<std::string, std::string, int>>;
 
 // Rejects [ and { nested deeper than a profile ever needs before the parser, which recurses

@@ -3,6 +3,7 @@
 // and, for files, the file and line.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -12,6 +13,13 @@
 #include "core/options/option_table.h"
 
 namespace sightline {
+
+// A profile is a short list of options: anything far larger is not one (and a small file of
+// nested aliases would otherwise expand to gigabytes). LoadYaml refuses larger files unread,
+// and more values or deeper nesting before they are expanded.
+inline constexpr size_t kMaxProfileBytes = size_t{1} << 20;
+inline constexpr size_t kMaxProfileEntries = 10000;
+inline constexpr int kMaxProfileDepth = 16;
 
 class JsonWriter;
 

@@ -247,4 +247,22 @@ StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
   return result;
 }
 
+StatusOr<RunResult> FinishFloorlessRun(const MappingPipeline::State& state,
+                                       const std::string& out_dir) {
+  RunResult result;
+  result.frames = 0;
+  result.nothing_achieved = "no floor found in any of the " +
+                            std::to_string(state.floorless_frames) +
+                            " frame(s), nothing mapped (last fit: " + state.floor_failure + ")";
+  std::vector<std::string> log = state.recording.log_lines;
+  log.insert(log.begin(), result.nothing_achieved);
+  const std::string path = JoinPath(out_dir, "mapping_log.txt");
+  std::ofstream file(path);
+  for (const std::string& line : log) file << line << "\n";
+  if (!file) return Unavailable("write to " + path + " failed (disk full?)");
+  result.outputs.push_back("mapping_log.txt");
+  result.counts.emplace_back("floorless_frames", static_cast<double>(state.floorless_frames));
+  return result;
+}
+
 }  // namespace sightline

@@ -128,6 +128,8 @@ Status MappingPipeline::State::StartRun(bool keep_floor) {
   floor_log = std::move(next_log);
   calibrator = std::make_unique<FloorCalibrator>(options.floor, run.floor_frames);
   pending.clear();
+  floor_failure.clear();
+  floorless_frames = 0;
   if (!floor) {
     chain.reset();
     record.Clear();
@@ -187,6 +189,9 @@ StatusOr<std::shared_ptr<const MappingResult>> MappingPipeline::State::Calibrate
   StatusOr<FloorCalibration> fitted = calibrator->Calibrate(recording.root);
   const std::vector<RgbdFrame> frames = std::move(pending);
   ForgetFloor();
+  if (!fitted.ok() && fitted.status().code() == StatusCode::kFailedPrecondition) {
+    return NoFloorIn(frames, fitted.status().message());
+  }
   if (!fitted.ok()) {
     return fitted.status().WithContext("calibrating the floor from the first " +
                                        std::to_string(frames.size()) + " frames of " +
@@ -207,6 +212,17 @@ StatusOr<std::shared_ptr<const MappingResult>> MappingPipeline::State::Calibrate
                 floor->plane.CameraHeightM(), floor->plane.PitchDownDeg());
   result->note = note;
   return std::shared_ptr<const MappingResult>(std::move(result));
+}
+
+std::shared_ptr<const MappingResult> MappingPipeline::State::NoFloorIn(
+    const std::vector<RgbdFrame>& frames, const std::string& why) {
+  floorless_frames += static_cast<int64_t>(frames.size());
+  floor_failure = why;
+  auto result = std::make_shared<MappingResult>();
+  result->stamp = frames.back().stamp;
+  result->note = "no floor in " + std::to_string(frames.size()) +
+                 " frame(s), calibrating on the next ones: " + why;
+  return result;
 }
 
 StatusOr<std::shared_ptr<const MappingResult>> MappingPipeline::State::MapFrame(
@@ -287,6 +303,8 @@ void MappingPipeline::Reset() {
   s.pending.clear();
   if (s.calibrator) s.calibrator->Clear();
   s.record.Clear();
+  s.floor_failure.clear();
+  s.floorless_frames = 0;
   if (s.chain) s.chain->Restart();
 }
 
@@ -298,6 +316,7 @@ StatusOr<RunResult> MappingPipeline::Finish(const std::string& out_dir) {
     StatusOr<std::shared_ptr<const MappingResult>> mapped = s.CalibrateAndMapPending();
     if (!mapped.ok()) return mapped.status();
   }
+  if (!s.floor && !s.floor_failure.empty()) return FinishFloorlessRun(s, out_dir);
   if (!s.floor || !s.chain) {
     return FailedPrecondition("mapping: no floor calibration yet, nothing to save");
   }

@@ -50,6 +50,8 @@ struct MappingPipeline::State {
   std::string floor_log;  // How the floor in use was found, for mapping_log.txt.
   std::unique_ptr<FloorCalibrator> calibrator;
   std::vector<RgbdFrame> pending;  // Frames waiting for the floor calibration.
+  std::string floor_failure;       // Why the last floor calibration found no floor.
+  int64_t floorless_frames = 0;    // Frames given up on because they showed no floor.
   std::unique_ptr<MappingFrameProcessor> chain;
   MappingRunRecord record;
 
@@ -68,6 +70,9 @@ struct MappingPipeline::State {
   StatusOr<std::shared_ptr<const MappingResult>> CalibrateWith(const RgbdFrame& frame);
   // Fits the floor on the buffered frames and maps them.
   StatusOr<std::shared_ptr<const MappingResult>> CalibrateAndMapPending();
+  // Gives up on `frames` that show no floor (`why`); the next frames calibrate again.
+  std::shared_ptr<const MappingResult> NoFloorIn(const std::vector<RgbdFrame>& frames,
+                                                 const std::string& why);
   // Runs the mapping chain on one frame and records it for the run's files.
   StatusOr<std::shared_ptr<const MappingResult>> MapFrame(const RgbdFrame& frame);
 };
@@ -75,5 +80,8 @@ struct MappingPipeline::State {
 // The run's files and figures (mapping_outputs.cpp).
 StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
                                      const std::string& out_dir);
+// A run none of whose frames showed a floor: nothing mapped, mapping_log.txt says why.
+StatusOr<RunResult> FinishFloorlessRun(const MappingPipeline::State& state,
+                                       const std::string& out_dir);
 
 }  // namespace sightline

@@ -118,5 +118,12 @@ TEST(NothingAchievedCli, MappingWithoutDepthFindsNoWallLine) {
       "no wall line found in any of the 3 mapped frame(s)");
 }
 
+TEST(NothingAchievedCli, MappingWithoutFloorMapsNothing) {
+  // No floor file and no depth reading: the floor cannot be calibrated from any frame.
+  const NothingRun run = RunCli("mapping", DepthlessRgbd("nothing_mapping_floor"), "");
+  ExpectNothingAchieved(run, "mapping", "no floor found in any of the 3 frame(s)");
+  EXPECT_NE(run.first_error_line.find("floor fit:"), std::string::npos) << run.all_errors;
+}
+
 }  // namespace
 }  // namespace sightline

@@ -131,6 +131,41 @@ TEST(HostileInput, RepeatedTimesInEveryListAreRejected) {
   EXPECT_THAT(tum_status.message(), HasSubstr("associations.txt line 3"));
 }
 
+TEST(HostileInput, RepeatedGroundTruthTimesAreRejectedNamingFileAndLine) {
+  const std::string tum = MakeTumFolder("hostile_tum_gt");
+  WriteText(tum + "/groundtruth.txt",
+            "# t tx ty tz qx qy qz qw\n1.0 0 0 0 0 0 0 1\n1.1 0 0 0 0 0 0 1\n"
+            "1.1 0.1 0 0 0 0 0 1\n");
+  const Status tum_status = TumRgbdSource(tum).Open();
+  EXPECT_EQ(tum_status.code(), StatusCode::kParseError);
+  EXPECT_THAT(tum_status.message(), HasSubstr("groundtruth.txt line 4"));
+  EXPECT_THAT(tum_status.message(), HasSubstr("equal to the previous one"));
+
+  SIGHTLINE_REQUIRE_DATA(data, "euroc_v1_01_static");
+  const std::string euroc = TempDir("hostile_euroc_gt");
+  const std::string mav0 = euroc + "/mav0";
+  for (const char* part : {"body.yaml", "cam0", "cam1"}) {
+    LinkTo(data + "/mav0/" + part, mav0 + "/" + part);
+  }
+  std::vector<std::string> tum_rows =
+      ReadLines(data + "/mav0/state_groundtruth_estimate0/groundtruth_tum.txt");
+  ASSERT_GT(tum_rows.size(), 4u);
+  tum_rows[3] = tum_rows[2];  // The second pose's time again.
+  WriteLines(mav0 + "/state_groundtruth_estimate0/groundtruth_tum.txt", tum_rows);
+  Status status = EurocSource(euroc).Open();
+  EXPECT_EQ(status.code(), StatusCode::kParseError);
+  EXPECT_THAT(status.message(), HasSubstr("groundtruth_tum.txt line 4"));
+
+  // EuRoC's own data.csv (nanoseconds), read when there is no groundtruth_tum.txt.
+  std::filesystem::remove(mav0 + "/state_groundtruth_estimate0/groundtruth_tum.txt");
+  WriteText(mav0 + "/state_groundtruth_estimate0/data.csv",
+            "#timestamp, p_x, p_y, p_z, q_w, q_x, q_y, q_z\n"
+            "1403715273262142976,0,0,0,1,0,0,0\n1403715273262142976,0,0,0,1,0,0,0\n");
+  status = EurocSource(euroc).Open();
+  EXPECT_EQ(status.code(), StatusCode::kParseError);
+  EXPECT_THAT(status.message(), HasSubstr("data.csv line 3"));
+}
+
 // --- Paths in index files -------------------------------------------------------------------
 
 TEST(HostileInput, ListedPathsMustStayInsideTheDataset) {

@@ -233,5 +233,14 @@ TEST_F(HostileProfile, FolderDeviceAndHugeFilesSayWhatTheyAre) {
   EXPECT_NE(s.message().find("bytes"), std::string::npos) << s.message();
 }
 
+TEST_F(HostileProfile, AProfileOneByteAboveTheSizeLimitIsRefusedNamingItsSize) {
+  const std::string valid = "mapping:\n  cell_size_m: 0.05\n#";
+  EXPECT_TRUE(Load(valid + std::string(kMaxProfileBytes - valid.size() - 1, 'x') + "\n").ok());
+  const Status s = Load(valid + std::string(kMaxProfileBytes - valid.size(), 'x') + "\n");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(path_ + " is 1048577 bytes"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("at most 1048576"), std::string::npos) << s.message();
+}
+
 }  // namespace
 }  // namespace sightline
