@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="81"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
@@ -52,85 +52,90 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
+        <source>Panel direction not sure yet</source>
+        <translation>Richtung des Tastenfelds noch unsicher</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="60"/>
         <source>Button out of reach</source>
         <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="69"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
         <source>The picture changed: tap again</source>
         <translation>Das Bild hat sich geändert: bitte neu antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
         <source>The picture was too old: tap again</source>
         <translation>Das Bild war zu alt: bitte neu antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
         <source>Stopped: press Start again first</source>
         <translation>Gestoppt: zuerst „Neu starten“ drücken</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="80"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="82"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>Paused</source>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
         <source>Arm link off</source>
         <translation>Arm-Verbindung aus</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="84"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
         <source>No arm connected</source>
         <translation>Kein Arm verbunden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Waiting</source>
         <translation>Warten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="111"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="117"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="141"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="143"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="182"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>End of the recording</source>
         <translation>Ende der Aufnahme</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="240"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="250"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>Das Bild ist angehalten: erst Abspielen drücken, dann antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="247"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>Die Aufnahme ist zu Ende: nichts zum Antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="251"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Noch kein Bild: Kamera oder Aufnahme öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="286"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="288"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
@@ -1111,94 +1116,94 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="265"/>
+        <location filename="../widgets/operator_panel.cpp" line="270"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="275"/>
+        <location filename="../widgets/operator_panel.cpp" line="317"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="237"/>
+        <location filename="../widgets/operator_panel.cpp" line="242"/>
         <source>Locating</source>
         <translation>Position wird gemessen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="241"/>
+        <location filename="../widgets/operator_panel.cpp" line="246"/>
         <source>Lost - hold still</source>
         <translation>Verloren - still halten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="231"/>
+        <location filename="../widgets/operator_panel.cpp" line="236"/>
         <source>No button here - tap again</source>
         <translation>Kein Knopf hier - nochmal tippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="229"/>
+        <location filename="../widgets/operator_panel.cpp" line="234"/>
         <source>Press this button?</source>
         <translation>Diesen Knopf drücken?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="245"/>
+        <location filename="../widgets/operator_panel.cpp" line="250"/>
         <source>Holding: nothing sent</source>
         <translation>Halt: nichts gesendet</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="247"/>
+        <location filename="../widgets/operator_panel.cpp" line="252"/>
         <source>Tap not taken</source>
         <translation>Antippen nicht angenommen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="271"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
         <source>STOP</source>
         <translation>STOPP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave</source>
         <translation>Verlassen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave the operator panel?</source>
         <translation>Bedienfeld verlassen?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="233"/>
+        <location filename="../widgets/operator_panel.cpp" line="238"/>
         <source>Searching</source>
         <translation>Suche läuft</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="272"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
         <source>Start again</source>
         <translation>Neu starten</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="243"/>
+        <location filename="../widgets/operator_panel.cpp" line="248"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="227"/>
+        <location filename="../widgets/operator_panel.cpp" line="232"/>
         <source>Tap a button</source>
         <translation>Knopf antippen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="239"/>
+        <location filename="../widgets/operator_panel.cpp" line="244"/>
         <source>Target sent</source>
         <translation>Ziel gesendet</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="235"/>
+        <location filename="../widgets/operator_panel.cpp" line="240"/>
         <source>Tracking</source>
         <translation>Knopf im Blick</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="269"/>
-        <location filename="../widgets/operator_panel.cpp" line="311"/>
+        <location filename="../widgets/operator_panel.cpp" line="274"/>
+        <location filename="../widgets/operator_panel.cpp" line="316"/>
         <source>Yes</source>
         <translation>Ja</translation>
     </message>
@@ -1259,27 +1264,27 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="178"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="192"/>
+        <location filename="../widgets/parameter_panel.cpp" line="191"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="193"/>
+        <location filename="../widgets/parameter_panel.cpp" line="192"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>

@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="81"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
@@ -52,85 +52,90 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
+        <source>Panel direction not sure yet</source>
+        <translation>Dirección del panel aún no segura</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="60"/>
         <source>Button out of reach</source>
         <translation>Botón fuera de alcance</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="69"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
         <source>The picture changed: tap again</source>
         <translation>La imagen ha cambiado: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
         <source>The picture was too old: tap again</source>
         <translation>La imagen era demasiado antigua: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
         <source>Stopped: press Start again first</source>
         <translation>Detenido: pulse primero «Empezar de nuevo»</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="80"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="82"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>Paused</source>
         <translation>En pausa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
         <source>Arm link off</source>
         <translation>Enlace con el brazo apagado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="84"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
         <source>No arm connected</source>
         <translation>Ningún brazo conectado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Waiting</source>
         <translation>Esperando</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="111"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Selector de botones (SLAM monocular)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="117"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="141"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="143"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="182"/>
         <source>Operator panel</source>
         <translation>Panel del operador</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
         <source>Operator panel full screen</source>
         <translation>Panel del operador a pantalla completa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>End of the recording</source>
         <translation>Fin de la grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="240"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="250"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>La imagen está en pausa: pulse Reproducir y luego toque</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="247"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>La grabación ha terminado: nada que tocar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="251"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Todavía no hay imagen: abra una cámara o una grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="286"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="288"/>
         <source>No button at the tap: %1</source>
         <translation>No hay ningún botón donde tocó: %1</translation>
     </message>
@@ -1111,94 +1116,94 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="265"/>
+        <location filename="../widgets/operator_panel.cpp" line="270"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="275"/>
+        <location filename="../widgets/operator_panel.cpp" line="317"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="237"/>
+        <location filename="../widgets/operator_panel.cpp" line="242"/>
         <source>Locating</source>
         <translation>Localizando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="241"/>
+        <location filename="../widgets/operator_panel.cpp" line="246"/>
         <source>Lost - hold still</source>
         <translation>Perdido - quieto</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="231"/>
+        <location filename="../widgets/operator_panel.cpp" line="236"/>
         <source>No button here - tap again</source>
         <translation>Aquí no hay botón - toque otra vez</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="229"/>
+        <location filename="../widgets/operator_panel.cpp" line="234"/>
         <source>Press this button?</source>
         <translation>¿Pulsar este botón?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="245"/>
+        <location filename="../widgets/operator_panel.cpp" line="250"/>
         <source>Holding: nothing sent</source>
         <translation>En espera: nada enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="247"/>
+        <location filename="../widgets/operator_panel.cpp" line="252"/>
         <source>Tap not taken</source>
         <translation>Toque no aceptado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="271"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
         <source>STOP</source>
         <translation>PARAR</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave</source>
         <translation>Salir</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave the operator panel?</source>
         <translation>¿Salir del panel del operador?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="233"/>
+        <location filename="../widgets/operator_panel.cpp" line="238"/>
         <source>Searching</source>
         <translation>Buscando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="272"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
         <source>Start again</source>
         <translation>Empezar de nuevo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="243"/>
+        <location filename="../widgets/operator_panel.cpp" line="248"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="227"/>
+        <location filename="../widgets/operator_panel.cpp" line="232"/>
         <source>Tap a button</source>
         <translation>Toque un botón</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="239"/>
+        <location filename="../widgets/operator_panel.cpp" line="244"/>
         <source>Target sent</source>
         <translation>Objetivo enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="235"/>
+        <location filename="../widgets/operator_panel.cpp" line="240"/>
         <source>Tracking</source>
         <translation>Botón a la vista</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="269"/>
-        <location filename="../widgets/operator_panel.cpp" line="311"/>
+        <location filename="../widgets/operator_panel.cpp" line="274"/>
+        <location filename="../widgets/operator_panel.cpp" line="316"/>
         <source>Yes</source>
         <translation>Sí</translation>
     </message>
@@ -1259,27 +1264,27 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Perfil %1 cargado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="178"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Saved profile %1</source>
         <translation>Perfil %1 guardado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Load profile</source>
         <translation>Cargar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Perfiles YAML (*.yaml *.yml);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="192"/>
+        <location filename="../widgets/parameter_panel.cpp" line="191"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="193"/>
+        <location filename="../widgets/parameter_panel.cpp" line="192"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Perfiles YAML (*.yaml *.yml)</translation>
     </message>

@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="81"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
         <source>Stopped</source>
         <translation>Fermato</translation>
     </message>
@@ -52,85 +52,90 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
+        <source>Panel direction not sure yet</source>
+        <translation>Direzione del pannello non ancora sicura</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="60"/>
         <source>Button out of reach</source>
         <translation>Pulsante fuori portata</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="69"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
         <source>The picture changed: tap again</source>
         <translation>L&apos;immagine è cambiata: tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
         <source>The picture was too old: tap again</source>
         <translation>L&apos;immagine era troppo vecchia: tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
         <source>Stopped: press Start again first</source>
         <translation>Fermato: premi prima «Riparti»</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="80"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="82"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>Paused</source>
         <translation>In pausa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
         <source>Arm link off</source>
         <translation>Collegamento al braccio spento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="84"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
         <source>No arm connected</source>
         <translation>Nessun braccio collegato</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Waiting</source>
         <translation>In attesa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="111"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Selettore di pulsanti (SLAM monoculare)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="117"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="141"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="143"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="182"/>
         <source>Operator panel</source>
         <translation>Pannello operatore</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="121"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
         <source>Operator panel full screen</source>
         <translation>Pannello operatore a schermo intero</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="222"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
         <source>End of the recording</source>
         <translation>Fine della registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="240"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="248"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="250"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>L&apos;immagine è in pausa: premi Riproduci, poi tocca</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="247"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>La registrazione è finita: niente da toccare</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="251"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Ancora nessuna immagine: apri una telecamera o una registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="286"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="288"/>
         <source>No button at the tap: %1</source>
         <translation>Nessun pulsante nel punto toccato: %1</translation>
     </message>
@@ -1111,94 +1116,94 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="265"/>
+        <location filename="../widgets/operator_panel.cpp" line="270"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="275"/>
+        <location filename="../widgets/operator_panel.cpp" line="317"/>
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="237"/>
+        <location filename="../widgets/operator_panel.cpp" line="242"/>
         <source>Locating</source>
         <translation>Localizzazione</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="241"/>
+        <location filename="../widgets/operator_panel.cpp" line="246"/>
         <source>Lost - hold still</source>
         <translation>Perso - resta fermo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="231"/>
+        <location filename="../widgets/operator_panel.cpp" line="236"/>
         <source>No button here - tap again</source>
         <translation>Nessun pulsante qui - tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="229"/>
+        <location filename="../widgets/operator_panel.cpp" line="234"/>
         <source>Press this button?</source>
         <translation>Premere questo pulsante?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="245"/>
+        <location filename="../widgets/operator_panel.cpp" line="250"/>
         <source>Holding: nothing sent</source>
         <translation>In attesa: niente inviato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="247"/>
+        <location filename="../widgets/operator_panel.cpp" line="252"/>
         <source>Tap not taken</source>
         <translation>Tocco non accettato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="271"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave</source>
         <translation>Esci</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="307"/>
+        <location filename="../widgets/operator_panel.cpp" line="312"/>
         <source>Leave the operator panel?</source>
         <translation>Uscire dal pannello operatore?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="233"/>
+        <location filename="../widgets/operator_panel.cpp" line="238"/>
         <source>Searching</source>
         <translation>Ricerca</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="272"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
         <source>Start again</source>
         <translation>Riparti</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="243"/>
+        <location filename="../widgets/operator_panel.cpp" line="248"/>
         <source>Stopped</source>
         <translation>Fermato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="227"/>
+        <location filename="../widgets/operator_panel.cpp" line="232"/>
         <source>Tap a button</source>
         <translation>Tocca un pulsante</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="239"/>
+        <location filename="../widgets/operator_panel.cpp" line="244"/>
         <source>Target sent</source>
         <translation>Bersaglio inviato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="235"/>
+        <location filename="../widgets/operator_panel.cpp" line="240"/>
         <source>Tracking</source>
         <translation>Pulsante agganciato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="269"/>
-        <location filename="../widgets/operator_panel.cpp" line="311"/>
+        <location filename="../widgets/operator_panel.cpp" line="274"/>
+        <location filename="../widgets/operator_panel.cpp" line="316"/>
         <source>Yes</source>
         <translation>Sì</translation>
     </message>
@@ -1259,27 +1264,27 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Profilo %1 caricato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="178"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Saved profile %1</source>
         <translation>Profilo %1 salvato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Load profile</source>
         <translation>Carica profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="185"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Profili YAML (*.yaml *.yml);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="192"/>
+        <location filename="../widgets/parameter_panel.cpp" line="191"/>
         <source>Save profile</source>
         <translation>Salva profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="193"/>
+        <location filename="../widgets/parameter_panel.cpp" line="192"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Profili YAML (*.yaml *.yml)</translation>
     </message>
