@@ -1,12 +1,12 @@
 #include "core/button/button_locator.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
 #include "core/button/option_check.h"
+#include "core/button/plane_fit.h"
 
 namespace sightline {
 
@@ -76,15 +76,10 @@ struct Plane {
 
 // Least-squares plane: centroid and the smallest principal direction.
 Plane FitPlane(const std::vector<Eigen::Vector3d>& points) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= double(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const LeastSquaresPlane fit = FitLeastSquaresPlane(points);
   Plane plane;
-  plane.normal = solver.eigenvectors().col(0).normalized();
-  plane.offset = -plane.normal.dot(mean);
+  plane.normal = fit.normal;
+  plane.offset = fit.offset();
   return plane;
 }
 

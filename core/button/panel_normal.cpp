@@ -1,12 +1,12 @@
 #include "core/button/panel_normal.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
 #include "core/button/option_check.h"
+#include "core/button/plane_fit.h"
 
 namespace sightline {
 
@@ -56,25 +56,6 @@ OptionTable<PanelNormalOptions> PanelNormalOptions::Describe() {
 
 namespace {
 
-// Least-squares plane through `points`: its unit normal, the centroid and the eigenvalues of the
-// points' covariance (ascending).
-struct LsPlane {
-  Eigen::Vector3d normal, centroid, eigenvalues;
-};
-
-LsPlane FitLsPlane(const std::vector<Eigen::Vector3d>& points) {
-  LsPlane plane;
-  plane.centroid = Eigen::Vector3d::Zero();
-  for (const auto& p : points) plane.centroid += p;
-  plane.centroid /= double(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) cov += (p - plane.centroid) * (p - plane.centroid).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov / double(points.size()));
-  plane.normal = solver.eigenvectors().col(0).normalized();
-  plane.eigenvalues = solver.eigenvalues().cwiseMax(0.0);
-  return plane;
-}
-
 // The points within the threshold of the best 3-point plane, scored by truncated squared
 // distances (MSAC): of two parallel surfaces a few millimetres apart (a plate on its wall) it
 // keeps one, where counting inliers may prefer a plane tilted through both.
@@ -104,9 +85,9 @@ std::vector<Eigen::Vector3d> RansacInliers(const std::vector<Eigen::Vector3d>& p
       if (std::abs(best_n.dot(p) + best_d) <= o.ransac_threshold_m) in.push_back(p);
     }
     if (in.size() < 3) break;
-    const LsPlane refit = FitLsPlane(in);
+    const LeastSquaresPlane refit = FitLeastSquaresPlane(in);
     best_n = refit.normal;
-    best_d = -refit.normal.dot(refit.centroid);
+    best_d = refit.offset();
   }
   return in;
 }
@@ -136,7 +117,7 @@ StatusOr<PanelNormal> EstimatePanelNormal(const std::vector<Eigen::Vector3d>& po
     return NotFound("panel normal: " + std::to_string(out.inliers) + " plane inliers of " +
                     std::to_string(out.points) + " points");
   }
-  const LsPlane plane = FitLsPlane(inliers);
+  const LeastSquaresPlane plane = FitLeastSquaresPlane(inliers);
   out.normal_in_camera = plane.normal.dot(button_in_camera) < 0 ? plane.normal : -plane.normal;
   // Residual with the three fitted degrees of freedom taken out.
   out.rms_m = std::sqrt(plane.eigenvalues[0] * out.inliers / std::max(1, out.inliers - 3));

@@ -25,6 +25,7 @@
 #include "app/sightline/translation.h"
 #include "app/sightline/view_options.h"
 #include "core/options/option_set.h"
+#include "tests/translations/ts_text.h"
 #include "widgets/operator_panel.h"
 #include "widgets/option_editor.h"
 
@@ -74,21 +75,8 @@ std::vector<TsMessage> GermanMessages() {
   return messages;
 }
 
-// The %1, %2 ... and QProgressBar's %p of a text, as a set: their order may change in German.
-QSet<QString> Placeholders(const QString& text) {
-  QSet<QString> found;
-  static const QRegularExpression re("%(\\d+|p)");
-  for (const QRegularExpressionMatch& m : re.globalMatch(text)) found.insert(m.captured(0));
-  return found;
-}
-
-// Menu accelerators: an '&' before a character, not "&&" and not an HTML entity (&nbsp;).
-int Accelerators(QString text) {
-  static const QRegularExpression entity("&#?\\w+;");
-  text.remove(entity);
-  text.remove("&&");
-  return static_cast<int>(text.count('&'));
-}
+using test::Accelerators;
+using test::Placeholders;
 
 TEST(GermanTs, EveryMessageIsTranslatedWithItsPlaceholdersAndAccelerators) {
   const std::vector<TsMessage> messages = GermanMessages();

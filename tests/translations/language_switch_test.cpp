@@ -32,6 +32,7 @@
 #include "app/sightline/language.h"
 #include "app/sightline/main_window.h"
 #include "core/sensors/driver_registry.h"
+#include "tests/translations/ts_text.h"
 #include "widgets/image_view.h"
 #include "widgets/operator_panel.h"
 
@@ -67,19 +68,8 @@ std::vector<TsEntry> ReadTs(const QString& code) {
   return entries;
 }
 
-QSet<QString> Placeholders(const QString& text) {
-  QSet<QString> found;
-  static const QRegularExpression re("%(\\d+|p)");
-  for (const QRegularExpressionMatch& m : re.globalMatch(text)) found.insert(m.captured(0));
-  return found;
-}
-
-int Accelerators(QString text) {
-  static const QRegularExpression entity("&#?\\w+;");
-  text.remove(entity);
-  text.remove("&&");
-  return static_cast<int>(text.count('&'));
-}
+using test::Accelerators;
+using test::Placeholders;
 
 class LanguageTs : public ::testing::TestWithParam<const char*> {};
 
