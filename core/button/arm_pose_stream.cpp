@@ -20,6 +20,8 @@ bool ArmPoseStreamOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.arm_pose.clock_offset_s must be finite");
   if (!(max_gap_s > 0)) return Invalid(error, "button.arm_pose.max_gap_s must be > 0");
   if (!(keep_s > 0)) return Invalid(error, "button.arm_pose.keep_s must be > 0");
+  if (!(wait_s >= 0 && wait_s <= 60))
+    return Invalid(error, "button.arm_pose.wait_s must lie in [0, 60]");
   return true;
 }
 
@@ -37,7 +39,10 @@ OptionTable<ArmPoseStreamOptions> ArmPoseStreamOptions::Describe() {
       .Double("max_gap_s", &O::max_gap_s, "s", 0.001, 10, 0.005,
               "No pose is interpolated across a larger gap between two arm_pose messages.")
       .Double("keep_s", &O::keep_s, "s", 0.1, 600, 0.5,
-              "arm_pose messages older than this behind the newest are forgotten.");
+              "arm_pose messages older than this behind the newest are forgotten.")
+      .Double("wait_s", &O::wait_s, "s", 0, 60, 0.05,
+              "A camera frame newer than the newest arm pose waits at most this long (host "
+              "clock) for the pose that covers its stamp; then it has no arm pose.");
 }
 
 namespace {
