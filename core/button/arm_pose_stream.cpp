@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -200,8 +201,32 @@ StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
   return out;
 }
 
+bool KeepsRate(double previous_s, double stamp_s, double max_rate_hz) {
+  return stamp_s >= previous_s + 1.0 / max_rate_hz - 1e-6;
+}
+
+std::string ArmPoseLine(const ArmPoseMessage& pose) {
+  const Eigen::Vector3d p = pose.base_from_end_effector.translation();
+  const Eigen::Quaterniond q(pose.base_from_end_effector.linear());
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "{\"type\":\"arm_pose\",\"stamp\":%.6f,\"position_m\":[%.9f,%.9f,%.9f],"
+                "\"quaternion_xyzw\":[%.9f,%.9f,%.9f,%.9f]",
+                pose.stamp_s, p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w());
+  std::string line = text;
+  if (!pose.joints.empty()) {
+    line += ",\"joints\":[";
+    for (size_t i = 0; i < pose.joints.size(); ++i) {
+      std::snprintf(text, sizeof(text), "%s%.9g", i ? "," : "", pose.joints[i]);
+      line += text;
+    }
+    line += "]";
+  }
+  return line + "}";
+}
+
 bool ArmPoseBuffer::Add(const ArmPoseMessage& pose) {
-  if (!poses_.empty() && !(pose.stamp_s >= poses_.back().stamp_s + 1.0 / options_.max_rate_hz)) {
+  if (!poses_.empty() && !KeepsRate(poses_.back().stamp_s, pose.stamp_s, options_.max_rate_hz)) {
     ++dropped_;
     return false;
   }

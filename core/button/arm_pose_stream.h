@@ -48,13 +48,21 @@ struct ArmPoseStreamOptions {
 StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
                                           const ArmPoseStreamOptions& options = {});
 
+// Whether `stamp_s` keeps to `max_rate_hz` after `previous_s`: at least 1 / max_rate_hz later,
+// up to a microsecond (the stamps' resolution), so an arm at exactly the limit loses nothing.
+bool KeepsRate(double previous_s, double stamp_s, double max_rate_hz);
+
+// The line an arm client sends for `pose` (without '\n'): stamp with six decimals, position and
+// quaternion with nine; ParseArmPoseLine reads it back.
+std::string ArmPoseLine(const ArmPoseMessage& pose);
+
 // The recent poses of one arm, in arm time. Not thread-safe.
 class ArmPoseBuffer {
  public:
   explicit ArmPoseBuffer(ArmPoseStreamOptions options = {}) : options_(options) {}
 
   // Adds a pose. False (and counted) when its stamp is not after the newest one by at least
-  // 1 / max_rate_hz.
+  // 1 / max_rate_hz (KeepsRate).
   bool Add(const ArmPoseMessage& pose);
   // base_from_end_effector at camera time `camera_stamp_s` (shifted by clock_offset_s): the
   // interpolation of the two poses around it (linear position, slerp rotation); nullopt outside

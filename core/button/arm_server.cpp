@@ -414,7 +414,7 @@ ArmServer::LineKind ArmServer::HandlePose(Connection& c) {
     return LineKind::kRefusedPose;
   }
   if (!c.is_arm) c.is_arm = arm_present_ = true;
-  if (c.has_pose && pose->stamp_s < c.last_pose_stamp + 1.0 / pose_options_.max_rate_hz) {
+  if (c.has_pose && !KeepsRate(c.last_pose_stamp, pose->stamp_s, pose_options_.max_rate_hz)) {
     std::lock_guard<std::mutex> lock(mutex_);
     ++stats_.poses_over_rate;  // Dropped; a well-behaved arm above the rate is not chatter.
     return LineKind::kArmPose;

@@ -88,5 +88,20 @@ TEST(ArmPoseStream, TheBufferLimitsTheRateAndInterpolatesThroughTheClockOffset) 
   EXPECT_FALSE(buffer.At(0.1).has_value());  // Across a 180 ms gap (max_gap_s 50 ms).
 }
 
+TEST(ArmPoseStream, AnArmAtExactlyTheRateLimitLosesNoPoseAndItsLinesReadBack) {
+  ArmPoseStreamOptions o;
+  o.max_rate_hz = 200;
+  ArmPoseBuffer buffer(o);
+  for (int k = 0; k < 1000; ++k) {
+    // Through the line an arm client sends: stamps rounded to microseconds.
+    StatusOr<ArmPoseMessage> m = ParseArmPoseLine(ArmPoseLine(Pose(12.3 + 0.005 * k, 0.1, 0.2)));
+    ASSERT_TRUE(m.ok()) << m.status().ToString();
+    EXPECT_TRUE(buffer.Add(*m)) << k;
+  }
+  EXPECT_EQ(buffer.dropped(), 0);
+  EXPECT_FALSE(KeepsRate(1.0, 1.004, 200));
+  EXPECT_TRUE(KeepsRate(1.0, 1.005, 200));
+}
+
 }  // namespace
 }  // namespace sightline
