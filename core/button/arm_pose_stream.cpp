@@ -202,7 +202,7 @@ StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
 }
 
 bool KeepsRate(double previous_s, double stamp_s, double max_rate_hz) {
-  return stamp_s >= previous_s + 1.0 / max_rate_hz - 1e-6;
+  return stamp_s >= previous_s + 1.0 / max_rate_hz - kStampResolutionS;
 }
 
 std::string ArmPoseLine(const ArmPoseMessage& pose) {
@@ -236,10 +236,14 @@ bool ArmPoseBuffer::Add(const ArmPoseMessage& pose) {
 }
 
 std::optional<Eigen::Isometry3d> ArmPoseBuffer::At(double camera_stamp_s) const {
-  const double t = camera_stamp_s + options_.clock_offset_s;
-  if (poses_.empty() || t < poses_.front().stamp_s || t > poses_.back().stamp_s) {
-    return std::nullopt;
-  }
+  double t = camera_stamp_s + options_.clock_offset_s;
+  if (poses_.empty()) return std::nullopt;
+  // Up to a microsecond (the stamps' resolution) outside the span counts as its end.
+  if (t < poses_.front().stamp_s && t >= poses_.front().stamp_s - kStampResolutionS)
+    t = poses_.front().stamp_s;
+  if (t > poses_.back().stamp_s && t <= poses_.back().stamp_s + kStampResolutionS)
+    t = poses_.back().stamp_s;
+  if (t < poses_.front().stamp_s || t > poses_.back().stamp_s) return std::nullopt;
   size_t hi = 0;
   while (poses_[hi].stamp_s < t) ++hi;
   if (poses_[hi].stamp_s == t) return poses_[hi].base_from_end_effector;

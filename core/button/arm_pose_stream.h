@@ -48,6 +48,9 @@ struct ArmPoseStreamOptions {
 StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
                                           const ArmPoseStreamOptions& options = {});
 
+// Resolution of the stamps (arm_pose lines carry microseconds) [s].
+inline constexpr double kStampResolutionS = 1e-6;
+
 // Whether `stamp_s` keeps to `max_rate_hz` after `previous_s`: at least 1 / max_rate_hz later,
 // up to a microsecond (the stamps' resolution), so an arm at exactly the limit loses nothing.
 bool KeepsRate(double previous_s, double stamp_s, double max_rate_hz);
@@ -66,7 +69,8 @@ class ArmPoseBuffer {
   bool Add(const ArmPoseMessage& pose);
   // base_from_end_effector at camera time `camera_stamp_s` (shifted by clock_offset_s): the
   // interpolation of the two poses around it (linear position, slerp rotation); nullopt outside
-  // the buffered span or across a gap above max_gap_s.
+  // the buffered span (a microsecond outside counts as its end) or across a gap above
+  // max_gap_s.
   std::optional<Eigen::Isometry3d> At(double camera_stamp_s) const;
   size_t size() const { return poses_.size(); }
   // Stamp of the newest pose (arm clock); nullopt while empty.

@@ -22,7 +22,7 @@ std::optional<Eigen::Isometry3d> ArmPoseFeed::At(double camera_stamp_s, bool* wa
   const double arm_stamp_s = camera_stamp_s + options.clock_offset_s;
   const auto covered = [&] {
     const std::optional<double> newest = buffer_.newest_stamp();
-    return newest && *newest >= arm_stamp_s;
+    return newest && *newest >= arm_stamp_s - kStampResolutionS;
   };
   const bool wait = !covered();
   if (waited) *waited = wait;

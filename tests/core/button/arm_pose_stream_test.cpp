@@ -84,6 +84,9 @@ TEST(ArmPoseStream, TheBufferLimitsTheRateAndInterpolatesThroughTheClockOffset) 
   EXPECT_NEAR(Eigen::AngleAxisd(mid->linear()).angle(), 0.05, 1e-9);
   EXPECT_FALSE(buffer.At(-0.001).has_value());  // Before the first pose: no extrapolation.
   EXPECT_FALSE(buffer.At(0.021).has_value());   // After the last.
+  // A stamp within a microsecond of the span's end (rounding of the stamps) gets the end pose.
+  ASSERT_TRUE(buffer.At(0.0200004).has_value());
+  EXPECT_NEAR(buffer.At(0.0200004)->translation().x(), 0.2, 1e-9);
   EXPECT_TRUE(buffer.Add(Pose(100.2, 0.3, 0.2)));
   EXPECT_FALSE(buffer.At(0.1).has_value());  // Across a 180 ms gap (max_gap_s 50 ms).
 }
