@@ -455,7 +455,9 @@ void ArmServer::Read(Connection& c) {
       HandleLine(c);
       c.in.clear();
       c.discarding = false;
-      if (!was_authorised) break;  // Bytes after the token line are not read as more lines.
+      // Authorised by this line: the rest of the chunk is its first lines (an arm streams its
+      // poses right after the token), on the budget like every byte after the handshake.
+      if (!was_authorised && c.authorised) c.chatter_bytes += n - i - 1;
     }
     if (c.fd >= 0 && c.authorised && c.chatter_bytes > kChatterLines * options_.max_line_bytes) {
       std::lock_guard<std::mutex> lock(mutex_);

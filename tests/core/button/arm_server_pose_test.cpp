@@ -93,7 +93,8 @@ TEST(ArmServerPoses, TheAuthenticatedArmsPosesReachTheSinkInOrderPastTheChatterB
   }
   EXPECT_GT(bytes, size_t(16 * 1024 * 10));
   ASSERT_TRUE(Eventually([&] { return received.size() == size_t(kPoses); }))
-      << received.size() << " of " << kPoses;
+      << received.size() << " of " << kPoses << "; over rate " << server->Stats().poses_over_rate
+      << ", refused " << server->Stats().poses_refused << ": " << server->Stats().last_pose_error;
   const ArmServerStats stats = server->Stats();
   EXPECT_EQ(stats.poses_received, kPoses);
   EXPECT_EQ(stats.poses_refused, 0) << stats.last_pose_error;
