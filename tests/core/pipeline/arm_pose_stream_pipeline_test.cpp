@@ -3,7 +3,8 @@
 // plays the recording's arm_poses.txt over TCP as arm_pose lines to the pipeline's arm-target
 // server, and the copy of the recording the pipeline reads has no arm_poses.txt. The metric
 // scale and the final target error must match the run that reads the recorded poses; without
-// the stream the run says why no target was sent.
+// the stream the run says why no target was sent. Also the feed's bounded wait for a frame's
+// pose.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -16,6 +17,7 @@
 #include "core/button/arm_client.h"
 #include "core/common/pose_board.h"
 #include "core/common/trajectory.h"
+#include "core/pipeline/arm_pose_feed.h"
 #include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/sim/simulate.h"
@@ -88,6 +90,47 @@ class ArmThread {
   std::atomic<bool> stop_seen_{false};
   std::thread thread_;
 };
+
+ArmPoseMessage PoseAt(double t, double x) {
+  ArmPoseMessage m;
+  m.stamp_s = t;
+  m.base_from_end_effector.translation() = Eigen::Vector3d(x, 0, 0);
+  return m;
+}
+
+// A frame newer than the newest pose waits for the pose that covers it (here it comes 50 ms
+// later, well within wait_s), and gets the pose interpolated at its stamp; a pose that never
+// comes leaves the frame without one once wait_s is over.
+TEST(ArmPoseFeed, AFrameWaitsForThePoseCoveringItsStamp) {
+  ArmPoseStreamOptions o;
+  o.wait_s = 30;
+  o.clock_offset_s = 100;
+  ArmPoseFeed feed(o);
+  PoseBoard::Global().Clear("arm");
+  feed.Add(PoseAt(100.99, 0.0));
+  std::thread arm([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    feed.Add(PoseAt(101.01, 0.2));
+  });
+  bool waited = false;
+  const std::optional<Eigen::Isometry3d> pose = feed.At(1.0, &waited);  // Camera clock.
+  arm.join();
+  EXPECT_TRUE(waited);
+  ASSERT_TRUE(pose.has_value());
+  EXPECT_NEAR(pose->translation().x(), 0.1, 1e-9);
+  EXPECT_EQ(feed.received(), 2);
+  ASSERT_TRUE(PoseBoard::Global().Latest("arm").has_value());
+  EXPECT_DOUBLE_EQ(PoseBoard::Global().Latest("arm")->stamp_s, 101.01);  // The arm's clock.
+  // Covered already: no wait.
+  EXPECT_TRUE(feed.At(1.005, &waited).has_value());
+  EXPECT_FALSE(waited);
+  ArmPoseStreamOptions short_wait = o;
+  short_wait.wait_s = 0.01;
+  ArmPoseFeed silent(short_wait);
+  silent.Add(PoseAt(100.99, 0.0));
+  EXPECT_FALSE(silent.At(1.0, &waited).has_value());
+  EXPECT_TRUE(waited);
+}
 
 class ArmPoseStreamPipeline : public ::testing::Test {
  protected:
