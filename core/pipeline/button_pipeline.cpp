@@ -430,6 +430,7 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   if (!mono.ok()) return mono.status();
   auto out = std::make_shared<ButtonFrameResult>();
   static_cast<MonoSlamFrameResult&>(*out) = **mono;
+  if (stream_) out->metric_source = "arm_stream";                     // The SLAM itself has none.
   if (!out->slam) return std::shared_ptr<const PipelineResult>(out);  // Status says why.
   const double slam_ms = (HostTimeS() - start) * 1000.0;
   if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
