@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -211,11 +212,13 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
   c.run = options.Extract(ButtonRunOptions::Describe());
   c.view = options.Extract(MetricViewOptions::Describe());
   c.server = options.Extract(ArmServerOptions::Describe());
+  c.overlay = options.Extract(ButtonOverlayOptions::Describe());
   const ButtonGuiOptions gui = options.Extract(ButtonGuiOptions::Describe());
   c.serve = c.run.serve || gui.serve;
   c.max_tap_age_s = gui.max_tap_age_s;
   std::string error;
-  if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error)) {
+  if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error) ||
+      !c.overlay.IsValid(&error)) {
     return InvalidArgument(error);
   }
   if (!c.run.tap.empty()) {
@@ -223,12 +226,7 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
     if (!tap.ok()) return tap.status();
     c.tap = *tap;
   }
-  if (c.mono_run.metric_source == "auto") c.mono_run.metric_source = "arm";
-  if (c.mono_run.metric_source != "arm") {
-    return InvalidArgument(
-        "mono.run.metric_source must be arm (or auto) for the button pipeline: "
-        "the targets are in the arm's base frame");
-  }
+  SIGHTLINE_RETURN_IF_ERROR(CheckButtonMetricSource(c.mono_run));
   return c;
 }
 
@@ -300,6 +298,8 @@ int64_t FrameId(const FrameStamp& stamp, int64_t index) {
 }  // namespace
 
 Status ButtonPipeline::Open(const PipelineSource& source) {
+  scale_mode_ = ChooseButtonScaleMode(source.info.path, config_.mono_run);
+  mono_.SetMetricSource(scale_mode_.metric ? "arm" : "none");
   SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
   if (!truth.ok()) return truth.status();
@@ -343,6 +343,11 @@ void ButtonPipeline::StartRun() {
   if (commands_->stopped()) picker_->Stop();  // A new run does not lift the operator's STOP.
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
+  map_units_ = MapUnitsView();
+  overlay_.reset();
+  if (headless_ && config_.overlay.png) {
+    overlay_ = std::make_unique<ButtonOverlayWriter>(config_.overlay);
+  }
   log_ = ButtonRunLog();
   true_button_ = nullptr;
   frames_ = 0;
@@ -366,6 +371,8 @@ void ButtonPipeline::Reset() {
   if (picker_) picker_->Cancel();
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
+  map_units_ = MapUnitsView();
+  if (overlay_) overlay_ = std::make_unique<ButtonOverlayWriter>(config_.overlay);
   log_ = ButtonRunLog();
   frames_ = 0;
   seen_.clear();
@@ -386,7 +393,9 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   const double slam_ms = (HostTimeS() - start) * 1000.0;
   if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
   const MonoSlamResult& r = *out->slam;
-  const SlamView view = metric_->Update(r, mono_.camera());
+  const SlamView view = scale_mode_.metric ? metric_->Update(r, mono_.camera())
+                                           : map_units_.Update(r, mono_.camera());
+  out->tracking_only = !scale_mode_.metric;
   out->scale_converged = view.scale_converged;
   out->scale_ml = metric_->lambda_ml();
   const int64_t index = frames_++;
@@ -396,6 +405,7 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   AddStats((*mono)->stats, slam_ms, !tap_frame && log_.tap_index >= 0, out.get());
   AddLinkState(out.get());
   Record(*out, view.tracking, index, slam_ms, (HostTimeS() - start) * 1000.0);
+  if (log_.tap_index >= 0 && overlay_) SIGHTLINE_RETURN_IF_ERROR(AddOverlay(*out));
   Remember(r, index);
   last_ = out;
   fresh_run_ = false;
@@ -521,10 +531,18 @@ double ButtonPipeline::SendTimeS(const FrameStamp& stamp) const {
 
 void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t index,
                                ButtonFrameResult* out) {
-  const std::optional<Eigen::Isometry3d> base = metric_->BaseFromCamera(r.stamp.sensor_time_s);
+  // Tracking only: the map frame in map units stands for the base frame; nothing goes out.
+  const std::optional<Eigen::Isometry3d> base =
+      scale_mode_.metric ? metric_->BaseFromCamera(r.stamp.sensor_time_s)
+                         : std::optional<Eigen::Isometry3d>(r.map_from_camera);
   if (!base) view.tracking = false;  // No arm pose: no base frame for this image.
   out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
                                  base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
+  if (!scale_mode_.metric) {
+    if (out->picker.verdict.reason == GateReason::kScaleNotConverged) ++log_.suppressed_targets;
+    out->picker.target.reset();  // Never without metres, whatever the gate said.
+    return;
+  }
   if (!out->picker.target) return;
   if (commands_->held()) {  // The picture is paused: nothing goes to the arm.
     out->picker.target.reset();
@@ -560,7 +578,7 @@ void ButtonPipeline::AddStats(const std::vector<std::pair<std::string, double>>&
   out->stats.emplace_back("button/scale_ml", out->scale_ml);
   out->stats.emplace_back("button/track_confidence", p.track.confidence);
   out->stats.emplace_back("button/fused_estimates", p.fused_estimates);
-  if (p.location) {
+  if (p.location && !out->tracking_only) {  // Metres only with a metric scale.
     out->stats.emplace_back("button/uncertainty_m", p.uncertainty_m);
     out->stats.emplace_back("button/distance_m", p.location->button_in_camera.norm());
   }
@@ -586,6 +604,7 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
   row.slam_tracking = slam_tracking;
   row.scale_converged = out.scale_converged;
   row.lambda_ml = out.scale_ml;
+  AddMapUnits(out, &row);
   log_.rows.push_back(std::move(row));
   if (log_.first_target_index >= 0) return;
   log_.processing_ms_to_first += frame_ms;  // Host time: a timing figure, decides nothing.
@@ -593,6 +612,43 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
     log_.first_target_index = index;
     log_.first_target_stamp_s = out.stamp.sensor_time_s;
   }
+}
+
+void ButtonPipeline::AddMapUnits(const ButtonFrameResult& out, ButtonRunRow* row) const {
+  row->metric = scale_mode_.metric;
+  if (!out.slam || !out.slam->tracked) return;
+  const Eigen::Isometry3d& map_from_camera = out.slam->map_from_camera;
+  row->camera_in_map = map_from_camera.translation();
+  if (!out.picker.location) return;
+  const double lambda = scale_mode_.metric ? metric_->lambda_ml() : 1.0;  // Map units per metre.
+  if (!(lambda > 0)) return;
+  row->button_in_map = map_from_camera * (out.picker.location->button_in_camera * lambda);
+}
+
+Status ButtonPipeline::AddOverlay(const ButtonFrameResult& out) {
+  const PickerFrame& p = out.picker;
+  char line[160];
+  std::vector<std::string> caption;
+  std::snprintf(line, sizeof(line), "frame %lld  %s", static_cast<long long>(p.frame_id),
+                PickerStateKey(p.state));
+  caption.emplace_back(line);
+  const ButtonRunRow& row = log_.rows.back();
+  if (!scale_mode_.metric) {
+    caption.emplace_back(std::string("TRACKING ONLY: ") + kNoMetricScaleNote);
+    if (row.button_in_map.allFinite()) {
+      std::snprintf(line, sizeof(line), "button (%.3f, %.3f, %.3f) map units (unscaled)",
+                    row.button_in_map.x(), row.button_in_map.y(), row.button_in_map.z());
+      caption.emplace_back(line);
+    }
+  } else {
+    caption.emplace_back(std::string("gate: ") + GateReasonKey(p.verdict.reason));
+    if (p.button_in_base.allFinite()) {
+      std::snprintf(line, sizeof(line), "button (%.3f, %.3f, %.3f) m, arm base",
+                    p.button_in_base.x(), p.button_in_base.y(), p.button_in_base.z());
+      caption.emplace_back(line);
+    }
+  }
+  return overlay_->Add(out.slam ? out.slam->image : cv::Mat(), p.frame_id, p.track, caption);
 }
 
 void ButtonPipeline::Abort(const std::string& reason) { StopOutput(reason); }
@@ -638,11 +694,18 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   }
   result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
   result.counts.emplace_back("lost_frames", mono_.lost_frames());
-  result.nothing_achieved = NoTargetSent(log_, frames_);
+  result.counts.emplace_back("metric_scale", scale_mode_.metric ? 1 : 0);
+  if (overlay_) SIGHTLINE_RETURN_IF_ERROR(overlay_->Finish(out_dir, &result.outputs, &notes));
+  if (scale_mode_.metric) {
+    result.nothing_achieved = NoTargetSent(log_, frames_);
+  } else {
+    AddTrackingOnlyFigures(&result, &notes);
+  }
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("button_notes.txt");
+  result.notes = std::move(notes);
   return result;
 }
 
@@ -660,6 +723,7 @@ PipelineInfo ButtonPipelineInfo(const std::shared_ptr<ButtonCommands>& commands,
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MetricViewOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmServerOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonGuiOptions::Describe()));
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonOverlayOptions::Describe()));
     return set->Declare(ButtonRunOptions::Describe());
   };
   info.create = [commands, mono_commands]() -> std::unique_ptr<Pipeline> {
