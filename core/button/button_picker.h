@@ -28,11 +28,11 @@ namespace sightline {
 // and the arm's base stay put during one approach, so the positions located frame by frame
 // (each from a noisy plane fit on the SLAM's map) estimate one point: the target is their
 // per-axis median over the sound estimates made with a converged scale since the tap, each placed
-// with the newest scale and weighted by its own variance (position_fusion.h).
+// with the newest scale (position_fusion.h; optionally weighted by its own variance).
 struct ButtonFuseOptions {
   int window = 0;  // Recent estimates in the median; 0 = every one since the tap, 1 = no fusion.
-  bool rescale = true;   // Place every kept estimate again with the newest scale.
-  bool weighted = true;  // Weigh the estimates by 1 / their own variance (near frames most).
+  bool rescale = true;    // Place every kept estimate again with the newest scale.
+  bool weighted = false;  // Weigh the estimates by 1 / their own variance (near frames most).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonFuseOptions> Describe();
