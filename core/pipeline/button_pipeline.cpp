@@ -646,7 +646,7 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   result.frames = frames_;
   SIGHTLINE_RETURN_IF_ERROR(WriteButtonCsv(log_.rows, (fs::path(out_dir) / "button.csv").string()));
   result.outputs.push_back("button.csv");
-  std::vector<std::string> notes;
+  std::vector<std::string> notes = run_notes_;  // Hand-eye sigmas stated, replay.
   if (truth_) truth_->camera_in_world = mono_.ground_truth();
   AddButtonFigures(log_, *metric_, mono_.camera(), config_.picker, config_.slam.scale, truth_,
                    &result, &notes);
@@ -659,7 +659,6 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
   result.counts.emplace_back("lost_frames", mono_.lost_frames());
   result.nothing_achieved = NoTargetSent(log_, frames_);
-  notes.insert(notes.begin(), run_notes_.begin(), run_notes_.end());
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   result.notes = notes;
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
