@@ -19,6 +19,7 @@
 #include "core/button/button_tracker.h"
 #include "core/button/button_types.h"
 #include "core/button/panel_normal.h"
+#include "core/button/position_fusion.h"
 #include "core/button/safety_gate.h"
 
 namespace sightline {
@@ -26,9 +27,12 @@ namespace sightline {
 // Fusion of the per-frame positions in the arm's base frame. Keys "button.fuse.*". The button
 // and the arm's base stay put during one approach, so the positions located frame by frame
 // (each from a noisy plane fit on the SLAM's map) estimate one point: the target is their
-// per-axis median over the sound estimates made with a converged scale since the tap.
+// per-axis median over the sound estimates made with a converged scale since the tap, each placed
+// with the newest scale (position_fusion.h; optionally weighted by its own variance).
 struct ButtonFuseOptions {
   int window = 0;  // Recent estimates in the median; 0 = every one since the tap, 1 = no fusion.
+  bool rescale = true;    // Place every kept estimate again with the newest scale.
+  bool weighted = false;  // Weigh the estimates by 1 / their own variance (near frames most).
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonFuseOptions> Describe();
@@ -68,6 +72,13 @@ struct SlamView {
   std::shared_ptr<const std::vector<Eigen::Vector3d>> map_points_in_world;
   bool scale_converged = false;  // The metric scale estimate has converged.
   double scale_sigma_rel = 0;    // 1-sigma relative scale error.
+  double lambda = 0;             // The metric scale: map units per metre (0 = unknown).
+  // The online hand-eye check (core/pipeline/hand_eye_check.h): the mount rotation error the
+  // keyframes' displacement directions show [deg]; whether the arm rotated enough to see the
+  // mount's translation, and the translation error then implied [m].
+  double hand_eye_deg = 0;
+  bool hand_eye_translation_observable = false;
+  double hand_eye_translation_m = 0;
 };
 
 // One picker per button; constructible many times.
@@ -107,6 +118,14 @@ class ButtonPicker {
   // The target's 1-sigma position uncertainty: the location's own, tracking, hand-eye and the
   // spread of the fused positions.
   double TargetUncertainty(const SlamView& slam, const ButtonLocation& at, bool fused) const;
+  // A located position's own 1-sigma: plane fit and scale (the location's) and tracked centre.
+  double OwnSigma(const SlamView& slam, const ButtonLocation& at) const;
+  // Keeps this frame's position and sets out->button_in_base to the fusion of all kept ones.
+  void FuseWith(const SlamView& slam, const ButtonLocation& at,
+                const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
+  // 1-sigma of the mount's rotation: stated (button.uncertainty.hand_eye_sigma_deg) and seen by
+  // the online check (SlamView::hand_eye_deg) [rad].
+  double HandEyeSigmaRad(const SlamView& slam) const;
   // Adds this frame's panel normal to the average; sets out->approach_in_base and its sigma.
   void UpdateApproach(const SlamView& slam, const ButtonLocation& at,
                       const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
@@ -119,7 +138,8 @@ class ButtonPicker {
   std::unique_ptr<ButtonTracker> tracker_;
   std::optional<Eigen::Vector3d> button_in_world_;  // Last located position.
   double last_scale_ = 1.0, last_depth_m_ = 0;      // Track scale and depth at that time.
-  std::vector<Eigen::Vector3d> fused_positions_;    // Base frame, since the tap.
+  std::vector<FusedEstimate> fused_;                // Since the tap.
+  double fused_spread_m_ = 0;                       // Of the last fusion.
   NormalAverage panel_normal_;                      // Base frame, since the tap (data time).
 };
 

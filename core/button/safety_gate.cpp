@@ -22,6 +22,7 @@ bool SafetyGateOptions::IsValid(std::string* error) const {
         workspace_min_z_m < workspace_max_z_m)) {
     return Invalid(error, "button.gate.workspace: every min must be below its max");
   }
+  if (!(max_hand_eye_deg > 0)) return Invalid(error, "button.gate.max_hand_eye_deg must be > 0");
   return true;
 }
 
@@ -47,7 +48,13 @@ OptionTable<SafetyGateOptions> SafetyGateOptions::Describe() {
       .Double("workspace_min_z_m", &O::workspace_min_z_m, "m", -10, 10, 0.01,
               "Workspace box, base z min.")
       .Double("workspace_max_z_m", &O::workspace_max_z_m, "m", -10, 10, 0.01,
-              "Workspace box, base z max.");
+              "Workspace box, base z max.")
+      .Double("max_hand_eye_deg", &O::max_hand_eye_deg, "deg", 0.01, 90, 0.5,
+              "The arm's and the SLAM's displacement directions disagree by more than this "
+              "(online hand-eye check; a wrong mount rotation): no target.")
+      .Bool("require_hand_eye_check", &O::require_hand_eye_check,
+            "No target until the online hand-eye check has seen the mount's translation (the "
+            "arm must rotate between keyframes); without it that translation is taken on trust.");
 }
 
 const char* GateReasonKey(GateReason reason) {
@@ -126,12 +133,64 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
                   s.approach_sigma_deg, o.max_approach_sigma_deg);
     return Refuse(GateReason::kApproachUncertain, text);
   }
+  if (!(s.hand_eye_deg <= o.max_hand_eye_deg)) {
+    std::snprintf(text, sizeof(text),
+                  "hand-eye inconsistent: the arm's and the SLAM's motion differ by %.1f deg "
+                  "(limit %.1f deg); check hand_eye.yaml",
+                  s.hand_eye_deg, o.max_hand_eye_deg);
+    return Refuse(GateReason::kUncertain, text);
+  }
+  if (o.require_hand_eye_check && !s.hand_eye_translation_verified) {
+    return Refuse(GateReason::kUncertain,
+                  "hand-eye translation not verified online: the arm has not rotated "
+                  "(button.gate.require_hand_eye_check)");
+  }
   if (!Inside(s.target_in_base, o)) {
     std::snprintf(text, sizeof(text), "target (%.2f, %.2f, %.2f) m outside the workspace",
                   s.target_in_base.x(), s.target_in_base.y(), s.target_in_base.z());
     return Refuse(GateReason::kOutsideWorkspace, text);
   }
+  if (!s.hand_eye_translation_verified) {
+    return {true, GateReason::kSend,
+            "target sent; hand-eye translation not verified online (the arm has not rotated): "
+            "taken on trust from hand_eye.yaml"};
+  }
   return {true, GateReason::kSend, "target sent"};
+}
+
+std::vector<std::string> LooserGateWarnings(const SafetyGateOptions& o) {
+  const SafetyGateOptions d;
+  std::vector<std::string> out;
+  auto check = [&](bool looser, const char* key, double value, double def) {
+    if (!looser) return;
+    char text[200];
+    std::snprintf(text, sizeof(text),
+                  "warning: safety gate loosened: button.gate.%s = %g (default %g)", key, value,
+                  def);
+    out.push_back(text);
+  };
+  check(o.max_age_ms > d.max_age_ms, "max_age_ms", o.max_age_ms, d.max_age_ms);
+  check(o.min_confidence < d.min_confidence, "min_confidence", o.min_confidence, d.min_confidence);
+  check(o.max_uncertainty_m > d.max_uncertainty_m, "max_uncertainty_m", o.max_uncertainty_m,
+        d.max_uncertainty_m);
+  check(o.max_approach_sigma_deg > d.max_approach_sigma_deg, "max_approach_sigma_deg",
+        o.max_approach_sigma_deg, d.max_approach_sigma_deg);
+  check(o.workspace_min_x_m < d.workspace_min_x_m, "workspace_min_x_m", o.workspace_min_x_m,
+        d.workspace_min_x_m);
+  check(o.workspace_max_x_m > d.workspace_max_x_m, "workspace_max_x_m", o.workspace_max_x_m,
+        d.workspace_max_x_m);
+  check(o.workspace_min_y_m < d.workspace_min_y_m, "workspace_min_y_m", o.workspace_min_y_m,
+        d.workspace_min_y_m);
+  check(o.workspace_max_y_m > d.workspace_max_y_m, "workspace_max_y_m", o.workspace_max_y_m,
+        d.workspace_max_y_m);
+  check(o.workspace_min_z_m < d.workspace_min_z_m, "workspace_min_z_m", o.workspace_min_z_m,
+        d.workspace_min_z_m);
+  check(o.workspace_max_z_m > d.workspace_max_z_m, "workspace_max_z_m", o.workspace_max_z_m,
+        d.workspace_max_z_m);
+  check(o.max_hand_eye_deg > d.max_hand_eye_deg, "max_hand_eye_deg", o.max_hand_eye_deg,
+        d.max_hand_eye_deg);
+  check(d.require_hand_eye_check && !o.require_hand_eye_check, "require_hand_eye_check", 0, 1);
+  return out;
 }
 
 }  // namespace sightline

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "core/options/option_table.h"
 
@@ -22,6 +23,11 @@ struct SafetyGateOptions {
   double workspace_min_x_m = 0.1, workspace_max_x_m = 1.3;  // Base frame box [m].
   double workspace_min_y_m = -0.6, workspace_max_y_m = 0.6;
   double workspace_min_z_m = -0.5, workspace_max_z_m = 0.9;
+  // The online hand-eye check (SafetyState::hand_eye_deg): the arm's and the SLAM's displacement
+  // directions disagree by more than this: the mount is wrong, no target [deg].
+  double max_hand_eye_deg = 3;
+  // No target while the check could not see the mount's translation (the arm did not rotate).
+  bool require_hand_eye_check = false;
 
   bool IsValid(std::string* error) const;
   static OptionTable<SafetyGateOptions> Describe();
@@ -42,6 +48,8 @@ struct SafetyState {
   // when no normal is known.
   double approach_sigma_deg = std::numeric_limits<double>::infinity();
   Eigen::Vector3d target_in_base = Eigen::Vector3d::Zero();
+  double hand_eye_deg = 0;                    // Mount rotation error the online check sees.
+  bool hand_eye_translation_verified = true;  // The check saw the mount's translation.
 };
 
 // Why a target was (not) sent. kSend is the only value that lets a target out.
@@ -68,6 +76,11 @@ struct GateVerdict {
 
 // The first rule that fails, in the order of the enum (STOP first); invalid options never send.
 GateVerdict CheckSafety(const SafetyState& state, const SafetyGateOptions& options);
+
+// One line per option of `options` set looser than its default (a later deadline, a weaker
+// confidence, a larger uncertainty or workspace, ...), naming the key, its value and the
+// default, for the run's log and notes; empty when none is.
+std::vector<std::string> LooserGateWarnings(const SafetyGateOptions& options);
 
 // Stable key of a reason ("send", "stopped", "stale", ...) for CSV files and the protocol.
 const char* GateReasonKey(GateReason reason);

@@ -1,5 +1,6 @@
 #include "core/pipeline/button_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <thread>
 
 #include "core/io/hand_eye_file.h"
+#include "core/pipeline/hand_eye_check.h"
 #include "core/pipeline/mono_inputs.h"
 
 namespace sightline {
@@ -351,6 +353,12 @@ Status ButtonPipeline::Open(const PipelineSource& source) {
   truth_ = std::move(*truth);
   true_button_ = nullptr;
   source_ = source;
+  ButtonUncertaintyOptions& u = config_.picker.uncertainty;
+  StatusOr<std::string> stated =
+      StateHandEyeSigmas(HandEyePathFor(source.info.path, config_.mono_run), &u.hand_eye_sigma_m,
+                         &u.hand_eye_sigma_deg);
+  if (!stated.ok()) return stated.status();
+  run_notes_ = {*stated};
   SIGHTLINE_RETURN_IF_ERROR(StartOutput());
   StartRun();
   return Status::Ok();
@@ -366,6 +374,7 @@ Status ButtonPipeline::StartOutput() {
         ButtonTargetOutput::Start(config_.server, config_.arm_pose);
     if (!started.ok()) return started.status();
     output_ = std::move(*started);
+    if (source_ && !source_->info.live) NoteReplay();
     std::shared_ptr<ButtonTargetOutput> output = output_;
     commands_->SetImmediate(
         this, [output](const std::string& reason) { output->PublishStop(reason); },
@@ -374,6 +383,14 @@ Status ButtonPipeline::StartOutput() {
     if (commands_->stopped()) output_->PublishStop("operator");
   }
   return output_->WaitForClients(config_.run.wait_clients, config_.run.wait_clients_s);
+}
+
+void ButtonPipeline::NoteReplay() {
+  const std::string note = "replay: the targets served come from the recorded frames of " +
+                           source_->info.path + ", not from a live camera";
+  std::fprintf(stderr, "sightline: %s\n", note.c_str());
+  if (std::find(run_notes_.begin(), run_notes_.end(), note) == run_notes_.end())
+    run_notes_.push_back(note);
 }
 
 void ButtonPipeline::StopOutput(const std::string& reason) {
@@ -787,8 +804,10 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   result.frames = frames_;
   SIGHTLINE_RETURN_IF_ERROR(WriteButtonCsv(log_.rows, (fs::path(out_dir) / "button.csv").string()));
   result.outputs.push_back("button.csv");
-  std::vector<std::string> notes;
-  AddButtonFigures(log_, *metric_, mono_.camera(), config_.picker, truth_, &result, &notes);
+  std::vector<std::string> notes = run_notes_;  // Hand-eye sigmas stated, replay.
+  if (truth_) truth_->camera_in_world = mono_.ground_truth();
+  AddButtonFigures(log_, *metric_, mono_.camera(), config_.picker, config_.slam.scale, truth_,
+                   &result, &notes);
   if (output_) {
     const ArmServerStats stats = output_->Stats();
     result.counts.emplace_back("arm_clients_at_start", output_->clients_at_start());
@@ -807,6 +826,7 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
     AddTrackingOnlyFigures(&result, &notes);
   }
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
+  result.notes = notes;
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("button_notes.txt");

@@ -122,6 +122,7 @@ struct ButtonRunLog {
 struct ButtonTruth {
   std::vector<TrueButton> buttons;
   std::optional<Eigen::Isometry3d> world_from_base;
+  std::optional<Trajectory> camera_in_world;  // The camera's true poses (groundtruth.txt).
 };
 
 // The button pipeline. Process runs the SLAM, applies the operator's commands, tracks, locates,
@@ -193,6 +194,8 @@ class ButtonPipeline : public Pipeline {
   Status StartOutput();
   // Every client gets a stop line naming `reason`, then the server closes.
   void StopOutput(const std::string& reason);
+  // Serving a recording: says so on stderr and in the notes (targets from recorded frames).
+  void NoteReplay();
   void StartRun();
   Status ApplyCommands(const MonoSlamResult& r, int64_t index, ButtonFrameResult* out);
   Status HandleTap(const ButtonTapRequest& tap, const MonoSlamResult& r, int64_t index,
@@ -240,6 +243,7 @@ class ButtonPipeline : public Pipeline {
   std::deque<SeenFrame> seen_;  // Recent frames, oldest first (max_tap_age_s of data time).
   std::shared_ptr<const ButtonFrameResult> last_;  // The last frame's result.
   bool fresh_run_ = true;                          // No frame processed since the run started.
+  std::vector<std::string> run_notes_;             // Hand-eye sigmas stated, replay.
 };
 
 // The true button nearest the tapped candidate in the tap frame, and its distance [px]; null
@@ -256,7 +260,7 @@ double ApproachAngleDeg(const Eigen::Vector3d& approach_in_base, const TrueButto
 // the simulator's truth, the errors against the tapped button. Notes explain figures left out.
 void AddButtonFigures(const ButtonRunLog& log, const MetricSlamView& metric,
                       const PinholeCamera& camera, const ButtonPickerOptions& picker,
-                      const std::optional<ButtonTruth>& truth, RunResult* result,
-                      std::vector<std::string>* notes);
+                      const ScaleEstimatorOptions& scale, const std::optional<ButtonTruth>& truth,
+                      RunResult* result, std::vector<std::string>* notes);
 
 }  // namespace sightline

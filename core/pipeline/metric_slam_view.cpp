@@ -15,6 +15,14 @@ bool MetricViewOptions::IsValid(std::string* error) const {
     if (error) *error = "button.scale.max_sigma_rel must be > 0";
     return false;
   }
+  if (!(hand_eye_min_baseline_m > 0)) {
+    if (error) *error = "button.scale.hand_eye_min_baseline_m must be > 0";
+    return false;
+  }
+  if (!(hand_eye_min_rotation_deg > 0)) {
+    if (error) *error = "button.scale.hand_eye_min_rotation_deg must be > 0";
+    return false;
+  }
   return true;
 }
 
@@ -25,7 +33,13 @@ OptionTable<MetricViewOptions> MetricViewOptions::Describe() {
            "The metric scale counts as converged with this many displacement pairs in the ML "
            "estimate at least ...")
       .Double("max_sigma_rel", &O::max_sigma_rel, "", 1e-6, 1, 0.005,
-              "... and a relative 1-sigma scale error at most this.");
+              "... and a relative 1-sigma scale error at most this.")
+      .Double("hand_eye_min_rotation_deg", &O::hand_eye_min_rotation_deg, "deg", 0.1, 90, 1,
+              "The online hand-eye check sees the mount's translation only when the arm rotates "
+              "at least this much between two keyframes.")
+      .Double("hand_eye_min_baseline_m", &O::hand_eye_min_baseline_m, "m", 0.001, 10, 0.01,
+              "The online hand-eye check compares keyframes at least this far apart (measured): "
+              "the directions of shorter displacements drown in the noise.");
 }
 
 MetricSlamView::MetricSlamView(Trajectory base_from_camera, ScaleEstimatorOptions scale,
@@ -68,6 +82,8 @@ void MetricSlamView::Rescale(const MapSnapshot& map) {
     const double sy = scale_options_.sigma_metric_m;
     if (sum_yy > 0) sigma_rel_ = std::sqrt(sx * sx + sy * sy) / std::sqrt(sum_yy);
   }
+  hand_eye_ = CheckHandEye(map, base_from_camera_, tolerance_s_, lambda_ml_, scale_options_,
+                           options_.hand_eye_min_rotation_deg, options_.hand_eye_min_baseline_m);
 }
 
 namespace {
@@ -96,6 +112,7 @@ SlamView MetricSlamView::MakeView(const PinholeCamera& camera, bool tracked,
   SlamView view;
   view.camera = camera;
   view.tracking = tracked && lambda > 0;
+  view.lambda = lambda;
   if (lambda <= 0) return view;
   view.camera_from_world = MetricCameraFromWorld(map_from_camera, lambda);
   view.map_points_in_world = MetricPoints(map, lambda);
@@ -113,6 +130,10 @@ SlamView MetricSlamView::Update(const MonoSlamResult& result, const PinholeCamer
   view.tracking = result.tracked && lambda_ml_ > 0;
   view.scale_converged = converged();
   view.scale_sigma_rel = sigma_rel_;
+  view.lambda = lambda_ml_;
+  view.hand_eye_deg = hand_eye_.direction_deg;
+  view.hand_eye_translation_observable = hand_eye_.translation_observable;
+  view.hand_eye_translation_m = hand_eye_.translation_m;
   if (lambda_ml_ <= 0) return view;
   view.camera_from_world = MetricCameraFromWorld(result.map_from_camera, lambda_ml_);
   view.map_points_in_world = points_;

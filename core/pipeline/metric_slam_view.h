@@ -14,6 +14,7 @@
 #include "core/mono/mono_slam.h"
 #include "core/mono/scale_estimator.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/hand_eye_check.h"
 
 namespace sightline {
 
@@ -21,6 +22,11 @@ namespace sightline {
 struct MetricViewOptions {
   int min_pairs = 4;            // Displacement pairs inside the ML estimate at least.
   double max_sigma_rel = 0.02;  // Relative 1-sigma scale error at most (see MetricSlamView).
+  // The arm must rotate this much between keyframes for the online hand-eye check to see the
+  // mount's translation (hand_eye_check.h) [deg].
+  double hand_eye_min_rotation_deg = 5;
+  // ... and compares keyframes at least this far apart (measured) [m].
+  double hand_eye_min_baseline_m = 0.05;
 
   bool IsValid(std::string* error) const;
   static OptionTable<MetricViewOptions> Describe();
@@ -55,6 +61,8 @@ class MetricSlamView {
   double sigma_rel() const { return sigma_rel_; }
   bool converged() const;
   const std::vector<ScaleSample>& history() const { return history_; }
+  // The mount checked against the SLAM's motion on the current map's keyframes.
+  const HandEyeCheck& hand_eye_check() const { return hand_eye_; }
 
   // A view of `map` and `map_from_camera` with the scale `lambda` (map units per metre).
   static SlamView MakeView(const PinholeCamera& camera, bool tracked,
@@ -73,6 +81,7 @@ class MetricSlamView {
   double lambda_ml_ = 0, lambda_single_ = 0, sigma_rel_ = 0;
   int pairs_used_ = 0;
   std::vector<ScaleSample> history_;
+  HandEyeCheck hand_eye_;
 };
 
 }  // namespace sightline

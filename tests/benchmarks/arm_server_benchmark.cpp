@@ -3,7 +3,7 @@
 // token that send 64 kB blocks as fast as they can and reconnect when closed) and 50 idle
 // sockets (connections that never send, reopened when the server closes them), and with or
 // without an arm client streaming its pose (arm_pose lines) at 1 kHz. The goal of
-// issue 16 is a median under 5 ms and a maximum under 50 ms; median_ms and max_ms are the
+// goal is a median under 5 ms and a maximum under 50 ms; median_ms and max_ms are the
 // figures of each repetition (the iteration time is their mean).
 // Run: build/bin/bench_arm_server --benchmark_repetitions=5
 #include <arpa/inet.h>

@@ -60,6 +60,7 @@ TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
        GateReason::kOutsideWorkspace},
       {"nan", [](SafetyState& s) { s.target_in_base.y() = std::nan(""); },
        GateReason::kOutsideWorkspace},
+      {"hand-eye inconsistent", [](SafetyState& s) { s.hand_eye_deg = 4; }, GateReason::kUncertain},
   };
   for (const Case& c : cases) {
     SafetyState s = Good();
@@ -97,6 +98,41 @@ TEST(SafetyGate, InvalidOptionsNeverSend) {
   EXPECT_NE(error.find("workspace"), std::string::npos);
   EXPECT_FALSE(CheckSafety(Good(), o).send);
   EXPECT_STREQ(GateReasonKey(GateReason::kStale), "stale");
+}
+
+TEST(SafetyGate, AnUnverifiedMountTranslationIsSaidAndRefusedOnRequest) {
+  SafetyState s = Good();
+  s.hand_eye_translation_verified = false;
+  GateVerdict v = CheckSafety(s, {});
+  EXPECT_TRUE(v.send);
+  EXPECT_NE(v.message.find("not verified"), std::string::npos) << v.message;
+  SafetyGateOptions o;
+  o.require_hand_eye_check = true;
+  v = CheckSafety(s, o);
+  EXPECT_FALSE(v.send);
+  EXPECT_EQ(v.reason, GateReason::kUncertain);
+  EXPECT_NE(v.message.find("require_hand_eye_check"), std::string::npos) << v.message;
+  s.hand_eye_translation_verified = true;
+  EXPECT_TRUE(CheckSafety(s, o).send);
+}
+
+TEST(SafetyGate, EveryLoosenedOptionIsNamedAndTighterOnesAreNot) {
+  EXPECT_TRUE(LooserGateWarnings({}).empty());
+  SafetyGateOptions o;
+  o.max_age_ms = 500;            // Looser.
+  o.max_uncertainty_m = 0.05;    // Looser.
+  o.workspace_max_z_m = 2;       // Looser.
+  o.max_approach_sigma_deg = 2;  // Tighter: no warning.
+  o.min_confidence = 0.5;        // Tighter: no warning.
+  const std::vector<std::string> w = LooserGateWarnings(o);
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_NE(w[0].find("button.gate.max_age_ms = 500"), std::string::npos) << w[0];
+  EXPECT_NE(w[1].find("button.gate.max_uncertainty_m = 0.05"), std::string::npos) << w[1];
+  EXPECT_NE(w[2].find("button.gate.workspace_max_z_m = 2"), std::string::npos) << w[2];
+  o = SafetyGateOptions();
+  o.min_confidence = 0.1;
+  o.max_hand_eye_deg = 10;
+  EXPECT_EQ(LooserGateWarnings(o).size(), 2u);
 }
 
 }  // namespace
