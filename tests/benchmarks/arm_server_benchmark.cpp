@@ -2,7 +2,7 @@
 // good client holding the whole stop line, with 0, 1 or 4 flooders (connections without the
 // token that send 64 kB blocks as fast as they can and reconnect when closed) and 50 idle
 // sockets (connections that never send, reopened when the server closes them), and with or
-// without an arm client streaming its pose (arm_pose lines) at 1 kHz. The goal of
+// without an arm client streaming its pose (arm_pose lines) at 1 kHz. The
 // goal is a median under 5 ms and a maximum under 50 ms; median_ms and max_ms are the
 // figures of each repetition (the iteration time is their mean).
 // Run: build/bin/bench_arm_server --benchmark_repetitions=5
