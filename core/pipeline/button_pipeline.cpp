@@ -308,10 +308,13 @@ int64_t FrameId(const FrameStamp& stamp, int64_t index) {
 }
 
 // The arm's pose stream, not arm_poses.txt: explicitly, or by auto while serving when the
-// recording has no arm_poses.txt (and mono.run.arm_poses names none).
+// recording has no arm_poses.txt (and mono.run.arm_poses names none) but a hand-eye
+// (mono.run.hand_eye, or hand_eye.yaml beside the images).
 bool UsesArmStream(const MonoSlamRunOptions& run, bool serve, const std::string& path) {
   if (run.metric_source != "auto") return run.metric_source == "arm_stream";
-  return serve && run.arm_poses.empty() && FindBeside(path, "arm_poses.txt").empty();
+  // auto also needs the camera's mount on the arm: without one it tracks only.
+  const bool hand_eye = !run.hand_eye.empty() || !FindBeside(path, "hand_eye.yaml").empty();
+  return serve && hand_eye && run.arm_poses.empty() && FindBeside(path, "arm_poses.txt").empty();
 }
 
 }  // namespace

@@ -6,7 +6,8 @@
 // How the mode is chosen (mono.run.metric_source): `arm` needs the arm's poses (an error names
 // the missing file); `arm_stream` takes them from the arm's live pose stream (serving); `none`
 // forces tracking only; `auto` (the default) uses arm_poses.txt when it is there, else, while
-// serving, the arm's pose stream once an arm streams a pose (frames before that, and a whole
+// serving with a hand-eye (mono.run.hand_eye or hand_eye.yaml beside the images), the arm's
+// pose stream once an arm streams a pose (frames before that, and a whole
 // run without one, are tracking only), else falls back to tracking only, saying so in the notes.
 // Ground-truth displacements are no metric source for targets in the arm's base frame.
 #pragma once

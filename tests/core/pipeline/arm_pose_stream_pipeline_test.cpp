@@ -248,16 +248,18 @@ TEST_F(ArmPoseStreamPipeline, WithoutTheStreamTheRunSaysWhyNoTargetWasSent) {
   EXPECT_NE(why.find("arm pose"), std::string::npos) << why;
   EXPECT_NE(why.find("arm_stream"), std::string::npos) << why;
   EXPECT_NE(testing::ReadAll(out + "/button_notes.txt").find(why), std::string::npos);
-  // The stream needs the server; auto without serving needs arm_poses.txt.
+  // The stream needs the server; auto without serving and without arm_poses.txt tracks only.
   StatusOr<RunReport> unserved =
       Run(*streamed_, out, {TapOnTarget(), "mono.run.metric_source=arm_stream"});
   ASSERT_FALSE(unserved.ok());
   EXPECT_NE(unserved.status().message().find("needs serving"), std::string::npos)
       << unserved.status().ToString();
   StatusOr<RunReport> no_file = Run(*streamed_, out, {TapOnTarget()});
-  ASSERT_FALSE(no_file.ok());
-  EXPECT_NE(no_file.status().message().find("arm_poses.txt"), std::string::npos)
-      << no_file.status().ToString();
+  ASSERT_TRUE(no_file.ok()) << no_file.status().ToString();
+  EXPECT_EQ(Figures(*no_file)["counts.metric_scale"], 0);
+  EXPECT_EQ(Figures(*no_file)["targets_sent"], 0);
+  ASSERT_FALSE(no_file->result.notes.empty());
+  EXPECT_NE(no_file->result.notes[0].find("no metric scale"), std::string::npos);
 }
 
 }  // namespace
