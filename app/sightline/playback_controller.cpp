@@ -9,6 +9,7 @@
 #include "core/io/dataset.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/pipeline/player.h"
+#include "core/pipeline/sim_panel_source.h"
 #include "core/sensors/driver_registry.h"
 #include "core/sensors/live_source.h"
 
@@ -31,7 +32,7 @@ void PlaybackController::Open(const QString& path) {
   // Opening reads index files and the first images: keep it off the GUI thread. The destructor
   // waits for background tasks, so `this` outlives them.
   Track(QtConcurrent::run([this, self, generation, path, path_utf8] {
-    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenSource(path_utf8));
+    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenRunSource(path_utf8));
     QMetaObject::invokeMethod(
         this,
         [self, generation, path, opened] {
