@@ -3,6 +3,7 @@
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <filesystem>
 
 #include "core/common/depth_cloud.h"
 #include "core/common/timing.h"
@@ -204,7 +205,11 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
   if (!processor_) return nullptr;
   if (processor_options_dirty_) {
     processor_options_dirty_ = false;
-    const Status configured = processor_->Configure(processor_options_);
+    // A live simulated camera: "button:K" taps and the scene's true hand-eye (sim_panel_source.h).
+    OptionSet options = processor_options_;
+    const std::string sim_dir = (std::filesystem::temp_directory_path() / "sightline-sim").string();
+    const Status prepared = PrepareSimRun(processor_source_.info.path, sim_dir, &options);
+    const Status configured = prepared.ok() ? processor_->Configure(options) : prepared;
     if (!configured.ok()) return FailedResult(frame, configured);
   }
   if (!processor_opened_) {

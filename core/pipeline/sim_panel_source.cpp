@@ -226,6 +226,8 @@ Status PrepareSimRun(const std::string& uri, const std::string& out_dir, OptionS
     StatusOr<std::string> hand_eye = StringOption(*options, "mono.run.hand_eye");
     if (!hand_eye.ok()) return hand_eye.status();
     if (hand_eye->empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(out_dir, ec);
       const std::string path = (std::filesystem::path(out_dir) / "sim_hand_eye.yaml").string();
       SIGHTLINE_RETURN_IF_ERROR(WriteSimHandEye(uri, path));
       SIGHTLINE_RETURN_IF_ERROR(options->Set("mono.run.hand_eye", path, "sim:// hand-eye"));
