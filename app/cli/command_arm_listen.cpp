@@ -1,5 +1,6 @@
-// sightline-cli arm-listen: a client of the arm-target protocol that prints what arrives, for
-// demos and tests (core/button/PROTOCOL.md).
+// sightline-cli arm-listen: a client of the arm-target protocol that prints what arrives and
+// can play an arm's recorded poses to the server as arm_pose lines, for demos and tests
+// (core/button/PROTOCOL.md).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -8,6 +9,8 @@
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
 #include "core/button/arm_client.h"
+#include "core/button/arm_pose_stream.h"
+#include "core/common/trajectory.h"
 
 namespace sightline::cli {
 
@@ -15,7 +18,7 @@ namespace {
 
 const char kHelp[] =
     "usage: sightline-cli arm-listen HOST:PORT [--token T] [--count N] [--timeout S]\n"
-    "                                [--no-heartbeats] [--max-line-bytes B]\n"
+    "                                [--no-heartbeats] [--max-line-bytes B] [--poses FILE]\n"
     "\n"
     "Connects to Sightline's arm-target server and prints every JSON line it sends (targets,\n"
     "heartbeats, stops), one per line, as they arrive. See core/button/PROTOCOL.md.\n"
@@ -25,6 +28,9 @@ const char kHelp[] =
     "  --timeout S       exit with an error when nothing is printed for S seconds\n"
     "  --no-heartbeats   do not print (or count) heartbeat messages\n"
     "  --max-line-bytes B  longer lines are dropped and reported on stderr (default 65536)\n"
+    "  --poses FILE      act as the arm: send FILE's poses (TUM: stamp, base_from_end_effector,\n"
+    "                    e.g. a recording's arm_poses.txt) as arm_pose lines, all at once\n"
+    "                    after the handshake (the server keeps button.arm_pose.keep_s of them)\n"
     "\n"
     "Exits 0 after --count messages, or when the server closes the stream after a stop line;\n"
     "a stream that ends without a stop (the arm would not know to stop) exits 1.\n";
@@ -35,11 +41,26 @@ bool ParsePositive(const std::string& text, double* value) {
   return end && *end == '\0' && *value > 0;
 }
 
+// FILE's poses as arm_pose lines.
+StatusOr<std::string> PoseLines(const std::string& file) {
+  StatusOr<Trajectory> poses = ReadTumTrajectory(file);
+  if (!poses.ok()) return poses.status();
+  std::string lines;
+  for (const TimedPose& p : poses->poses()) {
+    ArmPoseMessage m;
+    m.stamp_s = p.time_s;
+    m.base_from_end_effector = p.world_from_sensor;
+    lines += ArmPoseLine(m) + "\n";
+  }
+  return lines;
+}
+
 }  // namespace
 
 int ArmListenCommand(const std::vector<std::string>& argv) {
-  auto parsed = CliArgs::Parse(argv, {"--token", "--count", "--timeout", "--max-line-bytes"},
-                               {"--help", "--no-heartbeats"});
+  auto parsed =
+      CliArgs::Parse(argv, {"--token", "--count", "--timeout", "--max-line-bytes", "--poses"},
+                     {"--help", "--no-heartbeats"});
   if (!parsed.ok()) return Fail("arm-listen: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(kHelp, stdout);
@@ -61,8 +82,18 @@ int ArmListenCommand(const std::vector<std::string>& argv) {
   if (auto v = parsed->Value("--max-line-bytes"); v && !ParsePositive(*v, &max_line_bytes)) {
     return Fail("arm-listen: --max-line-bytes must be a positive number");
   }
+  std::string poses;
+  if (auto file = parsed->Value("--poses")) {
+    StatusOr<std::string> lines = PoseLines(*file);
+    if (!lines.ok()) return Fail("arm-listen: --poses: " + lines.status().message());
+    poses = std::move(*lines);
+  }
   auto client = ArmClient::Connect(host, port, parsed->Value("--token").value_or(""));
   if (!client.ok()) return Fail("arm-listen: " + client.status().message());
+  if (!poses.empty()) {
+    const Status sent = client->Send(poses);
+    if (!sent.ok()) return Fail("arm-listen: --poses: " + sent.message());
+  }
   client->set_max_line_bytes(size_t(max_line_bytes));
   const bool heartbeats = !parsed->Has("--no-heartbeats");
   using Clock = std::chrono::steady_clock;

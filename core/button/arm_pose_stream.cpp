@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -20,6 +21,8 @@ bool ArmPoseStreamOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.arm_pose.clock_offset_s must be finite");
   if (!(max_gap_s > 0)) return Invalid(error, "button.arm_pose.max_gap_s must be > 0");
   if (!(keep_s > 0)) return Invalid(error, "button.arm_pose.keep_s must be > 0");
+  if (!(wait_s >= 0 && wait_s <= 60))
+    return Invalid(error, "button.arm_pose.wait_s must lie in [0, 60]");
   return true;
 }
 
@@ -37,7 +40,10 @@ OptionTable<ArmPoseStreamOptions> ArmPoseStreamOptions::Describe() {
       .Double("max_gap_s", &O::max_gap_s, "s", 0.001, 10, 0.005,
               "No pose is interpolated across a larger gap between two arm_pose messages.")
       .Double("keep_s", &O::keep_s, "s", 0.1, 600, 0.5,
-              "arm_pose messages older than this behind the newest are forgotten.");
+              "arm_pose messages older than this behind the newest are forgotten.")
+      .Double("wait_s", &O::wait_s, "s", 0, 60, 0.05,
+              "A camera frame newer than the newest arm pose waits at most this long (host "
+              "clock) for the pose that covers its stamp; then it has no arm pose.");
 }
 
 namespace {
@@ -195,8 +201,32 @@ StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
   return out;
 }
 
+bool KeepsRate(double previous_s, double stamp_s, double max_rate_hz) {
+  return stamp_s >= previous_s + 1.0 / max_rate_hz - kStampResolutionS;
+}
+
+std::string ArmPoseLine(const ArmPoseMessage& pose) {
+  const Eigen::Vector3d p = pose.base_from_end_effector.translation();
+  const Eigen::Quaterniond q(pose.base_from_end_effector.linear());
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "{\"type\":\"arm_pose\",\"stamp\":%.6f,\"position_m\":[%.9f,%.9f,%.9f],"
+                "\"quaternion_xyzw\":[%.9f,%.9f,%.9f,%.9f]",
+                pose.stamp_s, p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w());
+  std::string line = text;
+  if (!pose.joints.empty()) {
+    line += ",\"joints\":[";
+    for (size_t i = 0; i < pose.joints.size(); ++i) {
+      std::snprintf(text, sizeof(text), "%s%.9g", i ? "," : "", pose.joints[i]);
+      line += text;
+    }
+    line += "]";
+  }
+  return line + "}";
+}
+
 bool ArmPoseBuffer::Add(const ArmPoseMessage& pose) {
-  if (!poses_.empty() && !(pose.stamp_s >= poses_.back().stamp_s + 1.0 / options_.max_rate_hz)) {
+  if (!poses_.empty() && !KeepsRate(poses_.back().stamp_s, pose.stamp_s, options_.max_rate_hz)) {
     ++dropped_;
     return false;
   }
@@ -206,10 +236,14 @@ bool ArmPoseBuffer::Add(const ArmPoseMessage& pose) {
 }
 
 std::optional<Eigen::Isometry3d> ArmPoseBuffer::At(double camera_stamp_s) const {
-  const double t = camera_stamp_s + options_.clock_offset_s;
-  if (poses_.empty() || t < poses_.front().stamp_s || t > poses_.back().stamp_s) {
-    return std::nullopt;
-  }
+  double t = camera_stamp_s + options_.clock_offset_s;
+  if (poses_.empty()) return std::nullopt;
+  // Up to a microsecond (the stamps' resolution) outside the span counts as its end.
+  if (t < poses_.front().stamp_s && t >= poses_.front().stamp_s - kStampResolutionS)
+    t = poses_.front().stamp_s;
+  if (t > poses_.back().stamp_s && t <= poses_.back().stamp_s + kStampResolutionS)
+    t = poses_.back().stamp_s;
+  if (t < poses_.front().stamp_s || t > poses_.back().stamp_s) return std::nullopt;
   size_t hi = 0;
   while (poses_[hi].stamp_s < t) ++hi;
   if (poses_[hi].stamp_s == t) return poses_[hi].base_from_end_effector;

@@ -99,7 +99,7 @@ constexpr size_t kReadChunk = 4096;
 constexpr int kReadChunksPerWake = 4;
 constexpr int kWriteLinesPerWake = 64;
 constexpr int kAcceptsPerWake = 64;
-// An authorised client has nothing to say; after this many max_line_bytes it is closed.
+// After this many max_line_bytes of anything but the arm's poses an authorised client is closed.
 constexpr int64_t kChatterLines = 16;
 
 Status Errno(const std::string& what) { return Unavailable(what + ": " + std::strerror(errno)); }
@@ -145,16 +145,21 @@ struct ArmServer::Connection {
   Clock::time_point deadline;      // Of the handshake, while not authorised.
   std::string in;                  // Bytes received, not yet a whole line.
   bool discarding = false;         // Inside an over-long line.
-  int64_t chatter_bytes = 0;       // Received after the handshake.
+  int64_t chatter_bytes = 0;       // Received after the handshake, the arm's poses aside.
+  bool is_arm = false;             // Sent the first valid arm_pose; the arm until it closes.
+  bool has_pose = false;           // Of the arm: last_pose_stamp is set.
+  double last_pose_stamp = 0;      // Of the arm's last accepted pose [s, arm clock].
   std::shared_ptr<Outbox> outbox;  // Once authorised.
   Line writing;                    // The line being written ...
   bool writing_stop = false;       // ... is a stop ...
   size_t offset = 0;               // ... of which this many bytes went out.
 };
 
-StatusOr<std::unique_ptr<ArmServer>> ArmServer::Start(ArmServerOptions options) {
+StatusOr<std::unique_ptr<ArmServer>> ArmServer::Start(ArmServerOptions options,
+                                                      ArmPoseSink pose_sink,
+                                                      ArmPoseStreamOptions pose_options) {
   std::string error;
-  if (!options.IsValid(&error)) return InvalidArgument(error);
+  if (!options.IsValid(&error) || !pose_options.IsValid(&error)) return InvalidArgument(error);
   const std::string where = options.bind_address + ":" + std::to_string(options.port);
   const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (fd < 0) return Errno("arm server: socket");
@@ -177,13 +182,17 @@ StatusOr<std::unique_ptr<ArmServer>> ArmServer::Start(ArmServerOptions options) 
     close(fd);
     return Errno("arm server: pipe");
   }
-  return std::unique_ptr<ArmServer>(
-      new ArmServer(std::move(options), fd, ntohs(addr.sin_port), pipe_fds[0], pipe_fds[1]));
+  return std::unique_ptr<ArmServer>(new ArmServer(std::move(options), std::move(pose_sink),
+                                                  pose_options, fd, ntohs(addr.sin_port),
+                                                  pipe_fds[0], pipe_fds[1]));
 }
 
-ArmServer::ArmServer(ArmServerOptions options, int listen_fd, int port, int wake_read,
+ArmServer::ArmServer(ArmServerOptions options, ArmPoseSink pose_sink,
+                     ArmPoseStreamOptions pose_options, int listen_fd, int port, int wake_read,
                      int wake_write)
     : options_(std::move(options)),
+      pose_sink_(std::move(pose_sink)),
+      pose_options_(pose_options),
       listen_fd_(listen_fd),
       port_(port),
       wake_read_(wake_read),
@@ -361,6 +370,8 @@ void ArmServer::HandleLine(Connection& c) {
       }
       Authorise(c, authorised);
     } else {
+      if (!c.discarding && ParseArmPoseLine(c.in, pose_options_).ok())
+        RefusePose("arm_pose before the token: the connection is closed");
       {
         std::lock_guard<std::mutex> lock(mutex_);
         ++stats_.token_failures;
@@ -369,8 +380,51 @@ void ArmServer::HandleLine(Connection& c) {
     }
     return;
   }
+  const LineKind kind = c.discarding ? LineKind::kOther : HandlePose(c);
+  if (kind == LineKind::kArmPose) {
+    c.chatter_bytes -= int64_t(c.in.size()) + 1;  // The arm's poses are not chatter.
+    return;
+  }
+  if (kind == LineKind::kRefusedPose) return;  // Counted; its bytes stay on the budget.
   std::lock_guard<std::mutex> lock(mutex_);
-  ++stats_.ignored_lines;  // Clients have nothing to say after the handshake.
+  ++stats_.ignored_lines;  // Other lines are ignored.
+}
+
+void ArmServer::RefusePose(const std::string& why) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.poses_refused;
+  stats_.last_pose_error = why;
+}
+
+ArmServer::LineKind ArmServer::HandlePose(Connection& c) {
+  if (c.in.find("arm_pose") == std::string::npos) return LineKind::kOther;
+  StatusOr<ArmPoseMessage> pose = ParseArmPoseLine(c.in, pose_options_);
+  std::string refusal;
+  if (!pose.ok()) {
+    refusal = pose.status().message();
+  } else if (!pose_sink_) {
+    refusal = "arm_pose: this server takes no arm poses";
+  } else if (arm_present_ && !c.is_arm) {
+    refusal = "arm_pose: another client is the arm (one arm per server)";
+  } else if (c.has_pose && !(pose->stamp_s > c.last_pose_stamp)) {
+    refusal = "arm_pose: \"stamp\" is not after the arm's previous pose";
+  }
+  if (!refusal.empty()) {
+    RefusePose(refusal);
+    return LineKind::kRefusedPose;
+  }
+  if (!c.is_arm) c.is_arm = arm_present_ = true;
+  if (c.has_pose && !KeepsRate(c.last_pose_stamp, pose->stamp_s, pose_options_.max_rate_hz)) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++stats_.poses_over_rate;  // Dropped; a well-behaved arm above the rate is not chatter.
+    return LineKind::kArmPose;
+  }
+  c.has_pose = true;
+  c.last_pose_stamp = pose->stamp_s;
+  pose_sink_(*pose);  // Quick by contract; no lock held.
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.poses_received;
+  return LineKind::kArmPose;
 }
 
 void ArmServer::Read(Connection& c) {
@@ -385,15 +439,7 @@ void ArmServer::Read(Connection& c) {
       if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) Close(c);
       return;
     }
-    if (c.authorised) {
-      c.chatter_bytes += n;
-      if (c.chatter_bytes > kChatterLines * options_.max_line_bytes) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++stats_.closed_for_input;
-        Close(c);
-        return;
-      }
-    }
+    if (c.authorised) c.chatter_bytes += n;  // The arm's poses are refunded line by line.
     for (ssize_t i = 0; i < n && c.fd >= 0; ++i) {
       const char ch = buffer[i];
       if (ch != '\n') {
@@ -409,7 +455,15 @@ void ArmServer::Read(Connection& c) {
       HandleLine(c);
       c.in.clear();
       c.discarding = false;
-      if (!was_authorised) break;  // Bytes after the token line are not read as more lines.
+      // Authorised by this line: the rest of the chunk is its first lines (an arm streams its
+      // poses right after the token), on the budget like every byte after the handshake.
+      if (!was_authorised && c.authorised) c.chatter_bytes += n - i - 1;
+    }
+    if (c.fd >= 0 && c.authorised && c.chatter_bytes > kChatterLines * options_.max_line_bytes) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++stats_.closed_for_input;
+      Close(c);
+      return;
     }
     if (n < ssize_t(sizeof(buffer))) return;  // Drained.
   }
@@ -441,6 +495,7 @@ void ArmServer::Write(Connection& c) {
 
 void ArmServer::Close(Connection& c) {
   if (c.fd < 0) return;
+  if (c.is_arm) arm_present_ = c.is_arm = false;  // Another client may be the arm now.
   // Read what the peer sent so that close() ends with FIN, not a reset that could discard the
   // stop line still in flight to it (bounded: a flooder is reset).
   shutdown(c.fd, SHUT_WR);
@@ -537,12 +592,14 @@ void ArmServer::Run() {
     std::erase_if(connections, [](const std::unique_ptr<Connection>& c) { return c->fd < 0; });
     stats_.clients = int(connections.size());
     stats_.authorised = int(outboxes_.size());
+    stats_.arm_connected = arm_present_;
   }
   for (auto& c : connections) Close(*c);
   std::lock_guard<std::mutex> lock(mutex_);
   outboxes_.clear();
   stats_.clients = 0;
   stats_.authorised = 0;
+  stats_.arm_connected = false;
 }
 
 }  // namespace sightline

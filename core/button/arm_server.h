@@ -1,5 +1,6 @@
 // The arm-target server: serves the protocol of PROTOCOL.md (JSON lines, version 2) to TCP
-// clients from its own I/O thread (POSIX sockets, poll()).
+// clients from its own I/O thread (POSIX sockets, poll()), and takes the arm's pose stream
+// (`arm_pose` lines, core/button/arm_pose_stream.h) from the one client that is the arm.
 //
 // Publishing never waits for a client or for socket I/O: Publish* take a short lock that only
 // guards the per-client queues, and the I/O thread holds that lock only to move one line out of a
@@ -10,16 +11,23 @@
 // replaces it) and targets (bounded; a full queue drops its oldest target). They are written in
 // that order. A stop removes the targets and the heartbeat still queued for a client: nothing
 // published before a stop reaches the arm after it.
+//
+// The I/O thread parses the `arm_pose` lines of authorised clients; the first authorised client
+// that sends a valid one is the arm until it disconnects, and its poses within
+// button.arm_pose.max_rate_hz go to the sink given at Start. Poses of other clients, malformed or
+// out of order ones are refused and counted (the last error text is kept).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "core/button/arm_pose_stream.h"
 #include "core/button/arm_protocol.h"
 #include "core/common/status.h"
 #include "core/options/option_table.h"
@@ -63,7 +71,16 @@ struct ArmServerStats {
   int64_t handshake_timeouts = 0;  // Closed for not presenting the token within handshake_s.
   int64_t evicted = 0;             // Unauthenticated, closed to make room for a newer one.
   int64_t closed_for_input = 0;    // Authorised, closed for sending too much (see PROTOCOL.md).
+  int64_t poses_received = 0;      // arm_pose lines of the arm handed to the sink.
+  int64_t poses_over_rate = 0;     // arm_pose lines of the arm above max_rate_hz, dropped.
+  int64_t poses_refused = 0;       // Malformed, out of order, not the arm's, before the token.
+  std::string last_pose_error;     // Why the last one was refused (names the member).
+  bool arm_connected = false;      // A client is the arm now.
 };
+
+// Where the arm's poses go: called on the server's I/O thread for every accepted arm_pose, in
+// stamp order; it must return quickly (store the pose, wake a waiter) and never call the server.
+using ArmPoseSink = std::function<void(const ArmPoseMessage&)>;
 
 // Thread-safe: every public method may be called from any thread.
 //
@@ -76,8 +93,11 @@ class ArmServer {
  public:
   // Binds, listens and starts the thread. InvalidArgument for invalid options (a non-loopback
   // bind address without a token among them), Unavailable when the address cannot be bound (the
-  // message names address and port).
-  static StatusOr<std::unique_ptr<ArmServer>> Start(ArmServerOptions options);
+  // message names address and port). Without `pose_sink` every arm_pose line is refused
+  // (counted); `pose_options` gives the parser's limits and max_rate_hz.
+  static StatusOr<std::unique_ptr<ArmServer>> Start(ArmServerOptions options,
+                                                    ArmPoseSink pose_sink = nullptr,
+                                                    ArmPoseStreamOptions pose_options = {});
   // SendStopAndClose("shutdown").
   ~ArmServer();
   ArmServer(const ArmServer&) = delete;
@@ -107,7 +127,10 @@ class ArmServer {
  private:
   struct Outbox;
   struct Connection;
-  ArmServer(ArmServerOptions options, int listen_fd, int port, int wake_read, int wake_write);
+  // What an authorised client's line was.
+  enum class LineKind { kOther, kArmPose, kRefusedPose };
+  ArmServer(ArmServerOptions options, ArmPoseSink pose_sink, ArmPoseStreamOptions pose_options,
+            int listen_fd, int port, int wake_read, int wake_write);
   void Run();
   void Wake();
   int64_t QueueStopLocked(const std::string& reason);
@@ -115,12 +138,17 @@ class ArmServer {
   void Authorise(Connection& c, int authorised_now);
   void Read(Connection& c);
   void HandleLine(Connection& c);
+  LineKind HandlePose(Connection& c);
+  void RefusePose(const std::string& why);
   void Write(Connection& c);
   void Close(Connection& c);
   void Heartbeat();
   static double NowS();
 
   const ArmServerOptions options_;
+  const ArmPoseSink pose_sink_;
+  const ArmPoseStreamOptions pose_options_;
+  bool arm_present_ = false;  // I/O thread only: a connection is the arm.
   const int listen_fd_;
   const int port_;
   const int wake_read_, wake_write_;

@@ -10,6 +10,9 @@ namespace sightline {
 // An image side (width or height) a calibration file may declare [px]: beyond every camera
 // sold; a larger value is a corrupt field.
 inline constexpr int kMaxImageSidePx = 32768;
+// Pixels an image file may declare in its header (PNG, JPEG, PGM/PPM, BMP; checked before
+// decoding): 100 megapixels, above every camera Sightline reads (a 4K frame is 8.3 Mpx).
+inline constexpr double kMaxImagePixels = 100e6;
 // A YAML file read whole (camera.yaml, stereo calibration, hand_eye.yaml, the floor file,
 // EuRoC sensor.yaml) [bytes]: real ones are a few kB.
 inline constexpr size_t kMaxCalibrationFileBytes = size_t{1} << 20;

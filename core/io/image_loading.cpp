@@ -5,13 +5,16 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/text_file.h"
+#include "core/io/image_header.h"
 
 namespace sightline {
 namespace {
 
-// imread with the reason for an empty result. OpenCV may throw on some corrupt files.
+// imread with the reason for an empty result, after the header's declared size is checked. OpenCV
+// may throw on some corrupt files.
 StatusOr<cv::Mat> Decode(const std::string& path, int flags) {
   SIGHTLINE_RETURN_IF_ERROR(CheckFileExists(path));
+  SIGHTLINE_RETURN_IF_ERROR(CheckImageHeaderSize(path));
   cv::Mat image;
   try {
     image = cv::imread(path, flags);

@@ -211,11 +211,13 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
   c.run = options.Extract(ButtonRunOptions::Describe());
   c.view = options.Extract(MetricViewOptions::Describe());
   c.server = options.Extract(ArmServerOptions::Describe());
+  c.arm_pose = options.Extract(ArmPoseStreamOptions::Describe());
   const ButtonGuiOptions gui = options.Extract(ButtonGuiOptions::Describe());
   c.serve = c.run.serve || gui.serve;
   c.max_tap_age_s = gui.max_tap_age_s;
   std::string error;
-  if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error)) {
+  if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error) ||
+      !c.arm_pose.IsValid(&error)) {
     return InvalidArgument(error);
   }
   if (!c.run.tap.empty()) {
@@ -223,11 +225,16 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
     if (!tap.ok()) return tap.status();
     c.tap = *tap;
   }
-  if (c.mono_run.metric_source == "auto") c.mono_run.metric_source = "arm";
-  if (c.mono_run.metric_source != "arm") {
+  const std::string& metric = c.mono_run.metric_source;
+  if (metric != "auto" && metric != "arm" && metric != "arm_stream") {
     return InvalidArgument(
-        "mono.run.metric_source must be arm (or auto) for the button pipeline: "
+        "mono.run.metric_source must be arm, arm_stream or auto for the button pipeline: "
         "the targets are in the arm's base frame");
+  }
+  if (metric == "arm_stream" && !c.serve) {
+    return InvalidArgument(
+        "mono.run.metric_source = arm_stream needs serving (--serve, button.run.serve or "
+        "button.gui.serve): the arm streams its poses to the arm-target server");
   }
   return c;
 }
@@ -236,12 +243,16 @@ namespace {
 
 // Options of the arm-target server and of the operator panel: changing them keeps the run.
 bool IsLinkKey(const std::string& key) {
-  return key.rfind("button.arm.", 0) == 0 || key.rfind("button.gui.", 0) == 0 ||
-         key == "button.run.serve" || key == "button.run.wait_clients" ||
-         key == "button.run.wait_clients_s" || key == "button.run.linger_s";
+  return key.rfind("button.arm.", 0) == 0 || key.rfind("button.arm_pose.", 0) == 0 ||
+         key.rfind("button.gui.", 0) == 0 || key == "button.run.serve" ||
+         key == "button.run.wait_clients" || key == "button.run.wait_clients_s" ||
+         key == "button.run.linger_s";
 }
 
-bool IsArmKey(const std::string& key) { return key.rfind("button.arm.", 0) == 0; }
+// The server's and the pose stream's: changing them starts a new server.
+bool IsArmKey(const std::string& key) {
+  return key.rfind("button.arm.", 0) == 0 || key.rfind("button.arm_pose.", 0) == 0;
+}
 
 // Whether `a` and `b` differ in a key for which `pick(key) == picked`.
 bool Differ(const OptionSet& a, const OptionSet& b, bool (*pick)(const std::string&), bool picked) {
@@ -263,7 +274,7 @@ Status ButtonPipeline::Configure(const OptionSet& options) {
   const bool arm_changed = options_ && Differ(*options_, options, IsArmKey, true);
   config_ = std::move(*parsed);
   options_ = options;
-  if (run_changed) SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, config_.mono_run));
+  if (run_changed) SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, MonoRun()));
   if (!source_) return Status::Ok();
   if (arm_changed) StopOutput("arm settings changed");
   if (!run_changed) return StartOutput();  // Serving switched: the map and the button stay.
@@ -297,9 +308,44 @@ int64_t FrameId(const FrameStamp& stamp, int64_t index) {
   return stamp.sequence_id >= 0 ? stamp.sequence_id : index;
 }
 
+// The arm's pose stream, not arm_poses.txt: explicitly, or by auto while serving when the
+// recording has no arm_poses.txt (and mono.run.arm_poses names none).
+bool UsesArmStream(const MonoSlamRunOptions& run, bool serve, const std::string& path) {
+  if (run.metric_source != "auto") return run.metric_source == "arm_stream";
+  return serve && run.arm_poses.empty() && FindBeside(path, "arm_poses.txt").empty();
+}
+
 }  // namespace
 
+MonoSlamRunOptions ButtonPipeline::MonoRun() const {
+  MonoSlamRunOptions run = config_.mono_run;
+  run.metric_source = stream_ || run.metric_source == "arm_stream" ? "none" : "arm";
+  return run;
+}
+
+Status ButtonPipeline::ChooseMetricSource(const std::string& path) {
+  const bool stream = UsesArmStream(config_.mono_run, config_.serve, path);
+  if (stream != stream_) {
+    stream_ = stream;
+    SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, MonoRun()));
+  }
+  end_effector_from_camera_ = Eigen::Isometry3d::Identity();
+  if (!stream_ || config_.mono_run.hand_eye == "none") return Status::Ok();
+  std::string hand_eye = config_.mono_run.hand_eye;
+  if (hand_eye.empty()) hand_eye = FindBeside(path, "hand_eye.yaml");
+  if (hand_eye.empty()) {
+    return NotFound(path +
+                    ": no hand_eye.yaml beside the images for the arm's pose stream "
+                    "(mono.run.hand_eye; \"none\" = the camera is the end effector)");
+  }
+  StatusOr<HandEye> read = ReadHandEyeFile(hand_eye);
+  if (!read.ok()) return read.status();
+  end_effector_from_camera_ = read->end_effector_from_camera;
+  return Status::Ok();
+}
+
 Status ButtonPipeline::Open(const PipelineSource& source) {
+  SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source.info.path));
   SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
   if (!truth.ok()) return truth.status();
@@ -318,7 +364,7 @@ Status ButtonPipeline::StartOutput() {
   }
   if (!output_) {
     StatusOr<std::shared_ptr<ButtonTargetOutput>> started =
-        ButtonTargetOutput::Start(config_.server);
+        ButtonTargetOutput::Start(config_.server, config_.arm_pose);
     if (!started.ok()) return started.status();
     output_ = std::move(*started);
     std::shared_ptr<ButtonTargetOutput> output = output_;
@@ -344,6 +390,7 @@ void ButtonPipeline::StartRun() {
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
   log_ = ButtonRunLog();
+  arm_stream_ = ArmStreamCounts();
   true_button_ = nullptr;
   frames_ = 0;
   seen_.clear();
@@ -367,6 +414,7 @@ void ButtonPipeline::Reset() {
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
   log_ = ButtonRunLog();
+  arm_stream_ = ArmStreamCounts();
   frames_ = 0;
   seen_.clear();
   last_.reset();
@@ -382,10 +430,12 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   if (!mono.ok()) return mono.status();
   auto out = std::make_shared<ButtonFrameResult>();
   static_cast<MonoSlamFrameResult&>(*out) = **mono;
+  if (stream_) out->metric_source = "arm_stream";                     // The SLAM itself has none.
   if (!out->slam) return std::shared_ptr<const PipelineResult>(out);  // Status says why.
   const double slam_ms = (HostTimeS() - start) * 1000.0;
   if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
   const MonoSlamResult& r = *out->slam;
+  if (stream_) FeedArmPose(r.stamp.sensor_time_s);
   const SlamView view = metric_->Update(r, mono_.camera());
   out->scale_converged = view.scale_converged;
   out->scale_ml = metric_->lambda_ml();
@@ -413,6 +463,19 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Reprocess(const 
   again->target_published = false;
   AddLinkState(again.get());
   return std::shared_ptr<const PipelineResult>(again);
+}
+
+void ButtonPipeline::FeedArmPose(double stamp_s) {
+  bool waited = false;
+  const std::optional<Eigen::Isometry3d> base_from_end_effector =
+      output_ ? output_->poses().At(stamp_s, &waited) : std::nullopt;
+  arm_stream_.waited += waited ? 1 : 0;
+  if (!base_from_end_effector) {
+    ++arm_stream_.without_pose;  // No base frame and no scale pair for this frame.
+    return;
+  }
+  ++arm_stream_.with_pose;
+  metric_->AddMeasuredPose(stamp_s, *base_from_end_effector * end_effector_from_camera_);
 }
 
 void ButtonPipeline::AddLinkState(ButtonFrameResult* out) const {
@@ -611,6 +674,37 @@ std::string NoTargetSent(const ButtonRunLog& log, int64_t frames) {
 
 }  // namespace
 
+std::string ButtonPipeline::NoArmPoses() const {
+  if (!stream_ || !log_.sent.empty() || arm_stream_.with_pose > 0) return "";
+  const int64_t received = output_ ? output_->Stats().poses_received : 0;
+  return "no target sent: none of the " + std::to_string(frames_) +
+         " frame(s) had an arm pose (mono.run.metric_source = arm_stream, " +
+         std::to_string(received) + " arm_pose line(s) received" +
+         (output_ ? "" : ", not serving") +
+         "): without the arm's poses there is neither a metric scale nor the arm's base frame";
+}
+
+void ButtonPipeline::AddArmStreamFigures(RunResult* result, std::vector<std::string>* notes) const {
+  result->counts.emplace_back("metric_from_arm_stream", stream_ ? 1 : 0);
+  if (!stream_) return;
+  if (output_) {
+    const ArmServerStats stats = output_->Stats();
+    result->counts.emplace_back("arm_poses_received", static_cast<double>(stats.poses_received));
+    result->counts.emplace_back("arm_poses_over_rate", static_cast<double>(stats.poses_over_rate));
+    result->counts.emplace_back("arm_poses_refused", static_cast<double>(stats.poses_refused));
+    if (!stats.last_pose_error.empty())
+      notes->push_back("last arm_pose refused: " + stats.last_pose_error);
+  }
+  result->counts.emplace_back("frames_with_arm_pose", static_cast<double>(arm_stream_.with_pose));
+  result->counts.emplace_back("frames_without_arm_pose",
+                              static_cast<double>(arm_stream_.without_pose));
+  result->counts.emplace_back("frames_waited_for_arm_pose",
+                              static_cast<double>(arm_stream_.waited));
+  notes->push_back("metric scale source: the arm's pose stream (" +
+                   std::to_string(arm_stream_.with_pose) + " of " + std::to_string(frames_) +
+                   " frame(s) with an arm pose)");
+}
+
 StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   if (!source_ || frames_ == 0) {
     return OutOfRange((source_ ? source_->info.path : std::string("button")) + " holds no frames");
@@ -636,9 +730,11 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
     result.counts.emplace_back("arm_targets_published", static_cast<double>(stats.targets));
     result.counts.emplace_back("arm_lines_sent", static_cast<double>(stats.sent_lines));
   }
+  AddArmStreamFigures(&result, &notes);
   result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
   result.counts.emplace_back("lost_frames", mono_.lost_frames());
-  result.nothing_achieved = NoTargetSent(log_, frames_);
+  result.nothing_achieved = NoArmPoses();
+  if (result.nothing_achieved.empty()) result.nothing_achieved = NoTargetSent(log_, frames_);
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
@@ -659,6 +755,7 @@ PipelineInfo ButtonPipelineInfo(const std::shared_ptr<ButtonCommands>& commands,
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonPickerOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MetricViewOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmServerOptions::Describe()));
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmPoseStreamOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonGuiOptions::Describe()));
     return set->Declare(ButtonRunOptions::Describe());
   };

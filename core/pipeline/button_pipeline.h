@@ -1,5 +1,7 @@
 // The `button` pipeline: the operator's button picker, the same object in the CLI and the GUI.
-// Monocular SLAM (the mono-slam pipeline), the metric scale from the arm's poses, the
+// Monocular SLAM (the mono-slam pipeline), the metric scale from the arm's poses (recorded in
+// arm_poses.txt, or streamed live by the arm client to the arm-target server: metric_source
+// arm_stream, chosen by auto when serving without arm_poses.txt), the
 // operator's tap and answer (ButtonCommands: the GUI's operator panel, or --tap X,Y[@FRAME]
 // confirmed at once), tracking, 3D location and the safety gate per frame, in data time (the
 // frames' sensor timestamps); targets optionally published through the arm-target server
@@ -143,6 +145,7 @@ class ButtonPipeline : public Pipeline {
     ButtonRunOptions run;
     MetricViewOptions view;
     ArmServerOptions server;
+    ArmPoseStreamOptions arm_pose;
     bool serve = false;
     double max_tap_age_s = 0.5;    // button.gui.max_tap_age_s.
     std::optional<ButtonTap> tap;  // button.run.tap.
@@ -153,7 +156,22 @@ class ButtonPipeline : public Pipeline {
     double stamp_s = 0;
     cv::Mat image;
   };
+  // How many frames of the run got a pose from the arm's stream.
+  struct ArmStreamCounts {
+    int64_t with_pose = 0, without_pose = 0, waited = 0;
+  };
   static StatusOr<Config> Parse(const OptionSet& options);
+  // The SLAM's run options: no metric source of its own when the arm streams its poses.
+  MonoSlamRunOptions MonoRun() const;
+  // Chooses the recorded poses or the stream for `path` (reconfiguring the SLAM when that
+  // changed) and reads the hand-eye transform the stream needs.
+  Status ChooseMetricSource(const std::string& path);
+  // The arm's streamed pose at this frame's stamp, times end_effector_from_camera, into metric_.
+  void FeedArmPose(double stamp_s);
+  // Why nothing was sent, when the arm's stream gave no pose; "" otherwise.
+  std::string NoArmPoses() const;
+  // The stream's counts and a note on where the scale came from.
+  void AddArmStreamFigures(RunResult* result, std::vector<std::string>* notes) const;
   // Starts the arm-target server when serving is on (STOP stays on for a new one); closes it
   // with a stop line when serving is off.
   Status StartOutput();
@@ -186,6 +204,9 @@ class ButtonPipeline : public Pipeline {
   std::unique_ptr<ButtonPicker> picker_;
   std::unique_ptr<MetricSlamView> metric_;
   std::shared_ptr<ButtonTargetOutput> output_;
+  bool stream_ = false;  // The scale and base frame come from the arm's pose stream.
+  Eigen::Isometry3d end_effector_from_camera_ = Eigen::Isometry3d::Identity();  // For stream_.
+  ArmStreamCounts arm_stream_;
   std::optional<ButtonTruth> truth_;
   const TrueButton* true_button_ = nullptr;  // The tapped one, in truth_.
   ButtonRunLog log_;

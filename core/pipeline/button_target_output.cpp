@@ -6,10 +6,13 @@
 namespace sightline {
 
 StatusOr<std::shared_ptr<ButtonTargetOutput>> ButtonTargetOutput::Start(
-    const ArmServerOptions& options) {
-  StatusOr<std::unique_ptr<ArmServer>> started = ArmServer::Start(options);
+    const ArmServerOptions& options, const ArmPoseStreamOptions& pose_options) {
+  auto poses = std::make_shared<ArmPoseFeed>(pose_options);
+  StatusOr<std::unique_ptr<ArmServer>> started = ArmServer::Start(
+      options, [poses](const ArmPoseMessage& pose) { poses->Add(pose); }, pose_options);
   if (!started.ok()) return started.status();
-  return std::shared_ptr<ButtonTargetOutput>(new ButtonTargetOutput(std::move(*started)));
+  return std::shared_ptr<ButtonTargetOutput>(
+      new ButtonTargetOutput(std::move(poses), std::move(*started)));
 }
 
 Status ButtonTargetOutput::WaitForClients(int clients, double timeout_s) {

@@ -40,6 +40,12 @@ bool MetricSlamView::converged() const {
          sigma_rel_ <= options_.max_sigma_rel;
 }
 
+void MetricSlamView::AddMeasuredPose(double time_s, const Eigen::Isometry3d& base_from_camera) {
+  const std::vector<TimedPose>& poses = base_from_camera_.poses();
+  if (!poses.empty() && !(time_s > poses.back().time_s)) return;  // Nearest needs sorted times.
+  base_from_camera_.Add(time_s, base_from_camera);
+}
+
 std::optional<Eigen::Isometry3d> MetricSlamView::BaseFromCamera(double time_s) const {
   std::optional<size_t> i = base_from_camera_.Nearest(time_s, tolerance_s_);
   if (!i) return std::nullopt;

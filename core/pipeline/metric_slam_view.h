@@ -40,6 +40,10 @@ class MetricSlamView {
 
   // The view of one SLAM result (the scale is re-estimated when its map changed).
   SlamView Update(const MonoSlamResult& result, const PinholeCamera& camera);
+  // A measured camera pose that arrived live (the arm's pose stream, base_from_camera in metres)
+  // for the frame at `time_s`: used by BaseFromCamera and by the scale from the next map change
+  // on. Ignored unless `time_s` is after the last pose's.
+  void AddMeasuredPose(double time_s, const Eigen::Isometry3d& base_from_camera);
   // The measured camera pose at `time_s`; nullopt when no arm pose lies within the tolerance.
   std::optional<Eigen::Isometry3d> BaseFromCamera(double time_s) const;
 

@@ -15,9 +15,9 @@ bool MonoSlamRunOptions::IsValid(std::string* error) const {
     return false;
   };
   if (max_frames < 0) return fail("max_frames must be >= 0");
-  if (metric_source != "auto" && metric_source != "arm" && metric_source != "ground_truth" &&
-      metric_source != "none") {
-    return fail("metric_source must be auto, arm, ground_truth or none");
+  if (metric_source != "auto" && metric_source != "arm" && metric_source != "arm_stream" &&
+      metric_source != "ground_truth" && metric_source != "none") {
+    return fail("metric_source must be auto, arm, arm_stream, ground_truth or none");
   }
   if (scale_interval_frames < 1) return fail("scale_interval_frames must be >= 1");
   if (scale_pairs != "keyframes" && scale_pairs != "frames") {
@@ -31,14 +31,18 @@ OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
   using O = MonoSlamRunOptions;
   return OptionTable<O>("mono.run")
       .Int("max_frames", &O::max_frames, "frames", 0, 1e9, 1, "Frames read; 0 = all.")
-      .Choice("metric_source", &O::metric_source, {"auto", "arm", "ground_truth", "none"},
-              "Measured motion for the metric scale: the arm's poses (arm_poses.txt), "
-              "ground-truth displacements, or none; auto prefers the arm.")
+      .Choice("metric_source", &O::metric_source,
+              {"auto", "arm", "arm_stream", "ground_truth", "none"},
+              "Measured motion for the metric scale: the arm's recorded poses (arm_poses.txt), "
+              "the arm's poses streamed live to the button pipeline's arm-target server "
+              "(arm_stream), ground-truth displacements, or none. auto: the recorded arm poses "
+              "when arm_poses.txt is there; else, for the button pipeline while serving, the "
+              "stream; else (mono-slam) ground truth.")
       .String("arm_poses", &O::arm_poses,
               "arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.")
-      .String(
-          "hand_eye", &O::hand_eye,
-          "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses; none = identity.")
+      .String("hand_eye", &O::hand_eye,
+              "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: "
+              "beside the images); none = identity.")
       .Choice("scale_pairs", &O::scale_pairs, {"keyframes", "frames"},
               "Displacement pairs between consecutive keyframes (poses refined by bundle "
               "adjustment) or between tracked frames scale_interval_frames apart.")
@@ -109,6 +113,11 @@ StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSl
   *source = "none";
   Trajectory metric;
   if (run.metric_source == "none") return metric;
+  if (run.metric_source == "arm_stream") {
+    return FailedPrecondition(
+        "mono.run.metric_source = arm_stream: only the button pipeline, serving, receives the "
+        "arm's pose stream");
+  }
   const std::string arm_path =
       run.arm_poses.empty() ? FindBeside(path, "arm_poses.txt") : run.arm_poses;
   const bool use_arm =

@@ -23,7 +23,7 @@ namespace sightline {
 // Run-level options of the monocular pipelines. Keys "mono.run.*".
 struct MonoSlamRunOptions {
   int max_frames = 0;                  // Frames read; 0 = all.
-  std::string metric_source = "auto";  // auto, arm, ground_truth or none.
+  std::string metric_source = "auto";  // auto, arm, arm_stream (button), ground_truth, none.
   std::string arm_poses;               // arm_poses.txt; "" = beside the sensor folder.
   std::string hand_eye;                // hand_eye.yaml; "" = beside arm_poses; "none" = identity.
   std::string scale_pairs = "keyframes";  // Displacements between keyframes or frames.
@@ -54,7 +54,8 @@ std::string FindBeside(const std::string& path, const std::string& name);
 // The measured camera poses (metres) the scale comes from, per `run.metric_source`: arm poses
 // (arm_poses.txt beside `path` or its parent, times hand_eye.yaml's end_effector_from_camera,
 // so base_from_camera) or `ground_truth`. *source says which ("arm", "ground_truth", "none";
-// then empty).
+// then empty). "arm_stream" is FailedPrecondition: only the serving button pipeline receives the
+// arm's pose stream (ButtonPipeline feeds MetricSlamView::AddMeasuredPose).
 StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
                                            const std::optional<Trajectory>& ground_truth,
                                            std::string* source);

@@ -21,7 +21,7 @@ struct MonoSlamFrameResult : PipelineResult {
   std::shared_ptr<const std::vector<ScaleSample>> scale_history;
   double lambda = 0;          // ML map units per metre, 0 = unknown.
   double single_ratio = 0;    // Single-ratio estimate, 0 = unknown.
-  std::string metric_source;  // "arm", "ground_truth" or "none".
+  std::string metric_source;  // "arm", "ground_truth", "none"; button: "arm_stream".
 };
 
 // A user's requests to a running mono-slam pipeline; any thread may call them. The pipeline

@@ -1,7 +1,8 @@
 // `sightline-cli run button` as a user runs it on the simulated panel approach (camera in the
 // arm's hand, 12 cm sideways first, as the mono SLAM's accuracy test): the whole chain headless,
 // its accuracy against the true button centres, a listening arm client receiving the targets,
-// and a tap on the blank wall.
+// an arm client streaming its poses (arm-listen --poses) in place of arm_poses.txt, and a tap on
+// the blank wall.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -126,6 +127,48 @@ TEST_F(ButtonCli, AListeningArmClientReceivesTheTargets) {
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   EXPECT_GT(testing::JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0);
   EXPECT_EQ(testing::JsonNumber(metrics, "counts", "arm_clients_at_start").value_or(0), 2);
+}
+
+// The recording without arm_poses.txt: `run button --serve` takes the scale from the arm's pose
+// stream (auto), played by `arm-listen --poses` from the original arm_poses.txt.
+TEST_F(ButtonCli, AnArmClientStreamingItsPosesGivesTheMetricScale) {
+  const std::string copy = testing::TempDir("button_cli_stream_copy");
+  std::filesystem::remove_all(copy);
+  std::filesystem::copy(*dir_, copy, std::filesystem::copy_options::recursive);
+  ASSERT_TRUE(std::filesystem::remove(copy + "/arm_poses.txt"));
+  int port = 0;
+  {  // A free port on loopback.
+    ArmServerOptions probe;
+    probe.port = 0;
+    auto server = ArmServer::Start(probe);
+    ASSERT_TRUE(server.ok()) << server.status().ToString();
+    port = (*server)->port();
+  }
+  const std::string address = "127.0.0.1:" + std::to_string(port);
+  const std::string out = testing::TempDir("button_cli_stream");
+  testing::ProcessResult run;
+  std::thread runner([&] {
+    run = testing::RunProcess(kCli + " run button " + copy + " --tap " + TapOnTarget() + " --out " +
+                              out + " --serve " + address +
+                              " --set button.run.wait_clients=1 --set button.arm_pose.wait_s=30"
+                              " --set button.arm_pose.keep_s=600");
+  });
+  testing::ProcessResult arm;
+  for (int attempt = 0; attempt < 600; ++attempt) {  // Until the run serves.
+    arm = testing::RunProcess(kCli + " arm-listen " + address + " --poses " + *dir_ +
+                              "/arm_poses.txt --timeout 120 --no-heartbeats");
+    if (arm.out.find("cannot connect") == std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  runner.join();
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(arm.exit_code, 0) << arm.out;  // Ended by the stop line of "source ended".
+  EXPECT_NE(arm.out.find("\"type\":\"target\""), std::string::npos) << arm.out;
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "metric_from_arm_stream").value_or(0), 1);
+  EXPECT_EQ(testing::JsonNumber(metrics, "counts", "frames_without_arm_pose").value_or(-1), 0);
+  EXPECT_GT(testing::JsonNumber(metrics, "counts", "arm_poses_received").value_or(0), 50);
+  EXPECT_LT(testing::JsonNumber(metrics, "accuracy", "final_error_mm").value_or(1e9), 3.0);
 }
 
 TEST_F(ButtonCli, SigtermSendsTheArmClientsAStopLine) {

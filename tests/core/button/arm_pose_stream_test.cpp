@@ -84,8 +84,26 @@ TEST(ArmPoseStream, TheBufferLimitsTheRateAndInterpolatesThroughTheClockOffset) 
   EXPECT_NEAR(Eigen::AngleAxisd(mid->linear()).angle(), 0.05, 1e-9);
   EXPECT_FALSE(buffer.At(-0.001).has_value());  // Before the first pose: no extrapolation.
   EXPECT_FALSE(buffer.At(0.021).has_value());   // After the last.
+  // A stamp within a microsecond of the span's end (rounding of the stamps) gets the end pose.
+  ASSERT_TRUE(buffer.At(0.0200004).has_value());
+  EXPECT_NEAR(buffer.At(0.0200004)->translation().x(), 0.2, 1e-9);
   EXPECT_TRUE(buffer.Add(Pose(100.2, 0.3, 0.2)));
   EXPECT_FALSE(buffer.At(0.1).has_value());  // Across a 180 ms gap (max_gap_s 50 ms).
+}
+
+TEST(ArmPoseStream, AnArmAtExactlyTheRateLimitLosesNoPoseAndItsLinesReadBack) {
+  ArmPoseStreamOptions o;
+  o.max_rate_hz = 200;
+  ArmPoseBuffer buffer(o);
+  for (int k = 0; k < 1000; ++k) {
+    // Through the line an arm client sends: stamps rounded to microseconds.
+    StatusOr<ArmPoseMessage> m = ParseArmPoseLine(ArmPoseLine(Pose(12.3 + 0.005 * k, 0.1, 0.2)));
+    ASSERT_TRUE(m.ok()) << m.status().ToString();
+    EXPECT_TRUE(buffer.Add(*m)) << k;
+  }
+  EXPECT_EQ(buffer.dropped(), 0);
+  EXPECT_FALSE(KeepsRate(1.0, 1.004, 200));
+  EXPECT_TRUE(KeepsRate(1.0, 1.005, 200));
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The arm-target server under load and attack, over real TCP on loopback: flooders, idle
 // sockets, wrong tokens, a full queue when STOP is pressed, readers that never read, abrupt
-// disconnects, a public bind without a token, and a stop line on every way out. The assertions
-// are about order and delivery (the stop arrives, the good client is served, the attackers are
-// closed); the few time bounds are generous.
+// disconnects, a public bind without a token, a stop line on every way out, and an arm streaming
+// its pose at 1 kHz. The assertions are about order and delivery (the stop arrives, the good
+// client is served, the attackers are closed); the few time bounds are generous.
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
@@ -360,6 +360,58 @@ TEST(ArmServerAttack, AClientThatJoinsWhileStoppedIsToldAtOnce) {
   ASSERT_TRUE(Eventually([&] { return server->Stats().authorised == 2; }));
   server->PublishTarget(BigTarget());
   EXPECT_TRUE(Is(Next(later), "target"));
+}
+
+// The arm streams its pose at 1 kHz (five times button.arm_pose.max_rate_hz) while the operator
+// presses STOP: the stop reaches the other client and the arm, and the arm is not closed.
+TEST(ArmServerAttack, AnArmStreamingPosesAtOneKilohertzDelaysNoStop) {
+  ArmServerOptions o;
+  o.token = "s3cret";
+  o.heartbeat_s = 0.05;
+  o.port = 0;
+  std::atomic<int64_t> sunk{0};
+  auto started = ArmServer::Start(
+      o, [&sunk](const ArmPoseMessage&) { ++sunk; }, ArmPoseStreamOptions{});
+  ASSERT_TRUE(started.ok()) << started.status().ToString();
+  std::unique_ptr<ArmServer> server = std::move(*started);
+  ArmClient good = Connect(*server, "s3cret");
+  ArmClient arm = Connect(*server, "s3cret");
+  ASSERT_TRUE(Eventually([&] { return server->Stats().authorised == 2; }));
+  std::atomic<bool> done{false};
+  std::thread streamer([&] {
+    ArmPoseMessage pose;
+    pose.base_from_end_effector.translation() = Eigen::Vector3d(0.4, 0.0, 0.3);
+    auto next = Clock::now();
+    for (int64_t k = 0; !done && k < 20000; ++k) {
+      pose.stamp_s = 100.0 + 0.001 * double(k);  // 1 kHz of arm time ...
+      if (!arm.Send(ArmPoseLine(pose) + "\n").ok()) return;
+      next += std::chrono::milliseconds(1);  // ... sent at 1 kHz.
+      std::this_thread::sleep_until(next);
+    }
+  });
+  ASSERT_TRUE(Eventually([&] { return server->Stats().poses_over_rate > 200; }, 20));
+  server->PublishTarget(BigTarget());
+  const auto start = Clock::now();
+  server->PublishStop("operator");
+  std::vector<std::string> lines;
+  const bool stopped = ReadUntilStop(good, &lines);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::vector<std::string> arm_lines;
+  const bool arm_stopped = ReadUntilStop(arm, &arm_lines);
+  done = true;
+  streamer.join();
+  EXPECT_TRUE(stopped);
+  EXPECT_LT(seconds, 2.0);
+  EXPECT_TRUE(arm_stopped);
+  const ArmServerStats stats = server->Stats();
+  EXPECT_EQ(stats.closed_for_input, 0);
+  EXPECT_TRUE(stats.arm_connected);
+  EXPECT_EQ(stats.poses_refused, 0) << stats.last_pose_error;
+  EXPECT_EQ(stats.poses_received, sunk.load());
+  EXPECT_GT(stats.poses_received, 40);
+  // 1 kHz against a 200 Hz limit: about four of five are dropped.
+  EXPECT_NEAR(double(stats.poses_over_rate) / double(stats.poses_received + stats.poses_over_rate),
+              0.8, 0.02);
 }
 
 }  // namespace
