@@ -68,6 +68,8 @@ void PrintOutcome(const ArmSimSessionResult& result, const ArmSimulator& arm) {
   const ArmSimButton* b = arm.world().FindButton(o.nearest_button);
   std::printf("nearest true button: %d (label %s), distance to its centre %.2f mm\n",
               o.nearest_button, b ? b->label.c_str() : "?", o.distance_mm);
+  std::printf("  across the panel %.2f mm, along the push %+.2f mm (+ = beyond the face)\n",
+              o.lateral_mm, o.depth_mm);
   std::printf("tool axis to the panel normal: %.2f deg\n", o.approach_error_deg);
   for (const auto& [key, count] : arm.counts()) {
     std::printf("%s: %lld\n", key.c_str(), static_cast<long long>(count));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/button/arm_client.h"
+#include "core/button/arm_pose_stream.h"
 #include "core/button/server_lines.h"
 
 namespace sightline {
@@ -57,7 +58,10 @@ StatusOr<ArmSimSessionResult> RunArmSimSession(
     }
     const double now = WallClockS();
     const Eigen::Isometry3d pose = arm->Step(now);
-    if (!client->Send(ArmPoseLine(now, pose)).ok()) {
+    ArmPoseMessage message;
+    message.stamp_s = now;
+    message.base_from_end_effector = pose;
+    if (!client->Send(ArmPoseLine(message) + "\n").ok()) {
       result.end_reason = "closed";
       break;
     }

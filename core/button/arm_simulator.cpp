@@ -335,6 +335,9 @@ ArmSimOutcome ArmSimulator::Outcome() const {
     best = d;
     out.nearest_button = b.id;
     out.distance_mm = d * 1000;
+    const Eigen::Vector3d push = -b.normal.normalized();
+    out.depth_mm = (out.position - b.center).dot(push) * 1000;
+    out.lateral_mm = std::sqrt(std::max(0.0, d * d * 1e6 - out.depth_mm * out.depth_mm));
     const double c = std::clamp(out.tool_axis.dot(-b.normal.normalized()), -1.0, 1.0);
     out.approach_error_deg = std::acos(c) / kDeg;
   }

@@ -91,6 +91,8 @@ struct ArmSimOutcome {
   Eigen::Vector3d tool_axis = Eigen::Vector3d::UnitZ();  // Its z axis in the base frame.
   int nearest_button = -1;
   double distance_mm = 0;         // To the nearest true button centre [mm].
+  double lateral_mm = 0;          // ... across the panel (off the button's axis) [mm].
+  double depth_mm = 0;            // ... along the push: + beyond its front face [mm].
   double approach_error_deg = 0;  // Tool axis against the push direction (-normal) [deg].
 };
 

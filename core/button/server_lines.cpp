@@ -7,8 +7,6 @@
 #include <map>
 #include <vector>
 
-#include "core/common/json_writer.h"
-
 namespace sightline {
 namespace {
 
@@ -214,22 +212,6 @@ StatusOr<ServerLine> ParseServerLine(const std::string& line) {
     return Bad("unknown \"type\" '" + *type + "'");
   }
   return out;
-}
-
-std::string ArmPoseLine(double stamp_s, const Eigen::Isometry3d& base_from_end_effector) {
-  char stamp[64];
-  std::snprintf(stamp, sizeof(stamp), "%.6f", stamp_s);
-  const Eigen::Vector3d p = base_from_end_effector.translation();
-  const Eigen::Quaterniond q(base_from_end_effector.linear());
-  JsonWriter w(false);
-  w.BeginObject();
-  w.Key("type").String("arm_pose");
-  w.Key("stamp").Raw(stamp);
-  w.Key("position_m").BeginArray().Double(p.x()).Double(p.y()).Double(p.z()).EndArray();
-  w.Key("quaternion_xyzw").BeginArray().Double(q.x()).Double(q.y()).Double(q.z());
-  w.Double(q.w()).EndArray();
-  w.EndObject();
-  return w.str() + "\n";
 }
 
 }  // namespace sightline

@@ -1,7 +1,7 @@
 // The client side of the arm-target protocol (PROTOCOL.md): a strict parser of the lines the
-// server sends (target, heartbeat, stop) and the `arm_pose` line an arm sends back. Used by the
-// simulated arm (arm_simulator.h); a line it cannot read is an error naming what is wrong, never
-// a crash.
+// server sends (target, heartbeat, stop). Used by the simulated arm (arm_simulator.h); a line it
+// cannot read is an error naming what is wrong, never a crash. (The arm's own `arm_pose` line is
+// ArmPoseLine in arm_pose_stream.h.)
 #pragma once
 
 #include <Eigen/Geometry>
@@ -29,8 +29,5 @@ struct ServerLine {
 // JSON object, an unknown `type`, a missing member, a non-finite number, a zero `approach`, a
 // `version` other than 2 (members it does not know are ignored, as the protocol asks).
 StatusOr<ServerLine> ParseServerLine(const std::string& line);
-
-// The `arm_pose` line (with '\n') for base_from_end_effector at `stamp_s` (arm clock).
-std::string ArmPoseLine(double stamp_s, const Eigen::Isometry3d& base_from_end_effector);
 
 }  // namespace sightline

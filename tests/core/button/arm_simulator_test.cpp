@@ -1,7 +1,7 @@
 // The simulated arm (core/button/arm_simulator.h): the server lines it reads, its plan in the
 // panel scene, following a target to a standoff and onto the button at a bounded speed, STOP,
 // a silent link and malformed lines, driven step by step; then the session over real TCP
-// against the arm-target server.
+// against the arm-target server, which takes the pose stream.
 #include "core/button/arm_simulator.h"
 
 #include <gtest/gtest.h>
@@ -111,18 +111,6 @@ TEST(ServerLines, NamesWhatIsWrongWithABadLine) {
     EXPECT_NE(parsed.status().message().find(what), std::string::npos)
         << line << " -> " << parsed.status().message();
   }
-}
-
-TEST(ServerLines, ThePoseLineIsWhatTheServerReads) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = ToolOrientation(Eigen::Vector3d(1, 0.2, -0.1));
-  pose.translation() = Eigen::Vector3d(0.4, -0.05, 0.33);
-  const std::string line = ArmPoseLine(1763805600.123456, pose);
-  ASSERT_EQ(line.back(), '\n');
-  StatusOr<ArmPoseMessage> parsed = ParseArmPoseLine(line.substr(0, line.size() - 1));
-  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
-  EXPECT_NEAR(parsed->stamp_s, 1763805600.123456, 1e-6);
-  EXPECT_LT((parsed->base_from_end_effector.matrix() - pose.matrix()).norm(), 1e-8);
 }
 
 TEST(ArmSimWorld, ThePlanStartsLookingAtItsButtonFromTheStartDistance) {
@@ -256,8 +244,8 @@ class ArmSimSession : public ::testing::Test {
     ArmServerOptions so;
     so.port = 0;
     so.token = "secret";
-    so.max_line_bytes = 65536;  // Room for the pose stream on a server that does not read it.
-    StatusOr<std::unique_ptr<ArmServer>> server = ArmServer::Start(so);
+    StatusOr<std::unique_ptr<ArmServer>> server =
+        ArmServer::Start(so, [this](const ArmPoseMessage& pose) { last_pose_s_ = pose.stamp_s; });
     ASSERT_TRUE(server.ok()) << server.status().ToString();
     server_ = std::move(*server);
   }
@@ -268,6 +256,7 @@ class ArmSimSession : public ::testing::Test {
     return server_->Stats().authorised == 1;
   }
   std::unique_ptr<ArmServer> server_;
+  std::atomic<double> last_pose_s_{0};
 };
 
 TEST_F(ArmSimSession, PressesThePublishedTargetOverTcp) {
@@ -283,6 +272,10 @@ TEST_F(ArmSimSession, PressesThePublishedTargetOverTcp) {
   ASSERT_TRUE(result.ok()) << result.status().ToString();
   EXPECT_EQ(result->end_reason, "finished");
   EXPECT_GT(result->poses_sent, 100);
+  // The server took the stream: every pose, none refused (wall-clock stamps, in order).
+  EXPECT_EQ(server_->Stats().poses_received + server_->Stats().poses_over_rate, result->poses_sent);
+  EXPECT_EQ(server_->Stats().poses_refused, 0) << server_->Stats().last_pose_error;
+  EXPECT_NEAR(last_pose_s_.load(), WallClockS(), 60);
   EXPECT_EQ(result->outcome.nearest_button, 5);
   EXPECT_LT(result->outcome.distance_mm, 0.1);
   EXPECT_LT(result->outcome.approach_error_deg, 0.1);
