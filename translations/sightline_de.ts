@@ -139,6 +139,16 @@
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="303"/>
+        <source>No metric scale (no arm motion)</source>
+        <translation>Kein metrischer Maßstab (keine Armbewegung)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="305"/>
+        <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
+        <translation>Ohne die Posen des Arms wird der Knopf nur in Karteneinheiten verfolgt und verortet; es wird kein Ziel gesendet.</translation>
+    </message>
 </context>
 <context>
     <name>sightline::CalibrationDialog</name>
@@ -1116,13 +1126,13 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
+        <location filename="../widgets/operator_panel.cpp" line="272"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="275"/>
-        <location filename="../widgets/operator_panel.cpp" line="317"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="319"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -1157,17 +1167,22 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Antippen nicht angenommen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="254"/>
+        <source>Tracking only</source>
+        <translation>Nur Verfolgung</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="278"/>
         <source>STOP</source>
         <translation>STOPP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave</source>
         <translation>Verlassen</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave the operator panel?</source>
         <translation>Bedienfeld verlassen?</translation>
     </message>
@@ -1177,7 +1192,7 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Suche läuft</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="279"/>
         <source>Start again</source>
         <translation>Neu starten</translation>
     </message>
@@ -1202,8 +1217,8 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Knopf im Blick</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="274"/>
-        <location filename="../widgets/operator_panel.cpp" line="316"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="318"/>
         <source>Yes</source>
         <translation>Ja</translation>
     </message>

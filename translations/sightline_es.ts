@@ -139,6 +139,16 @@
         <source>No button at the tap: %1</source>
         <translation>No hay ningún botón donde tocó: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="303"/>
+        <source>No metric scale (no arm motion)</source>
+        <translation>Sin escala métrica (sin movimiento del brazo)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="305"/>
+        <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
+        <translation>Sin las poses del brazo el botón solo se sigue y se localiza en unidades del mapa; no se envía ningún objetivo.</translation>
+    </message>
 </context>
 <context>
     <name>sightline::CalibrationDialog</name>
@@ -1116,13 +1126,13 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
+        <location filename="../widgets/operator_panel.cpp" line="272"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="275"/>
-        <location filename="../widgets/operator_panel.cpp" line="317"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="319"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
@@ -1157,17 +1167,22 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Toque no aceptado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="254"/>
+        <source>Tracking only</source>
+        <translation>Solo seguimiento</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="278"/>
         <source>STOP</source>
         <translation>PARAR</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave</source>
         <translation>Salir</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave the operator panel?</source>
         <translation>¿Salir del panel del operador?</translation>
     </message>
@@ -1177,7 +1192,7 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Buscando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="279"/>
         <source>Start again</source>
         <translation>Empezar de nuevo</translation>
     </message>
@@ -1202,8 +1217,8 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Botón a la vista</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="274"/>
-        <location filename="../widgets/operator_panel.cpp" line="316"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="318"/>
         <source>Yes</source>
         <translation>Sí</translation>
     </message>

@@ -139,6 +139,16 @@
         <source>No button at the tap: %1</source>
         <translation>Nessun pulsante nel punto toccato: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="303"/>
+        <source>No metric scale (no arm motion)</source>
+        <translation>Nessuna scala metrica (nessun movimento del braccio)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="305"/>
+        <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
+        <translation>Senza le pose del braccio il pulsante è seguito e localizzato solo in unità della mappa; nessun obiettivo viene inviato.</translation>
+    </message>
 </context>
 <context>
     <name>sightline::CalibrationDialog</name>
@@ -1116,13 +1126,13 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="270"/>
+        <location filename="../widgets/operator_panel.cpp" line="272"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="275"/>
-        <location filename="../widgets/operator_panel.cpp" line="317"/>
+        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="319"/>
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
@@ -1157,17 +1167,22 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Tocco non accettato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="254"/>
+        <source>Tracking only</source>
+        <translation>Solo inseguimento</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="278"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave</source>
         <translation>Esci</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="312"/>
+        <location filename="../widgets/operator_panel.cpp" line="314"/>
         <source>Leave the operator panel?</source>
         <translation>Uscire dal pannello operatore?</translation>
     </message>
@@ -1177,7 +1192,7 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Ricerca</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="277"/>
+        <location filename="../widgets/operator_panel.cpp" line="279"/>
         <source>Start again</source>
         <translation>Riparti</translation>
     </message>
@@ -1202,8 +1217,8 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Pulsante agganciato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="274"/>
-        <location filename="../widgets/operator_panel.cpp" line="316"/>
+        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="318"/>
         <source>Yes</source>
         <translation>Sì</translation>
     </message>

@@ -250,6 +250,8 @@ QString OperatorPanel::BannerText(OperatorState state) const {
       return tr("Holding: nothing sent");
     case OperatorState::kRefused:
       return tr("Tap not taken");
+    case OperatorState::kTrackingOnly:
+      return tr("Tracking only");
   }
   return {};
 }

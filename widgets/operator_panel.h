@@ -4,7 +4,8 @@
 // sent") or not ("Holding: nothing sent" and why), the target's distance in cm, and a STOP
 // control that is always visible and always works. Fixed regions (banner, detail, distance,
 // question buttons) that never move with the text; touch targets of at least 15 mm on the
-// screen's physical DPI; high contrast, short words, all text through tr(). As a window of its
+// screen's physical DPI; high contrast, short words, all text through tr(). Without a metric
+// scale (no arm) it says "Tracking only" and never "Target sent". As a window of its
 // own (operator mode, full screen) F11 asks for a normal window and back, Esc asks before
 // leaving.
 #pragma once
@@ -32,11 +33,12 @@ enum class OperatorState {
   kSearching,
   kTracking,
   kLocating,
-  kTargetSent,  // Targets go to the arm.
-  kLost,        // "Lost - hold still"
-  kStopped,     // After STOP until "Start again"
-  kHolding,     // "Holding: nothing sent"; the detail says why (paused, button lost, ...).
-  kRefused,     // "Tap not taken"; the detail says why (the picture is paused, ...).
+  kTargetSent,    // Targets go to the arm.
+  kLost,          // "Lost - hold still"
+  kStopped,       // After STOP until "Start again"
+  kHolding,       // "Holding: nothing sent"; the detail says why (paused, button lost, ...).
+  kRefused,       // "Tap not taken"; the detail says why (the picture is paused, ...).
+  kTrackingOnly,  // "Tracking only": no metric scale (no arm motion), nothing is ever sent.
 };
 
 // A view of the button pipeline: it emits what the operator asks for and shows what the

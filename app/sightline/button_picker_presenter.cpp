@@ -299,6 +299,13 @@ void ButtonPickerPresenter::ShowLink(const ButtonFrameResult& view) {
     if (panel_->state() == OperatorState::kHolding) panel_->SetState(OperatorState::kIdle);
     return;
   }
+  if (view.tracking_only) {  // No metres: nothing ever goes to the arm.
+    panel_->SetState(OperatorState::kTrackingOnly, tr("No metric scale (no arm motion)"));
+    panel_->detail_label()->setToolTip(
+        tr("Without the arm's poses the button is tracked and located in map units only; "
+           "no target is sent."));
+    return;
+  }
   if (view.target_published && view.arm_clients > 0) {
     panel_->SetState(OperatorState::kTargetSent);
     panel_->detail_label()->setToolTip({});

@@ -24,7 +24,7 @@ std::optional<Eigen::Isometry3d> ArmPoseFeed::At(double camera_stamp_s, bool* wa
     const std::optional<double> newest = buffer_.newest_stamp();
     return newest && *newest >= arm_stamp_s - kStampResolutionS;
   };
-  const bool wait = !covered();
+  const bool wait = received_ > 0 && !covered();  // Before any pose: no arm to wait for.
   if (waited) *waited = wait;
   if (wait) {
     // Live-device guard by the host clock: the pose for this frame may still be on its way.

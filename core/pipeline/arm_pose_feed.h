@@ -26,7 +26,8 @@ class ArmPoseFeed {
   void Add(const ArmPoseMessage& pose);
   // base_from_end_effector at camera time `camera_stamp_s` (ArmPoseBuffer::At, clock offset
   // applied). When no pose at or after that time (arm clock) has arrived yet, waits up to
-  // wait_s for one; *waited says whether it had to.
+  // wait_s for one, unless no pose at all has arrived (no arm streams: a run without an arm
+  // does not slow down); *waited says whether it had to.
   std::optional<Eigen::Isometry3d> At(double camera_stamp_s, bool* waited = nullptr);
   int64_t received() const;
 

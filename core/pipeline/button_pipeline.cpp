@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -212,12 +213,13 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
   c.view = options.Extract(MetricViewOptions::Describe());
   c.server = options.Extract(ArmServerOptions::Describe());
   c.arm_pose = options.Extract(ArmPoseStreamOptions::Describe());
+  c.overlay = options.Extract(ButtonOverlayOptions::Describe());
   const ButtonGuiOptions gui = options.Extract(ButtonGuiOptions::Describe());
   c.serve = c.run.serve || gui.serve;
   c.max_tap_age_s = gui.max_tap_age_s;
   std::string error;
   if (!c.run.IsValid(&error) || !c.view.IsValid(&error) || !c.picker.IsValid(&error) ||
-      !c.arm_pose.IsValid(&error)) {
+      !c.arm_pose.IsValid(&error) || !c.overlay.IsValid(&error)) {
     return InvalidArgument(error);
   }
   if (!c.run.tap.empty()) {
@@ -225,13 +227,8 @@ StatusOr<ButtonPipeline::Config> ButtonPipeline::Parse(const OptionSet& options)
     if (!tap.ok()) return tap.status();
     c.tap = *tap;
   }
-  const std::string& metric = c.mono_run.metric_source;
-  if (metric != "auto" && metric != "arm" && metric != "arm_stream") {
-    return InvalidArgument(
-        "mono.run.metric_source must be arm, arm_stream or auto for the button pipeline: "
-        "the targets are in the arm's base frame");
-  }
-  if (metric == "arm_stream" && !c.serve) {
+  SIGHTLINE_RETURN_IF_ERROR(CheckButtonMetricSource(c.mono_run));
+  if (c.mono_run.metric_source == "arm_stream" && !c.serve) {
     return InvalidArgument(
         "mono.run.metric_source = arm_stream needs serving (--serve, button.run.serve or "
         "button.gui.serve): the arm streams its poses to the arm-target server");
@@ -346,6 +343,8 @@ Status ButtonPipeline::ChooseMetricSource(const std::string& path) {
 
 Status ButtonPipeline::Open(const PipelineSource& source) {
   SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source.info.path));
+  scale_mode_ = ChooseButtonScaleMode(source.info.path, config_.mono_run, stream_);
+  if (!scale_mode_.metric) mono_.SetMetricSource("none");
   SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
   if (!truth.ok()) return truth.status();
@@ -389,6 +388,11 @@ void ButtonPipeline::StartRun() {
   if (commands_->stopped()) picker_->Stop();  // A new run does not lift the operator's STOP.
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
+  map_units_ = MapUnitsView();
+  overlay_.reset();
+  if (headless_ && config_.overlay.png) {
+    overlay_ = std::make_unique<ButtonOverlayWriter>(config_.overlay);
+  }
   log_ = ButtonRunLog();
   arm_stream_ = ArmStreamCounts();
   true_button_ = nullptr;
@@ -413,6 +417,8 @@ void ButtonPipeline::Reset() {
   if (picker_) picker_->Cancel();
   metric_ = std::make_unique<MetricSlamView>(mono_.metric_poses(), config_.slam.scale, config_.view,
                                              config_.mono_run.gt_tolerance_s);
+  map_units_ = MapUnitsView();
+  if (overlay_) overlay_ = std::make_unique<ButtonOverlayWriter>(config_.overlay);
   log_ = ButtonRunLog();
   arm_stream_ = ArmStreamCounts();
   frames_ = 0;
@@ -436,7 +442,13 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
   const MonoSlamResult& r = *out->slam;
   if (stream_) FeedArmPose(r.stamp.sensor_time_s);
-  const SlamView view = metric_->Update(r, mono_.camera());
+  // Tracking only without a metric source, and while serving for an arm that has not yet
+  // streamed a pose (auto): nothing can be sent before the arm's poses give the scale.
+  const bool metric = scale_mode_.metric && (!stream_ || arm_stream_.with_pose > 0 ||
+                                             config_.mono_run.metric_source == "arm_stream");
+  const SlamView view =
+      metric ? metric_->Update(r, mono_.camera()) : map_units_.Update(r, mono_.camera());
+  out->tracking_only = !metric;
   out->scale_converged = view.scale_converged;
   out->scale_ml = metric_->lambda_ml();
   const int64_t index = frames_++;
@@ -446,6 +458,7 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   AddStats((*mono)->stats, slam_ms, !tap_frame && log_.tap_index >= 0, out.get());
   AddLinkState(out.get());
   Record(*out, view.tracking, index, slam_ms, (HostTimeS() - start) * 1000.0);
+  if (log_.tap_index >= 0 && overlay_) SIGHTLINE_RETURN_IF_ERROR(AddOverlay(*out));
   Remember(r, index);
   last_ = out;
   fresh_run_ = false;
@@ -584,10 +597,18 @@ double ButtonPipeline::SendTimeS(const FrameStamp& stamp) const {
 
 void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t index,
                                ButtonFrameResult* out) {
-  const std::optional<Eigen::Isometry3d> base = metric_->BaseFromCamera(r.stamp.sensor_time_s);
+  // Tracking only: the map frame in map units stands for the base frame; nothing goes out.
+  const std::optional<Eigen::Isometry3d> base =
+      !out->tracking_only ? metric_->BaseFromCamera(r.stamp.sensor_time_s)
+                          : std::optional<Eigen::Isometry3d>(r.map_from_camera);
   if (!base) view.tracking = false;  // No arm pose: no base frame for this image.
   out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
                                  base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
+  if (out->tracking_only) {
+    if (out->picker.verdict.reason == GateReason::kScaleNotConverged) ++log_.suppressed_targets;
+    out->picker.target.reset();  // Never without metres, whatever the gate said.
+    return;
+  }
   if (!out->picker.target) return;
   if (commands_->held()) {  // The picture is paused: nothing goes to the arm.
     out->picker.target.reset();
@@ -623,7 +644,7 @@ void ButtonPipeline::AddStats(const std::vector<std::pair<std::string, double>>&
   out->stats.emplace_back("button/scale_ml", out->scale_ml);
   out->stats.emplace_back("button/track_confidence", p.track.confidence);
   out->stats.emplace_back("button/fused_estimates", p.fused_estimates);
-  if (p.location) {
+  if (p.location && !out->tracking_only) {  // Metres only with a metric scale.
     out->stats.emplace_back("button/uncertainty_m", p.uncertainty_m);
     out->stats.emplace_back("button/distance_m", p.location->button_in_camera.norm());
   }
@@ -649,6 +670,7 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
   row.slam_tracking = slam_tracking;
   row.scale_converged = out.scale_converged;
   row.lambda_ml = out.scale_ml;
+  AddMapUnits(out, &row);
   log_.rows.push_back(std::move(row));
   if (log_.first_target_index >= 0) return;
   log_.processing_ms_to_first += frame_ms;  // Host time: a timing figure, decides nothing.
@@ -656,6 +678,43 @@ void ButtonPipeline::Record(const ButtonFrameResult& out, bool slam_tracking, in
     log_.first_target_index = index;
     log_.first_target_stamp_s = out.stamp.sensor_time_s;
   }
+}
+
+void ButtonPipeline::AddMapUnits(const ButtonFrameResult& out, ButtonRunRow* row) const {
+  row->metric = !out.tracking_only;
+  if (!out.slam || !out.slam->tracked) return;
+  const Eigen::Isometry3d& map_from_camera = out.slam->map_from_camera;
+  row->camera_in_map = map_from_camera.translation();
+  if (!out.picker.location) return;
+  const double lambda = !out.tracking_only ? metric_->lambda_ml() : 1.0;  // Map units per metre.
+  if (!(lambda > 0)) return;
+  row->button_in_map = map_from_camera * (out.picker.location->button_in_camera * lambda);
+}
+
+Status ButtonPipeline::AddOverlay(const ButtonFrameResult& out) {
+  const PickerFrame& p = out.picker;
+  char line[160];
+  std::vector<std::string> caption;
+  std::snprintf(line, sizeof(line), "frame %lld  %s", static_cast<long long>(p.frame_id),
+                PickerStateKey(p.state));
+  caption.emplace_back(line);
+  const ButtonRunRow& row = log_.rows.back();
+  if (out.tracking_only) {
+    caption.emplace_back(std::string("TRACKING ONLY: ") + kNoMetricScaleNote);
+    if (row.button_in_map.allFinite()) {
+      std::snprintf(line, sizeof(line), "button (%.3f, %.3f, %.3f) map units (unscaled)",
+                    row.button_in_map.x(), row.button_in_map.y(), row.button_in_map.z());
+      caption.emplace_back(line);
+    }
+  } else {
+    caption.emplace_back(std::string("gate: ") + GateReasonKey(p.verdict.reason));
+    if (p.button_in_base.allFinite()) {
+      std::snprintf(line, sizeof(line), "button (%.3f, %.3f, %.3f) m, arm base",
+                    p.button_in_base.x(), p.button_in_base.y(), p.button_in_base.z());
+      caption.emplace_back(line);
+    }
+  }
+  return overlay_->Add(out.slam ? out.slam->image : cv::Mat(), p.frame_id, p.track, caption);
 }
 
 void ButtonPipeline::Abort(const std::string& reason) { StopOutput(reason); }
@@ -673,6 +732,12 @@ std::string NoTargetSent(const ButtonRunLog& log, int64_t frames) {
 }
 
 }  // namespace
+
+bool ButtonPipeline::TrackedOnly() const {
+  if (!scale_mode_.metric) return true;
+  // auto, serving without arm_poses.txt, and no arm ever streamed its pose: a plain recording.
+  return stream_ && arm_stream_.with_pose == 0 && config_.mono_run.metric_source == "auto";
+}
 
 std::string ButtonPipeline::NoArmPoses() const {
   if (!stream_ || !log_.sent.empty() || arm_stream_.with_pose > 0) return "";
@@ -733,12 +798,19 @@ StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {
   AddArmStreamFigures(&result, &notes);
   result.counts.emplace_back("scale_pairs_used", metric_->pairs_used());
   result.counts.emplace_back("lost_frames", mono_.lost_frames());
-  result.nothing_achieved = NoArmPoses();
-  if (result.nothing_achieved.empty()) result.nothing_achieved = NoTargetSent(log_, frames_);
+  result.counts.emplace_back("metric_scale", TrackedOnly() ? 0 : 1);
+  if (overlay_) SIGHTLINE_RETURN_IF_ERROR(overlay_->Finish(out_dir, &result.outputs, &notes));
+  if (!TrackedOnly()) {
+    result.nothing_achieved = NoArmPoses();
+    if (result.nothing_achieved.empty()) result.nothing_achieved = NoTargetSent(log_, frames_);
+  } else {
+    AddTrackingOnlyFigures(&result, &notes);
+  }
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
   std::ofstream log(fs::path(out_dir) / "button_notes.txt");
   for (const std::string& note : notes) log << note << "\n";
   result.outputs.push_back("button_notes.txt");
+  result.notes = std::move(notes);
   return result;
 }
 
@@ -757,6 +829,7 @@ PipelineInfo ButtonPipelineInfo(const std::shared_ptr<ButtonCommands>& commands,
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmServerOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ArmPoseStreamOptions::Describe()));
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonGuiOptions::Describe()));
+    SIGHTLINE_RETURN_IF_ERROR(set->Declare(ButtonOverlayOptions::Describe()));
     return set->Declare(ButtonRunOptions::Describe());
   };
   info.create = [commands, mono_commands]() -> std::unique_ptr<Pipeline> {

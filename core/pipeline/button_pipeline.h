@@ -5,8 +5,10 @@
 // operator's tap and answer (ButtonCommands: the GUI's operator panel, or --tap X,Y[@FRAME]
 // confirmed at once), tracking, 3D location and the safety gate per frame, in data time (the
 // frames' sensor timestamps); targets optionally published through the arm-target server
-// (--serve HOST:PORT, button.gui.serve). Finish writes button.csv and, with the simulator's
-// buttons.csv beside the images, the accuracy against the true centre of the tapped button.
+// (--serve HOST:PORT, button.gui.serve). Finish writes button.csv, the overlay of the track
+// and, with the simulator's buttons.csv beside the images, the accuracy against the true centre
+// of the tapped button. Without an arm (button_scale_mode.h) it tracks and locates the button in
+// map units only and never sends a target.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -19,7 +21,9 @@
 #include "core/button/button_picker.h"
 #include "core/common/status.h"
 #include "core/options/option_table.h"
+#include "core/pipeline/button_overlay.h"
 #include "core/pipeline/button_result.h"
+#include "core/pipeline/button_scale_mode.h"
 #include "core/pipeline/button_target_output.h"
 #include "core/pipeline/metric_slam_view.h"
 #include "core/pipeline/mono_slam_pipeline.h"
@@ -64,6 +68,11 @@ struct ButtonRunRow {
   bool slam_tracking = false;
   bool scale_converged = false;
   double lambda_ml = 0;
+  bool metric = true;  // False: tracking only, the *_m columns are empty.
+  // The located button and the camera in the SLAM's map frame, map units (unscaled); NaN when
+  // not located / not tracked.
+  Eigen::Vector3d button_in_map = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d camera_in_map = Eigen::Vector3d::Constant(std::nan(""));
 };
 
 // A true button of the simulator's buttons.csv: its centre (map frame) and its projection per
@@ -104,6 +113,9 @@ struct ButtonRunLog {
   std::optional<cv::Point2d> tapped_centre;
   int64_t tap_index = -1, first_target_index = -1;
   double tap_stamp_s = 0, first_target_stamp_s = 0, processing_ms_to_first = 0;
+  // Tracking only: frames whose located button the gate held back only for the missing metric
+  // scale (each would have been a candidate target); none is ever published.
+  int64_t suppressed_targets = 0;
 };
 
 // The simulator's truth beside a recording: its buttons and the arm's base in its map frame.
@@ -146,6 +158,7 @@ class ButtonPipeline : public Pipeline {
     MetricViewOptions view;
     ArmServerOptions server;
     ArmPoseStreamOptions arm_pose;
+    ButtonOverlayOptions overlay;
     bool serve = false;
     double max_tap_age_s = 0.5;    // button.gui.max_tap_age_s.
     std::optional<ButtonTap> tap;  // button.run.tap.
@@ -170,6 +183,9 @@ class ButtonPipeline : public Pipeline {
   void FeedArmPose(double stamp_s);
   // Why nothing was sent, when the arm's stream gave no pose; "" otherwise.
   std::string NoArmPoses() const;
+  // The run had no metric scale: tracking only (no metric source, or auto while serving and no
+  // arm streamed a pose).
+  bool TrackedOnly() const;
   // The stream's counts and a note on where the scale came from.
   void AddArmStreamFigures(RunResult* result, std::vector<std::string>* notes) const;
   // Starts the arm-target server when serving is on (STOP stays on for a new one); closes it
@@ -190,6 +206,12 @@ class ButtonPipeline : public Pipeline {
   double SendTimeS(const FrameStamp& stamp) const;
   void Record(const ButtonFrameResult& out, bool slam_tracking, int64_t index, double slam_ms,
               double frame_ms);
+  // The frame's row in the SLAM's map frame (map units) and on the overlay.
+  void AddMapUnits(const ButtonFrameResult& out, ButtonRunRow* row) const;
+  Status AddOverlay(const ButtonFrameResult& out);
+  // Tracking only: the notes and counts of a run without a metric scale; nothing_achieved only
+  // when the button was never tracked after the tap.
+  void AddTrackingOnlyFigures(RunResult* result, std::vector<std::string>* notes) const;
   void AddStats(const std::vector<std::pair<std::string, double>>& mono, double slam_ms,
                 bool picker_ran, ButtonFrameResult* out) const;
   // Angle to the tapped true button's push direction [deg]; NaN without the simulator's truth.
@@ -203,6 +225,9 @@ class ButtonPipeline : public Pipeline {
   MonoSlamPipeline mono_;
   std::unique_ptr<ButtonPicker> picker_;
   std::unique_ptr<MetricSlamView> metric_;
+  ButtonScaleMode scale_mode_;  // Chosen by Open.
+  MapUnitsView map_units_;      // The SLAM's view without a metric scale.
+  std::unique_ptr<ButtonOverlayWriter> overlay_;
   std::shared_ptr<ButtonTargetOutput> output_;
   bool stream_ = false;  // The scale and base frame come from the arm's pose stream.
   Eigen::Isometry3d end_effector_from_camera_ = Eigen::Isometry3d::Identity();  // For stream_.

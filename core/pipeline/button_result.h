@@ -35,6 +35,9 @@ struct ButtonFrameResult : MonoSlamFrameResult {
   TapRefusal tap_refused = TapRefusal::kNone;  // ... and, when not taken, why.
   std::vector<cv::Point> candidate_outline;    // The button found at the tap (image pixels).
   bool scale_converged = false;                // The metric scale counts as converged.
+  // No metric scale (no arm: mono.run.metric_source = none, or auto without arm poses): the
+  // button is tracked and located in map units only and no target is ever sent.
+  bool tracking_only = false;
   double scale_ml = 0;  // Map units per metre of the metric view, 0 = unknown.
   // The target went to the arm-target server and the server took it (not stopped, not closed).
   bool target_published = false;

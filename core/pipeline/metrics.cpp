@@ -37,6 +37,11 @@ std::string MetricsToJson(const RunMetrics& m) {
   for (const auto& [key, value] : m.counts) w.Key(key).Double(value);
   w.EndObject();
   if (!m.failure.empty()) w.Key("failure").String(m.failure);
+  if (!m.notes.empty()) {
+    w.Key("notes").BeginArray();
+    for (const std::string& note : m.notes) w.String(note);
+    w.EndArray();
+  }
   w.Key("options");
   m.options.WriteJson(&w);
   w.EndObject();

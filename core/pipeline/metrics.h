@@ -31,6 +31,9 @@ struct RunMetrics {
   // Why the run achieved nothing (no frame tracked, never initialised, every frame gated);
   // empty for a run with results. Written as "failure" when set.
   std::string failure;
+  // Facts a reader should know (RunResult::notes, e.g. "no metric scale: no arm motion").
+  // Written as "notes" when there are any.
+  std::vector<std::string> notes;
 };
 
 // Summaries of every stage of `stats`, in the order the stages were first timed.

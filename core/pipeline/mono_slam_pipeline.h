@@ -86,6 +86,8 @@ class MonoSlamPipeline : public Pipeline {
   // The same with parsed options (the button pipeline forces the metric source to the arm).
   Status Configure(const MonoSlamOptions& options, const MonoSlamRunOptions& run);
   Status Open(const PipelineSource& source) override;
+  // The metric source the next Open uses (the button pipeline resolves auto per source).
+  void SetMetricSource(const std::string& source) { run_.metric_source = source; }
   int64_t FrameLimit() const override { return run_.max_frames; }
   StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
   // The typed result of Process.

@@ -158,6 +158,7 @@ RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& datase
     (void)metrics.options.Set("button.arm.token", std::string("(set, not shown)"), "redacted");
   }
   metrics.failure = result.nothing_achieved;
+  metrics.notes = result.notes;
   return metrics;
 }
 

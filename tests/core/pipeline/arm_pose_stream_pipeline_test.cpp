@@ -130,6 +130,10 @@ TEST(ArmPoseFeed, AFrameWaitsForThePoseCoveringItsStamp) {
   silent.Add(PoseAt(100.99, 0.0));
   EXPECT_FALSE(silent.At(1.0, &waited).has_value());
   EXPECT_TRUE(waited);
+  // No pose received at all: no arm streams, nothing to wait for (wait_s = 30 would show).
+  ArmPoseFeed no_arm(o);
+  EXPECT_FALSE(no_arm.At(1.0, &waited).has_value());
+  EXPECT_FALSE(waited);
 }
 
 class ArmPoseStreamPipeline : public ::testing::Test {

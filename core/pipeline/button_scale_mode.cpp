@@ -1,0 +1,51 @@
+#include "core/pipeline/button_scale_mode.h"
+
+namespace sightline {
+
+Status CheckButtonMetricSource(const MonoSlamRunOptions& run) {
+  const std::string& s = run.metric_source;
+  if (s == "auto" || s == "arm" || s == "arm_stream" || s == "none") return Status::Ok();
+  return InvalidArgument("mono.run.metric_source = " + s +
+                         ": the button pipeline takes auto, arm, arm_stream or none (the targets "
+                         "are in the arm's base frame; none tracks without sending targets)");
+}
+
+ButtonScaleMode ChooseButtonScaleMode(const std::string& path, const MonoSlamRunOptions& run,
+                                      bool streamed_arm) {
+  ButtonScaleMode mode;
+  if (run.metric_source == "none") {
+    mode.metric = false;
+    mode.how = "tracking only: mono.run.metric_source = none";
+    return mode;
+  }
+  const bool arm_file = !run.arm_poses.empty() || !FindBeside(path, "arm_poses.txt").empty();
+  if (run.metric_source == "arm" || run.metric_source == "arm_stream" || arm_file || streamed_arm) {
+    mode.how = streamed_arm && !arm_file ? "metric scale from the streamed arm poses"
+                                         : "metric scale from the arm's poses";
+    return mode;
+  }
+  mode.metric = false;
+  mode.how = "tracking only: mono.run.metric_source = auto found no arm_poses.txt beside " + path +
+             " (nor in its parent folder) and no streamed arm; set mono.run.arm_poses or "
+             "mono.run.metric_source = arm to require one";
+  return mode;
+}
+
+SlamView MapUnitsView::Update(const MonoSlamResult& result, const PinholeCamera& camera) {
+  if (result.map && result.map != map_) {
+    map_ = result.map;
+    auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
+    points->reserve(map_->points.size());
+    for (const MapSnapshot::Point& p : map_->points) points->push_back(p.position);
+    points_ = std::move(points);
+  }
+  SlamView view;
+  view.camera = camera;
+  view.tracking = result.tracked && points_ != nullptr;
+  view.scale_converged = false;  // Never: nothing may go to the arm.
+  view.camera_from_world = result.map_from_camera.inverse();
+  view.map_points_in_world = points_;
+  return view;
+}
+
+}  // namespace sightline

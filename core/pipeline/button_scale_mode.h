@@ -1,0 +1,54 @@
+// Where the button pipeline's metres come from, and its tracking-only mode without them. With
+// the arm's poses (arm_poses.txt beside the images) the SLAM's map is scaled to metres and
+// targets may go to the arm. Without an arm there is no metric scale: the pipeline still
+// tracks the tapped button and locates it in the SLAM's map units, but never sends a target.
+//
+// How the mode is chosen (mono.run.metric_source): `arm` needs the arm's poses (an error names
+// the missing file); `arm_stream` takes them from the arm's live pose stream (serving); `none`
+// forces tracking only; `auto` (the default) uses arm_poses.txt when it is there, else, while
+// serving, the arm's pose stream once an arm streams a pose (frames before that, and a whole
+// run without one, are tracking only), else falls back to tracking only, saying so in the notes.
+// Ground-truth displacements are no metric source for targets in the arm's base frame.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/button/button_picker.h"
+#include "core/common/status.h"
+#include "core/mono/mono_slam.h"
+#include "core/pipeline/mono_inputs.h"
+
+namespace sightline {
+
+// The reason a run has no metric scale, as the CLI, the notes and metrics.json say it.
+inline constexpr const char* kNoMetricScaleNote = "no metric scale: no arm motion";
+
+// The chosen mode.
+struct ButtonScaleMode {
+  bool metric = true;  // Metres from the arm's poses; false: tracking only, map units.
+  std::string how;     // How it was chosen, for the notes (which option, which file is missing).
+};
+
+// Checks button's mono.run.metric_source: auto, arm, arm_stream or none. InvalidArgument naming the
+// key.
+Status CheckButtonMetricSource(const MonoSlamRunOptions& run);
+
+// The mode for a source at `path` (arm_poses.txt is looked for beside it or in its parent, or
+// at mono.run.arm_poses). `streamed_arm`: an arm streams its poses live (counts as an arm).
+ButtonScaleMode ChooseButtonScaleMode(const std::string& path, const MonoSlamRunOptions& run,
+                                      bool streamed_arm = false);
+
+// The SLAM as the button picker sees it without a metric scale: the pose and map in map units
+// (a scale of 1), never converged. The map's points are copied once per map.
+class MapUnitsView {
+ public:
+  SlamView Update(const MonoSlamResult& result, const PinholeCamera& camera);
+
+ private:
+  std::shared_ptr<const MapSnapshot> map_;
+  std::shared_ptr<const std::vector<Eigen::Vector3d>> points_;
+};
+
+}  // namespace sightline
