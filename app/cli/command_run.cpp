@@ -46,6 +46,8 @@ int RunCommand(const std::vector<std::string>& args) {
       "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
       "confirmed at once; --serve HOST:PORT publishes the targets (arm-target protocol; a HOST\n"
       "other than 127.x.x.x needs --set button.arm.token=...).\n"
+      "PATH sim://panel?seed=N&fps=F is a live simulated camera in the hand of an arm (run\n"
+      "'sightline-cli arm-sim' against --serve); there --tap button:K taps true button K.\n"
       "\nExit codes: 0 results written; 1 an error (the line on stderr says which file,\n"
       "field or option); 3 the run completed but achieved nothing (no frame tracked, never\n"
       "initialised, every frame gated): its first line says why and metrics.json has\n"

@@ -16,6 +16,7 @@ int SweepCommand(const std::vector<std::string>& args);
 int FloorCommand(const std::vector<std::string>& args);
 int CalibrateCommand(const std::vector<std::string>& args);
 int ArmListenCommand(const std::vector<std::string>& args);
+int ArmSimCommand(const std::vector<std::string>& args);
 int RecordCommand(const std::vector<std::string>& args);
 
 // Prints "sightline-cli: <message>" to stderr and returns 1.

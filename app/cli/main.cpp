@@ -30,6 +30,8 @@ const char kUsage[] =
     "                             chessboard calibration of a camera, a stereo rig, an arm camera\n"
     "  arm-listen HOST:PORT [--token T]\n"
     "                             print the arm targets Sightline serves (JSON lines)\n"
+    "  arm-sim HOST:PORT [--token T] [--seed N]\n"
+    "                             a simulated arm that presses the button Sightline targets\n"
     "  record SOURCE --out DIR [--seconds S] [--frames N]\n"
     "                             record a sensor or replayed recording (TUM, EuRoC, images)\n"
     "\n"
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
   if (command == "floor") return sightline::cli::FloorCommand(args);
   if (command == "calibrate") return sightline::cli::CalibrateCommand(args);
   if (command == "arm-listen") return sightline::cli::ArmListenCommand(args);
+  if (command == "arm-sim") return sightline::cli::ArmSimCommand(args);
   if (command == "record") return sightline::cli::RecordCommand(args);
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

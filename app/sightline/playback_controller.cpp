@@ -3,12 +3,14 @@
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <filesystem>
 
 #include "core/common/depth_cloud.h"
 #include "core/common/timing.h"
 #include "core/io/dataset.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/pipeline/player.h"
+#include "core/pipeline/sim_panel_source.h"
 #include "core/sensors/driver_registry.h"
 #include "core/sensors/live_source.h"
 
@@ -31,7 +33,7 @@ void PlaybackController::Open(const QString& path) {
   // Opening reads index files and the first images: keep it off the GUI thread. The destructor
   // waits for background tasks, so `this` outlives them.
   Track(QtConcurrent::run([this, self, generation, path, path_utf8] {
-    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenSource(path_utf8));
+    auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenRunSource(path_utf8));
     QMetaObject::invokeMethod(
         this,
         [self, generation, path, opened] {
@@ -203,7 +205,11 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
   if (!processor_) return nullptr;
   if (processor_options_dirty_) {
     processor_options_dirty_ = false;
-    const Status configured = processor_->Configure(processor_options_);
+    // A live simulated camera: "button:K" taps and the scene's true hand-eye (sim_panel_source.h).
+    OptionSet options = processor_options_;
+    const std::string sim_dir = (std::filesystem::temp_directory_path() / "sightline-sim").string();
+    const Status prepared = PrepareSimRun(processor_source_.info.path, sim_dir, &options);
+    const Status configured = prepared.ok() ? processor_->Configure(options) : prepared;
     if (!configured.ok()) return FailedResult(frame, configured);
   }
   if (!processor_opened_) {

@@ -8,6 +8,7 @@
 #include "core/pipeline/mapping_pipeline.h"
 #include "core/pipeline/mobility_pipeline.h"
 #include "core/pipeline/mono_slam_pipeline.h"
+#include "core/pipeline/sim_panel_source.h"
 #include "core/pipeline/stereo_vo_pipeline.h"
 #include "core/sensors/driver_registry.h"
 
@@ -35,7 +36,7 @@ std::string TimingStage(const std::string& key) {
 // Opens `path` as the first kind `info` accepts that the recording has.
 StatusOr<std::unique_ptr<Source>> OpenForPipeline(const PipelineInfo& info, const std::string& path,
                                                   const OptionSet& options) {
-  if (IsSensorUri(path)) return OpenSource(path, options);
+  if (IsLiveUri(path)) return OpenRunSource(path, options);
   if (info.accepts.empty()) return OpenSource(path, options);
   std::optional<Status> first_error;
   for (SourceKind kind : info.accepts) {
@@ -238,6 +239,7 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
     SIGHTLINE_RETURN_IF_ERROR(context.options.ApplyOverride(assignment));
   }
   SIGHTLINE_RETURN_IF_ERROR(CreateOutputFolder(request.out_dir));
+  SIGHTLINE_RETURN_IF_ERROR(PrepareSimRun(request.dataset_path, request.out_dir, &context.options));
   TimingStats timing;
   context.timing = &timing;
   context.progress = request.progress;

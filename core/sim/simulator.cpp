@@ -91,13 +91,20 @@ Status Simulator::RenderStereo(int frame, SimulatedStereo* out) {
 
 Status Simulator::RenderMono(int frame, SimulatedMono* out) {
   SIGHTLINE_RETURN_IF_ERROR(CheckFrame(frame));
-  out->world_from_camera = motion_.WorldFromCamera(frame);
-  SIGHTLINE_RETURN_IF_ERROR(renderer_.Render(scene_, scene_.DynamicPrimitives(TimeOf(frame)),
+  return RenderMonoAt(motion_.WorldFromCamera(frame), TimeOf(frame), frame, out);
+}
+
+Status Simulator::RenderMonoAt(const Eigen::Isometry3d& world_from_camera, double time_s,
+                               int64_t noise_index, SimulatedMono* out) {
+  out->world_from_camera = world_from_camera;
+  SIGHTLINE_RETURN_IF_ERROR(renderer_.Render(scene_, scene_.DynamicPrimitives(time_s),
                                              mono_camera(), out->world_from_camera,
                                              ImageKind::kColor, &out->view));
   out->view.image.copyTo(out->image);
   AddImageNoise(options_.noise.Effective().grey_sigma,
-                DeriveSeed(static_cast<uint64_t>(options_.seed), kMonoNoise, frame), &out->image);
+                DeriveSeed(static_cast<uint64_t>(options_.seed), kMonoNoise,
+                           static_cast<uint64_t>(noise_index)),
+                &out->image);
   return Status::Ok();
 }
 

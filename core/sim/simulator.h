@@ -66,6 +66,11 @@ class Simulator {
   Status RenderRgbd(int frame, SimulatedRgbd* out);
   Status RenderStereo(int frame, SimulatedStereo* out);
   Status RenderMono(int frame, SimulatedMono* out);
+  // Renders the mono camera at any pose, e.g. a live camera in the hand of an arm that moves as
+  // it is told: the scene at `time_s` (its moving parts), image noise drawn from `noise_index`
+  // (RenderMono(i) equals RenderMonoAt(its pose, TimeOf(i), i)).
+  Status RenderMonoAt(const Eigen::Isometry3d& world_from_camera, double time_s,
+                      int64_t noise_index, SimulatedMono* out);
 
   // The true pose of the sensor carrier (robot base, handheld body or end effector).
   Trajectory BodyGroundTruth() const;
