@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 
+#include "core/button/flat_json.h"
 #include "core/button/option_check.h"
 
 namespace sightline {
@@ -48,104 +49,7 @@ OptionTable<ArmPoseStreamOptions> ArmPoseStreamOptions::Describe() {
 
 namespace {
 
-// A member's value: a string, a number, a numeric array, or another scalar (bool, null).
-struct Value {
-  enum Kind { kString, kNumber, kArray, kOther } kind = kOther;
-  std::string text;
-  double number = 0;
-  std::vector<double> array;
-};
-
-// A strict reader of one flat JSON object whose members are scalars or numeric arrays.
-class Reader {
- public:
-  explicit Reader(const std::string& s) : s_(s) {}
-
-  Status Object(std::map<std::string, Value>* members) {
-    if (!Eat('{')) return Bad("expected one JSON object");
-    if (Eat('}')) return End();
-    do {
-      std::string key;
-      if (!String(&key)) return Bad("expected a member name");
-      if (!Eat(':')) return Bad("expected ':' after \"" + key + "\"");
-      Value value;
-      SIGHTLINE_RETURN_IF_ERROR(Member(key, &value));
-      if (!members->emplace(key, std::move(value)).second) return Bad("duplicate \"" + key + "\"");
-    } while (Eat(','));
-    if (!Eat('}')) return Bad("expected ',' or '}'");
-    return End();
-  }
-
- private:
-  static Status Bad(const std::string& what) { return InvalidArgument("arm_pose: " + what); }
-  void Skip() {
-    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
-  }
-  bool Eat(char c) {
-    Skip();
-    if (i_ >= s_.size() || s_[i_] != c) return false;
-    ++i_;
-    return true;
-  }
-  Status End() {
-    Skip();
-    return i_ == s_.size() ? Status::Ok() : Bad("text after the object");
-  }
-  bool String(std::string* out) {
-    if (!Eat('"')) return false;
-    while (i_ < s_.size()) {
-      const char c = s_[i_++];
-      if (c == '"') return true;
-      if (static_cast<unsigned char>(c) < 0x20 || c == '\\') return false;  // No escapes here.
-      out->push_back(c);
-    }
-    return false;
-  }
-  bool Number(double* out) {
-    Skip();
-    const char* start = s_.c_str() + i_;
-    if (*start != '-' && !std::isdigit(static_cast<unsigned char>(*start))) return false;
-    char* end = nullptr;
-    *out = std::strtod(start, &end);
-    if (end == start) return false;
-    for (const char* c = start; c < end; ++c) {  // Plain decimal JSON numbers only (no hex,
-      if (!std::isdigit(static_cast<unsigned char>(*c)) && !std::strchr("+-.eE", *c))  // inf).
-        return false;
-    }
-    i_ += static_cast<size_t>(end - start);
-    return true;
-  }
-  Status Member(const std::string& key, Value* v) {
-    Skip();
-    const char c = i_ < s_.size() ? s_[i_] : '\0';
-    if (c == '"') {
-      v->kind = Value::kString;
-      return String(&v->text) ? Status::Ok() : Bad("bad string in \"" + key + "\"");
-    }
-    if (c == '[') {
-      ++i_;
-      v->kind = Value::kArray;
-      if (Eat(']')) return Status::Ok();
-      do {
-        double x = 0;
-        if (!Number(&x) || v->array.size() >= 64) return Bad("\"" + key + "\": numbers only");
-        v->array.push_back(x);
-      } while (Eat(','));
-      return Eat(']') ? Status::Ok() : Bad("\"" + key + "\": expected ']'");
-    }
-    for (const char* word : {"true", "false", "null"}) {
-      if (s_.compare(i_, std::strlen(word), word) == 0) {
-        i_ += std::strlen(word);
-        return Status::Ok();
-      }
-    }
-    v->kind = Value::kNumber;
-    return Number(&v->number) ? Status::Ok() : Bad("bad value of \"" + key + "\"");
-  }
-
-  const std::string& s_;
-  size_t i_ = 0;
-};
+using Value = FlatJsonValue;
 
 // The finite numeric array `key` of `size` numbers (any size when `size` < 0).
 StatusOr<std::vector<double>> Numbers(const std::map<std::string, Value>& m, const std::string& key,
@@ -169,7 +73,12 @@ StatusOr<std::vector<double>> Numbers(const std::map<std::string, Value>& m, con
 StatusOr<ArmPoseMessage> ParseArmPoseLine(const std::string& line,
                                           const ArmPoseStreamOptions& options) {
   std::map<std::string, Value> m;
-  SIGHTLINE_RETURN_IF_ERROR(Reader(line).Object(&m));
+  FlatJsonRules rules;
+  rules.prefix = "arm_pose: ";
+  rules.max_array = 64;
+  rules.escapes = false;
+  rules.not_object = "expected one JSON object";
+  SIGHTLINE_RETURN_IF_ERROR(ReadFlatJson(line, rules, &m));
   auto type = m.find("type");
   if (type == m.end() || type->second.kind != Value::kString || type->second.text != "arm_pose")
     return InvalidArgument("arm_pose: \"type\" must be \"arm_pose\"");

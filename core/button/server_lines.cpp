@@ -7,119 +7,14 @@
 #include <map>
 #include <vector>
 
+#include "core/button/flat_json.h"
+
 namespace sightline {
 namespace {
 
-// A member's value: a string, a number, a numeric array, a bool or null.
-struct Value {
-  enum Kind { kString, kNumber, kArray, kBool, kNull } kind = kNull;
-  std::string text;
-  double number = 0;
-  bool flag = false;
-  std::vector<double> array;
-};
+using Value = FlatJsonValue;
 
 Status Bad(const std::string& what) { return InvalidArgument("server line: " + what); }
-
-// A strict reader of one flat JSON object (scalars and numeric arrays).
-class Reader {
- public:
-  explicit Reader(const std::string& s) : s_(s) {}
-
-  Status Object(std::map<std::string, Value>* members) {
-    if (!Eat('{')) return Bad("not a JSON object");
-    if (!Eat('}')) {
-      do {
-        std::string key;
-        if (!String(&key)) return Bad("expected a member name");
-        if (!Eat(':')) return Bad("expected ':' after \"" + key + "\"");
-        Value value;
-        SIGHTLINE_RETURN_IF_ERROR(Member(key, &value));
-        if (!members->emplace(key, std::move(value)).second) {
-          return Bad("duplicate \"" + key + "\"");
-        }
-      } while (Eat(','));
-      if (!Eat('}')) return Bad("expected ',' or '}'");
-    }
-    Skip();
-    return i_ == s_.size() ? Status::Ok() : Bad("text after the object");
-  }
-
- private:
-  void Skip() {
-    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
-  }
-  bool Eat(char c) {
-    Skip();
-    if (i_ >= s_.size() || s_[i_] != c) return false;
-    ++i_;
-    return true;
-  }
-  bool String(std::string* out) {
-    if (!Eat('"')) return false;
-    while (i_ < s_.size()) {
-      const char c = s_[i_++];
-      if (c == '"') return true;
-      if (static_cast<unsigned char>(c) < 0x20) return false;
-      if (c != '\\') {
-        out->push_back(c);
-        continue;
-      }
-      if (i_ >= s_.size()) return false;
-      const char e = s_[i_++];
-      const char* from = "\"\\/bfnrt";
-      const char* to = "\"\\/\b\f\n\r\t";
-      const char* at = std::strchr(from, e);
-      if (at == nullptr || e == '\0') return false;  // \u escapes are not used by the server.
-      out->push_back(to[at - from]);
-    }
-    return false;
-  }
-  bool Number(double* out) {
-    Skip();
-    const char* start = s_.c_str() + i_;
-    if (*start != '-' && !std::isdigit(static_cast<unsigned char>(*start))) return false;
-    char* end = nullptr;
-    *out = std::strtod(start, &end);
-    for (const char* c = start; c < end; ++c) {  // Plain decimal numbers only (no hex, inf).
-      if (!std::isdigit(static_cast<unsigned char>(*c)) && !std::strchr("+-.eE", *c)) return false;
-    }
-    i_ += static_cast<size_t>(end - start);
-    return end != start;
-  }
-  Status Member(const std::string& key, Value* v) {
-    Skip();
-    const char c = i_ < s_.size() ? s_[i_] : '\0';
-    if (c == '"') {
-      v->kind = Value::kString;
-      return String(&v->text) ? Status::Ok() : Bad("bad string in \"" + key + "\"");
-    }
-    if (c == '[') {
-      ++i_;
-      v->kind = Value::kArray;
-      if (Eat(']')) return Status::Ok();
-      do {
-        double x = 0;
-        if (!Number(&x) || v->array.size() >= 4096) return Bad("\"" + key + "\": numbers only");
-        v->array.push_back(x);
-      } while (Eat(','));
-      return Eat(']') ? Status::Ok() : Bad("\"" + key + "\": expected ']'");
-    }
-    for (const char* word : {"true", "false", "null"}) {
-      if (s_.compare(i_, std::strlen(word), word) == 0) {
-        i_ += std::strlen(word);
-        v->kind = word[0] == 'n' ? Value::kNull : Value::kBool;
-        v->flag = word[0] == 't';
-        return Status::Ok();
-      }
-    }
-    v->kind = Value::kNumber;
-    return Number(&v->number) ? Status::Ok() : Bad("bad value of \"" + key + "\"");
-  }
-
-  const std::string& s_;
-  size_t i_ = 0;
-};
 
 using Members = std::map<std::string, Value>;
 
@@ -178,7 +73,10 @@ Status ReadTarget(const Members& m, ArmTarget* t) {
 
 StatusOr<ServerLine> ParseServerLine(const std::string& line) {
   Members m;
-  SIGHTLINE_RETURN_IF_ERROR(Reader(line).Object(&m));
+  FlatJsonRules rules;
+  rules.prefix = "server line: ";
+  rules.max_array = 4096;
+  SIGHTLINE_RETURN_IF_ERROR(ReadFlatJson(line, rules, &m));
   ServerLine out;
   StatusOr<double> version = NumberOf(m, "version");
   if (!version.ok()) return version.status();
