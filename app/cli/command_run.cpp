@@ -40,7 +40,8 @@ int RunCommand(const std::vector<std::string>& args) {
       "DIR/metrics.json (frames, per-stage timing median/p95 in ms, accuracy when the dataset\n"
       "has ground truth, and the effective options). --profile loads a YAML options profile;\n"
       "--set overrides one option (see 'sightline-cli options PIPELINE'). Ctrl-C or SIGTERM\n"
-      "stops the run (with --serve the arm clients get a stop line first).\n"
+      "stops the run (with --serve the arm clients get a stop line first) and writes its\n"
+      "results up to then, as does an error at a frame; metrics.json says how it \"ended\".\n"
       "stereo-vo: --subsample K (= --set stereo.subsample=K) processes every K-th frame;\n"
       "--format kitti (= --set stereo.output_format=kitti) writes trajectory.txt as KITTI poses.\n"
       "button: --tap X,Y[@FRAME] (= --set button.run.tap=X,Y@FRAME) is the operator's tap,\n"
@@ -51,7 +52,7 @@ int RunCommand(const std::vector<std::string>& args) {
       "\nExit codes: 0 results written; 1 an error (the line on stderr says which file,\n"
       "field or option); 3 the run completed but achieved nothing (no frame tracked, never\n"
       "initialised, every frame gated): its first line says why and metrics.json has\n"
-      "\"failure\".\n"
+      "\"failure\"; 130 cancelled by Ctrl-C or SIGTERM, results up to then written.\n"
       "\nPipelines:\n";
   for (const PipelineInfo& p : registry.pipelines())
     help += "  " + p.name + "  " + p.summary + "\n";
@@ -101,10 +102,19 @@ int RunCommand(const std::vector<std::string>& args) {
 
   StatusOr<RunReport> report = RunPipeline(registry, request);
   progress.Finish();
-  if (!report.ok()) return Fail("run " + request.pipeline + ": " + report.status().ToString());
+  if (!report.ok()) {
+    Fail("run " + request.pipeline + ": " + report.status().ToString());
+    return report.status().code() == StatusCode::kCancelled ? kExitCancelled : kExitError;
+  }
 
   const RunMetrics& m = report->metrics;
-  if (!report->result.nothing_achieved.empty()) {
+  const Status& stop = report->result.ended_early;
+  if (!stop.ok()) {
+    // Stopped early (a cancel, or an error at a frame): the files so far are written.
+    std::fprintf(stderr, "sightline-cli: run %s %s: %s; the results up to then are in %s\n",
+                 request.pipeline.c_str(), m.ended.c_str(), stop.message().c_str(),
+                 request.out_dir.c_str());
+  } else if (!report->result.nothing_achieved.empty()) {
     std::fprintf(stderr, "sightline-cli: run %s achieved nothing: %s (files in %s)\n",
                  request.pipeline.c_str(), report->result.nothing_achieved.c_str(),
                  request.out_dir.c_str());
@@ -118,6 +128,7 @@ int RunCommand(const std::vector<std::string>& args) {
     for (const std::string& note : report->result.notes) std::printf("note: %s\n", note.c_str());
     std::printf("wrote %s\n", report->metrics_path.c_str());
   }
+  if (!stop.ok()) return stop.code() == StatusCode::kCancelled ? kExitCancelled : kExitError;
   return report->result.nothing_achieved.empty() ? 0 : kExitNothingAchieved;
 }
 

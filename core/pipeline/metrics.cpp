@@ -37,6 +37,8 @@ std::string MetricsToJson(const RunMetrics& m) {
   for (const auto& [key, value] : m.counts) w.Key(key).Double(value);
   w.EndObject();
   if (!m.failure.empty()) w.Key("failure").String(m.failure);
+  w.Key("ended").String(m.ended);
+  if (!m.end_reason.empty()) w.Key("end_reason").String(m.end_reason);
   if (!m.notes.empty()) {
     w.Key("notes").BeginArray();
     for (const std::string& note : m.notes) w.String(note);

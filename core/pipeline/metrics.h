@@ -31,6 +31,10 @@ struct RunMetrics {
   // Why the run achieved nothing (no frame tracked, never initialised, every frame gated);
   // empty for a run with results. Written as "failure" when set.
   std::string failure;
+  // How the run ended: "complete" (its source ended or its frame limit), "cancelled" or
+  // "error" (files written up to the frame it stopped at); `end_reason` says why when early.
+  std::string ended = "complete";
+  std::string end_reason;
   // Facts a reader should know (RunResult::notes, e.g. "no metric scale: no arm motion").
   // Written as "notes" when there are any.
   std::vector<std::string> notes;

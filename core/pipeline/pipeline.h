@@ -79,12 +79,20 @@ struct RunResult {
   // frame gated, no target sent when one was asked for. Empty for a run with results. The CLI
   // prints it first and exits with kExitNothingAchieved; metrics.json states it as "failure".
   std::string nothing_achieved;
+  // Why the run stopped before its source ended although its files so far were written: a
+  // cancel (Ctrl-C, SIGTERM, the GUI's Stop) or an error at a frame. Ok for a run that ran to
+  // the end of its source or its frame limit. metrics.json states it as "ended" and
+  // "end_reason".
+  Status ended_early;
 };
 
-// `sightline-cli run`'s exit codes: 0 results written; 1 an error (bad input, options, data);
-// 3 the run completed and wrote its files but achieved nothing (RunResult::nothing_achieved).
+// `sightline-cli run`'s exit codes: 0 results written; 1 an error (bad input, options, data;
+// when it came mid-run, the files up to that frame are written); 3 the run completed and wrote
+// its files but achieved nothing (RunResult::nothing_achieved); 130 the run was cancelled
+// (Ctrl-C or SIGTERM) and wrote its files up to then.
 constexpr int kExitError = 1;
 constexpr int kExitNothingAchieved = 3;
+constexpr int kExitCancelled = 130;
 
 // One pipeline. Not thread-safe: one thread drives it at a time (the GUI's worker, the CLI's
 // loop). Every pipeline is constructible many times in one process.
@@ -121,7 +129,8 @@ class Pipeline {
   // Forgets the run's state (a seek, or the user's reset); options and source stay.
   virtual void Reset() = 0;
   // The run ends early (cancelled, or an error; `reason` says which): live outputs are told at
-  // once, e.g. arm clients get a stop line naming the reason. Files are not written.
+  // once, e.g. arm clients get a stop line naming the reason. Files are not written here; the
+  // headless loop calls Finish after Abort to write the results so far.
   virtual void Abort(const std::string& reason) { (void)reason; }
   // Writes the run's files so far into `out_dir` (which exists) and returns its figures. The
   // CLI calls it after the last frame; the GUI for File > Save results, after which the run

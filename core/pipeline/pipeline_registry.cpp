@@ -51,37 +51,53 @@ StatusOr<std::unique_ptr<Source>> OpenForPipeline(const PipelineInfo& info, cons
 
 namespace {
 
-// Feeds every wanted frame of `source` to `pipeline`; returns the frames processed.
-StatusOr<int64_t> FeedFrames(Pipeline& pipeline, Source& source, const RunContext& context) {
+// How feeding a source ended: the frames processed and, when it stopped early, why.
+struct FeedOutcome {
+  int64_t processed = 0;
+  Status stop;  // Ok: the source ended (or the frame limit); else the cancel or the error.
+};
+
+// Feeds every wanted frame of `source` to `pipeline` until the source ends, a cancel or an error.
+FeedOutcome FeedFrames(Pipeline& pipeline, Source& source, const RunContext& context) {
   const StatisticTable& table = pipeline.Statistics();
   int64_t total = source.info().frame_count;
   const int64_t limit = pipeline.FrameLimit();
   if (limit > 0 && (total < 0 || total > limit)) total = limit;
-  int64_t processed = 0;
+  FeedOutcome out;
   for (int64_t index = 0; total < 0 || index < total; ++index) {
     if (context.Cancelled()) {
-      return Cancelled("run cancelled after " + std::to_string(index) + " frames");
+      out.stop = Cancelled("run cancelled after " + std::to_string(index) + " frames");
+      return out;
     }
     const double read_start = HostTimeS();
     const Status grabbed = source.Grab();
     if (grabbed.code() == StatusCode::kOutOfRange) break;
-    if (!grabbed.ok()) return grabbed;
+    if (!grabbed.ok()) {
+      out.stop = grabbed.WithContext("frame " + std::to_string(index));
+      return out;
+    }
     if (!pipeline.Wants(index)) continue;  // Grabbed but not decoded.
     StatusOr<Frame> frame = source.Retrieve();
-    if (!frame.ok()) return frame.status().WithContext("frame " + std::to_string(index));
+    if (!frame.ok()) {
+      out.stop = frame.status().WithContext("frame " + std::to_string(index));
+      return out;
+    }
     const double process_start = HostTimeS();
     StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline.Process(*frame);
     const double end = HostTimeS();
-    if (!result.ok()) return result.status();
-    ++processed;
+    if (!result.ok()) {
+      out.stop = result.status();
+      return out;
+    }
+    ++out.processed;
     if (context.timing != nullptr) {
       context.timing->Add("read", (process_start - read_start) * 1000.0);
       AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
     }
     if (context.progress) context.progress(index + 1, total);
   }
-  if (processed == 0) return OutOfRange(context.dataset_path + " gave no frame to process");
-  return processed;
+  if (out.processed == 0) out.stop = OutOfRange(context.dataset_path + " gave no frame to process");
+  return out;
 }
 
 // The reason live outputs are given when a run ends early.
@@ -104,17 +120,19 @@ StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& cont
   std::unique_ptr<Pipeline> pipeline = info.create();
   SIGHTLINE_RETURN_IF_ERROR(pipeline->Configure(context.options));
   SIGHTLINE_RETURN_IF_ERROR(pipeline->Open(PipelineSource::From(source)));
-  StatusOr<int64_t> processed = FeedFrames(*pipeline, source, context);
-  if (!processed.ok()) {
-    pipeline->Abort(AbortReason(processed.status()));
-    return processed.status();
-  }
+  const FeedOutcome fed = FeedFrames(*pipeline, source, context);
+  // A run that stops early tells its live outputs at once (an arm gets its stop line before
+  // any file is written), then writes what it has: a live run has no other end.
+  if (!fed.stop.ok()) pipeline->Abort(AbortReason(fed.stop));
+  if (fed.processed == 0) return fed.stop;
   StatusOr<RunResult> result = pipeline->Finish(context.out_dir);
   if (!result.ok()) {
+    if (!fed.stop.ok()) return fed.stop;
     pipeline->Abort(AbortReason(result.status()));
     return result.status();
   }
   if (result->dataset_format.empty()) result->dataset_format = source.info().format;
+  result->ended_early = fed.stop;
   return result;
 }
 
@@ -158,6 +176,10 @@ RunMetrics MakeRunMetrics(const std::string& pipeline, const std::string& datase
     (void)metrics.options.Set("button.arm.token", std::string("(set, not shown)"), "redacted");
   }
   metrics.failure = result.nothing_achieved;
+  if (!result.ended_early.ok()) {
+    metrics.ended = result.ended_early.code() == StatusCode::kCancelled ? "cancelled" : "error";
+    metrics.end_reason = result.ended_early.ToString();
+  }
   metrics.notes = result.notes;
   return metrics;
 }

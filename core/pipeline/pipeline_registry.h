@@ -54,7 +54,10 @@ struct PipelineInfo {
 // pipeline prefers, configures and opens the pipeline, feeds it every wanted frame, adds the
 // per-frame "read" and "total" timing and every "ms" statistic to context.timing, and calls
 // Finish(context.out_dir). Stops at the end of the source, at options' frame limits applied by
-// the pipeline, on cancel (an error saying after how many frames), or on a pipeline error.
+// the pipeline, on cancel, or on an error reading or processing a frame. A run that stops early
+// after at least one frame calls the pipeline's Abort (live outputs are told at once), then
+// still writes its files so far and returns them with RunResult::ended_early set to the cancel
+// or the error; before any frame, the cancel or error itself is returned.
 StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context);
 
 // A set of pipelines, built explicitly (no global registration).

@@ -159,6 +159,7 @@ StatusOr<StereoVoRun> RunStereoOdometry(const std::string& path,
   context.cancel = cancel;
   StatusOr<RunResult> result = RunHeadless(info, context);
   if (!result.ok()) return result.status();
+  if (!result->ended_early.ok()) return result->ended_early;  // Cancelled: not a whole run.
   return std::move(*estimate);
 }
 

@@ -198,9 +198,13 @@ TEST_F(ButtonCli, SigtermSendsTheArmClientsAStopLine) {
     }
   }
   ASSERT_TRUE(client.has_value()) << "the button run never served port " << port;
-  // The run is serving (a heartbeat came): terminate it the way a service manager does.
-  StatusOr<std::string> first = client->ReadLine(60000);
-  ASSERT_TRUE(first.ok()) << first.status().ToString();
+  // The run is serving and has sent a target: terminate it the way a service manager does.
+  bool targeted = false;
+  for (int i = 0; i < 10000 && !targeted; ++i) {
+    StatusOr<std::string> line = client->ReadLine(60000);
+    ASSERT_TRUE(line.ok()) << "no target before: " << line.status().ToString();
+    targeted = line->find("\"type\":\"target\"") != std::string::npos;
+  }
   const int pid = std::atoi(testing::ReadTextFile(pid_file).c_str());
   ASSERT_GT(pid, 0);
   ASSERT_EQ(kill(pid, SIGTERM), 0);
@@ -213,8 +217,13 @@ TEST_F(ButtonCli, SigtermSendsTheArmClientsAStopLine) {
   EXPECT_NE(stop.find("\"reason\":\"cancelled\""), std::string::npos) << stop;
   EXPECT_EQ(client->ReadLine(10000).status().code(), StatusCode::kUnavailable);  // Then closed.
   runner.join();
-  EXPECT_NE(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.exit_code, kExitCancelled) << run.out;
   EXPECT_NE(run.out.find("cancelled"), std::string::npos) << run.out;
+  // Cancelled mid-run, it still wrote what it had: the button's track and its figures.
+  EXPECT_TRUE(std::filesystem::is_regular_file(out + "/button.csv")) << run.out;
+  const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
+  EXPECT_NE(metrics.find("\"ended\": \"cancelled\""), std::string::npos) << metrics;
+  EXPECT_GT(testing::JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0) << metrics;
 }
 
 TEST_F(ButtonCli, ServingBeyondLoopbackNeedsAToken) {

@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <cstdio>
+#include <filesystem>
 #include <thread>
 
 #include "core/button/arm_sim_session.h"
@@ -55,6 +56,7 @@ struct Loop {
   std::atomic<int> phase{-1};
   std::atomic<bool> arm_done{false};
   StatusOr<RunReport> report = Unavailable("not run");
+  std::string out_dir;
   StatusOr<ArmSimSessionResult> arm_result = Unavailable("not run");
   std::unique_ptr<ArmSimulator> arm;
   std::thread run_thread, arm_thread;
@@ -62,6 +64,8 @@ struct Loop {
   void Start() {
     const int port = FreePort();
     const std::string uri = "sim://panel?seed=" + std::to_string(seed) + "&fps=4";
+    out_dir = testing::TempDir("closed_loop_" + std::to_string(seed) + "_" +
+                               std::to_string(button) + (operator_panel ? "_panel" : ""));
     StatusOr<ArmSimWorld> world = BuildArmSimWorld(seed, LoopArm());
     ASSERT_TRUE(world.ok()) << world.status().ToString();
     arm = std::make_unique<ArmSimulator>(LoopArm(), std::move(*world));
@@ -78,7 +82,7 @@ struct Loop {
       RunRequest request;
       request.pipeline = "button";
       request.dataset_path = uri;
-      request.out_dir = testing::TempDir("closed_loop_" + std::to_string(seed));
+      request.out_dir = out_dir;
       request.overrides = {"button.run.tap=button:" + std::to_string(button),
                            "button.run.serve=true",
                            "button.arm.port=" + std::to_string(port),
@@ -136,6 +140,13 @@ TEST_P(ClosedLoopSeed, TheSimulatedArmPressesTheTappedButton) {
   EXPECT_LT(o.lateral_mm, 9.0);
   EXPECT_LT(o.approach_error_deg, 10.0);
   EXPECT_EQ(loop.arm->counts().count("malformed"), 0u);
+  // The live run has no end of its own: cancelled after the press, it still wrote its results.
+  ASSERT_TRUE(loop.report.ok()) << loop.report.status().ToString();
+  EXPECT_EQ(loop.report->metrics.ended, "cancelled");
+  EXPECT_EQ(loop.report->result.ended_early.code(), StatusCode::kCancelled);
+  EXPECT_GT(loop.report->metrics.frames, 10);
+  EXPECT_TRUE(std::filesystem::is_regular_file(loop.out_dir + "/button.csv"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(loop.out_dir + "/metrics.json"));
 }
 
 INSTANTIATE_TEST_SUITE_P(FiveSeeds, ClosedLoopSeed, ::testing::Values(1, 2, 3, 4, 5));

@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <fstream>
 #include <sstream>
 
 #include "core/pipeline/pipeline_registry.h"
+#include "core/sim/simulate.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
@@ -98,6 +100,87 @@ TEST(RunPipeline, MissingDatasetNamesThePath) {
   StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
   ASSERT_FALSE(report.ok());
   EXPECT_NE(report.status().message().find("/nonexistent/dataset"), std::string::npos);
+}
+
+// A short simulated RGB-D recording (terrain scene, `frames` frames) in its own folder.
+std::string SimulatedRgbd(const std::string& name, int frames) {
+  const std::string dir = testing::TempDir(name);
+  sim::SimulationOptions options = sim::SimulationOptions::ForScene("terrain");
+  options.frames = frames;
+  EXPECT_TRUE(sim::Simulate(options, dir).ok());
+  return dir + "/rgbd";
+}
+
+int Lines(const std::string& path) {
+  const std::string text = ReadAll(path);
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(RunPipeline, ACancelledRunStillWritesItsResultsSoFar) {
+  const std::string dir = SimulatedRgbd("run_cancel_sim", 12);
+  std::atomic<bool> cancel{false};
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = dir;
+  request.out_dir = testing::TempDir("run_cancel") + "/out";
+  request.cancel = &cancel;
+  request.progress = [&cancel](int64_t done, int64_t) { cancel = done >= 4; };  // Ctrl-C.
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_TRUE(report.ok()) << report.status().ToString();
+  EXPECT_EQ(report->result.ended_early.code(), StatusCode::kCancelled);
+  EXPECT_EQ(report->metrics.frames, 4);
+  EXPECT_EQ(Lines(request.out_dir + "/frames.csv"), 1 + 4);  // Header and the 4 frames done.
+  const std::string json = ReadAll(report->metrics_path);
+  EXPECT_NE(json.find("\"ended\": \"cancelled\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"end_reason\": \"cancelled: run cancelled after 4 frames\""),
+            std::string::npos)
+      << json;
+}
+
+TEST(RunPipeline, AnErrorMidRunWritesTheFramesBeforeItAndNamesTheFrame) {
+  const std::string dir = SimulatedRgbd("run_error_sim", 10);
+  std::ofstream(dir + "/depth/000006.png", std::ios::trunc) << "not a png";
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = dir;
+  request.out_dir = testing::TempDir("run_error") + "/out";
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_TRUE(report.ok()) << report.status().ToString();
+  const Status& stop = report->result.ended_early;
+  EXPECT_FALSE(stop.ok());
+  EXPECT_NE(stop.message().find("frame 6"), std::string::npos) << stop.ToString();
+  EXPECT_NE(stop.message().find("depth/000006.png"), std::string::npos) << stop.ToString();
+  EXPECT_EQ(report->metrics.frames, 6);
+  EXPECT_EQ(Lines(request.out_dir + "/frames.csv"), 1 + 6);
+  const std::string json = ReadAll(report->metrics_path);
+  EXPECT_NE(json.find("\"ended\": \"error\""), std::string::npos) << json;
+  EXPECT_NE(json.find("000006.png"), std::string::npos) << json;
+}
+
+TEST(RunPipeline, ARunThatRanThroughEndedComplete) {
+  const std::string dir = SimulatedRgbd("run_complete_sim", 3);
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = dir;
+  request.out_dir = testing::TempDir("run_complete") + "/out";
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_TRUE(report.ok()) << report.status().ToString();
+  EXPECT_TRUE(report->result.ended_early.ok());
+  EXPECT_EQ(report->metrics.frames, 3);
+  EXPECT_NE(ReadAll(report->metrics_path).find("\"ended\": \"complete\""), std::string::npos);
+}
+
+TEST(RunPipeline, ACancelBeforeAnyFrameIsTheCancelItself) {
+  const std::string dir = SimulatedRgbd("run_cancel0_sim", 3);
+  std::atomic<bool> cancel{true};
+  RunRequest request;
+  request.pipeline = "inspect";
+  request.dataset_path = dir;
+  request.out_dir = testing::TempDir("run_cancel0") + "/out";
+  request.cancel = &cancel;
+  StatusOr<RunReport> report = RunPipeline(BuiltinPipelines(), request);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.status().code(), StatusCode::kCancelled);
 }
 
 }  // namespace
