@@ -1,6 +1,7 @@
 #include "widgets/parameter_panel.h"
 
 #include <QDir>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -113,6 +114,15 @@ void ParameterPanel::Rebuild() {
   }
   RefreshValues();
   SetFilter(filter_->text());
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+  // The option descriptions come from the core in English: each row's tool tip is built anew
+  // in the new language (the editors do the same for their inputs).
+  if (event->type() == QEvent::LanguageChange) {
+    for (const auto& [key, row] : rows_) row.label->setToolTip(OptionTooltip(row.editor->spec()));
+  }
+  QWidget::changeEvent(event);
 }
 
 void ParameterPanel::RefreshValues() {

@@ -73,6 +73,7 @@ class ParameterPanel : public QWidget {
 
   std::string profile_exclusion_;
 
+  void changeEvent(QEvent* event) override;  // Retranslates the rows' tool tips.
   void Rebuild();
   void RefreshValues();
   void RefreshRow(const std::string& key);
