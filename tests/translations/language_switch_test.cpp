@@ -289,13 +289,15 @@ class LanguageSwitch : public ::testing::Test {
   }
 
   // The rows of the parameters dock whose tool tips (the row's name and its input) do not begin
-  // with the option's description in `code`, or lack the translated "Default:" line.
+  // with the option's description in `code`, or lack the translated "Default:" line (whose value
+  // may be empty, as the tool tip's trailing space is trimmed).
   QStringList UntranslatedParameterRows(const QString& code, int* checked) {
     auto* panel = window_->findChild<ParameterPanel*>();
     EXPECT_NE(panel, nullptr);
     if (panel == nullptr) return {};
-    const QString default_line =
-        TranslationOf(code, "sightline::OptionEditor", "Default: %1%2").section('%', 0, 0);
+    const QString default_line = TranslationOf(code, "sightline::OptionEditor", "Default: %1%2")
+                                     .section('%', 0, 0)
+                                     .trimmed();
     EXPECT_FALSE(default_line.isEmpty());
     QStringList wrong;
     for (const OptionSpec& spec : panel->options().specs()) {
