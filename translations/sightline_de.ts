@@ -360,6 +360,184 @@
     </message>
 </context>
 <context>
+    <name>sightline::CoreMessage</name>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="15"/>
+        <source>invalid argument</source>
+        <translation>ungültiges Argument</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="16"/>
+        <source>not found</source>
+        <translation>nicht gefunden</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="17"/>
+        <source>parse error</source>
+        <translation>Formatfehler</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="18"/>
+        <source>unavailable</source>
+        <translation>nicht verfügbar</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="19"/>
+        <source>out of range</source>
+        <translation>außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="20"/>
+        <source>failed precondition</source>
+        <translation>Vorbedingung nicht erfüllt</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="21"/>
+        <source>internal error</source>
+        <translation>interner Fehler</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="26"/>
+        <source>%1 line %2</source>
+        <translation>%1 Zeile %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="27"/>
+        <source>profile %1</source>
+        <translation>Profil %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="28"/>
+        <source>parameter panel</source>
+        <translation>Parameterleiste</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="34"/>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>unbekannte Option &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="35"/>
+        <source>option &apos;%1&apos;: %2 is outside %3</source>
+        <translation>Option &apos;%1&apos;: %2 liegt außerhalb von %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="36"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
+        <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keiner der Werte: %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="37"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
+        <translation>Option &apos;%1&apos;: &apos;%2&apos; ist kein Wahrheitswert (true/false)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="38"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
+        <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="39"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
+        <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="40"/>
+        <source>option &apos;%1&apos;: value is not finite</source>
+        <translation>Option &apos;%1&apos;: Wert ist nicht endlich</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="41"/>
+        <source>a profile must be a map of option keys</source>
+        <translation>ein Profil muss eine Zuordnung von Optionsschlüsseln sein</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="42"/>
+        <source>option &apos;%1&apos; is given twice (also line %2)</source>
+        <translation>Option &apos;%1&apos; ist doppelt angegeben (auch Zeile %2)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="43"/>
+        <source>option &apos;%1&apos; has no value</source>
+        <translation>Option &apos;%1&apos; hat keinen Wert</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="44"/>
+        <source>option &apos;%1&apos; must be a single value, not a list</source>
+        <translation>Option &apos;%1&apos; muss ein einzelner Wert sein, keine Liste</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="45"/>
+        <source>an option key must be a word, not a list or map</source>
+        <translation>ein Optionsschlüssel muss ein Wort sein, keine Liste oder Zuordnung</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="46"/>
+        <source>options nest deeper than %1 levels</source>
+        <translation>Optionen sind tiefer als %1 Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="47"/>
+        <source>lists or maps nest deeper than %1 levels</source>
+        <translation>Listen oder Zuordnungen sind tiefer als %1 Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="48"/>
+        <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
+        <translation>mehr als %1 Werte (expandierende Aliase?); ein Profil nennt jede Option einmal</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="50"/>
+        <source>not a readable YAML profile: %1</source>
+        <translation>kein lesbares YAML-Profil: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="51"/>
+        <source>cannot write profile %1</source>
+        <translation>Profil %1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="52"/>
+        <source>write to %1 failed (disk full?)</source>
+        <translation>Schreiben nach %1 fehlgeschlagen (Datenträger voll?)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="53"/>
+        <source>no such file</source>
+        <translation>Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="54"/>
+        <source>profile %1 is a folder, not a file</source>
+        <translation>Profil %1 ist ein Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="55"/>
+        <source>profile %1 is not a regular file (a device, pipe or socket)</source>
+        <translation>Profil %1 ist keine reguläre Datei (ein Gerät, eine Pipe oder ein Socket)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="57"/>
+        <source>profile %1 cannot be read: %2</source>
+        <translation>Profil %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="58"/>
+        <source>profile %1 is %2 bytes; a profile holds at most %3</source>
+        <translation>Profil %1 ist %2 Bytes groß; ein Profil umfasst höchstens %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="60"/>
+        <source>cannot read its size: %1</source>
+        <translation>Größe nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="61"/>
+        <source>read error (%1 of %2 bytes)</source>
+        <translation>Lesefehler (%1 von %2 Bytes)</translation>
+    </message>
+</context>
+<context>
     <name>sightline::CoreText</name>
     <message>
         <location filename="../app/sightline/core_texts.cpp" line="11"/>
@@ -3462,57 +3640,57 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::ParameterPanel</name>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="46"/>
+        <location filename="../widgets/parameter_panel.cpp" line="47"/>
         <source>Filter options</source>
         <translation>Optionen filtern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="50"/>
+        <location filename="../widgets/parameter_panel.cpp" line="51"/>
         <source>Load profile…</source>
         <translation>Profil laden…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="53"/>
+        <location filename="../widgets/parameter_panel.cpp" line="54"/>
         <source>Save profile…</source>
         <translation>Profil speichern…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="56"/>
+        <location filename="../widgets/parameter_panel.cpp" line="57"/>
         <source>Reset all</source>
         <translation>Alle zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="165"/>
+        <location filename="../widgets/parameter_panel.cpp" line="166"/>
         <source>All options reset to their defaults.</source>
         <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="176"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Loaded profile %1</source>
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="187"/>
+        <location filename="../widgets/parameter_panel.cpp" line="188"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="201"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="202"/>
+        <location filename="../widgets/parameter_panel.cpp" line="203"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>

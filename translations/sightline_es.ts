@@ -360,6 +360,184 @@
     </message>
 </context>
 <context>
+    <name>sightline::CoreMessage</name>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="15"/>
+        <source>invalid argument</source>
+        <translation>argumento no válido</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="16"/>
+        <source>not found</source>
+        <translation>no encontrado</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="17"/>
+        <source>parse error</source>
+        <translation>error de formato</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="18"/>
+        <source>unavailable</source>
+        <translation>no disponible</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="19"/>
+        <source>out of range</source>
+        <translation>fuera de rango</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="20"/>
+        <source>failed precondition</source>
+        <translation>condición previa no cumplida</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="21"/>
+        <source>internal error</source>
+        <translation>error interno</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="26"/>
+        <source>%1 line %2</source>
+        <translation>%1 línea %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="27"/>
+        <source>profile %1</source>
+        <translation>perfil %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="28"/>
+        <source>parameter panel</source>
+        <translation>panel de parámetros</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="34"/>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>opción desconocida &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="35"/>
+        <source>option &apos;%1&apos;: %2 is outside %3</source>
+        <translation>opción &apos;%1&apos;: %2 está fuera de %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="36"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
+        <translation>opción &apos;%1&apos;: &apos;%2&apos; no es uno de los valores: %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="37"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
+        <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un booleano (true/false)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="38"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
+        <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un número entero</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="39"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
+        <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un número</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="40"/>
+        <source>option &apos;%1&apos;: value is not finite</source>
+        <translation>opción &apos;%1&apos;: el valor no es finito</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="41"/>
+        <source>a profile must be a map of option keys</source>
+        <translation>un perfil debe ser un mapa de claves de opción</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="42"/>
+        <source>option &apos;%1&apos; is given twice (also line %2)</source>
+        <translation>la opción &apos;%1&apos; aparece dos veces (también en la línea %2)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="43"/>
+        <source>option &apos;%1&apos; has no value</source>
+        <translation>la opción &apos;%1&apos; no tiene valor</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="44"/>
+        <source>option &apos;%1&apos; must be a single value, not a list</source>
+        <translation>la opción &apos;%1&apos; debe ser un valor único, no una lista</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="45"/>
+        <source>an option key must be a word, not a list or map</source>
+        <translation>una clave de opción debe ser una palabra, no una lista ni un mapa</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="46"/>
+        <source>options nest deeper than %1 levels</source>
+        <translation>las opciones se anidan en más de %1 niveles</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="47"/>
+        <source>lists or maps nest deeper than %1 levels</source>
+        <translation>listas o mapas anidados en más de %1 niveles</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="48"/>
+        <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
+        <translation>más de %1 valores (¿alias que se expanden?); un perfil enumera cada opción una sola vez</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="50"/>
+        <source>not a readable YAML profile: %1</source>
+        <translation>no es un perfil YAML legible: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="51"/>
+        <source>cannot write profile %1</source>
+        <translation>no se puede escribir el perfil %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="52"/>
+        <source>write to %1 failed (disk full?)</source>
+        <translation>falló la escritura en %1 (¿disco lleno?)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="53"/>
+        <source>no such file</source>
+        <translation>el archivo no existe</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="54"/>
+        <source>profile %1 is a folder, not a file</source>
+        <translation>el perfil %1 es una carpeta, no un archivo</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="55"/>
+        <source>profile %1 is not a regular file (a device, pipe or socket)</source>
+        <translation>el perfil %1 no es un archivo normal (un dispositivo, una tubería o un socket)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="57"/>
+        <source>profile %1 cannot be read: %2</source>
+        <translation>no se puede leer el perfil %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="58"/>
+        <source>profile %1 is %2 bytes; a profile holds at most %3</source>
+        <translation>el perfil %1 ocupa %2 bytes; un perfil contiene como máximo %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="60"/>
+        <source>cannot read its size: %1</source>
+        <translation>no se puede leer su tamaño: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="61"/>
+        <source>read error (%1 of %2 bytes)</source>
+        <translation>error de lectura (%1 de %2 bytes)</translation>
+    </message>
+</context>
+<context>
     <name>sightline::CoreText</name>
     <message>
         <location filename="../app/sightline/core_texts.cpp" line="11"/>
@@ -3462,57 +3640,57 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::ParameterPanel</name>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="46"/>
+        <location filename="../widgets/parameter_panel.cpp" line="47"/>
         <source>Filter options</source>
         <translation>Filtrar opciones</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="50"/>
+        <location filename="../widgets/parameter_panel.cpp" line="51"/>
         <source>Load profile…</source>
         <translation>Cargar perfil…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="53"/>
+        <location filename="../widgets/parameter_panel.cpp" line="54"/>
         <source>Save profile…</source>
         <translation>Guardar perfil…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="56"/>
+        <location filename="../widgets/parameter_panel.cpp" line="57"/>
         <source>Reset all</source>
         <translation>Restablecer todo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="165"/>
+        <location filename="../widgets/parameter_panel.cpp" line="166"/>
         <source>All options reset to their defaults.</source>
         <translation>Todas las opciones vuelven a sus valores por defecto.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="176"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Loaded profile %1</source>
         <translation>Perfil %1 cargado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="187"/>
+        <location filename="../widgets/parameter_panel.cpp" line="188"/>
         <source>Saved profile %1</source>
         <translation>Perfil %1 guardado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Load profile</source>
         <translation>Cargar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Perfiles YAML (*.yaml *.yml);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="201"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="202"/>
+        <location filename="../widgets/parameter_panel.cpp" line="203"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Perfiles YAML (*.yaml *.yml)</translation>
     </message>

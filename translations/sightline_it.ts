@@ -360,6 +360,184 @@
     </message>
 </context>
 <context>
+    <name>sightline::CoreMessage</name>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="15"/>
+        <source>invalid argument</source>
+        <translation>argomento non valido</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="16"/>
+        <source>not found</source>
+        <translation>non trovato</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="17"/>
+        <source>parse error</source>
+        <translation>errore di formato</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="18"/>
+        <source>unavailable</source>
+        <translation>non disponibile</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="19"/>
+        <source>out of range</source>
+        <translation>fuori intervallo</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="20"/>
+        <source>failed precondition</source>
+        <translation>precondizione non soddisfatta</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="21"/>
+        <source>internal error</source>
+        <translation>errore interno</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="26"/>
+        <source>%1 line %2</source>
+        <translation>%1 riga %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="27"/>
+        <source>profile %1</source>
+        <translation>profilo %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="28"/>
+        <source>parameter panel</source>
+        <translation>pannello dei parametri</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="34"/>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>opzione sconosciuta &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="35"/>
+        <source>option &apos;%1&apos;: %2 is outside %3</source>
+        <translation>opzione &apos;%1&apos;: %2 è fuori da %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="36"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
+        <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è uno dei valori: %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="37"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
+        <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un booleano (true/false)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="38"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
+        <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un numero intero</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="39"/>
+        <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
+        <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un numero</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="40"/>
+        <source>option &apos;%1&apos;: value is not finite</source>
+        <translation>opzione &apos;%1&apos;: il valore non è finito</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="41"/>
+        <source>a profile must be a map of option keys</source>
+        <translation>un profilo deve essere una mappa di chiavi di opzione</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="42"/>
+        <source>option &apos;%1&apos; is given twice (also line %2)</source>
+        <translation>l&apos;opzione &apos;%1&apos; è indicata due volte (anche alla riga %2)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="43"/>
+        <source>option &apos;%1&apos; has no value</source>
+        <translation>l&apos;opzione &apos;%1&apos; non ha un valore</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="44"/>
+        <source>option &apos;%1&apos; must be a single value, not a list</source>
+        <translation>l&apos;opzione &apos;%1&apos; deve essere un valore singolo, non una lista</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="45"/>
+        <source>an option key must be a word, not a list or map</source>
+        <translation>una chiave di opzione deve essere una parola, non una lista o una mappa</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="46"/>
+        <source>options nest deeper than %1 levels</source>
+        <translation>le opzioni sono annidate oltre %1 livelli</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="47"/>
+        <source>lists or maps nest deeper than %1 levels</source>
+        <translation>liste o mappe annidate oltre %1 livelli</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="48"/>
+        <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
+        <translation>più di %1 valori (alias che si espandono?); un profilo elenca ogni opzione una sola volta</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="50"/>
+        <source>not a readable YAML profile: %1</source>
+        <translation>non è un profilo YAML leggibile: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="51"/>
+        <source>cannot write profile %1</source>
+        <translation>impossibile scrivere il profilo %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="52"/>
+        <source>write to %1 failed (disk full?)</source>
+        <translation>scrittura su %1 non riuscita (disco pieno?)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="53"/>
+        <source>no such file</source>
+        <translation>file inesistente</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="54"/>
+        <source>profile %1 is a folder, not a file</source>
+        <translation>il profilo %1 è una cartella, non un file</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="55"/>
+        <source>profile %1 is not a regular file (a device, pipe or socket)</source>
+        <translation>il profilo %1 non è un file regolare (un dispositivo, una pipe o un socket)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="57"/>
+        <source>profile %1 cannot be read: %2</source>
+        <translation>impossibile leggere il profilo %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="58"/>
+        <source>profile %1 is %2 bytes; a profile holds at most %3</source>
+        <translation>il profilo %1 è di %2 byte; un profilo contiene al massimo %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="60"/>
+        <source>cannot read its size: %1</source>
+        <translation>impossibile leggerne la dimensione: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/core_message.cpp" line="61"/>
+        <source>read error (%1 of %2 bytes)</source>
+        <translation>errore di lettura (%1 di %2 byte)</translation>
+    </message>
+</context>
+<context>
     <name>sightline::CoreText</name>
     <message>
         <location filename="../app/sightline/core_texts.cpp" line="11"/>
@@ -3462,57 +3640,57 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::ParameterPanel</name>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="46"/>
+        <location filename="../widgets/parameter_panel.cpp" line="47"/>
         <source>Filter options</source>
         <translation>Filtra le opzioni</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="50"/>
+        <location filename="../widgets/parameter_panel.cpp" line="51"/>
         <source>Load profile…</source>
         <translation>Carica profilo…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="53"/>
+        <location filename="../widgets/parameter_panel.cpp" line="54"/>
         <source>Save profile…</source>
         <translation>Salva profilo…</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="56"/>
+        <location filename="../widgets/parameter_panel.cpp" line="57"/>
         <source>Reset all</source>
         <translation>Ripristina tutto</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="165"/>
+        <location filename="../widgets/parameter_panel.cpp" line="166"/>
         <source>All options reset to their defaults.</source>
         <translation>Tutte le opzioni riportate ai valori predefiniti.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="176"/>
+        <location filename="../widgets/parameter_panel.cpp" line="177"/>
         <source>Loaded profile %1</source>
         <translation>Profilo %1 caricato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="187"/>
+        <location filename="../widgets/parameter_panel.cpp" line="188"/>
         <source>Saved profile %1</source>
         <translation>Profilo %1 salvato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Load profile</source>
         <translation>Carica profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="194"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Profili YAML (*.yaml *.yml);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="201"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Save profile</source>
         <translation>Salva profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="202"/>
+        <location filename="../widgets/parameter_panel.cpp" line="203"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Profili YAML (*.yaml *.yml)</translation>
     </message>

@@ -9,6 +9,7 @@
 #include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QFormLayout>
@@ -23,6 +24,7 @@
 #include <QSet>
 #include <QSettings>
 #include <QTabBar>
+#include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <algorithm>
 #include <map>
@@ -38,6 +40,7 @@
 #include "core/pipeline/pipeline_registry.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/translations/ts_text.h"
+#include "widgets/core_message.h"
 #include "widgets/image_view.h"
 #include "widgets/operator_panel.h"
 #include "widgets/option_editor.h"
@@ -384,6 +387,98 @@ TEST_F(LanguageSwitch, ParametersDockDescribesEveryOptionInTheNewLanguage) {
     }
     EXPECT_GT(checked, 600) << "too few option rows found in " << code.toStdString();
   }
+}
+
+// A profile the parameters dock cannot load: what the core says (in English, with the file and
+// field) and the template CoreMessage must know it by, with its filled-in parts.
+struct BadProfile {
+  const char* yaml;  // nullptr: the file is missing.
+  const char* code;
+  const char* message;
+  QStringList parts;
+};
+
+QString Fill(QString text, const QStringList& parts) {
+  for (const QString& part : parts) text = text.arg(part);
+  return text;
+}
+
+TEST(CoreMessages, ProfileAndValueErrorsOfTheCoreReadInTheChosenLanguage) {
+  const std::vector<BadProfile> profiles = {
+      {"view:\n  cloud_stride: 0\n",
+       "invalid argument",
+       "option '%1': %2 is outside %3",
+       {"view.cloud_stride", "0", "[1, 16] px"}},
+      {"view:\n  cloud_stride: many\n",
+       "invalid argument",
+       "option '%1': '%2' is not an integer",
+       {"view.cloud_stride", "many"}},
+      {"view:\n  max_depth_m: far\n",
+       "invalid argument",
+       "option '%1': '%2' is not a number",
+       {"view.max_depth_m", "far"}},
+      {"view:\n  bogus: 1\n", "not found", "unknown option '%1'", {"view.bogus"}},
+      {"- 1\n- 2\n", "parse error", "a profile must be a map of option keys", {}},
+      {"view:\n  max_depth_m: [1, 2]\n",
+       "parse error",
+       "option '%1' must be a single value, not a list",
+       {"view.max_depth_m"}},
+      {"view:\n  cloud_stride: 2\nview.cloud_stride: 3\n",
+       "parse error",
+       "option '%1' is given twice (also line %2)",
+       {"view.cloud_stride", "2"}},
+      {nullptr, "not found", "no such file", {}},
+  };
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  OptionSet options;
+  ASSERT_TRUE(options.Declare(ViewOptions::Describe()).ok());
+  ParameterPanel panel;
+  panel.SetOptions(options);
+  for (size_t i = 0; i < profiles.size(); ++i) {
+    const BadProfile& bad = profiles[i];
+    const QString path = dir.filePath(QStringLiteral("bad%1.yaml").arg(i));
+    if (bad.yaml != nullptr) {
+      QFile file(path);
+      ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+      file.write(bad.yaml);
+    }
+    OptionSet copy = options;
+    const std::string english = copy.LoadYaml(path.toStdString()).ToString();
+    const QString english_message = Fill(bad.message, bad.parts);
+    // The template is the core's wording, and English stays as the core wrote it.
+    ASSERT_TRUE(CoreMessageTemplates().contains(bad.message)) << bad.message;
+    EXPECT_TRUE(QString::fromStdString(english).startsWith(QString(bad.code) + ": ")) << english;
+    EXPECT_TRUE(QString::fromStdString(english).endsWith(english_message))
+        << english << " does not end in \"" << english_message.toStdString() << "\"";
+    SwitchLanguage("en", qApp);
+    EXPECT_EQ(CoreMessage(english), QString::fromStdString(english));
+    for (const QString code : {"it", "es", "de"}) {
+      SwitchLanguage(code, qApp);
+      const QString translated = CoreMessage(english);
+      const QString expected_code = TranslationOf(code, "sightline::CoreMessage", bad.code);
+      const QString expected_message =
+          Fill(TranslationOf(code, "sightline::CoreMessage", bad.message), bad.parts);
+      const std::string where =
+          code.toStdString() + ": " + english + " -> " + translated.toStdString();
+      EXPECT_FALSE(expected_code.isEmpty() || expected_message.isEmpty()) << where;
+      EXPECT_TRUE(translated.startsWith(expected_code + ": ")) << where;
+      EXPECT_TRUE(translated.endsWith(expected_message)) << where;
+      EXPECT_TRUE(translated.contains(QDir::toNativeSeparators(path).section('/', -1)))
+          << where << ": the file's name is kept";
+      EXPECT_NE(translated, QString::fromStdString(english)) << where;
+      // The dock shows it so.
+      EXPECT_FALSE(panel.LoadProfile(path).ok());
+      EXPECT_EQ(panel.message(), translated) << where;
+    }
+    // The message shown follows a switch of language (from German).
+    SwitchLanguage("it", qApp);
+    QApplication::processEvents();
+    EXPECT_EQ(panel.message(), CoreMessage(english));
+    EXPECT_TRUE(panel.message().startsWith(TranslationOf("it", "sightline::CoreMessage", bad.code)))
+        << panel.message().toStdString();
+  }
+  SwitchLanguage("en", qApp);
 }
 
 TEST(LanguageChoice, SystemLanguageIsTheDefaultAndUnknownCodesAreRefused) {
