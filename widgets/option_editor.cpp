@@ -2,7 +2,9 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QSignalBlocker>
@@ -39,8 +41,13 @@ int DecimalsFor(const OptionSpec& spec) {
   return std::min(decimals, 6);
 }
 
+QString OptionDescription(const OptionSpec& spec) {
+  if (spec.description.empty()) return QString();
+  return QCoreApplication::translate("sightline::OptionText", spec.description.c_str());
+}
+
 QString OptionTooltip(const OptionSpec& spec) {
-  QString tip = QString::fromStdString(spec.description);
+  QString tip = OptionDescription(spec);
   const QString unit = UnitSuffix(spec);
   if (spec.type == OptionType::kInt || spec.type == OptionType::kDouble) {
     tip += QLatin1Char('\n') +
@@ -61,18 +68,27 @@ OptionEditor::OptionEditor(const OptionSpec& spec, QWidget* parent) : QWidget(pa
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   input_ = CreateInput();
-  input_->setToolTip(OptionTooltip(spec_));
   layout->addWidget(input_, 1);
 
   reset_button_ = new QToolButton(this);
   reset_button_->setIcon(style()->standardIcon(QStyle::SP_DialogResetButton));
   reset_button_->setAutoRaise(true);
-  reset_button_->setToolTip(
-      tr("Reset to default (%1)")
-          .arg(QString::fromStdString(FormatOptionValue(spec_.default_value))));
+  UpdateToolTips();
   connect(reset_button_, &QToolButton::clicked, this, [this] { emit ResetRequested(spec_.key); });
   layout->addWidget(reset_button_);
   SetValue(spec_.default_value);
+}
+
+void OptionEditor::UpdateToolTips() {
+  input_->setToolTip(OptionTooltip(spec_));
+  reset_button_->setToolTip(
+      tr("Reset to default (%1)")
+          .arg(QString::fromStdString(FormatOptionValue(spec_.default_value))));
+}
+
+void OptionEditor::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) UpdateToolTips();
+  QWidget::changeEvent(event);
 }
 
 QWidget* OptionEditor::CreateInput() {

@@ -36,7 +36,9 @@ class OptionEditor : public QWidget {
   void ResetRequested(const std::string& key);
 
  private:
+  void changeEvent(QEvent* event) override;  // Retranslates the tool tips.
   QWidget* CreateInput();
+  void UpdateToolTips();
 
   OptionSpec spec_;
   QWidget* input_ = nullptr;
@@ -46,6 +48,11 @@ class OptionEditor : public QWidget {
 
 // Decimals a spin box needs to show `spec`'s step and default exactly (1 to 6).
 int DecimalsFor(const OptionSpec& spec);
+
+// The spec's description in the user's language: the core's English text translated under the
+// context "sightline::OptionText" (listed in app/sightline/option_texts.cpp); as it is when no
+// translation has it.
+QString OptionDescription(const OptionSpec& spec);
 
 // "Description\nRange: 0.01 … 5 m\nDefault: 0.05 m" for tooltips.
 QString OptionTooltip(const OptionSpec& spec);

@@ -1,6 +1,7 @@
 #include "widgets/parameter_panel.h"
 
 #include <QDir>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -12,6 +13,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include "widgets/core_message.h"
 #include "widgets/option_editor.h"
 
 namespace sightline {
@@ -115,6 +117,16 @@ void ParameterPanel::Rebuild() {
   SetFilter(filter_->text());
 }
 
+void ParameterPanel::changeEvent(QEvent* event) {
+  // The option descriptions come from the core in English: each row's tool tip is built anew
+  // in the new language (the editors do the same for their inputs).
+  if (event->type() == QEvent::LanguageChange) {
+    for (const auto& [key, row] : rows_) row.label->setToolTip(OptionTooltip(row.editor->spec()));
+    if (!message_status_.empty()) message_->setText(CoreMessage(message_status_));
+  }
+  QWidget::changeEvent(event);
+}
+
 void ParameterPanel::RefreshValues() {
   for (const auto& [key, row] : rows_) RefreshRow(key);
 }
@@ -134,12 +146,13 @@ void ParameterPanel::RefreshRow(const std::string& key) {
 void ParameterPanel::OnValueEdited(const std::string& key, const OptionValue& value) {
   const Status status = options_.Set(key, value, "parameter panel");
   if (!status.ok()) {
-    ShowMessage(QString::fromStdString(status.ToString()), true);
+    ShowStatus(status);
     RefreshRow(key);  // Back to the value the set holds.
     return;
   }
   RefreshRow(key);
   message_->hide();
+  message_status_.clear();
   emit OptionsChanged(options_);
 }
 
@@ -159,7 +172,7 @@ void ParameterPanel::ResetAll() {
 Status ParameterPanel::LoadProfile(const QString& path) {
   Status status = options_.LoadYaml(path.toStdString());  // All or nothing.
   if (!status.ok()) {
-    ShowMessage(QString::fromStdString(status.ToString()), true);
+    ShowStatus(status);
     return status;
   }
   RefreshValues();
@@ -172,7 +185,7 @@ Status ParameterPanel::SaveProfile(const QString& path) {
   Status status = (profile_exclusion_.empty() ? options_ : options_.Without(profile_exclusion_))
                       .SaveYaml(path.toStdString());
   if (!status.ok()) {
-    ShowMessage(QString::fromStdString(status.ToString()), true);
+    ShowStatus(status);
   } else {
     ShowMessage(tr("Saved profile %1").arg(QDir::toNativeSeparators(path)), false);
   }
@@ -222,7 +235,13 @@ QString ParameterPanel::message() const {
   return message_->isHidden() ? QString() : message_->text();
 }
 
+void ParameterPanel::ShowStatus(const Status& status) {
+  ShowMessage(CoreMessage(status.ToString()), true);
+  message_status_ = status.ToString();
+}
+
 void ParameterPanel::ShowMessage(const QString& text, bool error) {
+  message_status_.clear();
   message_->setText(text);
   message_->setStyleSheet(error ? QStringLiteral("color: #d03030;") : QString());
   message_->show();

@@ -73,6 +73,7 @@ class ParameterPanel : public QWidget {
 
   std::string profile_exclusion_;
 
+  void changeEvent(QEvent* event) override;  // Retranslates the rows' tool tips.
   void Rebuild();
   void RefreshValues();
   void RefreshRow(const std::string& key);
@@ -81,6 +82,8 @@ class ParameterPanel : public QWidget {
   void OnLoadClicked();
   void OnSaveClicked();
   void ShowMessage(const QString& text, bool error);
+  // Shows a core error in the user's language (widgets/core_message.h), again after a switch.
+  void ShowStatus(const Status& status);
 
   OptionSet options_;
   std::map<std::string, Row> rows_;
@@ -88,6 +91,7 @@ class ParameterPanel : public QWidget {
   QWidget* content_ = nullptr;
   QLineEdit* filter_ = nullptr;
   QLabel* message_ = nullptr;
+  std::string message_status_;  // The core's English text of the error shown, if one is.
   QString last_dir_;
 };
 

@@ -9,8 +9,10 @@
 #include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QFormLayout>
 #include <QGroupBox>
 #include <QHash>
 #include <QLabel>
@@ -22,8 +24,10 @@
 #include <QSet>
 #include <QSettings>
 #include <QTabBar>
+#include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <algorithm>
+#include <map>
 #include <vector>
 
 #include "app/sightline/builtin_presenters.h"
@@ -31,10 +35,16 @@
 #include "app/sightline/core_texts.h"
 #include "app/sightline/language.h"
 #include "app/sightline/main_window.h"
+#include "app/sightline/option_texts.h"
+#include "app/sightline/view_options.h"
+#include "core/pipeline/pipeline_registry.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/translations/ts_text.h"
+#include "widgets/core_message.h"
 #include "widgets/image_view.h"
 #include "widgets/operator_panel.h"
+#include "widgets/option_editor.h"
+#include "widgets/parameter_panel.h"
 
 namespace sightline {
 namespace {
@@ -119,6 +129,56 @@ TEST(CoreTexts, EverySensorDescriptionTheGuiShowsIsMarkedForTranslation) {
   }
 }
 
+// Every option description the parameters dock can show -> one key declaring it: the window's
+// view options, what each presenter declares and what each registry pipeline declares.
+std::map<std::string, std::string> DeclaredOptionDescriptions() {
+  std::map<std::string, std::string> declared;
+  auto add = [&declared](const OptionSet& options) {
+    for (const OptionSpec& spec : options.specs()) declared.emplace(spec.description, spec.key);
+  };
+  OptionSet view;
+  EXPECT_TRUE(view.Declare(ViewOptions::Describe()).ok());
+  add(view);
+  for (PipelinePresenter* presenter : MakeBuiltinPresenters()) {
+    OptionSet options;
+    const Status status = presenter->DeclareOptions(&options);
+    EXPECT_TRUE(status.ok()) << presenter->TitleSource() << ": " << status.ToString();
+    add(options);
+    delete presenter;
+  }
+  const PipelineRegistry registry = BuiltinPipelines();
+  for (const PipelineInfo& pipeline : registry.pipelines()) {
+    if (!pipeline.declare_options) continue;
+    OptionSet options;
+    EXPECT_TRUE(pipeline.declare_options(&options).ok()) << pipeline.name;
+    add(options);
+  }
+  return declared;
+}
+
+TEST(OptionTexts, EveryOptionDescriptionTheGuiShowsIsMarkedForTranslation) {
+  const std::vector<std::string> known = KnownOptionTexts();
+  const std::map<std::string, std::string> declared = DeclaredOptionDescriptions();
+  ASSERT_GT(declared.size(), 300u) << "too few options found to judge the list";
+  EXPECT_TRUE(std::is_sorted(known.begin(), known.end()));
+  for (const auto& [description, key] : declared) {
+    EXPECT_FALSE(description.empty()) << "option " << key << " has no description";
+    if (description.empty()) continue;
+    EXPECT_TRUE(std::binary_search(known.begin(), known.end(), description))
+        << "\"" << description << "\" (option " << key
+        << ") is not in app/sightline/option_texts.cpp: the parameters dock would show it in "
+           "English. Run `cmake --build build --target update_option_texts`, then "
+           "update_translations, and translate the new entries";
+  }
+  for (const std::string& text : known) {
+    EXPECT_TRUE(declared.count(text))
+        << "\"" << text << "\" in app/sightline/option_texts.cpp describes no option any more: "
+        << "run `cmake --build build --target update_option_texts`";
+  }
+  std::printf("%zu option descriptions, %zu marked for translation\n", declared.size(),
+              known.size());
+}
+
 // Every text a user can read in `root` and below: labels, buttons, group and dock titles, tabs,
 // table headers, placeholders, and every menu of a menu bar with its entries.
 void CollectTexts(QWidget* root, QStringList* texts) {
@@ -184,6 +244,7 @@ class LanguageSwitch : public ::testing::Test {
     for (PipelinePresenter* presenter : MakeBuiltinPresenters()) {
       if (auto* p = qobject_cast<ButtonPickerPresenter*>(presenter)) picker_ = p;
       window_->AddPipeline(presenter);
+      presenters_.push_back(presenter);
     }
     ASSERT_NE(picker_, nullptr);
     window_->show();
@@ -230,8 +291,43 @@ class LanguageSwitch : public ::testing::Test {
     window_->grab().save(dir + "/window-" + code + ".png");
   }
 
+  // The rows of the parameters dock whose tool tips (the row's name and its input) do not begin
+  // with the option's description in `code`, or lack the translated "Default:" line (whose value
+  // may be empty, as the tool tip's trailing space is trimmed).
+  QStringList UntranslatedParameterRows(const QString& code, int* checked) {
+    auto* panel = window_->findChild<ParameterPanel*>();
+    EXPECT_NE(panel, nullptr);
+    if (panel == nullptr) return {};
+    const QString default_line = TranslationOf(code, "sightline::OptionEditor", "Default: %1%2")
+                                     .section('%', 0, 0)
+                                     .trimmed();
+    EXPECT_FALSE(default_line.isEmpty());
+    QStringList wrong;
+    for (const OptionSpec& spec : panel->options().specs()) {
+      OptionEditor* editor = panel->EditorFor(spec.key);
+      auto* form = editor ? qobject_cast<QFormLayout*>(editor->parentWidget()->layout()) : nullptr;
+      QWidget* label = form ? form->labelForField(editor) : nullptr;
+      if (label == nullptr) {
+        wrong << QString::fromStdString(spec.key) + " (no row)";
+        continue;
+      }
+      const QString description =
+          TranslationOf(code, "sightline::OptionText", QString::fromStdString(spec.description));
+      for (const QString& tip : {label->toolTip(), editor->input()->toolTip()}) {
+        ++*checked;
+        if (description.isEmpty() || !tip.startsWith(description + '\n') ||
+            !tip.contains('\n' + default_line)) {
+          wrong << QStringLiteral("%1: \"%2\"").arg(QString::fromStdString(spec.key), tip);
+        }
+      }
+    }
+    wrong.removeDuplicates();
+    return wrong;
+  }
+
   std::unique_ptr<MainWindow> window_;
   ButtonPickerPresenter* picker_ = nullptr;
+  std::vector<PipelinePresenter*> presenters_;
 };
 
 TEST_F(LanguageSwitch, EveryLanguageInTurnLeavesNoTextOfAnotherOneAndIsSaved) {
@@ -267,6 +363,122 @@ TEST_F(LanguageSwitch, OperatorPanelSpeaksTheNewLanguageAtOnce) {
   SwitchAndFindForeignTexts("es", &checked);
   EXPECT_EQ(picker_->panel()->stop_button()->text(), "PARAR");
   EXPECT_EQ(picker_->panel()->start_button()->text(), "Empezar de nuevo");
+}
+
+TEST_F(LanguageSwitch, ParametersDockDescribesEveryOptionInTheNewLanguage) {
+  for (const QString code : {"it", "es", "de"}) {
+    int texts = 0;
+    SwitchAndFindForeignTexts(code, &texts);
+    // The rows built in the previous language follow the switch...
+    int checked = 0;
+    QStringList wrong = UntranslatedParameterRows(code, &checked);
+    EXPECT_GT(checked, 4) << code.toStdString();
+    EXPECT_TRUE(wrong.isEmpty()) << "after switching to " << code.toStdString() << ", "
+                                 << wrong.size()
+                                 << " rows not in it: " << wrong.join(", ").toStdString();
+    // ...and every pipeline's rows are built in it.
+    for (PipelinePresenter* presenter : presenters_) {
+      ASSERT_TRUE(window_->ActivatePipeline(presenter->Title())) << presenter->TitleSource();
+      QApplication::processEvents();
+      wrong = UntranslatedParameterRows(code, &checked);
+      EXPECT_TRUE(wrong.isEmpty())
+          << presenter->TitleSource() << " in " << code.toStdString() << ": " << wrong.size()
+          << " rows not in it: " << wrong.join(", ").toStdString();
+    }
+    EXPECT_GT(checked, 600) << "too few option rows found in " << code.toStdString();
+  }
+}
+
+// A profile the parameters dock cannot load: what the core says (in English, with the file and
+// field) and the template CoreMessage must know it by, with its filled-in parts.
+struct BadProfile {
+  const char* yaml;  // nullptr: the file is missing.
+  const char* code;
+  const char* message;
+  QStringList parts;
+};
+
+QString Fill(QString text, const QStringList& parts) {
+  for (const QString& part : parts) text = text.arg(part);
+  return text;
+}
+
+TEST(CoreMessages, ProfileAndValueErrorsOfTheCoreReadInTheChosenLanguage) {
+  const std::vector<BadProfile> profiles = {
+      {"view:\n  cloud_stride: 0\n",
+       "invalid argument",
+       "option '%1': %2 is outside %3",
+       {"view.cloud_stride", "0", "[1, 16] px"}},
+      {"view:\n  cloud_stride: many\n",
+       "invalid argument",
+       "option '%1': '%2' is not an integer",
+       {"view.cloud_stride", "many"}},
+      {"view:\n  max_depth_m: far\n",
+       "invalid argument",
+       "option '%1': '%2' is not a number",
+       {"view.max_depth_m", "far"}},
+      {"view:\n  bogus: 1\n", "not found", "unknown option '%1'", {"view.bogus"}},
+      {"- 1\n- 2\n", "parse error", "a profile must be a map of option keys", {}},
+      {"view:\n  max_depth_m: [1, 2]\n",
+       "parse error",
+       "option '%1' must be a single value, not a list",
+       {"view.max_depth_m"}},
+      {"view:\n  cloud_stride: 2\nview.cloud_stride: 3\n",
+       "parse error",
+       "option '%1' is given twice (also line %2)",
+       {"view.cloud_stride", "2"}},
+      {nullptr, "not found", "no such file", {}},
+  };
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  OptionSet options;
+  ASSERT_TRUE(options.Declare(ViewOptions::Describe()).ok());
+  ParameterPanel panel;
+  panel.SetOptions(options);
+  for (size_t i = 0; i < profiles.size(); ++i) {
+    const BadProfile& bad = profiles[i];
+    const QString path = dir.filePath(QStringLiteral("bad%1.yaml").arg(i));
+    if (bad.yaml != nullptr) {
+      QFile file(path);
+      ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+      file.write(bad.yaml);
+    }
+    OptionSet copy = options;
+    const std::string english = copy.LoadYaml(path.toStdString()).ToString();
+    const QString english_message = Fill(bad.message, bad.parts);
+    // The template is the core's wording, and English stays as the core wrote it.
+    ASSERT_TRUE(CoreMessageTemplates().contains(bad.message)) << bad.message;
+    EXPECT_TRUE(QString::fromStdString(english).startsWith(QString(bad.code) + ": ")) << english;
+    EXPECT_TRUE(QString::fromStdString(english).endsWith(english_message))
+        << english << " does not end in \"" << english_message.toStdString() << "\"";
+    SwitchLanguage("en", qApp);
+    EXPECT_EQ(CoreMessage(english), QString::fromStdString(english));
+    for (const QString code : {"it", "es", "de"}) {
+      SwitchLanguage(code, qApp);
+      const QString translated = CoreMessage(english);
+      const QString expected_code = TranslationOf(code, "sightline::CoreMessage", bad.code);
+      const QString expected_message =
+          Fill(TranslationOf(code, "sightline::CoreMessage", bad.message), bad.parts);
+      const std::string where =
+          code.toStdString() + ": " + english + " -> " + translated.toStdString();
+      EXPECT_FALSE(expected_code.isEmpty() || expected_message.isEmpty()) << where;
+      EXPECT_TRUE(translated.startsWith(expected_code + ": ")) << where;
+      EXPECT_TRUE(translated.endsWith(expected_message)) << where;
+      EXPECT_TRUE(translated.contains(QDir::toNativeSeparators(path).section('/', -1)))
+          << where << ": the file's name is kept";
+      EXPECT_NE(translated, QString::fromStdString(english)) << where;
+      // The dock shows it so.
+      EXPECT_FALSE(panel.LoadProfile(path).ok());
+      EXPECT_EQ(panel.message(), translated) << where;
+    }
+    // The message shown follows a switch of language (from German).
+    SwitchLanguage("it", qApp);
+    QApplication::processEvents();
+    EXPECT_EQ(panel.message(), CoreMessage(english));
+    EXPECT_TRUE(panel.message().startsWith(TranslationOf("it", "sightline::CoreMessage", bad.code)))
+        << panel.message().toStdString();
+  }
+  SwitchLanguage("en", qApp);
 }
 
 TEST(LanguageChoice, SystemLanguageIsTheDefaultAndUnknownCodesAreRefused) {
