@@ -128,6 +128,9 @@ bool MonoTrackingOptions::IsValid(std::string* error) const {
   if (reloc_min_matches < 6 || reloc_min_inliers < 6) {
     return Invalid(error, "mono.tracking.reloc_min_matches and reloc_min_inliers must be >= 6");
   }
+  if (!(low_rate_interval_s > 0)) {
+    return Invalid(error, "mono.tracking.low_rate_interval_s must be > 0");
+  }
   if (fallback_inliers < 0) return Invalid(error, "mono.tracking.fallback_inliers must be >= 0");
   if (!(unsure_radius_px > 0)) return Invalid(error, "mono.tracking.unsure_radius_px must be > 0");
   return true;
@@ -161,9 +164,13 @@ OptionTable<MonoTrackingOptions> MonoTrackingOptions::Describe() {
            "Descriptor matches with a keyframe needed to try relocalisation.")
       .Int("reloc_min_inliers", &O::reloc_min_inliers, "points", 6, 10000, 1,
            "Inliers needed to accept a relocalisation.")
+      .Double("low_rate_interval_s", &O::low_rate_interval_s, "s", 0.001, 1000, 0.05,
+              "Frames at least this far apart are a low-rate (keyframe-rate) sequence: the "
+              "zero-motion try below and the urgent keyframes of mono.mapping apply.")
       .Int("fallback_inliers", &O::fallback_inliers, "points", 0, 10000, 1,
-           "When the constant-velocity prediction tracks fewer inliers, the last pose (zero "
-           "motion) is tried too and the better kept (low frame rates; 0 = off).")
+           "At low rates, when the constant-velocity prediction tracks fewer inliers (at any "
+           "rate, when it is lost), the last pose (zero motion) is tried too and the better "
+           "kept (0 = off).")
       .Double("unsure_radius_px", &O::unsure_radius_px, "px", 1, 2000, 1,
               "Coarse search window of the zero-motion try.");
 }
@@ -209,12 +216,13 @@ OptionTable<MonoMappingOptions> MonoMappingOptions::Describe() {
       .Int("min_keyframe_gap", &O::min_keyframe_gap, "frames", 1, 1000, 1,
            "Frames between two keyframes at least (see urgent_keyframe_ratio).")
       .Double("urgent_keyframe_ratio", &O::urgent_keyframe_ratio, "", 0, 1, 0.05,
-              "A frame tracking fewer than this share of the last keyframe's points becomes a "
-              "keyframe within min_keyframe_gap too (low frame rates; 0 = off).")
+              "At low rates (mono.tracking.low_rate_interval_s), a frame tracking fewer than "
+              "this share of the last keyframe's points becomes a keyframe within "
+              "min_keyframe_gap too (0 = off).")
       .Double("urgent_keyframe_distance", &O::urgent_keyframe_distance, "x mean depth", 0.001, 100,
               0.01,
-              "A frame this far from every keyframe (relative to the mean depth) becomes a "
-              "keyframe within min_keyframe_gap too (low frame rates).")
+              "At low rates, a frame this far from every keyframe (relative to the mean depth) "
+              "becomes a keyframe within min_keyframe_gap too.")
       .Double("keyframe_distance", &O::keyframe_distance, "x mean depth", 0.001, 10, 0.01,
               "A frame this far from every keyframe (relative to the mean depth) becomes one.")
       .Double("keyframe_match_ratio", &O::keyframe_match_ratio, "", 0.05, 1, 0.05,

@@ -58,10 +58,13 @@ struct MonoTrackingOptions {
   double min_found_fraction = 0.1;   // Lost when fewer of the predicted points are found.
   int reloc_min_matches = 15;        // Descriptor matches with a keyframe to try PnP.
   int reloc_min_inliers = 30;        // Inliers to accept a relocalisation.
-  // Low frame rates: when the constant-velocity prediction tracks fewer than fallback_inliers,
-  // the last pose is tried too (zero motion) with the unsure window, and the better one kept.
-  int fallback_inliers = 60;      // Below this many inliers the zero-motion pose is tried.
-  double unsure_radius_px = 120;  // Coarse window of the zero-motion try [px].
+  // Low frame rates (frames at least low_rate_interval_s apart; the keyframe rules in
+  // mono.mapping.urgent_* too): when the constant-velocity prediction tracks fewer than
+  // fallback_inliers (at any rate: when it is lost), the last pose is tried too (zero motion)
+  // with the unsure window, and the better one kept.
+  double low_rate_interval_s = 0.2;  // Frames this far apart are a low-rate sequence [s].
+  int fallback_inliers = 60;         // Below this many inliers the zero-motion pose is tried.
+  double unsure_radius_px = 120;     // Coarse window of the zero-motion try [px].
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoTrackingOptions> Describe();
@@ -69,9 +72,10 @@ struct MonoTrackingOptions {
 
 // Keyframes and mapping. Keys "mono.mapping.*".
 struct MonoMappingOptions {
-  int min_keyframe_gap = 3;               // Frames between keyframes at least ...
-  double urgent_keyframe_ratio = 0.5;     // ... unless tracking fewer than this x the last KF's
-  double urgent_keyframe_distance = 0.1;  // ... or this far (x mean depth) from every KF.
+  int min_keyframe_gap = 3;  // Frames between keyframes at least ...
+  // Low frame rates (mono.tracking.low_rate_interval_s) do not wait for the gap when tracking
+  double urgent_keyframe_ratio = 0.5;     // ... fewer than this x the last keyframe's points
+  double urgent_keyframe_distance = 0.1;  // ... or this far (x mean depth) from every keyframe.
   double keyframe_distance = 0.04;        // New keyframe when this far (x mean depth) from all ...
   double keyframe_match_ratio =
       0.7;                           // ... or when tracking fewer than this x the last KF's points.

@@ -124,6 +124,7 @@ void MonoSlam::Reset() {
   lost_ = false;
   frames_since_keyframe_ = keyframe_inliers_ = lost_frames_ = relocalisations_ = 0;
   frames_processed_ = 0;
+  low_rate_ = false;
   mapping_busy_ = false;
   if (configured_) StartMappingThread();
 }
@@ -277,7 +278,9 @@ TrackOutcome MonoSlam::TrackFrame(const FrameFeatures& features, MonoFrameStats*
   const std::shared_ptr<const std::vector<LocalPoint>> points = LocalPoints();
   TrackOutcome outcome = tracker_->Track(features, *points, velocity_ * camera_from_map_);
   const bool moving = !velocity_.isApprox(Eigen::Isometry3d::Identity());
-  if (moving && outcome.inliers < options_.tracking.fallback_inliers) {
+  const bool few = low_rate_ ? outcome.inliers < options_.tracking.fallback_inliers
+                             : tracker_->QualityOf(outcome) == TrackingQuality::kLost;
+  if (moving && few && options_.tracking.fallback_inliers > 0) {
     // At low frame rates the motion between frames is not constant: try the last pose too.
     TrackOutcome still =
         tracker_->Track(features, *points, camera_from_map_, options_.tracking.unsure_radius_px);
@@ -305,8 +308,10 @@ bool MonoSlam::NeedKeyFrame(const TrackOutcome& outcome) const {
     nearest = std::min(nearest, (k.map_from_camera.translation() - centre).norm());
   }
   // Low frame rates: a large step or a large loss of points does not wait for the gap.
-  if (outcome.inliers < o.urgent_keyframe_ratio * keyframe_inliers_) return true;
-  if (nearest > o.urgent_keyframe_distance * outcome.mean_depth) return true;
+  if (low_rate_ && (outcome.inliers < o.urgent_keyframe_ratio * keyframe_inliers_ ||
+                    nearest > o.urgent_keyframe_distance * outcome.mean_depth)) {
+    return true;
+  }
   if (frames_since_keyframe_ < o.min_keyframe_gap) return false;
   if (outcome.inliers < o.keyframe_match_ratio * keyframe_inliers_) return true;
   return nearest > o.keyframe_distance * outcome.mean_depth;
@@ -355,6 +360,10 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
 
   std::shared_ptr<KeyFrame> new_keyframe;
   ++frames_processed_;
+  if (frames_processed_ > 1) {
+    low_rate_ = frame.stamp.sensor_time_s - last_time_s_ >= options_.tracking.low_rate_interval_s;
+  }
+  last_time_s_ = frame.stamp.sensor_time_s;
   if (!initialised_) {
     result->tracked = TryInitialise(features, frame.stamp, &stats);
     result->quality = result->tracked ? TrackingQuality::kGood : TrackingQuality::kInitialising;

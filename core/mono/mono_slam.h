@@ -129,6 +129,8 @@ class MonoSlam {
   std::string init_model_;
   FrameStamp first_stamp_;
   int64_t frames_processed_ = 0;  // Frames given to Process since Reset (for the velocity).
+  double last_time_s_ = 0;        // The previous frame's sensor time.
+  bool low_rate_ = false;         // This frame is low_rate_interval_s or more after the last.
   Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d velocity_ = Eigen::Isometry3d::Identity();  // current_from_previous.
   bool lost_ = false;
