@@ -168,9 +168,8 @@ OptionTable<MonoTrackingOptions> MonoTrackingOptions::Describe() {
               "Frames at least this far apart are a low-rate (keyframe-rate) sequence: the "
               "zero-motion try below and the urgent keyframes of mono.mapping apply.")
       .Int("fallback_inliers", &O::fallback_inliers, "points", 0, 10000, 1,
-           "At low rates, when the constant-velocity prediction tracks fewer inliers (at any "
-           "rate, when it is lost), the last pose (zero motion) is tried too and the better "
-           "kept (0 = off).")
+           "At low rates, when the constant-velocity prediction tracks fewer inliers, the last "
+           "pose (zero motion) is tried too and the better kept (0 = off).")
       .Double("unsure_radius_px", &O::unsure_radius_px, "px", 1, 2000, 1,
               "Coarse search window of the zero-motion try.");
 }

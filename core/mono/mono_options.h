@@ -60,8 +60,8 @@ struct MonoTrackingOptions {
   int reloc_min_inliers = 30;        // Inliers to accept a relocalisation.
   // Low frame rates (frames at least low_rate_interval_s apart; the keyframe rules in
   // mono.mapping.urgent_* too): when the constant-velocity prediction tracks fewer than
-  // fallback_inliers (at any rate: when it is lost), the last pose is tried too (zero motion)
-  // with the unsure window, and the better one kept.
+  // fallback_inliers, the last pose is tried too (zero motion) with the unsure window, and the
+  // better one kept.
   double low_rate_interval_s = 0.2;  // Frames this far apart are a low-rate sequence [s].
   int fallback_inliers = 60;         // Below this many inliers the zero-motion pose is tried.
   double unsure_radius_px = 120;     // Coarse window of the zero-motion try [px].

@@ -278,9 +278,7 @@ TrackOutcome MonoSlam::TrackFrame(const FrameFeatures& features, MonoFrameStats*
   const std::shared_ptr<const std::vector<LocalPoint>> points = LocalPoints();
   TrackOutcome outcome = tracker_->Track(features, *points, velocity_ * camera_from_map_);
   const bool moving = !velocity_.isApprox(Eigen::Isometry3d::Identity());
-  const bool few = low_rate_ ? outcome.inliers < options_.tracking.fallback_inliers
-                             : tracker_->QualityOf(outcome) == TrackingQuality::kLost;
-  if (moving && few && options_.tracking.fallback_inliers > 0) {
+  if (low_rate_ && moving && outcome.inliers < options_.tracking.fallback_inliers) {
     // At low frame rates the motion between frames is not constant: try the last pose too.
     TrackOutcome still =
         tracker_->Track(features, *points, camera_from_map_, options_.tracking.unsure_radius_px);
