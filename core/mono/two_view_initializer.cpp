@@ -200,6 +200,29 @@ Candidate Evaluate(const PinholeCamera& camera, const cv::Mat& R, const cv::Mat&
   return c;
 }
 
+// The accepted initialisation of `best` (unit baseline) scaled to `baseline` map units, with
+// its median parallax and baseline / median depth.
+TwoViewResult ResultOf(const Candidate& best, const std::vector<std::pair<int, int>>& matches,
+                       double baseline) {
+  TwoViewResult result;
+  result.second_from_first = best.second_from_first;
+  result.second_from_first.translation() *= baseline;  // Unit length before.
+  std::vector<double> parallax;
+  const Eigen::Vector3d centre_b = best.second_from_first.inverse().translation();
+  for (size_t k = 0; k < best.accepted.size(); ++k) {
+    result.matches.push_back(matches[best.accepted[k]]);
+    result.points.push_back(best.points[k] * baseline);
+    parallax.push_back(ParallaxDeg(best.points[k], Eigen::Vector3d::Zero(), centre_b));
+  }
+  std::nth_element(parallax.begin(), parallax.begin() + parallax.size() / 2, parallax.end());
+  result.median_parallax_deg = parallax[parallax.size() / 2];
+  std::vector<double> depths;
+  for (const Eigen::Vector3d& x : best.points) depths.push_back(x.z());
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  result.baseline_ratio = 1.0 / depths[depths.size() / 2];  // The baseline has unit length here.
+  return result;
+}
+
 }  // namespace
 
 std::optional<TwoViewResult> TwoViewInitializer::TryPair(const FrameFeatures& first,
@@ -274,27 +297,11 @@ std::optional<TwoViewResult> TwoViewInitializer::TryPair(const FrameFeatures& fi
       candidates[1].accepted.size() > 0.75 * candidates[0].accepted.size()) {
     return fail("two motions explain the matches equally well; keep moving");
   }
-  const Candidate& best = candidates[0];
-  TwoViewResult result;
+  TwoViewResult result = ResultOf(candidates[0], matches, options_.baseline);
   result.model = use_h ? "homography" : "essential";
   result.guided = guided;
   result.homography_inliers = nh;
   result.essential_inliers = ne;
-  result.second_from_first = best.second_from_first;
-  result.second_from_first.translation() *= options_.baseline;  // Unit length before.
-  std::vector<double> parallax;
-  const Eigen::Vector3d centre_b = best.second_from_first.inverse().translation();
-  for (size_t k = 0; k < best.accepted.size(); ++k) {
-    result.matches.push_back(matches[best.accepted[k]]);
-    result.points.push_back(best.points[k] * options_.baseline);
-    parallax.push_back(ParallaxDeg(best.points[k], Eigen::Vector3d::Zero(), centre_b));
-  }
-  std::nth_element(parallax.begin(), parallax.begin() + parallax.size() / 2, parallax.end());
-  result.median_parallax_deg = parallax[parallax.size() / 2];
-  std::vector<double> depths;
-  for (const Eigen::Vector3d& x : best.points) depths.push_back(x.z());
-  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
-  result.baseline_ratio = 1.0 / depths[depths.size() / 2];  // The baseline has unit length here.
   if (result.baseline_ratio < options_.min_baseline_ratio) {
     return fail("baseline still short (" + std::to_string(result.baseline_ratio) +
                 " of the median depth); keep moving sideways");
