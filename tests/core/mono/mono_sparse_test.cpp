@@ -8,6 +8,8 @@
 #include <iostream>
 #include <map>
 
+#include "core/mono/features.h"
+#include "core/mono/two_view_initializer.h"
 #include "core/pipeline/mono_slam_pipeline.h"
 #include "core/sim/simulator.h"
 #include "tests/core/mono/mono_test_util.h"
@@ -94,6 +96,40 @@ TEST(MonoSparse, OrbitEveryTwentiethFrameInitialisesAtOnceAndTracksThrough) {
   EXPECT_GE(f.init_frame, 0);
   EXPECT_GE(f.tracked_fraction, 0.9);
   EXPECT_LT(f.ate_pct_of_path, 0.5);
+}
+
+TEST(MonoSparse, InitialisationTriesEveryCandidateFirstFrameOldestFirst) {
+  // Candidates: the orbit's first frame, then an unrelated view (the panel) as the newest. The
+  // orbit 7.5 deg on initialises against the oldest; a ring of one has only the panel left.
+  StatusOr<testing::PanelSequence> orbit = RenderOrbit(15);
+  ASSERT_TRUE(orbit.ok()) << orbit.status().ToString();
+  StatusOr<testing::PanelSequence> panel = testing::RenderPanel(1);
+  ASSERT_TRUE(panel.ok()) << panel.status().ToString();
+  MonoSlamOptions options;
+  const FeatureExtractor extractor(options.features, orbit->camera);
+  const FrameFeatures first = extractor.Extract(orbit->frames[0].image);
+  const FrameFeatures other = extractor.Extract(panel->frames[0].image);
+  const FrameFeatures current = extractor.Extract(orbit->frames[1].image);
+  FrameStamp other_stamp;
+  other_stamp.sequence_id = 1000;
+  for (int ring : {2, 1}) {
+    SCOPED_TRACE("ring of " + std::to_string(ring));
+    options.init.reference_frames = ring;
+    TwoViewInitializer init(options.init, orbit->camera, options.features.scale_factor);
+    init.SetFirst(first, orbit->frames[0].stamp, 0);
+    init.AddReference(other, other_stamp, 1);
+    std::string why;
+    std::optional<TwoViewResult> result = init.TryInitialize(current, &why);
+    EXPECT_LT(init.newest_matches(), options.init.min_matches);  // The panel matches nothing.
+    if (ring == 2) {
+      ASSERT_TRUE(result) << why;
+      EXPECT_EQ(init.reference().stamp.sequence_id, 0);
+      EXPECT_GT(result->points.size(), 200u);
+    } else {
+      EXPECT_FALSE(result);
+      EXPECT_NE(why.find("matches with the first frame"), std::string::npos) << why;
+    }
+  }
 }
 
 TEST(MonoSparse, KittiEveryThirdFrameTracksWithinTwoPercent) {
