@@ -50,6 +50,17 @@ bool MonoInitOptions::IsValid(std::string* error) const {
   if (min_points < 8) return Invalid(error, "mono.init.min_points must be >= 8");
   if (!(baseline > 0)) return Invalid(error, "mono.init.baseline must be > 0");
   if (max_frames < 1) return Invalid(error, "mono.init.max_frames must be >= 1");
+  if (reference_frames < 1 || reference_frames > 16) {
+    return Invalid(error, "mono.init.reference_frames must lie in [1, 16]");
+  }
+  if (new_reference_matches < 0) {
+    return Invalid(error, "mono.init.new_reference_matches must be >= 0");
+  }
+  if (min_seed_matches < 8) return Invalid(error, "mono.init.min_seed_matches must be >= 8");
+  if (!(guided_epipolar_px > 0)) return Invalid(error, "mono.init.guided_epipolar_px must be > 0");
+  if (!(guided_ratio > 0 && guided_ratio <= 1)) {
+    return Invalid(error, "mono.init.guided_ratio must lie in (0, 1]");
+  }
   return true;
 }
 
@@ -77,7 +88,20 @@ OptionTable<MonoInitOptions> MonoInitOptions::Describe() {
       .Double("baseline", &O::baseline, "map units", 1e-3, 1000, 0.01,
               "Length of the first baseline in map units (PTAM: 0.1); metric scale comes later.")
       .Int("max_frames", &O::max_frames, "frames", 1, 10000, 1,
-           "Frames tried against one first frame before it is replaced.");
+           "Frames tried against one first frame before it is replaced.")
+      .Int("reference_frames", &O::reference_frames, "frames", 1, 16, 1,
+           "Candidate first frames kept (a ring of recent frames); each new frame is tried "
+           "against every one, oldest first (the largest baseline).")
+      .Int("new_reference_matches", &O::new_reference_matches, "matches", 0, 10000, 10,
+           "A frame with fewer matches than this with the newest candidate becomes a candidate "
+           "too (the oldest leaves a full ring); at low frame rates every frame does.")
+      .Int("min_seed_matches", &O::min_seed_matches, "matches", 8, 10000, 1,
+           "With fewer than min_matches but this many matches, an essential matrix from them "
+           "guides a second matching along epipolar lines (large motion).")
+      .Double("guided_epipolar_px", &O::guided_epipolar_px, "px", 0.1, 50, 0.1,
+              "Guided matching: distance from the epipolar line a match may have.")
+      .Double("guided_ratio", &O::guided_ratio, "", 0.05, 1, 0.05,
+              "Guided matching: best over second-best descriptor distance along the line.");
 }
 
 bool MonoTrackingOptions::IsValid(std::string* error) const {
@@ -104,6 +128,11 @@ bool MonoTrackingOptions::IsValid(std::string* error) const {
   if (reloc_min_matches < 6 || reloc_min_inliers < 6) {
     return Invalid(error, "mono.tracking.reloc_min_matches and reloc_min_inliers must be >= 6");
   }
+  if (!(low_rate_interval_s > 0)) {
+    return Invalid(error, "mono.tracking.low_rate_interval_s must be > 0");
+  }
+  if (fallback_inliers < 0) return Invalid(error, "mono.tracking.fallback_inliers must be >= 0");
+  if (!(unsure_radius_px > 0)) return Invalid(error, "mono.tracking.unsure_radius_px must be > 0");
   return true;
 }
 
@@ -134,11 +163,25 @@ OptionTable<MonoTrackingOptions> MonoTrackingOptions::Describe() {
       .Int("reloc_min_matches", &O::reloc_min_matches, "matches", 6, 10000, 1,
            "Descriptor matches with a keyframe needed to try relocalisation.")
       .Int("reloc_min_inliers", &O::reloc_min_inliers, "points", 6, 10000, 1,
-           "Inliers needed to accept a relocalisation.");
+           "Inliers needed to accept a relocalisation.")
+      .Double("low_rate_interval_s", &O::low_rate_interval_s, "s", 0.001, 1000, 0.05,
+              "Frames at least this far apart are a low-rate (keyframe-rate) sequence: the "
+              "zero-motion try below and the urgent keyframes of mono.mapping apply.")
+      .Int("fallback_inliers", &O::fallback_inliers, "points", 0, 10000, 1,
+           "At low rates, when the constant-velocity prediction tracks fewer inliers, the last "
+           "pose (zero motion) is tried too and the better kept (0 = off).")
+      .Double("unsure_radius_px", &O::unsure_radius_px, "px", 1, 2000, 1,
+              "Coarse search window of the zero-motion try.");
 }
 
 bool MonoMappingOptions::IsValid(std::string* error) const {
   if (min_keyframe_gap < 1) return Invalid(error, "mono.mapping.min_keyframe_gap must be >= 1");
+  if (!(urgent_keyframe_ratio >= 0 && urgent_keyframe_ratio <= 1)) {
+    return Invalid(error, "mono.mapping.urgent_keyframe_ratio must lie in [0, 1]");
+  }
+  if (!(urgent_keyframe_distance > 0)) {
+    return Invalid(error, "mono.mapping.urgent_keyframe_distance must be > 0");
+  }
   if (!(keyframe_distance > 0)) return Invalid(error, "mono.mapping.keyframe_distance must be > 0");
   if (!(keyframe_match_ratio > 0 && keyframe_match_ratio <= 1)) {
     return Invalid(error, "mono.mapping.keyframe_match_ratio must lie in (0, 1]");
@@ -170,7 +213,15 @@ OptionTable<MonoMappingOptions> MonoMappingOptions::Describe() {
   using O = MonoMappingOptions;
   return OptionTable<O>("mapping")
       .Int("min_keyframe_gap", &O::min_keyframe_gap, "frames", 1, 1000, 1,
-           "Frames between two keyframes at least.")
+           "Frames between two keyframes at least (see urgent_keyframe_ratio).")
+      .Double("urgent_keyframe_ratio", &O::urgent_keyframe_ratio, "", 0, 1, 0.05,
+              "At low rates (mono.tracking.low_rate_interval_s), a frame tracking fewer than "
+              "this share of the last keyframe's points becomes a keyframe within "
+              "min_keyframe_gap too (0 = off).")
+      .Double("urgent_keyframe_distance", &O::urgent_keyframe_distance, "x mean depth", 0.001, 100,
+              0.01,
+              "At low rates, a frame this far from every keyframe (relative to the mean depth) "
+              "becomes a keyframe within min_keyframe_gap too.")
       .Double("keyframe_distance", &O::keyframe_distance, "x mean depth", 0.001, 10, 0.01,
               "A frame this far from every keyframe (relative to the mean depth) becomes one.")
       .Double("keyframe_match_ratio", &O::keyframe_match_ratio, "", 0.05, 1, 0.05,

@@ -33,6 +33,12 @@ struct MonoInitOptions {
   int min_points = 60;                  // Triangulated points needed to accept [points].
   double baseline = 0.1;                // Length of the first baseline in map units (PTAM).
   int max_frames = 60;                  // Frames to try against one first frame before restarting.
+  // Sparse, large-motion input (keyframe-rate sequences):
+  int reference_frames = 4;         // Ring of candidate first frames tried, oldest first.
+  int new_reference_matches = 100;  // A frame matching the newest candidate less joins the ring.
+  int min_seed_matches = 20;  // Fewer matches than min_matches but this many: guided matching.
+  double guided_epipolar_px = 2.0;  // Guided matching: distance from the epipolar line [px].
+  double guided_ratio = 0.9;        // Guided matching: best / second-best descriptor distance.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoInitOptions> Describe();
@@ -52,6 +58,13 @@ struct MonoTrackingOptions {
   double min_found_fraction = 0.1;   // Lost when fewer of the predicted points are found.
   int reloc_min_matches = 15;        // Descriptor matches with a keyframe to try PnP.
   int reloc_min_inliers = 30;        // Inliers to accept a relocalisation.
+  // Low frame rates (frames at least low_rate_interval_s apart; the keyframe rules in
+  // mono.mapping.urgent_* too): when the constant-velocity prediction tracks fewer than
+  // fallback_inliers, the last pose is tried too (zero motion) with the unsure window, and the
+  // better one kept.
+  double low_rate_interval_s = 0.2;  // Frames this far apart are a low-rate sequence [s].
+  int fallback_inliers = 60;         // Below this many inliers the zero-motion pose is tried.
+  double unsure_radius_px = 120;     // Coarse window of the zero-motion try [px].
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoTrackingOptions> Describe();
@@ -59,8 +72,11 @@ struct MonoTrackingOptions {
 
 // Keyframes and mapping. Keys "mono.mapping.*".
 struct MonoMappingOptions {
-  int min_keyframe_gap = 3;         // Frames between keyframes at least.
-  double keyframe_distance = 0.04;  // New keyframe when this far (x mean depth) from all ...
+  int min_keyframe_gap = 3;  // Frames between keyframes at least ...
+  // Low frame rates (mono.tracking.low_rate_interval_s) do not wait for the gap when tracking
+  double urgent_keyframe_ratio = 0.5;     // ... fewer than this x the last keyframe's points
+  double urgent_keyframe_distance = 0.1;  // ... or this far (x mean depth) from every keyframe.
+  double keyframe_distance = 0.04;        // New keyframe when this far (x mean depth) from all ...
   double keyframe_match_ratio =
       0.7;                           // ... or when tracking fewer than this x the last KF's points.
   int neighbours = 3;                // Keyframes to triangulate new points with.

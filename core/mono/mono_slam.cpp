@@ -123,6 +123,8 @@ void MonoSlam::Reset() {
   camera_from_map_ = velocity_ = Eigen::Isometry3d::Identity();
   lost_ = false;
   frames_since_keyframe_ = keyframe_inliers_ = lost_frames_ = relocalisations_ = 0;
+  frames_processed_ = 0;
+  low_rate_ = false;
   mapping_busy_ = false;
   if (configured_) StartMappingThread();
 }
@@ -178,10 +180,10 @@ std::vector<LocalPoint> MonoSlam::LocalPointsOf() const {
 
 bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& stamp,
                              MonoFrameStats* stats) {
-  if (!initializer_->has_first() || initializer_->frames_tried() >= options_.init.max_frames) {
-    if (static_cast<int>(features.size()) >= options_.init.min_matches) {
-      initializer_->SetFirst(features);
-      first_stamp_ = stamp;
+  const bool enough = static_cast<int>(features.size()) >= options_.init.min_matches;
+  if (!initializer_->has_first()) {
+    if (enough) {
+      initializer_->SetFirst(features, stamp, frames_processed_);
       stats->status = "initialising: first frame taken; move the camera sideways";
     } else {
       stats->status = "initialising: too few features (" + std::to_string(features.size()) + ")";
@@ -192,14 +194,16 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
   std::optional<TwoViewResult> result = initializer_->TryInitialize(features, &why);
   if (!result) {
     stats->status = "initialising: " + why;
-    // A first frame that no longer matches anything (the view changed) is replaced.
-    if (why.find("matches with the first frame") != std::string::npos &&
-        static_cast<int>(features.size()) >= options_.init.min_matches) {
-      initializer_->SetFirst(features);
-      first_stamp_ = stamp;
+    // A frame the newest candidate no longer matches well (the view changed, or the frame
+    // rate is low) becomes a candidate too; so does one after max_frames tries.
+    if (enough && (initializer_->newest_matches() < options_.init.new_reference_matches ||
+                   initializer_->frames_tried() >= options_.init.max_frames)) {
+      initializer_->AddReference(features, stamp, frames_processed_);
     }
     return false;
   }
+  first_stamp_ = initializer_->reference().stamp;
+  const int64_t first_number = initializer_->reference().number;
   auto first = std::make_shared<KeyFrame>();
   first->features = initializer_->first();
   first->frame_index = first_stamp_.sequence_id;
@@ -228,8 +232,9 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
   initialised_ = true;
   init_model_ = result->model;
   camera_from_map_ = second->camera_from_map;
-  // Constant-velocity start: the initial motion spread over the frames it took.
-  const double frames = std::max<int64_t>(1, stamp.sequence_id - first_stamp_.sequence_id);
+  // Constant-velocity start: the initial motion spread over the frames it took (frames given
+  // to Process, so that a subsampled sequence predicts a whole step).
+  const double frames = std::max<int64_t>(1, frames_processed_ - first_number);
   const Eigen::AngleAxisd aa(camera_from_map_.rotation());
   velocity_ = Eigen::Isometry3d::Identity();
   velocity_.linear() = Eigen::AngleAxisd(aa.angle() / frames, aa.axis()).toRotationMatrix();
@@ -237,12 +242,13 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
   frames_since_keyframe_ = 0;
   keyframe_inliers_ = static_cast<int>(result->points.size());
   PublishSnapshot();
-  char text[160];
+  char text[192];
   std::snprintf(text, sizeof(text),
-                "initialised (%s, %zu points, median parallax %.1f deg, baseline %.3f of depth, "
+                "initialised (%s%s, %zu points, median parallax %.1f deg, baseline %.3f of depth, "
                 "inliers H %d E %d)",
-                result->model.c_str(), result->points.size(), result->median_parallax_deg,
-                result->baseline_ratio, result->homography_inliers, result->essential_inliers);
+                result->model.c_str(), result->guided ? " guided" : "", result->points.size(),
+                result->median_parallax_deg, result->baseline_ratio, result->homography_inliers,
+                result->essential_inliers);
   stats->status = text;
   return true;
 }
@@ -268,17 +274,45 @@ bool MonoSlam::TryRelocalise(const FrameFeatures& features, TrackOutcome* outcom
   return false;
 }
 
+TrackOutcome MonoSlam::TrackFrame(const FrameFeatures& features, MonoFrameStats* stats) {
+  const std::shared_ptr<const std::vector<LocalPoint>> points = LocalPoints();
+  TrackOutcome outcome = tracker_->Track(features, *points, velocity_ * camera_from_map_);
+  const bool moving = !velocity_.isApprox(Eigen::Isometry3d::Identity());
+  if (low_rate_ && moving && outcome.inliers < options_.tracking.fallback_inliers) {
+    // At low frame rates the motion between frames is not constant: try the last pose too.
+    TrackOutcome still =
+        tracker_->Track(features, *points, camera_from_map_, options_.tracking.unsure_radius_px);
+    if (still.inliers > outcome.inliers) outcome = std::move(still);
+  }
+  if (tracker_->QualityOf(outcome) == TrackingQuality::kLost) {
+    TrackOutcome relocalised;
+    if (TryRelocalise(features, &relocalised)) {
+      outcome = std::move(relocalised);
+      stats->relocalised = true;
+      ++relocalisations_;
+      velocity_ = Eigen::Isometry3d::Identity();
+    }
+  }
+  return outcome;
+}
+
 bool MonoSlam::NeedKeyFrame(const TrackOutcome& outcome) const {
   if (mapping_paused_ || mapping_busy_) return false;
-  if (frames_since_keyframe_ < options_.mapping.min_keyframe_gap) return false;
-  if (outcome.inliers < options_.mapping.keyframe_match_ratio * keyframe_inliers_) return true;
+  const MonoMappingOptions& o = options_.mapping;
   const Eigen::Vector3d centre = camera_from_map_.inverse().translation();
   double nearest = 1e300;
   // The published keyframes: the one in the mapper's hands is excluded by mapping_busy_ above.
   for (const MapSnapshot::Frame& k : Snapshot()->keyframes) {
     nearest = std::min(nearest, (k.map_from_camera.translation() - centre).norm());
   }
-  return nearest > options_.mapping.keyframe_distance * outcome.mean_depth;
+  // Low frame rates: a large step or a large loss of points does not wait for the gap.
+  if (low_rate_ && (outcome.inliers < o.urgent_keyframe_ratio * keyframe_inliers_ ||
+                    nearest > o.urgent_keyframe_distance * outcome.mean_depth)) {
+    return true;
+  }
+  if (frames_since_keyframe_ < o.min_keyframe_gap) return false;
+  if (outcome.inliers < o.keyframe_match_ratio * keyframe_inliers_) return true;
+  return nearest > o.keyframe_distance * outcome.mean_depth;
 }
 
 void MonoSlam::MapKeyFrame(std::shared_ptr<KeyFrame> keyframe) {
@@ -323,22 +357,17 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
   for (const cv::KeyPoint& k : features.keypoints) result->keypoints.push_back(k.pt);
 
   std::shared_ptr<KeyFrame> new_keyframe;
+  ++frames_processed_;
+  if (frames_processed_ > 1) {
+    low_rate_ = frame.stamp.sensor_time_s - last_time_s_ >= options_.tracking.low_rate_interval_s;
+  }
+  last_time_s_ = frame.stamp.sensor_time_s;
   if (!initialised_) {
     result->tracked = TryInitialise(features, frame.stamp, &stats);
     result->quality = result->tracked ? TrackingQuality::kGood : TrackingQuality::kInitialising;
   } else {
-    TrackOutcome outcome = tracker_->Track(features, *LocalPoints(), velocity_ * camera_from_map_);
-    TrackingQuality quality = tracker_->QualityOf(outcome);
-    if (quality == TrackingQuality::kLost) {
-      TrackOutcome relocalised;
-      if (TryRelocalise(features, &relocalised)) {
-        outcome = std::move(relocalised);
-        quality = tracker_->QualityOf(outcome);
-        stats.relocalised = true;
-        ++relocalisations_;
-        velocity_ = Eigen::Isometry3d::Identity();
-      }
-    }
+    TrackOutcome outcome = TrackFrame(features, &stats);
+    const TrackingQuality quality = tracker_->QualityOf(outcome);
     stats.matches = static_cast<int>(outcome.matches.size());
     stats.predicted = static_cast<int>(outcome.predicted.size());
     stats.inliers = outcome.inliers;

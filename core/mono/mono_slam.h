@@ -86,6 +86,9 @@ class MonoSlam {
   // in synchronous mode); otherwise they wait for the next frame.
   void FlushPointCounts(bool wait);
   bool TryRelocalise(const FrameFeatures& features, TrackOutcome* outcome);
+  // Tracks from the constant-velocity prediction and, when that finds few inliers, from the
+  // last pose with a wide window (low frame rates); then relocalises when lost.
+  TrackOutcome TrackFrame(const FrameFeatures& features, MonoFrameStats* stats);
   bool NeedKeyFrame(const TrackOutcome& outcome) const;
   void HandOver(std::shared_ptr<KeyFrame> keyframe);
   void MapKeyFrame(std::shared_ptr<KeyFrame> keyframe);
@@ -125,6 +128,9 @@ class MonoSlam {
       pending_found_;  // Point ids to count (see FlushPointCounts).
   std::string init_model_;
   FrameStamp first_stamp_;
+  int64_t frames_processed_ = 0;  // Frames given to Process since Reset (for the velocity).
+  double last_time_s_ = 0;        // The previous frame's sensor time.
+  bool low_rate_ = false;         // This frame is low_rate_interval_s or more after the last.
   Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d velocity_ = Eigen::Isometry3d::Identity();  // current_from_previous.
   bool lost_ = false;

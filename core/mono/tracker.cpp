@@ -99,14 +99,17 @@ double Tracker::Optimise(const FrameFeatures& features, const std::vector<LocalP
 }
 
 TrackOutcome Tracker::Track(const FrameFeatures& features, const std::vector<LocalPoint>& points,
-                            const Eigen::Isometry3d& predicted_camera_from_map) const {
+                            const Eigen::Isometry3d& predicted_camera_from_map,
+                            double coarse_radius_px) const {
   TrackOutcome out;
   out.camera_from_map = predicted_camera_from_map;
   if (features.size() == 0 || points.empty()) return out;
   // Coarse pass in the normal window, widened when it finds too little.
+  const double coarse = coarse_radius_px > 0 ? coarse_radius_px : options_.search_radius_px;
   std::vector<PointMatch> matches =
-      SearchByProjection(features, points, out.camera_from_map, options_.search_radius_px, nullptr);
-  if (static_cast<int>(matches.size()) < 2 * options_.min_inliers) {
+      SearchByProjection(features, points, out.camera_from_map, coarse, nullptr);
+  if (static_cast<int>(matches.size()) < 2 * options_.min_inliers &&
+      coarse < options_.wide_radius_px) {
     matches =
         SearchByProjection(features, points, out.camera_from_map, options_.wide_radius_px, nullptr);
   }

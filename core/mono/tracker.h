@@ -43,9 +43,11 @@ class Tracker {
  public:
   Tracker(const MonoTrackingOptions& options, const PinholeCamera& camera, double scale_factor);
 
-  // Tracks `features` against `points` from the predicted pose.
+  // Tracks `features` against `points` from the predicted pose; the coarse pass searches
+  // `coarse_radius_px` (0 = search_radius_px, widened to wide_radius_px when too few are found).
   TrackOutcome Track(const FrameFeatures& features, const std::vector<LocalPoint>& points,
-                     const Eigen::Isometry3d& predicted_camera_from_map) const;
+                     const Eigen::Isometry3d& predicted_camera_from_map,
+                     double coarse_radius_px = 0) const;
 
   // Relocalises against one keyframe and the points it observes (descriptor matches, PnP RANSAC,
   // then Track from that pose). Returns false when too few matches or inliers.

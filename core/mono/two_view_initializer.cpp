@@ -47,10 +47,116 @@ TwoViewInitializer::TwoViewInitializer(const MonoInitOptions& options, const Pin
                                        double scale_factor)
     : options_(options), camera_(camera), scale_factor_(scale_factor) {}
 
-void TwoViewInitializer::SetFirst(FrameFeatures first) {
-  first_ = std::move(first);
-  has_first_ = true;
+void TwoViewInitializer::SetFirst(FrameFeatures first, FrameStamp stamp, int64_t number) {
+  references_.clear();
+  AddReference(std::move(first), stamp, number);
+}
+
+void TwoViewInitializer::AddReference(FrameFeatures features, FrameStamp stamp, int64_t number) {
+  references_.push_back({std::move(features), stamp, number});
+  while (static_cast<int>(references_.size()) > options_.reference_frames) {
+    references_.pop_front();
+  }
+  used_ = 0;
   frames_tried_ = 0;
+  newest_matches_ = 0;
+}
+
+std::vector<std::pair<int, int>> MatchAlongEpipolarLines(const FrameFeatures& a,
+                                                         const FrameFeatures& b,
+                                                         const Eigen::Matrix3d& E,
+                                                         const PinholeCamera& camera, double max_px,
+                                                         int max_distance, double ratio) {
+  std::vector<Eigen::Vector3d> nb;
+  nb.reserve(b.size());
+  for (const Eigen::Vector2d& p : b.pixels) nb.push_back(Normalised(camera, p).homogeneous());
+  const double max_normalised = max_px / std::max(camera.fx, camera.fy);
+  std::vector<int> best_for_b(b.size(), -1), best_distance_b(b.size(), 1 << 30);
+  std::vector<std::pair<int, int>> candidates;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Vector3d line = E * Normalised(camera, a.pixels[i]).homogeneous();
+    const double norm = line.head<2>().norm();
+    if (!(norm > 1e-12)) continue;
+    int best = 1 << 30, second = 1 << 30, best_j = -1;
+    const uint8_t* da = a.descriptors.ptr<uint8_t>(static_cast<int>(i));
+    for (size_t j = 0; j < b.size(); ++j) {
+      if (std::abs(nb[j].dot(line)) > max_normalised * norm) continue;
+      const int d = DescriptorDistance(da, b.descriptors.ptr<uint8_t>(static_cast<int>(j)));
+      if (d < best) {
+        second = best;
+        best = d;
+        best_j = static_cast<int>(j);
+      } else if (d < second) {
+        second = d;
+      }
+    }
+    if (best_j < 0 || best > max_distance || best > ratio * second) continue;
+    candidates.emplace_back(static_cast<int>(i), best_j);
+    if (best < best_distance_b[best_j]) {
+      best_distance_b[best_j] = best;
+      best_for_b[best_j] = static_cast<int>(i);
+    }
+  }
+  std::vector<std::pair<int, int>> out;
+  for (const auto& [i, j] : candidates) {
+    if (best_for_b[j] == i) out.emplace_back(i, j);
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> TwoViewInitializer::Matches(const FrameFeatures& first,
+                                                             const FrameFeatures& current,
+                                                             bool* guided) const {
+  *guided = false;
+  std::vector<std::pair<int, int>> seeds =
+      MatchDescriptors(first.descriptors, current.descriptors, 64, 0.8);
+  const int n = static_cast<int>(seeds.size());
+  if (n >= options_.min_matches || n < options_.min_seed_matches) return seeds;
+  // Large motion: few descriptor matches survive the ratio test over the whole image; an
+  // essential matrix fitted to them restricts the search to epipolar lines.
+  std::vector<cv::Point2f> pa, pb;
+  for (const auto& [i, j] : seeds) {
+    pa.emplace_back(first.pixels[i].x(), first.pixels[i].y());
+    pb.emplace_back(current.pixels[j].x(), current.pixels[j].y());
+  }
+  const cv::Mat K =
+      (cv::Mat_<double>(3, 3) << camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
+  std::vector<uchar> mask;
+  cv::theRNG().state = 0x6e1d;  // Deterministic RANSAC.
+  const cv::Mat E =
+      cv::findEssentialMat(pa, pb, K, cv::RANSAC, 0.999, 2 * options_.ransac_threshold_px, mask);
+  if (E.rows != 3 || E.cols != 3 || cv::countNonZero(mask) < options_.min_seed_matches / 2) {
+    return seeds;
+  }
+  Eigen::Matrix3d e;
+  cv::cv2eigen(E, e);
+  std::vector<std::pair<int, int>> matches = MatchAlongEpipolarLines(
+      first, current, e, camera_, options_.guided_epipolar_px, 64, options_.guided_ratio);
+  if (matches.size() <= seeds.size()) return seeds;
+  *guided = true;
+  return matches;
+}
+
+std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatures& current,
+                                                               std::string* why) {
+  if (references_.empty()) {
+    if (why) *why = "no first frame";
+    return std::nullopt;
+  }
+  ++frames_tried_;
+  std::string reason;
+  for (size_t r = 0; r < references_.size(); ++r) {
+    int matched = 0;
+    std::optional<TwoViewResult> result =
+        TryPair(references_[r].features, current, &reason, &matched);
+    if (r + 1 == references_.size()) newest_matches_ = matched;
+    if (result) {
+      used_ = r;
+      return result;
+    }
+  }
+  if (why) *why = reason;
+  return std::nullopt;
 }
 
 namespace {
@@ -94,27 +200,50 @@ Candidate Evaluate(const PinholeCamera& camera, const cv::Mat& R, const cv::Mat&
   return c;
 }
 
+// The accepted initialisation of `best` (unit baseline) scaled to `baseline` map units, with
+// its median parallax and baseline / median depth.
+TwoViewResult ResultOf(const Candidate& best, const std::vector<std::pair<int, int>>& matches,
+                       double baseline) {
+  TwoViewResult result;
+  result.second_from_first = best.second_from_first;
+  result.second_from_first.translation() *= baseline;  // Unit length before.
+  std::vector<double> parallax;
+  const Eigen::Vector3d centre_b = best.second_from_first.inverse().translation();
+  for (size_t k = 0; k < best.accepted.size(); ++k) {
+    result.matches.push_back(matches[best.accepted[k]]);
+    result.points.push_back(best.points[k] * baseline);
+    parallax.push_back(ParallaxDeg(best.points[k], Eigen::Vector3d::Zero(), centre_b));
+  }
+  std::nth_element(parallax.begin(), parallax.begin() + parallax.size() / 2, parallax.end());
+  result.median_parallax_deg = parallax[parallax.size() / 2];
+  std::vector<double> depths;
+  for (const Eigen::Vector3d& x : best.points) depths.push_back(x.z());
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  result.baseline_ratio = 1.0 / depths[depths.size() / 2];  // The baseline has unit length here.
+  return result;
+}
+
 }  // namespace
 
-std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatures& current,
-                                                               std::string* why) {
+std::optional<TwoViewResult> TwoViewInitializer::TryPair(const FrameFeatures& first,
+                                                         const FrameFeatures& current,
+                                                         std::string* why, int* matched) {
   auto fail = [&](const std::string& m) -> std::optional<TwoViewResult> {
     if (why) *why = m;
     return std::nullopt;
   };
-  if (!has_first_) return fail("no first frame");
-  ++frames_tried_;
-  const std::vector<std::pair<int, int>> matches =
-      MatchDescriptors(first_.descriptors, current.descriptors, 64, 0.8);
+  bool guided = false;
+  const std::vector<std::pair<int, int>> matches = Matches(first, current, &guided);
+  *matched = static_cast<int>(matches.size());
   if (static_cast<int>(matches.size()) < options_.min_matches) {
     return fail(std::to_string(matches.size()) + " matches with the first frame");
   }
   std::vector<cv::Point2f> pa, pb;
   std::vector<double> angles;
   for (const auto& [i, j] : matches) {
-    pa.emplace_back(first_.pixels[i].x(), first_.pixels[i].y());
+    pa.emplace_back(first.pixels[i].x(), first.pixels[i].y());
     pb.emplace_back(current.pixels[j].x(), current.pixels[j].y());
-    const Eigen::Vector3d ra = Normalised(camera_, first_.pixels[i]).homogeneous().normalized();
+    const Eigen::Vector3d ra = Normalised(camera_, first.pixels[i]).homogeneous().normalized();
     const Eigen::Vector3d rb = Normalised(camera_, current.pixels[j]).homogeneous().normalized();
     angles.push_back(std::acos(std::clamp(ra.dot(rb), -1.0, 1.0)) * 180 / M_PI);
   }
@@ -143,7 +272,7 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
     cv::decomposeHomographyMat(H, K, Rs, ts, normals);
     for (size_t s = 0; s < Rs.size(); ++s) {
       if (cv::norm(ts[s]) < 1e-9) continue;  // Pure rotation: no baseline.
-      candidates.push_back(Evaluate(camera_, Rs[s], ts[s], matches, mask_h, first_, current,
+      candidates.push_back(Evaluate(camera_, Rs[s], ts[s], matches, mask_h, first, current,
                                     scale_factor_, options_));
     }
   } else {
@@ -151,7 +280,7 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
     cv::decomposeEssentialMat(E.rowRange(0, 3), R1, R2, t);
     for (const cv::Mat& R : {R1, R2}) {
       for (double sign : {1.0, -1.0}) {
-        candidates.push_back(Evaluate(camera_, R, sign * t, matches, mask_e, first_, current,
+        candidates.push_back(Evaluate(camera_, R, sign * t, matches, mask_e, first, current,
                                       scale_factor_, options_));
       }
     }
@@ -168,26 +297,11 @@ std::optional<TwoViewResult> TwoViewInitializer::TryInitialize(const FrameFeatur
       candidates[1].accepted.size() > 0.75 * candidates[0].accepted.size()) {
     return fail("two motions explain the matches equally well; keep moving");
   }
-  const Candidate& best = candidates[0];
-  TwoViewResult result;
+  TwoViewResult result = ResultOf(candidates[0], matches, options_.baseline);
   result.model = use_h ? "homography" : "essential";
+  result.guided = guided;
   result.homography_inliers = nh;
   result.essential_inliers = ne;
-  result.second_from_first = best.second_from_first;
-  result.second_from_first.translation() *= options_.baseline;  // Unit length before.
-  std::vector<double> parallax;
-  const Eigen::Vector3d centre_b = best.second_from_first.inverse().translation();
-  for (size_t k = 0; k < best.accepted.size(); ++k) {
-    result.matches.push_back(matches[best.accepted[k]]);
-    result.points.push_back(best.points[k] * options_.baseline);
-    parallax.push_back(ParallaxDeg(best.points[k], Eigen::Vector3d::Zero(), centre_b));
-  }
-  std::nth_element(parallax.begin(), parallax.begin() + parallax.size() / 2, parallax.end());
-  result.median_parallax_deg = parallax[parallax.size() / 2];
-  std::vector<double> depths;
-  for (const Eigen::Vector3d& x : best.points) depths.push_back(x.z());
-  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
-  result.baseline_ratio = 1.0 / depths[depths.size() / 2];  // The baseline has unit length here.
   if (result.baseline_ratio < options_.min_baseline_ratio) {
     return fail("baseline still short (" + std::to_string(result.baseline_ratio) +
                 " of the median depth); keep moving sideways");

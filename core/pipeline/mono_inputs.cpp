@@ -15,6 +15,7 @@ bool MonoSlamRunOptions::IsValid(std::string* error) const {
     return false;
   };
   if (max_frames < 0) return fail("max_frames must be >= 0");
+  if (stride < 1) return fail("stride must be >= 1");
   if (metric_source != "auto" && metric_source != "arm" && metric_source != "arm_stream" &&
       metric_source != "ground_truth" && metric_source != "none") {
     return fail("metric_source must be auto, arm, arm_stream, ground_truth or none");
@@ -31,6 +32,9 @@ OptionTable<MonoSlamRunOptions> MonoSlamRunOptions::Describe() {
   using O = MonoSlamRunOptions;
   return OptionTable<O>("mono.run")
       .Int("max_frames", &O::max_frames, "frames", 0, 1e9, 1, "Frames read; 0 = all.")
+      .Int("stride", &O::stride, "frames", 1, 1000, 1,
+           "Process every stride-th frame read, from the first (1 = all): a keyframe-rate "
+           "sequence from a full-rate recording.")
       .Choice("metric_source", &O::metric_source,
               {"auto", "arm", "arm_stream", "ground_truth", "none"},
               "Measured motion for the metric scale: the arm's recorded poses (arm_poses.txt), "

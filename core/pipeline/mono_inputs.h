@@ -23,6 +23,7 @@ namespace sightline {
 // Run-level options of the monocular pipelines. Keys "mono.run.*".
 struct MonoSlamRunOptions {
   int max_frames = 0;                  // Frames read; 0 = all.
+  int stride = 1;                      // Process every stride-th frame read (1 = all).
   std::string metric_source = "auto";  // auto, arm, arm_stream (button), ground_truth, none.
   std::string arm_poses;               // arm_poses.txt; "" = beside the sensor folder.
   std::string hand_eye;                // hand_eye.yaml; "" = beside arm_poses; "none" = identity.

@@ -339,6 +339,7 @@ StatusOr<MonoSlamRun> RunMonoSlam(const std::string& path, const MonoSlamOptions
     StatusOr<std::optional<MonoFrame>> next = NextMonoFrame(source, path);
     if (!next.ok()) return next.status().WithContext("frame " + std::to_string(index));
     if (!*next) break;
+    if (!pipeline.Wants(index)) continue;
     const double start = HostTimeS();
     StatusOr<std::shared_ptr<const PipelineResult>> result = pipeline.Process(Frame(**next));
     if (!result.ok()) return result.status();

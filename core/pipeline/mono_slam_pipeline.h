@@ -89,6 +89,7 @@ class MonoSlamPipeline : public Pipeline {
   // The metric source the next Open uses (the button pipeline resolves auto per source).
   void SetMetricSource(const std::string& source) { run_.metric_source = source; }
   int64_t FrameLimit() const override { return run_.max_frames; }
+  bool Wants(int64_t index) const override { return index % run_.stride == 0; }
   StatusOr<std::shared_ptr<const PipelineResult>> Process(const Frame& frame) override;
   // The typed result of Process.
   StatusOr<std::shared_ptr<const MonoSlamFrameResult>> ProcessMono(const Frame& frame);

@@ -53,6 +53,36 @@ Eigen::Isometry3d EndEffectorFromCamera(const ArmOptions& arm) {
   return t;
 }
 
+// The handheld camera circling motion.orbit_center_*, looking at its target point, wobbling.
+void PlanOrbit(const MotionOptions& motion, uint64_t seed, MotionPlan* plan) {
+  std::mt19937 engine = MakeEngine(DeriveSeed(seed, 0x0B17));
+  Wobble x(engine), y(engine), z(engine), yaw(engine), pitch(engine), roll(engine);
+  plan->body_from_camera.linear() = BodyFromOptical(0);
+  const Eigen::Vector3d target(motion.orbit_center_x_m, motion.orbit_center_y_m,
+                               motion.orbit_target_z_m);
+  const double a = motion.shake_m, r = motion.shake_deg * kDeg;
+  for (double t : plan->times_s) {
+    const double angle = motion.orbit_deg_per_s * kDeg * t;
+    const Eigen::Vector3d centre =
+        Eigen::Vector3d(target.x() + motion.orbit_radius_m * std::cos(angle),
+                        target.y() + motion.orbit_radius_m * std::sin(angle),
+                        motion.camera_height_m) +
+        a * Eigen::Vector3d(x.At(t), y.At(t), z.At(t));
+    // Body x towards the target, z as close to up as that allows (REP-103).
+    const Eigen::Vector3d forward = (target - centre).normalized();
+    const Eigen::Vector3d left = Eigen::Vector3d::UnitZ().cross(forward).normalized();
+    Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+    body.linear().col(0) = forward;
+    body.linear().col(1) = left;
+    body.linear().col(2) = forward.cross(left);
+    body.translation() = centre;
+    body.rotate(Eigen::AngleAxisd(r * yaw.At(t), Eigen::Vector3d::UnitZ()) *
+                Eigen::AngleAxisd(r * pitch.At(t), Eigen::Vector3d::UnitY()) *
+                Eigen::AngleAxisd(r * roll.At(t), Eigen::Vector3d::UnitX()));
+    plan->world_from_body.push_back(body);
+  }
+}
+
 }  // namespace
 
 bool MotionOptions::IsValid(std::string* error) const {
@@ -60,9 +90,9 @@ bool MotionOptions::IsValid(std::string* error) const {
     if (error) *error = "sim.motion." + m;
     return false;
   };
-  if (kind != "auto" && kind != "robot" && kind != "handheld" && kind != "arm" &&
+  if (kind != "auto" && kind != "robot" && kind != "handheld" && kind != "orbit" && kind != "arm" &&
       kind != "static") {
-    return fail("kind = '" + kind + "': must be auto, robot, handheld, arm or static");
+    return fail("kind = '" + kind + "': must be auto, robot, handheld, orbit, arm or static");
   }
   if (!(speed_mps >= 0 && speed_mps <= 5)) return fail("speed_mps must lie in [0, 5] m/s");
   if (!(turn_radius_m >= 0 && turn_radius_m <= 5))
@@ -76,14 +106,25 @@ bool MotionOptions::IsValid(std::string* error) const {
   if (!(std::abs(camera_forward_m) <= 1)) return fail("camera_forward_m must lie in [-1, 1] m");
   if (!(shake_m >= 0 && shake_m <= 0.5)) return fail("shake_m must lie in [0, 0.5] m");
   if (!(shake_deg >= 0 && shake_deg <= 30)) return fail("shake_deg must lie in [0, 30] deg");
+  if (!(std::abs(orbit_center_x_m) <= 100 && std::abs(orbit_center_y_m) <= 100)) {
+    return fail("orbit_center_x_m and orbit_center_y_m must lie in [-100, 100] m");
+  }
+  if (!(orbit_target_z_m >= -1 && orbit_target_z_m <= 3)) {
+    return fail("orbit_target_z_m must lie in [-1, 3] m");
+  }
+  if (!(orbit_radius_m >= 0.2 && orbit_radius_m <= 20)) {
+    return fail("orbit_radius_m must lie in [0.2, 20] m");
+  }
+  if (!(std::abs(orbit_deg_per_s) <= 180)) return fail("orbit_deg_per_s must lie in [-180, 180]");
   return true;
 }
 
 OptionTable<MotionOptions> MotionOptions::Describe() {
   using O = MotionOptions;
   return OptionTable<O>("motion")
-      .Choice("kind", &O::kind, {"auto", "robot", "handheld", "arm", "static"},
-              "Sensor carrier: auto picks arm for the panel, robot for routes.")
+      .Choice("kind", &O::kind, {"auto", "robot", "handheld", "orbit", "arm", "static"},
+              "Sensor carrier: auto picks arm for the panel, robot for routes; orbit circles "
+              "a point with a handheld camera.")
       .Double("speed_mps", &O::speed_mps, "m/s", 0, 5, 0.05, "Speed along the route.")
       .Double("turn_radius_m", &O::turn_radius_m, "m", 0, 5, 0.05,
               "Radius of the route's 90 deg turns (0 = turn on the spot is not allowed; use a "
@@ -95,7 +136,17 @@ OptionTable<MotionOptions> MotionOptions::Describe() {
       .Double("camera_forward_m", &O::camera_forward_m, "m", -1, 1, 0.01,
               "Robot: optical centre ahead of the base centre.")
       .Double("shake_m", &O::shake_m, "m", 0, 0.5, 0.005, "Handheld: positional wobble.")
-      .Double("shake_deg", &O::shake_deg, "deg", 0, 30, 0.5, "Handheld: angular wobble.");
+      .Double("shake_deg", &O::shake_deg, "deg", 0, 30, 0.5, "Handheld: angular wobble.")
+      .Double("orbit_center_x_m", &O::orbit_center_x_m, "m", -100, 100, 0.1,
+              "Orbit: map x of the centre of the circle.")
+      .Double("orbit_center_y_m", &O::orbit_center_y_m, "m", -100, 100, 0.1,
+              "Orbit: map y of the centre of the circle.")
+      .Double("orbit_target_z_m", &O::orbit_target_z_m, "m", -1, 3, 0.05,
+              "Orbit: height of the point the camera looks at (above the centre).")
+      .Double("orbit_radius_m", &O::orbit_radius_m, "m", 0.2, 20, 0.1,
+              "Orbit: radius of the circle (the camera at camera_height_m).")
+      .Double("orbit_deg_per_s", &O::orbit_deg_per_s, "deg/s", -180, 180, 1,
+              "Orbit: angular speed around the centre; 15 deg/s at 2 fps is 7.5 deg per frame.");
 }
 
 bool ArmOptions::IsValid(std::string* error) const {
@@ -178,6 +229,10 @@ StatusOr<MotionPlan> PlanMotion(const Scene& scene, const MotionOptions& motion,
     plan.body_from_camera.linear() = BodyFromOptical(tilt);
     plan.body_from_camera.translation() = Eigen::Vector3d(0, 0, motion.camera_height_m);
     plan.world_from_body.assign(frames, Eigen::Isometry3d::Identity());
+    return plan;
+  }
+  if (plan.kind == "orbit") {
+    PlanOrbit(motion, seed, &plan);
     return plan;
   }
   if (plan.kind == "handheld") {

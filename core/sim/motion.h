@@ -1,5 +1,5 @@
-// How the sensors move: a robot driving the scene's route, a handheld camera, or an arm
-// approaching a button. Poses are sampled once per frame.
+// How the sensors move: a robot driving the scene's route, a handheld camera (along the route or
+// circling a point), or an arm approaching a button. Poses are sampled once per frame.
 //
 // Frames: body frames follow REP-103 (x forward, y left, z up); a robot base sits on the floor
 // (z = 0) under its sensors. Cameras use the optical frame (z forward, x right, y down).
@@ -18,7 +18,7 @@ namespace sightline::sim {
 
 // The motion of the sensor carrier.
 struct MotionOptions {
-  std::string kind = "auto";      // "auto" (from the scene), "robot", "handheld", "arm", "static".
+  std::string kind = "auto";      // "auto" (from the scene), robot, handheld, orbit, arm, static.
   double speed_mps = 0.5;         // Robot / walking speed along the route, m/s.
   double turn_radius_m = 0.6;     // Radius of the route's turns, metres.
   double camera_height_m = 0.8;   // Robot: optical centre above the floor; handheld: mean height.
@@ -26,6 +26,13 @@ struct MotionOptions {
   double camera_forward_m = 0.1;  // Robot: optical centre ahead of the base centre, metres.
   double shake_m = 0.03;          // Handheld: amplitude of the positional wobble, metres.
   double shake_deg = 2.0;         // Handheld: amplitude of the angular wobble, degrees.
+  // Orbit: a handheld camera circling a point on the floor plan at camera_height_m, looking at
+  // it, with the handheld wobble. Defaults circle the terrain's step, ramp and rough patch.
+  double orbit_center_x_m = 1.9;   // Centre of the circle (map x), metres.
+  double orbit_center_y_m = -0.1;  // Centre of the circle (map y), metres.
+  double orbit_target_z_m = 0.1;   // Height of the point looked at, metres.
+  double orbit_radius_m = 1.5;     // Radius of the circle, metres.
+  double orbit_deg_per_s = 15.0;   // Angular speed around the centre (counter-clockwise), deg/s.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MotionOptions> Describe();

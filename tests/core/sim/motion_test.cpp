@@ -62,6 +62,37 @@ TEST(Motion, HandheldWobblesAroundTheRouteAndIsSeeded) {
   EXPECT_FALSE(a->world_from_body[45].isApprox(c->world_from_body[45]));
 }
 
+TEST(Motion, OrbitCirclesTheCentreLookingAtTheTarget) {
+  MotionOptions motion;
+  motion.kind = "orbit";
+  motion.orbit_center_x_m = 2;
+  motion.orbit_center_y_m = -1;
+  motion.orbit_target_z_m = 0.2;
+  motion.orbit_radius_m = 1.5;
+  motion.orbit_deg_per_s = 15;
+  motion.camera_height_m = 1.0;
+  motion.shake_m = 0;
+  motion.shake_deg = 0;
+  // 12 s at 2 fps: 180 deg around the centre. The scene needs no route.
+  auto plan = PlanMotion(Scene("empty"), motion, ArmOptions(), 25, 2, 1);
+  ASSERT_TRUE(plan.ok()) << plan.status().ToString();
+  EXPECT_EQ(plan->kind, "orbit");
+  const Eigen::Vector3d target(2, -1, 0.2);
+  for (int i : {0, 12, 24}) {
+    const Eigen::Isometry3d camera = plan->WorldFromCamera(i);
+    const Eigen::Vector3d c = camera.translation();
+    EXPECT_NEAR(std::hypot(c.x() - 2, c.y() + 1), 1.5, 1e-9);
+    EXPECT_NEAR(c.z(), 1.0, 1e-9);
+    EXPECT_NEAR(camera.linear().col(2).dot((target - c).normalized()), 1.0, 1e-9);  // Looks at it.
+    EXPECT_LT(camera.linear().col(1).z(), 0);  // Image y points down.
+  }
+  EXPECT_NEAR(plan->WorldFromCamera(0).translation().x(), 3.5, 1e-9);
+  EXPECT_NEAR(plan->WorldFromCamera(12).translation().y(), 0.5, 1e-9);  // 90 deg after 6 s.
+  EXPECT_NEAR(plan->WorldFromCamera(24).translation().x(), 0.5, 1e-9);  // 180 deg.
+  motion.orbit_radius_m = 0.1;
+  EXPECT_FALSE(PlanMotion(Scene("empty"), motion, ArmOptions(), 2, 2, 1).ok());
+}
+
 TEST(Motion, ArmMovesSidewaysFirstThenApproachesTheTarget) {
   auto scene = BuildPanel(PanelOptions(), 1);
   ASSERT_TRUE(scene.ok());
