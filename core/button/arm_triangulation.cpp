@@ -38,6 +38,10 @@ OptionTable<ArmTriangulationOptions> ArmTriangulationOptions::Describe() {
       .Bool("use_size", &O::use_size,
             "Use the apparent size (looming: the radius grows as 1 / depth while the arm moves "
             "forward by a measured distance) besides the rays.")
+      .Bool("anchor_size", &O::anchor_size,
+            "The size from the tap's own keypoints only (ButtonTrack::anchor_scale: the "
+            "keypoints the tracker's refresh adds carry each refresh's scale error on); false: "
+            "the tracked radius.")
       .Double("size_sigma_rel", &O::size_sigma_rel, "", 1e-4, 1, 0.001,
               "1-sigma relative error of the tracked radius.")
       .Double("robust_sigmas", &O::robust_sigmas, "sigmas", 0.1, 100, 0.5,

@@ -25,6 +25,8 @@ struct ArmTriangulationOptions {
   double pixel_sigma_rel = 0.05;  // ... plus this fraction of the tracked radius (the model
                                   // centre's offset grows with the apparent size).
   bool use_size = true;           // Use the apparent size (looming) besides the rays.
+  bool anchor_size = true;        // The size from the tap's own keypoints (no refresh drift;
+                                  // ButtonTrack::anchor_scale), else ButtonTrack::radius_px.
   double size_sigma_rel = 0.01;   // 1-sigma relative error of the tracked size [-].
   double robust_sigmas = 2.0;     // Huber threshold [sigmas].
   int min_views = 8;              // Fewer tracked views: no estimate.
