@@ -113,6 +113,25 @@ TEST(ArmTriangulation, CrossingRaysAloneGiveThePointFromTheSidewaysMove) {
   EXPECT_LT(std::abs((at->in_base - kButton).y()), 0.001);  // Across the rays: sub-mm.
 }
 
+// A tracked centre off by a constant 0.4 px in the image (a detector's sub-pixel convention)
+// tilts the approach's rays against the sideways move's: estimated, it leaves the point.
+TEST(ArmTriangulation, EstimatesAConstantImageOffsetOfTheTrackedCentre) {
+  Noise noise;
+  noise.pixel_px = 0.2;
+  noise.radius_rel = 0.003;
+  std::vector<ArmView> views = Approach(45, 105, noise, 5);
+  for (ArmView& v : views) v.pixel += Eigen::Vector2d(0.4, 0.4);
+  const auto at = TriangulateFromArm(views, testing::VgaCamera(), {});
+  ASSERT_TRUE(at.ok()) << at.status().ToString();
+  EXPECT_LT((at->in_base - kButton).norm(), 0.001);
+  EXPECT_LT((at->pixel_offset_px - Eigen::Vector2d(0.4, 0.4)).norm(), 0.1);
+  ArmTriangulationOptions held;
+  held.pixel_offset = false;
+  const auto off = TriangulateFromArm(views, testing::VgaCamera(), held);
+  ASSERT_TRUE(off.ok()) << off.status().ToString();
+  EXPECT_GT((off->in_base - kButton).norm(), (at->in_base - kButton).norm());
+}
+
 TEST(ArmTriangulation, RobustToMisTrackedViews) {
   Noise noise;
   noise.pixel_px = 0.5;
