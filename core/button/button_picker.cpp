@@ -1,5 +1,6 @@
 #include "core/button/button_picker.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -54,7 +55,7 @@ OptionTable<ButtonUncertaintyOptions> ButtonUncertaintyOptions::Describe() {
 bool ButtonPickerOptions::IsValid(std::string* error) const {
   return detect.IsValid(error) && track.IsValid(error) && locate.IsValid(error) &&
          gate.IsValid(error) && fuse.IsValid(error) && normal.IsValid(error) &&
-         uncertainty.IsValid(error);
+         uncertainty.IsValid(error) && triangulate.IsValid(error);
 }
 
 OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
@@ -66,7 +67,8 @@ OptionTable<ButtonPickerOptions> ButtonPickerOptions::Describe() {
       .Nested(&O::gate, SafetyGateOptions::Describe())
       .Nested(&O::fuse, ButtonFuseOptions::Describe())
       .Nested(&O::normal, PanelNormalOptions::Describe())
-      .Nested(&O::uncertainty, ButtonUncertaintyOptions::Describe());
+      .Nested(&O::uncertainty, ButtonUncertaintyOptions::Describe())
+      .Nested(&O::triangulate, ArmTriangulationOptions::Describe());
 }
 
 const char* PickerStateKey(PickerState state) {
@@ -105,6 +107,7 @@ Status ButtonPicker::Tap(const cv::Mat& still, cv::Point2d tap, int64_t frame_id
   button_in_world_.reset();
   fused_.clear();
   panel_normal_.Reset();
+  arm_views_.clear();
   state_ = PickerState::kConfirm;
   return Status::Ok();
 }
@@ -121,6 +124,7 @@ void ButtonPicker::Cancel() {
   button_in_world_.reset();
   fused_.clear();
   panel_normal_.Reset();
+  arm_views_.clear();
   if (!stopped_) state_ = PickerState::kIdle;
 }
 
@@ -214,6 +218,32 @@ void ButtonPicker::UpdateApproach(const SlamView& slam, const ButtonLocation& at
       std::max(sigma_rad * 180.0 / M_PI, options_.normal.stated_min_sigma_deg);
 }
 
+void ButtonPicker::CombineWithArm(const SlamView& slam, const ButtonLocation& at,
+                                  PickerFrame* out) {
+  const ArmTriangulationOptions& o = options_.triangulate;
+  const std::optional<Eigen::Vector3d> prior =
+      out->button_in_base.allFinite() ? std::optional(out->button_in_base) : std::nullopt;
+  StatusOr<ArmTriangulation> arm = TriangulateFromArm(arm_views_, slam.camera, o, prior);
+  if (!arm.ok()) return;
+  out->arm_in_base = arm->in_base;
+  out->arm_sigma_m = arm->SigmaMaxM();
+  if (!o.enabled || !prior) return;
+  // The mount moves both estimates alike: its terms are not averaged away.
+  const double distance = at.button_in_camera.norm();
+  const double hand_eye_rot = HandEyeSigmaRad(slam) * distance;
+  const double hand_eye_t =
+      slam.hand_eye_translation_observable
+          ? std::max(options_.uncertainty.hand_eye_sigma_m, slam.hand_eye_translation_m)
+          : options_.uncertainty.hand_eye_sigma_m;
+  const double mount2 = hand_eye_t * hand_eye_t + hand_eye_rot * hand_eye_rot;
+  const double map2 = std::max(1e-12, out->uncertainty_m * out->uncertainty_m - mount2);
+  const Eigen::Matrix3d arm_info = arm->covariance.inverse();
+  const Eigen::Matrix3d cov = (arm_info + Eigen::Matrix3d::Identity() / map2).inverse();
+  out->button_in_base = cov * (arm_info * arm->in_base + *prior / map2);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  out->uncertainty_m = std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()) + mount2);
+}
+
 PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Mat& image,
                                   const SlamView& slam, const Eigen::Isometry3d& base_from_camera,
                                   double now_s) {
@@ -235,6 +265,14 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
   if (track.ok()) out.track = *track;
   safety.tracking = track.ok() && track->found;
   safety.tracking_confidence = out.track.confidence;
+  if (safety.tracking && slam.tracking && slam.lambda > 0) {  // A metric arm pose.
+    const ButtonTrack& t = out.track;
+    const double radius_px = !options_.triangulate.anchor_size ? t.radius_px
+                             : t.scale > 0 ? t.radius_px / t.scale * t.anchor_scale
+                                           : 0;
+    arm_views_.push_back(
+        ArmView{base_from_camera, Eigen::Vector2d(t.center.x, t.center.y), radius_px});
+  }
   if (safety.tracking && slam.tracking && slam.map_points_in_world) {
     LocatorInput in;
     in.camera = slam.camera;
@@ -258,6 +296,7 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
       safety.has_estimate = true;
       safety.plane_sound = at->plane_sound;
       out.uncertainty_m = TargetUncertainty(slam, *at, out.fused_estimates > 1);
+      if (at->plane_sound && slam.scale_converged) CombineWithArm(slam, *at, &out);
       safety.uncertainty_m = out.uncertainty_m;
       safety.approach_sigma_deg = out.approach_sigma_deg;
       safety.target_in_base = out.button_in_base;

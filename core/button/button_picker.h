@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/button/arm_protocol.h"
+#include "core/button/arm_triangulation.h"
 #include "core/button/button_detector.h"
 #include "core/button/button_locator.h"
 #include "core/button/button_tracker.h"
@@ -59,6 +60,7 @@ struct ButtonPickerOptions {
   ButtonFuseOptions fuse;
   PanelNormalOptions normal;
   ButtonUncertaintyOptions uncertainty;
+  ArmTriangulationOptions triangulate;
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonPickerOptions> Describe();
@@ -129,6 +131,10 @@ class ButtonPicker {
   // Adds this frame's panel normal to the average; sets out->approach_in_base and its sigma.
   void UpdateApproach(const SlamView& slam, const ButtonLocation& at,
                       const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
+  // Triangulates the button from the arm's poses of the tracked frames (out->arm_in_base) and,
+  // with button.triangulate.enabled, combines it with the map's fused position by their
+  // variances (out->button_in_base, out->uncertainty_m; the mount's terms added after).
+  void CombineWithArm(const SlamView& slam, const ButtonLocation& at, PickerFrame* out);
 
   ButtonPickerOptions options_;
   PickerState state_ = PickerState::kIdle;
@@ -141,6 +147,7 @@ class ButtonPicker {
   std::vector<FusedEstimate> fused_;                // Since the tap.
   double fused_spread_m_ = 0;                       // Of the last fusion.
   NormalAverage panel_normal_;                      // Base frame, since the tap (data time).
+  std::vector<ArmView> arm_views_;                  // Tracked frames with an arm pose.
 };
 
 }  // namespace sightline

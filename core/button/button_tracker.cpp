@@ -61,6 +61,7 @@ bool ButtonTrackerOptions::IsValid(std::string* error) const {
   if (!(reacquire_ambiguity > 0 && reacquire_ambiguity <= 1))
     return Invalid(error, "button.track.reacquire_ambiguity must lie in (0, 1]");
   if (!(view_margin_px >= 0)) return Invalid(error, "button.track.view_margin_px must be >= 0");
+  if (anchor_min_matches < 2) return Invalid(error, "button.track.anchor_min_matches must be >= 2");
   return true;
 }
 
@@ -113,7 +114,10 @@ OptionTable<ButtonTrackerOptions> ButtonTrackerOptions::Describe() {
               "Re-acquisition is refused when the other matches support a second similarity "
               "with this fraction of the inliers (another button of a repeated panel).")
       .Double("view_margin_px", &O::view_margin_px, "px", 0, 1000, 1,
-              "A button centre farther than this outside the image is out of view (lost).");
+              "A button centre farther than this outside the image is out of view (lost).")
+      .Int("anchor_min_matches", &O::anchor_min_matches, "matches", 2, 1000, 1,
+           "The size from the tap's own keypoints alone (not the refreshed ones, whose scale "
+           "drifts; the looming in button.triangulate.*) needs this many consistent matches.");
 }
 
 ButtonTracker::ButtonTracker(std::shared_ptr<const ButtonModel> model, ButtonTrackerOptions options)
@@ -149,6 +153,41 @@ void ButtonTracker::Refresh(const std::vector<cv::KeyPoint>& keypoints, const cv
   }
   refresh_scale_ = track.scale;
   RebuildIndex();
+}
+
+double ButtonTracker::AnchorScale(const std::vector<cv::KeyPoint>& keypoints,
+                                  const cv::Mat& descriptors, cv::Point2f offset,
+                                  const ButtonTrack& track) const {
+  const cv::Mat& tap = model_->descriptors;
+  if (keypoints.empty() || tap.rows < options_.anchor_min_matches) return 0;
+  std::vector<std::vector<cv::DMatch>> knn;
+  cv::BFMatcher(cv::NORM_L2).knnMatch(descriptors, tap, knn, 2);
+  const double reach = options_.refresh_radius * track.radius_px + options_.ransac_px;
+  std::vector<int> best(tap.rows, -1);
+  std::vector<float> best_distance(tap.rows, 0);
+  for (const std::vector<cv::DMatch>& m : knn) {
+    if (m.size() < 2 || !(m[0].distance < options_.ratio * m[1].distance)) continue;
+    const cv::Point2f at = keypoints[m[0].queryIdx].pt + offset;
+    if (std::hypot(at.x - track.center.x, at.y - track.center.y) > reach) continue;
+    const int k = m[0].trainIdx;
+    if (best[k] < 0 || m[0].distance < best_distance[k]) {
+      best[k] = m[0].queryIdx;
+      best_distance[k] = m[0].distance;
+    }
+  }
+  std::vector<cv::Point2f> from, to;
+  for (int k = 0; k < tap.rows; ++k) {
+    if (best[k] < 0) continue;
+    from.push_back(model_->keypoints[k].pt);
+    to.push_back(keypoints[best[k]].pt + offset);
+  }
+  if (static_cast<int>(from.size()) < options_.anchor_min_matches) return 0;
+  std::vector<uchar> mask;
+  const cv::Mat s =
+      cv::estimateAffinePartial2D(from, to, mask, cv::RANSAC, options_.ransac_px, 2000, 0.995, 10);
+  if (s.empty()) return 0;
+  if (std::count(mask.begin(), mask.end(), uchar(1)) < options_.anchor_min_matches) return 0;
+  return std::hypot(s.at<double>(0, 0), s.at<double>(1, 0));
 }
 
 cv::Rect ButtonTracker::Window(cv::Size size, const TrackPrediction& p) const {
@@ -319,6 +358,9 @@ StatusOr<ButtonTrack> ButtonTracker::TrackOnce(const cv::Mat& image,
     return track;
   }
   track.radius_px = model_->RadiusPx() * track.scale;
+  if (!similarity.empty()) {
+    track.anchor_scale = AnchorScale(keypoints, descriptors, cv::Point2f(track.window.tl()), track);
+  }
   const double fraction = double(track.inliers) / std::max(1, track.matches);
   const double support = std::min(1.0, double(track.inliers) / (2.0 * options_.min_matches));
   track.confidence = fraction * support;

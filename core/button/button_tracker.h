@@ -54,6 +54,8 @@ struct ButtonTrackerOptions {
   double reacquire_max_scale = 1.6;     // Scale change since the last tracked frame allowed
                                         // at re-acquisition (either way).
   double view_margin_px = 4;            // A centre farther outside the image: not in view.
+  int anchor_min_matches = 6;           // Consistent matches with the tap's own keypoints
+                                        // needed for ButtonTrack::anchor_scale.
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonTrackerOptions> Describe();
@@ -82,9 +84,13 @@ struct ButtonTrack {
   int lost_frames = 0;     // Consecutive lost frames up to this one (0 when found).
   int reacquisitions = 0;  // Times the button was re-acquired since the tap.
   std::string reason;
-  cv::Point2d center;     // Button centre in this frame [px].
-  double scale = 1.0;     // Size relative to the model.
-  double radius_px = 0;   // Apparent button radius [px].
+  cv::Point2d center;    // Button centre in this frame [px].
+  double scale = 1.0;    // Size relative to the model.
+  double radius_px = 0;  // Apparent button radius [px].
+  // The size relative to the model from the tap's own keypoints alone (not those the refresh
+  // added: each refresh carries its frame's scale error on, so `scale` drifts over a long
+  // approach); 0 with fewer than anchor_min_matches of them among the inliers.
+  double anchor_scale = 0;
   double confidence = 0;  // 0..1: inlier count and inlier fraction.
   int keypoints = 0;      // SIFT keypoints found in the window.
   int matches = 0;        // After ratio test and distance gate.
@@ -124,6 +130,11 @@ class ButtonTracker {
   void Refresh(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& descriptors,
                cv::Point2f offset, const ButtonTrack& track, const cv::Mat& model_to_image);
   void RebuildIndex();
+  // The scale of a similarity between the tap's own keypoints alone and this frame's (matched
+  // apart from the refreshed ones, whose near-duplicate descriptors fail the ratio test); 0 with
+  // fewer than anchor_min_matches consistent matches near `track`'s centre.
+  double AnchorScale(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& descriptors,
+                     cv::Point2f offset, const ButtonTrack& track) const;
 
   std::shared_ptr<const ButtonModel> model_;
   ButtonTrackerOptions options_;

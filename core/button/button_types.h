@@ -45,6 +45,10 @@ struct PickerFrame {
   // 1-sigma [deg] (infinite while none is known).
   Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
   double approach_sigma_deg = std::numeric_limits<double>::infinity();
+  // The button triangulated from the arm's poses alone (button.triangulate.*) and its 1-sigma
+  // along its worst axis; NaN while the tracked views do not fix it.
+  Eigen::Vector3d arm_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  double arm_sigma_m = std::nan("");
   GateVerdict verdict;
   std::optional<ArmTarget> target;  // Set when the gate lets it out.
 };

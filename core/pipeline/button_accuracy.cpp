@@ -94,6 +94,10 @@ void AddFinalErrors(const ButtonRunLog& log, const MetricSlamView& metric,
                                 1e3 * (last.target.position_m - truth_in_base).norm());
   result->accuracy.emplace_back("final_error_mm_unfused",
                                 1e3 * (last.unfused_in_base - truth_in_base).norm());
+  if (last.arm_in_base.allFinite()) {  // From the arm's poses alone (button.triangulate.*).
+    result->accuracy.emplace_back("final_error_mm_arm_triangulated",
+                                  1e3 * (last.arm_in_base - truth_in_base).norm());
+  }
   if (metric.lambda_single() <= 0) return;
   const std::optional<Eigen::Vector3d> single =
       RelocatedTarget(log, metric.lambda_single(), camera, picker);

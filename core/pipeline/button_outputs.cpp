@@ -51,6 +51,12 @@ StatusOr<std::vector<TrueButton>> ReadTrueButtons(const std::string& path) {
 
 namespace {
 
+// The tracked radius from the tap's own keypoints; NaN when unknown.
+double AnchorRadiusPx(const ButtonTrack& t) {
+  if (!t.found || !(t.scale > 0) || !(t.anchor_scale > 0)) return std::nan("");
+  return t.radius_px / t.scale * t.anchor_scale;
+}
+
 // The three numbers of "[a, b, c]" after `key` in `text`; nullopt when absent or malformed.
 std::optional<Eigen::Vector3d> YamlVector(const std::string& text, const std::string& key) {
   const size_t at = text.find(key + ": [");
@@ -94,13 +100,15 @@ Status AddTrueButtonNormals(const std::string& scene_yaml, std::vector<TrueButto
 Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& path) {
   std::ofstream out(path);
   if (!out) return Unavailable("cannot write " + path);
+  // anchor_radius_px: the radius from the tap's own keypoints (ButtonTrack::anchor_scale); the
+  // host timings stay the last columns.
   // *_m: metres (empty as nan without a metric scale); *_map_units: the SLAM's map frame,
   // unscaled (metric_scale = 0: tracking only, no arm motion).
   out << "frame,time_s,state,gate,u_px,v_px,radius_px,confidence,cam_x_m,cam_y_m,cam_z_m,"
          "base_x_m,base_y_m,base_z_m,uncertainty_m,plane_sound,target_sent,slam_tracking,"
          "scale_converged,scale_ml,metric_scale,button_x_map_units,button_y_map_units,"
          "button_z_map_units,camera_x_map_units,camera_y_map_units,camera_z_map_units,"
-         "tracking_ms,slam_ms\n";
+         "anchor_radius_px,tracking_ms,slam_ms\n";
   const double nan = std::nan("");
   char line[768];
   for (const ButtonRunRow& r : rows) {
@@ -115,14 +123,15 @@ Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& 
     std::snprintf(line, sizeof(line),
                   "%lld,%.6f,%s,%s,%.2f,%.2f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%d,%d,"
                   "%d,%.6g,%d,"
-                  "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.3f,%.3f\n",
+                  "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.3f,%.3f\n",
                   static_cast<long long>(p.frame_id), p.stamp_s, PickerStateKey(p.state),
                   GateReasonKey(p.verdict.reason), found ? p.track.center.x : nan,
                   found ? p.track.center.y : nan, found ? p.track.radius_px : nan,
                   p.track.confidence, cam.x(), cam.y(), cam.z(), base.x(), base.y(), base.z(),
                   uncertainty, p.location && p.location->plane_sound ? 1 : 0, p.target ? 1 : 0,
                   r.slam_tracking ? 1 : 0, r.scale_converged ? 1 : 0, r.lambda_ml, r.metric ? 1 : 0,
-                  b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), p.tracking_ms, r.slam_ms);
+                  b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), AnchorRadiusPx(p.track), p.tracking_ms,
+                  r.slam_ms);
     out << line;
   }
   out.flush();

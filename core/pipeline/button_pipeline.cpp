@@ -643,6 +643,7 @@ void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t i
   sent.map = r.map;
   sent.base_from_camera = *base;
   if (out->picker.location) sent.unfused_in_base = *base * out->picker.location->button_in_camera;
+  sent.arm_in_base = out->picker.arm_in_base;
   log_.sent.push_back(std::move(sent));
 }
 

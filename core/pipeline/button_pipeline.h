@@ -104,6 +104,7 @@ struct SentTarget {
   std::shared_ptr<const MapSnapshot> map;
   Eigen::Isometry3d base_from_camera = Eigen::Isometry3d::Identity();
   Eigen::Vector3d unfused_in_base = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d arm_in_base = Eigen::Vector3d::Constant(std::nan(""));  // PickerFrame's.
 };
 
 // What the run's figures need besides button.csv.

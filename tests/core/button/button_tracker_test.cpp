@@ -63,6 +63,27 @@ TEST(ButtonTracker, FollowsShiftScaleAndRotation) {
   }
 }
 
+// A long approach (the button grows threefold, the model refreshed on the way): the size from
+// the tap's own keypoints follows the true scale within 1 %.
+TEST(ButtonTracker, AnchorScaleFromTheTapsOwnKeypointsFollowsALongApproach) {
+  const cv::Mat still = TexturedPanel();
+  auto model = ButtonDetector().Detect(still, {322, 236});
+  ASSERT_TRUE(model.ok()) << model.status().ToString();
+  ButtonTracker tracker(*model);
+  int anchored = 0;
+  for (int i = 1; i <= 20; ++i) {
+    const double scale = 1.0 + 0.1 * i;
+    cv::Point2d truth = (*model)->center;
+    const cv::Mat frame = Warp(still, scale, 0.5 * i, cv::Point2d(0, 0), &truth);
+    auto t = tracker.Track(frame, TrackPrediction{true, truth, scale});
+    ASSERT_TRUE(t.ok() && t->found) << "step " << i << ": " << (t.ok() ? t->reason : "");
+    if (t->anchor_scale <= 0) continue;
+    ++anchored;
+    EXPECT_NEAR(t->anchor_scale / scale, 1.0, 0.01) << "step " << i;
+  }
+  EXPECT_GE(anchored, 15);
+}
+
 TEST(ButtonTracker, CentroidRuleIsAvailable) {
   const cv::Mat still = TexturedPanel();
   auto model = ButtonDetector().Detect(still, {320, 240});
