@@ -137,10 +137,11 @@ TEST(ButtonHonesty, HeldOutSeedsStayWithinTheSameBounds) {
 
 // The button triangulated from the arm's poses and combined with the map's position
 // (button.triangulate.enabled; measured 2026-11-26: seeds 1-7 3.54, 3.37, 3.79, 5.86, 1.83,
-// 1.40, 2.97 mm, the worst seed of the default 10.1 mm): within 7 mm on every seed, and its
-// stated uncertainty still covers the true error.
+// 1.40, 2.97 mm, the worst seed of the default 10.1 mm): within 7 mm, and its stated
+// uncertainty still covers the true error, on the seed it helps most (5) and the one it hurts
+// most (4); two seeds keep the test's time within the suite's budget.
 TEST(ButtonHonesty, ArmTriangulationStaysWithinItsMeasuredBoundsAndHonest) {
-  for (int seed : {1, 2, 3, 4, 5, 6, 7}) {
+  for (int seed : {4, 5}) {
     const SeedRun run = RunSeed(seed, "triangulate", {"button.triangulate.enabled=true"});
     Print(seed, "triangulate", run.m);
     ASSERT_GT(run.m.count("targets_sent") ? run.m.at("targets_sent") : 0, 10) << "seed " << seed;
