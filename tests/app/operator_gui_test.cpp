@@ -17,13 +17,16 @@
 #include <QTest>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "app/sightline/button_picker_presenter.h"
 #include "app/sightline/main_window.h"
 #include "app/sightline/playback_controller.h"
 #include "core/button/arm_client.h"
 #include "core/button/arm_server.h"
+#include "core/button/arm_sim_session.h"
 #include "core/pipeline/button_pipeline.h"
+#include "core/pipeline/sim_panel_source.h"
 #include "core/sim/simulate.h"
 #include "tests/support/test_data.h"
 #include "widgets/operator_panel.h"
@@ -324,6 +327,63 @@ TEST_F(OperatorGui, TheSourcesEndSendsTheArmAStopAndRefusesTaps) {
   TapAt({320, 240});
   EXPECT_EQ(panel()->state(), OperatorState::kRefused);
   EXPECT_EQ(panel()->detail_label()->text(), "The recording has ended: nothing to tap");
+}
+
+// The operator loop closed through the GUI, as README's command runs it: the live simulated
+// camera in the arm's hand (sim://panel, seed 4) played by the window, the picker serving with a
+// token, the tap on true button 5 given as button.run.tap, and the simulated arm streaming its
+// pose to the window's server, following the targets and pressing. Outcomes against the scene's
+// truth; no time assertion (a loaded machine only makes it slower).
+TEST_F(OperatorGui, TheLiveLoopThroughTheWindowPressesTheTappedButton) {
+  const std::string uri = "sim://panel?seed=4&fps=4";
+  port_ = FreePort();
+  ASSERT_GT(port_, 0);
+  window_ = std::make_unique<MainWindow>();
+  picker_ = new ButtonPickerPresenter({"button.arm.port=" + std::to_string(port_),
+                                       "button.arm.token=gui-loop", "button.gui.serve=true",
+                                       "button.run.tap=button:5"});
+  window_->AddPipeline(picker_);
+  ASSERT_TRUE(window_->ActivatePipeline(picker_->Title()));
+  window_->show();
+  QSignalSpy opened(window_.get(), &MainWindow::DatasetOpened);
+  window_->OpenPath(QString::fromStdString(uri));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, kWaitMs));
+
+  ArmSimOptions arm_options;  // Slow enough for a SLAM at a few frames per second.
+  arm_options.max_speed_mps = 0.02;
+  arm_options.max_angular_speed_dps = 5;
+  arm_options.max_time_s = 400;
+  StatusOr<ArmSimWorld> world = BuildArmSimWorld(4, arm_options);
+  ASSERT_TRUE(world.ok()) << world.status().ToString();
+  ArmSimulator arm(arm_options, std::move(*world));
+  std::atomic<bool> cancel{false}, done{false};
+  StatusOr<ArmSimSessionResult> result = Unavailable("not run");
+  std::thread arm_thread([&] {
+    for (int attempt = 0; attempt < 300 && !cancel; ++attempt) {
+      result = RunArmSimSession("127.0.0.1", port_, "gui-loop", &arm, &cancel);
+      if (result.ok()) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));  // Not serving yet.
+    }
+    done = true;
+  });
+  window_->playback()->Play();
+  const bool finished = QTest::qWaitFor([&] { return done.load(); }, 600000);
+  cancel = true;
+  arm_thread.join();
+  ASSERT_TRUE(finished) << "the arm did not finish within 10 minutes";
+  ASSERT_TRUE(result.ok()) << result.status().ToString();
+  const ArmSimOutcome& o = result->outcome;
+  std::printf(
+      "GUI loop, seed 4: end %s, nearest button %d, %.2f mm (across %.2f, along %+.2f), "
+      "approach %.2f deg\n",
+      result->end_reason.c_str(), o.nearest_button, o.distance_mm, o.lateral_mm, o.depth_mm,
+      o.approach_error_deg);
+  EXPECT_EQ(result->end_reason, "finished");
+  EXPECT_EQ(o.nearest_button, 5);
+  EXPECT_LT(o.lateral_mm, 9.0);  // On the button's axis (radius 18 mm).
+  EXPECT_LT(o.approach_error_deg, 10.0);
+  EXPECT_GT(arm.counts().count("targets") ? arm.counts().at("targets") : 0, 10);
+  EXPECT_EQ(arm.counts().count("malformed"), 0u);
 }
 
 TEST_F(OperatorGui, OperatorModeIsFullScreenWithLargeButtonsAndAFixedLayout) {
