@@ -15,9 +15,20 @@
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/screenshot_driver.h"
 #include "sightline_version.h"
+#include "widgets/operator_panel.h"
 #include "widgets/vtk_gl_widget.h"
 
 namespace {
+
+// The command line, parsed (Qt's parser exits on --help, --version and unknown options).
+struct Arguments {
+  QString source;  // --open PATH or the positional SOURCE.
+  QString pipeline, profile, screenshot;
+  QStringList assignments;  // --set KEY=VALUE, in order.
+  bool demo = false, operator_mode = false, open_given = false;
+  QString frames, timeout;
+  QString language;  // --lang CODE: this run only; "" = the saved choice or the system's.
+};
 
 // Applies --profile and --set to the active pipeline's options; false (reported) on an error.
 bool ApplyOptionArguments(sightline::MainWindow* window, const QString& profile,
@@ -29,26 +40,49 @@ bool ApplyOptionArguments(sightline::MainWindow* window, const QString& profile,
   return false;
 }
 
+// --screenshot FILE: plays --frames frames, saves the window (or `subject`) and exits. False on bad
+// arguments.
+bool StartScreenshot(sightline::MainWindow* window, const Arguments& args,
+                     QWidget* subject = nullptr) {
+  if (!args.open_given && !args.demo) {
+    std::fprintf(stderr, "sightline: --screenshot needs --open PATH or --demo\n");
+    return false;
+  }
+  bool ok = false;
+  const int frames = args.frames.toInt(&ok);
+  if (!ok || frames < 1) {
+    std::fprintf(stderr, "sightline: --frames must be a positive number\n");
+    return false;
+  }
+  new sightline::ScreenshotDriver(window, args.screenshot, frames, args.timeout.toInt(), subject);
+  return true;
+}
+
 // `sightline --operator [SOURCE]`: the button picker's operator panel alone, full screen, playing
 // SOURCE. Leaving the panel closes the window: every arm client gets a stop line ("quit").
 // `--profile` and `--set` (e.g. button.gui.serve=true) apply to the button picker's options.
+// With --screenshot the panel steps --frames frames instead of playing, and the panel is saved.
 int RunOperatorMode(QApplication* app, sightline::MainWindow* window,
-                    sightline::ButtonPickerPresenter* picker, const QString& source,
-                    const QString& profile, const QStringList& assignments) {
+                    sightline::ButtonPickerPresenter* picker, const Arguments& args) {
   if (picker == nullptr || !window->ActivatePipeline(picker->Title())) {
     std::fprintf(stderr, "sightline: the button picker is not available\n");
     return 2;
   }
-  if (!ApplyOptionArguments(window, profile, assignments)) return 2;
+  if (!ApplyOptionArguments(window, args.profile, args.assignments)) return 2;
   picker->EnterOperatorMode();  // The panel alone; the main window stays hidden.
   QObject::connect(picker, &sightline::ButtonPickerPresenter::OperatorLeft, window, [app, window] {
     window->close();
     app->quit();
   });
-  QObject::connect(
-      window, &sightline::MainWindow::DatasetOpened, window,
-      [window] { window->playback()->Play(); }, Qt::SingleShotConnection);
-  if (!source.isEmpty()) {
+  if (!args.screenshot.isEmpty()) {
+    if (!StartScreenshot(window, args, picker->panel()->window())) return 2;
+  } else {
+    QObject::connect(
+        window, &sightline::MainWindow::DatasetOpened, window,
+        [window] { window->playback()->Play(); }, Qt::SingleShotConnection);
+  }
+  if (!args.source.isEmpty()) {
+    const QString source = args.source;
     QTimer::singleShot(0, window, [window, source] { window->OpenPath(source); });
   }
   return app->exec();
@@ -72,16 +106,6 @@ void StartDemo(sightline::MainWindow* window, sightline::PipelinePresenter* mapp
   if (mapping != nullptr) window->ActivatePipeline(mapping->Title());
   demo->Start();
 }
-
-// The command line, parsed (Qt's parser exits on --help, --version and unknown options).
-struct Arguments {
-  QString source;  // --open PATH or the positional SOURCE.
-  QString pipeline, profile, screenshot;
-  QStringList assignments;  // --set KEY=VALUE, in order.
-  bool demo = false, operator_mode = false, open_given = false;
-  QString frames, timeout;
-  QString language;  // --lang CODE: this run only; "" = the saved choice or the system's.
-};
 
 Arguments ParseArguments(const QApplication& app) {
   QCommandLineParser parser;
@@ -136,22 +160,6 @@ Arguments ParseArguments(const QApplication& app) {
   return args;
 }
 
-// --screenshot FILE: plays --frames frames, saves the window and exits. False on bad arguments.
-bool StartScreenshot(sightline::MainWindow* window, const Arguments& args) {
-  if (!args.open_given && !args.demo) {
-    std::fprintf(stderr, "sightline: --screenshot needs --open PATH or --demo\n");
-    return false;
-  }
-  bool ok = false;
-  const int frames = args.frames.toInt(&ok);
-  if (!ok || frames < 1) {
-    std::fprintf(stderr, "sightline: --frames must be a positive number\n");
-    return false;
-  }
-  new sightline::ScreenshotDriver(window, args.screenshot, frames, args.timeout.toInt());
-  return true;
-}
-
 // --help and --version print without a display: Qt's offscreen platform stands in for X11.
 void AllowHelpWithoutDisplay(int argc, char** argv) {
   if (qEnvironmentVariableIsSet("DISPLAY") || qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
@@ -199,7 +207,7 @@ int main(int argc, char** argv) {
     window.AddPipeline(presenter);
   }
   if (args.operator_mode) {
-    return RunOperatorMode(&app, &window, picker, args.source, args.profile, args.assignments);
+    return RunOperatorMode(&app, &window, picker, args);
   }
   window.show();
   if (!args.pipeline.isEmpty() && !window.ActivatePipelineByWord(args.pipeline)) {

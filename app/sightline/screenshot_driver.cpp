@@ -11,12 +11,19 @@
 namespace sightline {
 
 ScreenshotDriver::ScreenshotDriver(MainWindow* window, QString output_path, int frames,
-                                   int timeout_s)
+                                   int timeout_s, QWidget* subject)
     : QObject(window),
       window_(window),
+      subject_(subject),
       output_path_(std::move(output_path)),
       frames_wanted_(frames < 1 ? 1 : frames) {
-  connect(window_, &MainWindow::DatasetOpened, this, [this] { window_->playback()->Step(); });
+  connect(window_, &MainWindow::DatasetOpened, this, [this] {
+    if (subject_ != nullptr) {
+      window_->playback()->Play();
+    } else {
+      window_->playback()->Step();
+    }
+  });
   connect(window_, &MainWindow::DatasetFailed, this, &ScreenshotDriver::Fail);
   connect(window_, &MainWindow::FrameShown, this, &ScreenshotDriver::OnFrameShown);
   connect(window_->playback(), &PlaybackController::EndOfStream, this, [this] {
@@ -33,7 +40,7 @@ void ScreenshotDriver::OnFrameShown(int64_t) {
   if (++frames_seen_ >= frames_wanted_) {
     // Let the views render the last frame before grabbing.
     QTimer::singleShot(300, this, &ScreenshotDriver::Capture);
-  } else {
+  } else if (subject_ == nullptr) {
     window_->playback()->Step();
   }
 }
@@ -41,7 +48,8 @@ void ScreenshotDriver::OnFrameShown(int64_t) {
 void ScreenshotDriver::Capture() {
   if (done_) return;
   done_ = true;
-  const QPixmap shot = window_->grab();
+  QWidget* subject = subject_ ? subject_.data() : window_;
+  const QPixmap shot = subject->grab();
   if (shot.isNull() || !shot.save(output_path_, "PNG")) {
     std::fprintf(stderr, "sightline: could not write screenshot %s\n", qPrintable(output_path_));
     QApplication::exit(1);

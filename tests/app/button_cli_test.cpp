@@ -224,6 +224,10 @@ TEST_F(ButtonCli, SigtermSendsTheArmClientsAStopLine) {
   const std::string metrics = testing::ReadTextFile(out + "/metrics.json");
   EXPECT_NE(metrics.find("\"ended\": \"cancelled\""), std::string::npos) << metrics;
   EXPECT_GT(testing::JsonNumber(metrics, "accuracy", "targets_sent").value_or(0), 0) << metrics;
+  // A recording served to an arm says so: its targets are not from a live camera.
+  const std::string replay = "replay: the targets served come from the recorded frames of ";
+  EXPECT_NE(metrics.find(replay), std::string::npos) << metrics;
+  EXPECT_NE(run.out.find(replay), std::string::npos) << run.out;
 }
 
 TEST_F(ButtonCli, ServingBeyondLoopbackNeedsAToken) {

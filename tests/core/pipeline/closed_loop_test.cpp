@@ -147,6 +147,9 @@ TEST_P(ClosedLoopSeed, TheSimulatedArmPressesTheTappedButton) {
   EXPECT_GT(loop.report->metrics.frames, 10);
   EXPECT_TRUE(std::filesystem::is_regular_file(loop.out_dir + "/button.csv"));
   EXPECT_TRUE(std::filesystem::is_regular_file(loop.out_dir + "/metrics.json"));
+  for (const std::string& note : loop.report->result.notes) {
+    EXPECT_NE(note.rfind("replay:", 0), 0u) << "a live camera is not a replay: " << note;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(FiveSeeds, ClosedLoopSeed, ::testing::Values(1, 2, 3, 4, 5));
