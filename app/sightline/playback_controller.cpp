@@ -222,8 +222,15 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
   if (replay) {
     result = processor_->Reprocess(frame);
   } else {
-    // A seek or a loop breaks the sequence: the pipeline starts over.
-    if (last_processed_id_ >= 0 && id != last_processed_id_ + 1) processor_->Reset();
+    // A seek or a loop breaks a recording's sequence: the pipeline starts over. A live source
+    // hands out its newest frame and skips older ones while the pipeline is slower than the
+    // camera (a loaded machine): a gap there is dropped frames, not a seek, and must not wipe
+    // the run (a SLAM reset on every gap never initialises). Only a restart goes back.
+    if (last_processed_id_ >= 0) {
+      const bool broken =
+          processor_source_.info.live ? id <= last_processed_id_ : id != last_processed_id_ + 1;
+      if (broken) processor_->Reset();
+    }
     last_processed_id_ = id;
     const double start = HostTimeS();
     if (processor_started_s_ == 0) processor_started_s_ = start;

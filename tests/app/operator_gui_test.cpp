@@ -334,12 +334,9 @@ TEST_F(OperatorGui, TheSourcesEndSendsTheArmAStopAndRefusesTaps) {
 // token, the tap on true button 5 given as button.run.tap, and the simulated arm streaming its
 // pose to the window's server, following the targets and pressing. Outcomes against the scene's
 // truth; no time assertion (a loaded machine only makes it slower).
-// Disabled: it passed on the idle machine (button 5 pressed 4.76 mm off, 1.40 deg) but failed
-// while the whole suite ran beside it (2026-11-26): the arm connected and flew its plan, yet the
-// simulated camera kept rendering the start pose, the SLAM never initialised and no target was
-// sent, so the arm's streamed poses did not reach sim://panel's pose board in the window under
-// load. The headless loop (pipeline/FiveSeeds/ClosedLoopSeed.*) passes under the same load.
-TEST_F(OperatorGui, DISABLED_TheLiveLoopThroughTheWindowPressesTheTappedButton) {
+// Under load the window drops live frames (the source hands out its newest): the pipeline must
+// go on through the gaps (it was reset on every gap and never initialised, 2026-11-26).
+TEST_F(OperatorGui, TheLiveLoopThroughTheWindowPressesTheTappedButton) {
   const std::string uri = "sim://panel?seed=4&fps=4";
   port_ = FreePort();
   ASSERT_GT(port_, 0);
