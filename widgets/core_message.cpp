@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "widgets/text_template.h"
+
 namespace sightline {
 namespace {
 
@@ -67,18 +69,9 @@ struct Template {
 };
 
 std::vector<Template> Compile(const char* const* begin, const char* const* end) {
-  static const QRegularExpression placeholder(QStringLiteral("%\\d"));
   std::vector<Template> templates;
   for (const char* const* source = begin; source != end; ++source) {
-    const QString text = QString::fromUtf8(*source);
-    QString pattern;
-    qsizetype last = 0;
-    for (auto it = placeholder.globalMatch(text); it.hasNext();) {
-      const QRegularExpressionMatch m = it.next();
-      pattern += QRegularExpression::escape(text.mid(last, m.capturedStart() - last)) + "(.+?)";
-      last = m.capturedEnd();
-    }
-    pattern += QRegularExpression::escape(text.mid(last));
+    const QString pattern = PlaceholderPattern(QString::fromUtf8(*source), QStringLiteral("(.+?)"));
     templates.push_back(
         {QRegularExpression(QRegularExpression::anchoredPattern(pattern)), *source});
   }

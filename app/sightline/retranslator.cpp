@@ -21,6 +21,7 @@
 
 #include "widgets/image_view.h"
 #include "widgets/operator_panel.h"
+#include "widgets/text_template.h"
 
 namespace sightline {
 
@@ -28,10 +29,6 @@ namespace {
 
 // Fewer literal characters than this and a text with placeholders matches too much ("%1 cm").
 constexpr int kMinPatternLiterals = 4;
-const QRegularExpression& PlaceholderRe() {
-  static const QRegularExpression re(QStringLiteral("%(\\d+)"));
-  return re;
-}
 
 // The tool tip Qt derives from an action's text when none was set.
 QString DerivedToolTip(QString text) {
@@ -51,14 +48,9 @@ Retranslator::Retranslator(const Lookup& lookup) {
     if (literal.remove(PlaceholderRe()).size() < kMinPatternLiterals) continue;
     if (!old_text.contains(PlaceholderRe())) continue;
     Pattern pattern;
-    QString re = QStringLiteral("^");
-    qsizetype last = 0;
-    for (const QRegularExpressionMatch& m : PlaceholderRe().globalMatch(old_text)) {
-      re += QRegularExpression::escape(old_text.mid(last, m.capturedStart() - last)) + "(.*?)";
-      pattern.numbers.push_back(m.captured(1).toInt());
-      last = m.capturedEnd();
-    }
-    re += QRegularExpression::escape(old_text.mid(last)) + "$";
+    const QString re = QStringLiteral("^") +
+                       PlaceholderPattern(old_text, QStringLiteral("(.*?)"), &pattern.numbers) +
+                       QStringLiteral("$");
     pattern.old_text = QRegularExpression(re, QRegularExpression::DotMatchesEverythingOption);
     pattern.new_text = new_text;
     patterns_.push_back(std::move(pattern));
