@@ -74,3 +74,5 @@ if(SIGHTLINE_WITH_ARAVIS)
   endif()
   set(SIGHTLINE_ARAVIS_STATUS "YES (${ARAVIS_VERSION})")
 endif()
+
+include(SightlineRos)

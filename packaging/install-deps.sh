@@ -14,6 +14,9 @@ PACKAGES=(
   libceres-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   iproute2 util-linux
+  libroscpp-dev librosbag-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev
+  libtf2-ros-dev libtf2-msgs-dev libvisualization-msgs-dev libdiagnostic-msgs-dev libstd-srvs-dev
+  ros-core
 )
 
 if [ "$(id -u)" -ne 0 ]; then
