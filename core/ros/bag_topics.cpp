@@ -139,14 +139,16 @@ bool FindLeftRight(const BagSummary& bag, std::string* left, std::string* right)
   return false;
 }
 
-StatusOr<BagTopicChoice> ChooseStereo(const BagSummary& bag, const RosBagOptions& o) {
+// Not `strict` (the automatic choice): an image topic given alone means not stereo.
+StatusOr<BagTopicChoice> ChooseStereo(const BagSummary& bag, const RosBagOptions& o, bool strict) {
   BagTopicChoice c;
   c.kind = SourceKind::kStereo;
   if (!o.image_topic.empty() || !o.right_image_topic.empty()) {
     if (o.image_topic.empty() || o.right_image_topic.empty()) {
-      return InvalidArgument(bag.path +
-                             ": a stereo pair needs both io.rosbag.image_topic (left) "
-                             "and io.rosbag.right_image_topic");
+      const std::string message = bag.path +
+                                  ": a stereo pair needs both io.rosbag.image_topic (left) and "
+                                  "io.rosbag.right_image_topic";
+      return strict ? InvalidArgument(message) : NotFound(message);
     }
     for (const auto& [name, key] : {std::pair{o.image_topic, "image_topic"},
                                     std::pair{o.right_image_topic, "right_image_topic"}}) {
@@ -215,16 +217,16 @@ StatusOr<BagTopicChoice> ChooseCloud(const BagSummary& bag, const RosBagOptions&
 
 StatusOr<BagTopicChoice> ChooseKind(const BagSummary& bag, const RosBagOptions& o) {
   if (o.kind == "rgbd") return ChooseRgbd(bag, o, true);
-  if (o.kind == "stereo") return ChooseStereo(bag, o);
+  if (o.kind == "stereo") return ChooseStereo(bag, o, true);
   if (o.kind == "mono") return ChooseMono(bag, o);
   if (o.kind == "cloud") return ChooseCloud(bag, o);
   // Auto: a named depth, right or cloud topic says the kind; else the richest the bag allows.
   if (!o.depth_topic.empty()) return ChooseRgbd(bag, o, true);
-  if (!o.right_image_topic.empty()) return ChooseStereo(bag, o);
+  if (!o.right_image_topic.empty()) return ChooseStereo(bag, o, true);
   if (!o.cloud_topic.empty()) return ChooseCloud(bag, o);
   StatusOr<BagTopicChoice> rgbd = ChooseRgbd(bag, o, false);
   if (rgbd.ok() || rgbd.status().code() != StatusCode::kNotFound) return rgbd;
-  StatusOr<BagTopicChoice> stereo = ChooseStereo(bag, o);
+  StatusOr<BagTopicChoice> stereo = ChooseStereo(bag, o, false);
   if (stereo.ok() || stereo.status().code() != StatusCode::kNotFound) return stereo;
   StatusOr<BagTopicChoice> mono = ChooseMono(bag, o);
   if (mono.ok() || mono.status().code() != StatusCode::kNotFound) return mono;
