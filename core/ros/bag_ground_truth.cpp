@@ -87,6 +87,7 @@ StatusOr<Trajectory> ReadBagOdometry(const rosbag::Bag& bag, const std::string& 
 StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                                                          const BagSummary& summary,
                                                          const RosBagOptions& options,
+                                                         const std::string& camera_frame,
                                                          std::vector<std::string>* notes) {
   StatusOr<std::map<FramePair, Trajectory>> edges = ReadTransforms(bag, summary);
   if (!edges.ok()) return edges.status();
@@ -108,12 +109,27 @@ StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                      " poses; the bag's only transform)");
     return std::optional<Trajectory>(edges->begin()->second);
   }
+  for (const auto& [pair, trajectory] : *edges) {
+    if (!camera_frame.empty() && pair.second == FrameName(camera_frame)) {
+      notes->push_back("ground truth: tf " + PairText(pair) + " (" +
+                       std::to_string(trajectory.size()) + " poses; the images' frame)");
+      return std::optional<Trajectory>(trajectory);
+    }
+  }
   if (edges->size() > 1) {
     notes->push_back("no ground truth: several tf transforms (" + PairsText(*edges) +
                      "); choose with --set io.rosbag.tf_parent_frame=A --set "
                      "io.rosbag.tf_child_frame=B");
   }
   return std::optional<Trajectory>();
+}
+
+std::string FirstFrameId(const rosbag::Bag& bag, const std::string& topic) {
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic))) {
+    boost::shared_ptr<RosStampOnly> header = m.instantiate<RosStampOnly>();
+    return header ? header->frame_id : "";
+  }
+  return "";
 }
 
 }  // namespace sightline

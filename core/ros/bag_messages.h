@@ -27,6 +27,7 @@ namespace sightline {
 struct RosStampOnly {
   uint32_t seq = 0;
   ros::Time stamp;
+  std::string frame_id;
 };
 
 // Opens `path` for reading after ReadBagFileLayout() found it sound. ParseError "x.bag: rosbag
@@ -81,6 +82,7 @@ struct Serializer<sightline::RosStampOnly> {
   inline static void read(Stream& stream, sightline::RosStampOnly& m) {
     stream.next(m.seq);
     stream.next(m.stamp);
+    stream.next(m.frame_id);
   }
 };
 }  // namespace serialization
@@ -96,11 +98,16 @@ StatusOr<Trajectory> ReadBagOdometry(const rosbag::Bag& bag, const std::string& 
 // The ground truth of a bag from its /tf (tf2_msgs/TFMessage) topics: the pose of
 // options.tf_child_frame in options.tf_parent_frame when they are given (InvalidArgument listing
 // the bag's transforms when there is no such transform), else the only parent -> child pair on
-// the dynamic tf topics; nullopt when there is none or several (a note then says which options
-// choose). Frame names compare without a leading '/'.
+// the dynamic tf topics, or among several the one whose child is `camera_frame` (the images'
+// header frame_id); nullopt when there is none or no rule picks one (a note then says which
+// options choose). Frame names compare without a leading '/'.
 StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                                                          const BagSummary& summary,
                                                          const RosBagOptions& options,
+                                                         const std::string& camera_frame,
                                                          std::vector<std::string>* notes);
+
+// The header frame_id of a topic's first message ("" when none).
+std::string FirstFrameId(const rosbag::Bag& bag, const std::string& topic);
 
 }  // namespace sightline

@@ -293,8 +293,9 @@ Status BagSource::ReadPoses(SourceInfo* info, std::optional<Trajectory>* ground_
     info->notes.push_back("odometry: " + c.odometry + " (" +
                           std::to_string(impl_->odometry.size()) + " poses)");
   }
+  const std::string frame = FirstFrameId(*impl_->bag, impl_->primary.topic);
   StatusOr<std::optional<Trajectory>> tf =
-      ReadBagTfGroundTruth(*impl_->bag, impl_->summary, options_, &info->notes);
+      ReadBagTfGroundTruth(*impl_->bag, impl_->summary, options_, frame, &info->notes);
   if (!tf.ok()) return tf.status();
   *ground_truth = std::move(*tf);
   if (!*ground_truth && !c.odometry.empty() &&

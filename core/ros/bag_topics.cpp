@@ -1,6 +1,7 @@
 #include "core/ros/bag_topics.h"
 
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace sightline {
@@ -102,6 +103,28 @@ StatusOr<std::string> OneTopic(const BagSummary& bag, const std::string& chosen,
   return ambiguous_is_error ? InvalidArgument(message) : NotFound(message);
 }
 
+// Leading '/'-separated components `a` and `b` share.
+int SharedComponents(const std::string& a, const std::string& b) {
+  const std::string x = Normalized(a) + "/", y = Normalized(b) + "/";
+  int shared = 0;
+  for (size_t i = 0; i < x.size() && i < y.size() && x[i] == y[i]; ++i) shared += x[i] == '/';
+  return shared;
+}
+
+// Among several colour topics, the one closest to the depth topic in the name tree
+// ("/camera/rgb/image_color" for "/camera/depth/image"), when only one is that close.
+std::optional<std::string> ColorBesideDepth(const BagSummary& bag, const std::string& depth) {
+  int best = 0;
+  std::vector<std::string> closest;
+  for (const BagTopic* t : Filter(bag, &BagTopic::IsColorImage)) {
+    const int shared = SharedComponents(t->name, depth);
+    if (shared > best) closest.clear(), best = shared;
+    if (shared == best && shared > 0) closest.push_back(t->name);
+  }
+  if (closest.size() != 1) return std::nullopt;
+  return closest[0];
+}
+
 StatusOr<BagTopicChoice> ChooseRgbd(const BagSummary& bag, const RosBagOptions& o, bool strict) {
   BagTopicChoice c;
   c.kind = SourceKind::kRgbd;
@@ -110,6 +133,12 @@ StatusOr<BagTopicChoice> ChooseRgbd(const BagSummary& bag, const RosBagOptions& 
   if (!depth.ok()) return depth.status();
   StatusOr<std::string> color =
       OneTopic(bag, o.image_topic, "image_topic", &BagTopic::IsColorImage, "colour image", strict);
+  if (!color.ok() && o.image_topic.empty()) {
+    if (std::optional<std::string> beside = ColorBesideDepth(bag, *depth)) {
+      color = *beside;
+      c.notes.push_back("colour topic " + *beside + ": the image topic beside " + *depth);
+    }
+  }
   if (!color.ok()) return color.status();
   c.depth = *depth;
   c.image = *color;

@@ -13,6 +13,7 @@
 
 #include "core/io/dataset.h"
 #include "core/io/tum_rgbd_source.h"
+#include "core/ros/bag_writer.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/ros/bag_test_writer.h"
 #include "tests/support/test_data.h"
@@ -300,11 +301,12 @@ TEST(BagSource, StereoPairsAndTheBaselineFromTheRightProjection) {
     EXPECT_EQ(cv::norm(f.left, written->left[i], cv::NORM_INF), 0) << i;
     EXPECT_EQ(cv::norm(f.right, written->right[i], cv::NORM_INF), 0) << i;
   }
-  // Automatic choice: RGB-D first when the bag has a colour and a depth topic... here it has two
-  // colour topics besides the depth, so the automatic choice is the stereo pair.
+  // Automatic choice: three colour topics, but only /camera/rgb/image_color sits beside the
+  // depth topic, so the bag reads as RGB-D.
   BagSource automatic(path);
   ASSERT_TRUE(automatic.Open().ok());
-  EXPECT_EQ(automatic.info().kind, SourceKind::kStereo);
+  EXPECT_EQ(automatic.info().kind, SourceKind::kRgbd);
+  EXPECT_EQ(automatic.choice().image, "/camera/rgb/image_color");
 }
 
 TEST(BagSource, ATruncatedBagSaysSo) {
@@ -386,6 +388,52 @@ TEST(BagSource, TwoImageTopicsWithoutLeftAndRightAskForTheOption) {
   const Status chosen_open = with_option.Open();
   ASSERT_TRUE(chosen_open.ok()) << chosen_open.message();
   EXPECT_EQ(with_option.info().frame_count, 3);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// BagWriter (core/ros) bags read back; with two tf transforms the images' frame_id picks the
+// ground truth.
+TEST(BagWriter, WritesWhatTheReaderReadsAndTheImagesFramePicksTheTruth) {
+  const std::string path = testing::TempDir("writer") + "/w.bag";
+  PinholeCamera camera;
+  camera.width = 40, camera.height = 30, camera.fx = camera.fy = 35, camera.cx = 20, camera.cy = 15;
+  {
+    StatusOr<std::unique_ptr<BagWriter>> bag = BagWriter::Create(path, "lz4");
+    ASSERT_TRUE(bag.ok()) << bag.status().ToString();
+    for (int i = 0; i < 4; ++i) {
+      const double t = 5.0 + 0.1 * i;
+      cv::Mat image(30, 40, CV_8UC1, cv::Scalar(40 * i));
+      Eigen::Isometry3d camera_pose = Eigen::Isometry3d::Identity();
+      camera_pose.translation() = Eigen::Vector3d(0.5 * i, 0, 1);
+      Eigen::Isometry3d arm = Eigen::Isometry3d::Identity();
+      arm.translation() = Eigen::Vector3d(0, 0.25 * i, 0);
+      ASSERT_TRUE((*bag)->WriteImage("/mono/image_raw", t, image, "mono_camera").ok());
+      ASSERT_TRUE((*bag)->WriteCameraInfo("/mono/camera_info", t, camera, "mono_camera").ok());
+      ASSERT_TRUE((*bag)->WriteTransform(t, "world", "mono_camera", camera_pose).ok());
+      ASSERT_TRUE((*bag)->WriteTransform(t, "base_link", "end_effector", arm).ok());
+      ASSERT_TRUE((*bag)->WriteOdometry("/odom", t, arm, "odom", "base_link").ok());
+    }
+    EXPECT_FALSE((*bag)->WriteImage("/x", 0.0, cv::Mat(2, 2, CV_8UC1), "x").ok());
+    ASSERT_TRUE((*bag)->Close().ok());
+  }
+  BagSource source(path);
+  const Status opened = source.Open();
+  ASSERT_TRUE(opened.ok()) << opened.message();
+  EXPECT_EQ(source.summary().layout.CompressionText(), "lz4");
+  EXPECT_EQ(source.info().kind, SourceKind::kMono);
+  EXPECT_EQ(source.info().camera->fx, 35);
+  ASSERT_NE(source.ground_truth(), nullptr);
+  ASSERT_EQ(source.ground_truth()->size(), 4u);
+  EXPECT_NEAR(source.ground_truth()->poses()[3].world_from_sensor.translation().x(), 1.5, 1e-12);
+  EXPECT_EQ(source.odometry().size(), 4u);
+  const std::vector<Frame> frames = ReadAll(source);
+  ASSERT_EQ(frames.size(), 4u);
+  EXPECT_EQ(std::get<MonoFrame>(frames[2]).image.at<uint8_t>(5, 5), 80);
 }
 
 }  // namespace
