@@ -69,6 +69,9 @@ class Source {
   }
   // Ground-truth poses of the sensor (left / colour camera) in a world frame, if known.
   virtual const Trajectory* ground_truth() const { return nullptr; }
+  // The odometry of the platform the sensor rides on (world_from_base), when the recording
+  // carries it beside its frames (a ROS bag's nav_msgs/Odometry topic); null otherwise.
+  virtual const Trajectory* odometry() const { return nullptr; }
   // Releases devices and files. Also done by the destructor.
   virtual void Close() {}
 };

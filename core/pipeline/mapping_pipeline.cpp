@@ -110,7 +110,7 @@ void MappingRunRecord::Add(const MappingFrameResult& r, const std::vector<std::s
 }
 
 Status MappingPipeline::State::StartRun(bool keep_floor) {
-  StatusOr<MappingRecording> loaded = LoadMappingRecording(source->info, run);
+  StatusOr<MappingRecording> loaded = LoadMappingRecording(*source, run);
   if (!loaded.ok()) return loaded.status();
   std::optional<FloorCalibration> next_floor;
   std::string next_log;

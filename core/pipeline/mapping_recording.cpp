@@ -40,8 +40,9 @@ std::string MappingRecordingRoot(const std::string& path) {
   return path;
 }
 
-StatusOr<MappingRecording> LoadMappingRecording(const SourceInfo& info,
+StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
                                                 const MappingRunOptions& run) {
+  const SourceInfo& info = source.info;
   MappingRecording recording;
   if (info.rgbd) {
     recording.camera = info.rgbd->color;
@@ -57,8 +58,14 @@ StatusOr<MappingRecording> LoadMappingRecording(const SourceInfo& info,
     if (!read.ok()) return read.status();
     recording.odometry = std::move(*read);
     recording.log_lines.push_back("pose source: wheel odometry " + path);
+  } else if (source.odometry) {
+    recording.odometry = *source.odometry;
+    recording.log_lines.push_back("pose source: the recording's odometry (" +
+                                  std::to_string(source.odometry->size()) + " poses)");
   } else {
-    recording.log_lines.push_back("pose source: none (no odometry.txt); heading from walls only");
+    recording.log_lines.push_back(
+        "pose source: none (no odometry.txt, no odometry in the recording); heading from walls "
+        "only");
   }
   if (const std::string path = JoinPath(root, "people.csv"); FileExists(path)) {
     StatusOr<PersonBoxTable> read = PersonBoxTable::Read(path);

@@ -13,6 +13,7 @@
 #include "core/mapping/mapping_accuracy.h"
 #include "core/mapping/mapping_frame_processor.h"
 #include "core/mapping/person_boxes.h"
+#include "core/pipeline/pipeline.h"
 
 namespace sightline {
 
@@ -37,8 +38,10 @@ struct MappingRecording {
 // The folder holding a recording's extra files for a dataset path.
 std::string MappingRecordingRoot(const std::string& dataset_path);
 
-// Loads the extras of the recording the source was opened from. Errors name the bad file.
-StatusOr<MappingRecording> LoadMappingRecording(const SourceInfo& info,
+// Loads the extras of the recording the source was opened from. The odometry is the folder's
+// odometry.txt, else the one the source carries (a ROS bag's Odometry topic). Errors name the
+// bad file.
+StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
                                                 const MappingRunOptions& run);
 
 }  // namespace sightline

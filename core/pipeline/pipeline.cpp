@@ -22,6 +22,9 @@ PipelineSource PipelineSource::From(const Source& source) {
   if (const Trajectory* gt = source.ground_truth(); gt != nullptr && !gt->empty()) {
     out.ground_truth = std::make_shared<const Trajectory>(*gt);
   }
+  if (const Trajectory* odometry = source.odometry(); odometry != nullptr && !odometry->empty()) {
+    out.odometry = std::make_shared<const Trajectory>(*odometry);
+  }
   return out;
 }
 

@@ -62,6 +62,8 @@ struct PipelineResult {
 struct PipelineSource {
   SourceInfo info;
   std::shared_ptr<const Trajectory> ground_truth;
+  // The platform's odometry the source carries beside its frames (Source::odometry()), or null.
+  std::shared_ptr<const Trajectory> odometry;
 
   // The info and a copy of the ground truth of an opened source.
   static PipelineSource From(const Source& source);

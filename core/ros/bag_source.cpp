@@ -131,7 +131,9 @@ BagSource::~BagSource() = default;
 
 const BagSummary& BagSource::summary() const { return impl_->summary; }
 const BagTopicChoice& BagSource::choice() const { return impl_->choice; }
-const Trajectory& BagSource::odometry() const { return impl_->odometry; }
+const Trajectory* BagSource::odometry() const {
+  return impl_->odometry.empty() ? nullptr : &impl_->odometry;
+}
 
 void BagSource::Close() {
   RecordedSource::Close();

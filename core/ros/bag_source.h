@@ -43,8 +43,8 @@ class BagSource : public RecordedSource {
   // What Open() found: the bag's topics, and the topics the frames come from.
   const BagSummary& summary() const;
   const BagTopicChoice& choice() const;
-  // The poses of choice().odometry (world_from_base in the odometry's frame); empty when none.
-  const Trajectory& odometry() const;
+  // The poses of choice().odometry (world_from_base in the odometry's frame); null when none.
+  const Trajectory* odometry() const override;
 
  protected:
   StatusOr<Frame> Load(int64_t index) override;

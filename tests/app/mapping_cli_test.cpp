@@ -151,5 +151,39 @@ TEST(MappingCliRealData, FloorOfAPcdCloud) {
   EXPECT_TRUE(Contains(r.out, "camera 0.4")) << r.out;  // SOURCES.txt: about 0.47 m.
 }
 
+#ifdef SIGHTLINE_HAVE_ROS
+// The same drive written as a ROS bag (wheel odometry on /odom): the mapping pipeline takes its
+// translation from the bag's odometry as it does from odometry.txt, and maps as well.
+TEST_F(MappingCli, ABagsOdometryTopicGivesTheTranslationAsOdometryTxtDoes) {
+  const std::string dir = testing::TempDir("mapping_cli_bag");
+  const auto sim =
+      Cli("simulate corridor --out " + dir +
+          " --frames 100 --seed 3 --sensors rgbd --quiet --format bag"
+          " --set sim.rgbd.resolution=320x240 --set sim.rate_hz=5"
+          " --set sim.motion.speed_mps=1 --set sim.odometry.heading_drift_deg_per_m=2");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  const std::string out_bag = testing::TempDir("mapping_cli_bag_run");
+  const std::string out_folder = testing::TempDir("mapping_cli_folder_run");
+  const auto bag = Cli("run mapping " + dir + "/corridor.bag --out " + out_bag);
+  const auto folder = Cli("run mapping " + *dir_ + " --out " + out_folder);
+  ASSERT_EQ(bag.exit_code, 0) << bag.out;
+  ASSERT_EQ(folder.exit_code, 0) << folder.out;
+  const std::string log = testing::ReadTextFile(out_bag + "/mapping_log.txt");
+  EXPECT_TRUE(Contains(log, "pose source: the recording's odometry (100 poses)")) << log;
+  const std::string a = testing::ReadTextFile(out_folder + "/metrics.json");
+  const std::string b = testing::ReadTextFile(out_bag + "/metrics.json");
+  const auto value = [](const std::string& m, const char* key) {
+    return testing::JsonNumber(m, "accuracy", key);
+  };
+  ASSERT_TRUE(value(b, "ate_rmse_m") && value(b, "heading_error_deg_max")) << b;
+  // Without the odometry's translation the 20 m drive would stay at the start (ATE of metres).
+  EXPECT_LT(*value(b, "ate_rmse_m"), 0.3);
+  EXPECT_LT(*value(b, "heading_error_deg_max"), 1.5);
+  // The bag carries no people.csv: frames the folder's run skips as blocked by people are
+  // mapped from the bag, so the figures are close, not equal.
+  EXPECT_NEAR(*value(b, "ate_rmse_m"), *value(a, "ate_rmse_m"), 0.1);
+}
+#endif  // SIGHTLINE_HAVE_ROS
+
 }  // namespace
 }  // namespace sightline

@@ -123,7 +123,8 @@ TEST(BagSource, EmbagsLz4ChunksGivePointCloudsAndGroundTruthOdometry) {
   ASSERT_TRUE(source.Open().ok());
   EXPECT_EQ(source.summary().layout.CompressionText(), "lz4");
   EXPECT_EQ(source.summary().layout.chunks, 6);
-  EXPECT_EQ(source.odometry().size(), 5u);
+  ASSERT_NE(source.odometry(), nullptr);
+  EXPECT_EQ(source.odometry()->size(), 5u);
   ASSERT_NE(source.ground_truth(), nullptr);
   EXPECT_EQ(source.ground_truth()->size(), 5u);
   EXPECT_NEAR(source.summary().end_s - source.summary().start_s, 7.59, 0.01);
@@ -254,8 +255,9 @@ TEST_P(SimBagRoundTrip, RgbdFramesCameraTruthAndOdometryComeBackExactly) {
     const Eigen::Isometry3d& q = written->camera_truth.poses()[i].world_from_sensor;
     EXPECT_LT((p.matrix() - q.matrix()).norm(), 1e-9) << i;
   }
-  ASSERT_EQ(source.odometry().size(), written->odometry.size());
-  EXPECT_GT(source.odometry().size(), 0u);
+  ASSERT_NE(source.odometry(), nullptr);
+  ASSERT_EQ(source.odometry()->size(), written->odometry.size());
+  EXPECT_GT(source.odometry()->size(), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Compressions, SimBagRoundTrip, ::testing::Values("none", "bz2", "lz4"));
@@ -430,7 +432,8 @@ TEST(BagWriter, WritesWhatTheReaderReadsAndTheImagesFramePicksTheTruth) {
   ASSERT_NE(source.ground_truth(), nullptr);
   ASSERT_EQ(source.ground_truth()->size(), 4u);
   EXPECT_NEAR(source.ground_truth()->poses()[3].world_from_sensor.translation().x(), 1.5, 1e-12);
-  EXPECT_EQ(source.odometry().size(), 4u);
+  ASSERT_NE(source.odometry(), nullptr);
+  EXPECT_EQ(source.odometry()->size(), 4u);
   const std::vector<Frame> frames = ReadAll(source);
   ASSERT_EQ(frames.size(), 4u);
   EXPECT_EQ(std::get<MonoFrame>(frames[2]).image.at<uint8_t>(5, 5), 80);
