@@ -94,6 +94,7 @@ FeedOutcome FeedFrames(Pipeline& pipeline, Source& source, const RunContext& con
       context.timing->Add("read", (process_start - read_start) * 1000.0);
       AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
     }
+    if (context.on_result) context.on_result(*result, index);
     if (context.progress) context.progress(index + 1, total);
   }
   if (out.processed == 0) out.stop = OutOfRange(context.dataset_path + " gave no frame to process");
@@ -266,6 +267,7 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   context.timing = &timing;
   context.progress = request.progress;
   context.cancel = request.cancel;
+  context.on_result = request.on_result;
 
   RunReport report;
   const double start_s = HostTimeS();
