@@ -1,0 +1,253 @@
+// sightline-node against its own master: a C++ subscriber receives what the node publishes on a
+// simulated recording and checks it against the headless run (same pipeline, same frames). The
+// master dying mid-run is reported and the run's results are kept.
+#include <gtest/gtest.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <chrono>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "tests/ros/ros_test_util.h"
+#include "tests/ros/roscore_fixture.h"
+
+namespace sightline {
+namespace {
+
+using testing::ChildProcess;
+using testing::RoscoreFixture;
+
+// What a subscriber received, guarded for the spinner's thread.
+template <typename Msg>
+class Inbox {
+ public:
+  void Take(const boost::shared_ptr<const Msg>& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    messages_.push_back(*msg);
+  }
+  std::vector<Msg> messages() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return messages_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<Msg> messages_;
+};
+
+// One master for the suite, and this process as a ROS node on it.
+class RosNode : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    master_ = new RoscoreFixture();
+    error_ = new std::string(master_->Start());
+    if (!error_->empty()) return;
+    master_->ExportEnv();
+    int argc = 0;
+    ros::init(argc, nullptr, "sightline_test",
+              ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    spinner_ = new ros::AsyncSpinner(1);
+    spinner_->start();
+  }
+  static void TearDownTestSuite() {
+    if (spinner_ != nullptr) spinner_->stop();
+    ros::shutdown();
+    delete spinner_;
+    delete master_;
+    delete error_;
+  }
+  void SetUp() override { ASSERT_TRUE(error_->empty()) << *error_; }
+
+  // Starts sightline-node with `args`; its output goes to `log`.
+  static bool StartNode(ChildProcess* node, const std::string& args, const std::string& log) {
+    return node->Start(master_->Env() + testing::NodePath() + " " + args, log);
+  }
+  // Waits until `ready` holds or `timeout_s` passed.
+  template <typename Pred>
+  static bool WaitFor(Pred ready, double timeout_s) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < end) {
+      if (ready()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return ready();
+  }
+
+  static RoscoreFixture* master_;
+  static std::string* error_;
+  static ros::AsyncSpinner* spinner_;
+};
+
+RoscoreFixture* RosNode::master_ = nullptr;
+std::string* RosNode::error_ = nullptr;
+ros::AsyncSpinner* RosNode::spinner_ = nullptr;
+
+int8_t MapServerValue(uint8_t v, double occupied, double free) {
+  const double p = (255.0 - v) / 255.0;
+  return p > occupied ? 100 : (p < free ? 0 : -1);
+}
+
+TEST_F(RosNode, MappingMapAndScanMatchTheHeadlessRun) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_mapping_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mapping " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::OccupancyGrid> maps;
+  Inbox<sensor_msgs::LaserScan> scans;
+  ros::Subscriber map_sub = nh.subscribe("/map", 5, &Inbox<nav_msgs::OccupancyGrid>::Take, &maps);
+  ros::Subscriber scan_sub =
+      nh.subscribe("/scan", 100, &Inbox<sensor_msgs::LaserScan>::Take, &scans);
+  const std::string out = testing::TempDir("ros_node_mapping_node");
+  const std::string log = testing::TempDir("ros_node_mapping_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node, "--pipeline mapping --source " + rec + " --out " + out + " --rate recorded --linger 3",
+      log));
+  const int code = node.Wait(180);
+  EXPECT_EQ(code, 0) << testing::ReadTextFile(log);
+  const testing::MapServerMap files = testing::ReadMapServerMap(headless);
+  ASSERT_FALSE(files.gray.empty());
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+  const double last_time = trajectory.rbegin()->first;
+  // The latched map reaches the subscriber; the newest is the last frame's.
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const auto m = maps.messages();
+        return !m.empty() && std::abs(m.back().header.stamp.toSec() - last_time) < 1e-3;
+      },
+      10))
+      << testing::ReadTextFile(log);
+  const nav_msgs::OccupancyGrid map = maps.messages().back();
+  EXPECT_EQ(map.header.frame_id, "map");
+  ASSERT_EQ(map.info.width, static_cast<uint32_t>(files.gray.cols));
+  ASSERT_EQ(map.info.height, static_cast<uint32_t>(files.gray.rows));
+  EXPECT_NEAR(map.info.resolution, files.resolution, 1e-6);
+  EXPECT_NEAR(map.info.origin.position.x, files.origin.x(), 1e-5);
+  EXPECT_NEAR(map.info.origin.position.y, files.origin.y(), 1e-5);
+  int mismatches = 0;
+  for (int row = 0; row < files.gray.rows; ++row) {
+    for (int col = 0; col < files.gray.cols; ++col) {
+      mismatches += map.data[(files.gray.rows - 1 - row) * files.gray.cols + col] !=
+                    MapServerValue(files.gray.at<uint8_t>(row, col), files.occupied_thresh,
+                                   files.free_thresh);
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  // Scans come stamped with the frames' sensor times (those of the headless trajectory).
+  const auto received = scans.messages();
+  ASSERT_GE(received.size(), 10u);
+  for (const auto& scan : received) {
+    const auto row = trajectory.lower_bound(scan.header.stamp.toSec() - 1e-3);
+    ASSERT_NE(row, trajectory.end());
+    EXPECT_NEAR(row->first, scan.header.stamp.toSec(), 1e-3);
+    EXPECT_EQ(scan.header.frame_id, "base_link");
+  }
+}
+
+TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_stereo_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run stereo-vo " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::Odometry> odoms;
+  // Remapped by the node's arguments: odom:=/vo/odom.
+  ros::Subscriber sub = nh.subscribe("/vo/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  const std::string out = testing::TempDir("ros_node_stereo_node");
+  const std::string log = testing::TempDir("ros_node_stereo_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline stereo-vo --source " + rec + " --out " + out + " --linger 1 odom:=/vo/odom",
+      log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  const auto received = odoms.messages();
+  // Frames published before the subscriber connected are missed; at 10 Hz most arrive.
+  ASSERT_GE(received.size(), 15u) << testing::ReadTextFile(log);
+  for (const auto& odom : received) {
+    const auto row = trajectory.lower_bound(odom.header.stamp.toSec() - 1e-4);
+    ASSERT_NE(row, trajectory.end());
+    ASSERT_NEAR(row->first, odom.header.stamp.toSec(), 1e-4);
+    const auto& v = row->second;
+    const auto& p = odom.pose.pose.position;
+    EXPECT_NEAR(p.x, v[0], 1e-6);
+    EXPECT_NEAR(p.y, v[1], 1e-6);
+    EXPECT_NEAR(p.z, v[2], 1e-6);
+    const auto& o = odom.pose.pose.orientation;
+    // q and -q are one rotation.
+    const double dot = o.x * v[3] + o.y * v[4] + o.z * v[5] + o.w * v[6];
+    EXPECT_NEAR(std::abs(dot), 1.0, 1e-6);
+    EXPECT_EQ(odom.header.frame_id, "odom");
+    EXPECT_EQ(odom.child_frame_id, "camera");
+  }
+  // The last pose: the drive moved (a real comparison, not identity against identity).
+  EXPECT_GT(trajectory.rbegin()->second.head<3>().norm(), 0.5);
+}
+
+TEST_F(RosNode, PrivateParameterOverridesTheOption) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  ros::param::set("/sightline_param/mapping/stitch/resolution_m", 0.1);
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::OccupancyGrid> maps;
+  ros::Subscriber sub = nh.subscribe("/param_map", 5, &Inbox<nav_msgs::OccupancyGrid>::Take, &maps);
+  const std::string out = testing::TempDir("ros_node_param");
+  const std::string log = testing::TempDir("ros_node_param_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline mapping --source " + rec + " --out " + out +
+                            " --rate max --linger 3 __name:=sightline_param map:=/param_map",
+                        log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  ASSERT_TRUE(WaitFor([&] { return !maps.messages().empty(); }, 10)) << testing::ReadTextFile(log);
+  EXPECT_NEAR(maps.messages().back().info.resolution, 0.1, 1e-6);
+  EXPECT_NE(testing::ReadTextFile(log).find("parameter sets mapping.stitch.resolution_m=0.1"),
+            std::string::npos);
+  EXPECT_NEAR(testing::ReadMapServerMap(out).resolution, 0.1, 1e-6);
+}
+
+TEST(RosNodeMaster, MasterLostMidRunIsReportedAndResultsKept) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  RoscoreFixture master;
+  const std::string error = master.Start();
+  ASSERT_TRUE(error.empty()) << error;
+  const std::string out = testing::TempDir("ros_node_master_lost");
+  const std::string log = testing::TempDir("ros_node_master_lost_log") + "/node.log";
+  ChildProcess node;
+  // 30 frames at 5 Hz: about 6 s at the recorded rate.
+  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
+                             rec + " --out " + out + " --rate recorded --linger 0",
+                         log));
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (testing::ReadTextFile(log).find("running on") == std::string::npos &&
+         std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  master.Stop();
+  const int code = node.Wait(120);
+  const std::string text = testing::ReadTextFile(log);
+  EXPECT_EQ(code, 4) << text;
+  EXPECT_NE(text.find("does not answer"), std::string::npos) << text;
+  EXPECT_NE(text.find("30 frames published"), std::string::npos) << text;
+  EXPECT_TRUE(std::filesystem::exists(out + "/map.pgm"));
+  EXPECT_NE(testing::ReadTextFile(out + "/metrics.json").find("\"frames\": 30"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sightline
