@@ -142,14 +142,18 @@ class MobilityPublisher : public BasePublisher {
 
 }  // namespace
 
+std::unique_ptr<ResultPublisher> MakeSlamPublisher(const std::string& pipeline,
+                                                   const StatisticTable& table, ros::NodeHandle& nh,
+                                                   const RosFrames& frames) {
+  return std::make_unique<MonoSlamPublisher>(pipeline, table, nh, frames);
+}
+
 std::unique_ptr<ResultPublisher> MakeResultPublisher(const std::string& pipeline,
                                                      const StatisticTable& table,
                                                      ros::NodeHandle& nh, const RosFrames& frames) {
   if (pipeline == "mapping") return std::make_unique<MappingPublisher>(table, nh, frames);
   if (pipeline == "stereo-vo") return std::make_unique<StereoVoPublisher>(table, nh, frames);
-  if (pipeline == "mono-slam" || pipeline == "button") {
-    return std::make_unique<MonoSlamPublisher>(pipeline, table, nh, frames);
-  }
+  if (pipeline == "mono-slam") return MakeSlamPublisher(pipeline, table, nh, frames);
   if (pipeline == "mobility") return std::make_unique<MobilityPublisher>(table, nh, frames);
   return std::make_unique<BasePublisher>(pipeline, table, nh, frames);
 }

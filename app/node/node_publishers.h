@@ -19,11 +19,17 @@ class ResultPublisher {
   virtual void Publish(const PipelineResult& result) = 0;
 };
 
-// The publishers of pipeline `pipeline` ("mapping", "stereo-vo", "mono-slam", "mobility",
-// "button"; any other publishes its diagnostics only), advertised on `nh` (the node's
-// namespace), plus `diagnostics` from `table`.
+// The publishers of pipeline `pipeline` ("mapping", "stereo-vo", "mono-slam", "mobility";
+// any other publishes its diagnostics only; "button" is MakeButtonPublisher's), advertised on `nh`
+// (the node's namespace), plus `diagnostics` from `table`.
 std::unique_ptr<ResultPublisher> MakeResultPublisher(const std::string& pipeline,
                                                      const StatisticTable& table,
                                                      ros::NodeHandle& nh, const RosFrames& frames);
+
+// mono-slam's publishers (odom + tf in frames.map, map_points, keyframes, diagnostics as
+// `pipeline`), which the button pipeline's publisher also uses.
+std::unique_ptr<ResultPublisher> MakeSlamPublisher(const std::string& pipeline,
+                                                   const StatisticTable& table, ros::NodeHandle& nh,
+                                                   const RosFrames& frames);
 
 }  // namespace sightline::node

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "app/node/node_button.h"
 #include "app/node/node_params.h"
 #include "app/node/node_publishers.h"
 #include "core/common/timing.h"
@@ -96,6 +97,24 @@ void Linger(double linger_s, const std::atomic<bool>& cancel) {
   }
 }
 
+// The built-in pipelines, the button's driven by the operator's topics (`commands`) instead of
+// button.run.tap.
+PipelineRegistry NodeRegistry(const std::shared_ptr<ButtonCommands>& commands) {
+  PipelineRegistry registry;
+  const PipelineRegistry builtin = BuiltinPipelines();
+  for (const PipelineInfo& p : builtin.pipelines()) {
+    (void)registry.Register(p.name == "button" ? ButtonPipelineInfo(commands) : p);
+  }
+  return registry;
+}
+
+std::unique_ptr<ResultPublisher> MakePublisher(const PipelineInfo& info, ros::NodeHandle& nh,
+                                               const std::shared_ptr<ButtonCommands>& commands) {
+  const StatisticTable table = info.create()->Statistics();  // A copy: the object goes.
+  if (info.name == "button") return MakeButtonPublisher(table, nh, RosFrames(), commands);
+  return MakeResultPublisher(info.name, table, nh, RosFrames());
+}
+
 int ExitCode(const StatusOr<RunReport>& report, bool master_lost) {
   if (!report.ok()) {
     return report.status().code() == StatusCode::kCancelled ? kExitCancelled : kExitError;
@@ -124,7 +143,8 @@ void PrintReport(const StatusOr<RunReport>& report, const std::string& pipeline)
 }  // namespace
 
 int RunNode(const NodeArgs& args, std::atomic<bool>& cancel) {
-  const PipelineRegistry registry = BuiltinPipelines();
+  const auto commands = std::make_shared<ButtonCommands>();
+  const PipelineRegistry registry = NodeRegistry(commands);
   const PipelineInfo* info = registry.Find(args.pipeline);
   if (info == nullptr || !info->create) {
     std::string names;
@@ -149,8 +169,7 @@ int RunNode(const NodeArgs& args, std::atomic<bool>& cancel) {
     std::fprintf(stderr, "sightline-node: %s\n", overrides.status().ToString().c_str());
     return kExitError;
   }
-  std::unique_ptr<ResultPublisher> publisher =
-      MakeResultPublisher(info->name, info->create()->Statistics(), nh, RosFrames());
+  std::unique_ptr<ResultPublisher> publisher = MakePublisher(*info, nh, commands);
   FramePacer pacer(args.recorded_rate);
   MasterWatch watch;
   RunRequest request;

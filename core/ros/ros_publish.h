@@ -6,6 +6,7 @@
 #pragma once
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
@@ -19,8 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "core/button/arm_protocol.h"
 #include "core/mobility/mobility_types.h"
 #include "core/mono/slam_map.h"
+#include "core/pipeline/button_result.h"
 #include "core/pipeline/mapping_result.h"
 #include "core/pipeline/pipeline.h"
 
@@ -101,5 +104,16 @@ sensor_msgs::PointCloud2 MobilityCloudMessage(const MobilityResult& result,
 // The top-view score map as an OccupancyGrid in frames.ground: cost = round(100 * (1 - score)),
 // -1 where unknown; grid x forward, y left.
 nav_msgs::OccupancyGrid MobilityGridMessage(const MobilityResult& result, const RosFrames& frames);
+
+// --- button ---
+
+// A gated target as a pose in its frame (target.frame_id, the arm base): the button centre as
+// position, and as orientation the rotation that turns the x axis onto the push direction
+// (`approach`), stamped with the image's time.
+geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target);
+// The safety gate's verdict of a button frame as a DiagnosticStatus "sightline/button/gate":
+// OK when it let a target out, WARN otherwise; keys reason (GateReasonKey), state, stopped,
+// held, target_published; message = the verdict's message.
+diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result);
 
 }  // namespace sightline

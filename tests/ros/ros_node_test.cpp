@@ -1,17 +1,23 @@
 // sightline-node against its own master: a C++ subscriber receives what the node publishes on a
 // simulated recording and checks it against the headless run (same pipeline, same frames). The
 // master dying mid-run is reported and the run's results are kept.
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Empty.h>
 
 #include <chrono>
 #include <filesystem>
 #include <mutex>
 #include <thread>
 
+#include "core/io/hand_eye_file.h"
+#include "core/pipeline/button_pipeline.h"
 #include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
 
@@ -218,6 +224,104 @@ TEST_F(RosNode, PrivateParameterOverridesTheOption) {
   EXPECT_NE(testing::ReadTextFile(log).find("parameter sets mapping.stitch.resolution_m=0.1"),
             std::string::npos);
   EXPECT_NEAR(testing::ReadMapServerMap(out).resolution, 0.1, 1e-6);
+}
+
+// The value of `key` in a diagnostics status, or "".
+std::string DiagValue(const diagnostic_msgs::DiagnosticStatus& status, const std::string& key) {
+  for (const auto& kv : status.values) {
+    if (kv.key == key) return kv.value;
+  }
+  return "";
+}
+
+// The button pipeline on a simulated panel approach: the operator's tap (on an image the node
+// published, named by its stamp) gives a candidate but no target until the operator confirms;
+// then targets arrive in the arm base frame at the true button.
+TEST_F(RosNode, ButtonTargetsOnlyAfterTheOperatorConfirms) {
+  const std::string rec = testing::TempDir("ros_node_panel") + "/rec";
+  const auto sim = testing::RunProcess(testing::CliPath() + " simulate panel --out " + rec +
+                                       " --quiet --set sim.arm.sideways_m=0.12");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  const StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(rec + "/buttons.csv");
+  ASSERT_TRUE(buttons.ok()) << buttons.status().ToString();
+  const TrueButton* target = nullptr;
+  for (const TrueButton& b : *buttons) target = b.id == 5 ? &b : target;
+  ASSERT_NE(target, nullptr);
+  // The truth in the arm's base frame, where targets are.
+  const StatusOr<HandEye> hand_eye = ReadHandEyeFile(rec + "/hand_eye.yaml");
+  ASSERT_TRUE(hand_eye.ok()) << hand_eye.status().ToString();
+  ASSERT_TRUE(hand_eye->world_from_base.has_value());
+  const Eigen::Vector3d truth_in_base =
+      hand_eye->world_from_base->inverse() * target->center_in_world;
+
+  ros::NodeHandle nh;
+  Inbox<geometry_msgs::PoseStamped> targets;
+  Inbox<diagnostic_msgs::DiagnosticArray> diagnostics;
+  ros::Subscriber target_sub =
+      nh.subscribe("/button_target", 100, &Inbox<geometry_msgs::PoseStamped>::Take, &targets);
+  ros::Subscriber diag_sub = nh.subscribe(
+      "/diagnostics", 1000, &Inbox<diagnostic_msgs::DiagnosticArray>::Take, &diagnostics);
+  ros::Publisher tap_pub = nh.advertise<geometry_msgs::PointStamped>("/button_tap", 1);
+  ros::Publisher confirm_pub = nh.advertise<std_msgs::Empty>("/button_confirm", 1);
+  const std::string out = testing::TempDir("ros_node_button");
+  const std::string log = testing::TempDir("ros_node_button_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node, "--pipeline button --source " + rec + " --out " + out + " --rate recorded --linger 1",
+      log));
+  ASSERT_TRUE(WaitFor([&] { return tap_pub.getNumSubscribers() > 0; }, 60));
+  // The first image whose frame the node published: tap it (a few pixels off the centre).
+  int frame = -1;
+  double shown_stamp = 0;
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        for (const auto& array : diagnostics.messages()) {
+          for (const auto& status : array.status) {
+            if (status.name != "sightline/button") continue;
+            frame = std::stoi(DiagValue(status, "frame"));
+            shown_stamp = array.header.stamp.toSec();
+            return true;
+          }
+        }
+        return false;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  ASSERT_LT(frame, static_cast<int>(target->pixel.size()));
+  ASSERT_TRUE(target->visible[frame]);
+  geometry_msgs::PointStamped tap;
+  tap.header.stamp = ros::Time(shown_stamp);
+  tap.point.x = target->pixel[frame].x() + 2;
+  tap.point.y = target->pixel[frame].y() - 2;
+  tap_pub.publish(tap);
+  // The candidate waits for the operator's Yes: the gate says "not confirmed", no target.
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        for (const auto& array : diagnostics.messages()) {
+          for (const auto& status : array.status) {
+            if (status.name == "sightline/button/gate" && DiagValue(status, "state") == "confirm")
+              return true;
+          }
+        }
+        return false;
+      },
+      30))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_TRUE(targets.messages().empty());
+  ASSERT_TRUE(WaitFor([&] { return confirm_pub.getNumSubscribers() > 0; }, 10));
+  confirm_pub.publish(std_msgs::Empty());
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  const auto received = targets.messages();
+  ASSERT_FALSE(received.empty()) << testing::ReadTextFile(log);
+  const auto& last = received.back();
+  EXPECT_EQ(last.header.frame_id, "arm_base");
+  const Eigen::Vector3d position(last.pose.position.x, last.pose.position.y, last.pose.position.z);
+  // The CLI's run of this approach is within 3 mm; the tap here comes a little later.
+  EXPECT_LT((position - truth_in_base).norm(), 0.005)
+      << position.transpose() << " vs " << truth_in_base.transpose();
+  // Every target came after the confirmation, from a frame after the tapped one.
+  for (const auto& t : received) EXPECT_GT(t.header.stamp.toSec(), shown_stamp);
 }
 
 TEST(RosNodeMaster, MasterLostMidRunIsReportedAndResultsKept) {

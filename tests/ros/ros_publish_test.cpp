@@ -216,3 +216,23 @@ TEST(RosPublish, DiagnosticsSplitTimingFromCounts) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+TEST(RosPublish, ButtonTargetOrientationTurnsXOntoTheApproach) {
+  ArmTarget target;
+  target.stamp_s = 4.5;
+  target.position_m = {0.8, -0.1, 0.3};
+  target.approach = Eigen::Vector3d(0.2, 0.9, -0.1).normalized();
+  const geometry_msgs::PoseStamped pose = ButtonTargetMessage(target);
+  EXPECT_EQ(pose.header.frame_id, "arm_base");
+  EXPECT_DOUBLE_EQ(pose.header.stamp.toSec(), 4.5);
+  EXPECT_DOUBLE_EQ(pose.pose.position.y, -0.1);
+  const auto& o = pose.pose.orientation;
+  const Eigen::Vector3d x = Eigen::Quaterniond(o.w, o.x, o.y, o.z) * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR((x - target.approach).norm(), 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace sightline
