@@ -16,6 +16,7 @@
 #include "app/node/node_publishers.h"
 #include "core/common/timing.h"
 #include "core/pipeline/pipeline_registry.h"
+#include "core/ros/ros_live_source.h"
 
 namespace sightline::node {
 
@@ -115,6 +116,29 @@ std::unique_ptr<ResultPublisher> MakePublisher(const PipelineInfo& info, ros::No
   return MakeResultPublisher(info.name, table, nh, RosFrames());
 }
 
+// Turns Ctrl-C / SIGTERM into a ROS shutdown, so that a Grab waiting on live topics returns.
+class CancelWatcher {
+ public:
+  explicit CancelWatcher(const std::atomic<bool>& cancel)
+      : thread_([this, &cancel] {
+          while (!done_.load()) {
+            if (cancel.load()) {
+              ros::requestShutdown();
+              return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+          }
+        }) {}
+  ~CancelWatcher() {
+    done_.store(true);
+    thread_.join();
+  }
+
+ private:
+  std::atomic<bool> done_{false};
+  std::thread thread_;
+};
+
 int ExitCode(const StatusOr<RunReport>& report, bool master_lost) {
   if (!report.ok()) {
     return report.status().code() == StatusCode::kCancelled ? kExitCancelled : kExitError;
@@ -179,6 +203,7 @@ int RunNode(const NodeArgs& args, std::atomic<bool>& cancel) {
   request.profile_path = args.profile;
   request.overrides = *overrides;
   request.cancel = &cancel;
+  if (IsRosLiveUri(args.source)) request.open_source = OpenRosLiveSource;
   request.on_result = [&](const std::shared_ptr<const PipelineResult>& result, int64_t index) {
     publisher->Publish(*result);
     watch.Check(index);
@@ -189,6 +214,7 @@ int RunNode(const NodeArgs& args, std::atomic<bool>& cancel) {
   std::printf("sightline-node %s: running on %s\n", ros::this_node::getName().c_str(),
               args.source.c_str());
   std::fflush(stdout);
+  CancelWatcher watcher(cancel);
   const StatusOr<RunReport> report = RunPipeline(registry, request);
   PrintReport(report, info->name);
   if (report.ok() && report->result.ended_early.ok()) Linger(args.linger_s, cancel);

@@ -111,7 +111,8 @@ std::string AbortReason(const Status& status) {
 StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context) {
   if (!info.create) return Internal("pipeline '" + info.name + "' has no object to run");
   StatusOr<std::unique_ptr<Source>> opened =
-      OpenForPipeline(info, context.dataset_path, context.options);
+      context.open_source ? context.open_source(context.dataset_path)
+                          : OpenForPipeline(info, context.dataset_path, context.options);
   if (!opened.ok()) return opened.status();
   Source& source = **opened;
   if (!info.Accepts(source.info().kind)) {
@@ -268,6 +269,7 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   context.progress = request.progress;
   context.cancel = request.cancel;
   context.on_result = request.on_result;
+  context.open_source = request.open_source;
 
   RunReport report;
   const double start_s = HostTimeS();

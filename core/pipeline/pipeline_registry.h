@@ -24,6 +24,10 @@ using ProgressCallback = std::function<void(int64_t done, int64_t total)>;
 using ResultCallback =
     std::function<void(const std::shared_ptr<const PipelineResult>& result, int64_t index)>;
 
+// Opens a run's source in place of OpenSource/OpenDataset, for a source a front end opens
+// itself (sightline-node's live ros:// topics, which need its ROS node).
+using SourceOpener = std::function<StatusOr<std::unique_ptr<Source>>(const std::string& path)>;
+
 // What a headless pipeline run gets.
 struct RunContext {
   std::string dataset_path;
@@ -33,6 +37,7 @@ struct RunContext {
   ProgressCallback progress;      // May be empty.
   const std::atomic<bool>* cancel = nullptr;  // Checked between frames; may be null.
   ResultCallback on_result;                   // May be empty.
+  SourceOpener open_source;                   // May be empty: OpenSource/OpenDataset.
 
   bool Cancelled() const { return cancel != nullptr && cancel->load(); }
 };
@@ -90,6 +95,7 @@ struct RunRequest {
   ProgressCallback progress;
   const std::atomic<bool>* cancel = nullptr;
   ResultCallback on_result;  // Each frame's result, as RunContext::on_result.
+  SourceOpener open_source;  // As RunContext::open_source.
 };
 
 // Adds one processed frame's timing to `timing`: every statistic of unit "ms" under its stage
