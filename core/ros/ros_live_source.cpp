@@ -174,7 +174,8 @@ const SourceInfo& RosLiveSource::info() const { return impl_->info; }
 Status RosLiveSource::Grab() {
   std::unique_lock<std::mutex> lock(impl_->mutex);
   while (impl_->ready.empty()) {
-    if (!ros::ok()) return OutOfRange("ROS shut down: the live topics ended");
+    // Ctrl-C, SIGTERM or rosnode kill: the run stops as cancelled (its files are written).
+    if (!ros::ok()) return Cancelled("ROS shut down while waiting for frames on live topics");
     impl_->ready_cv.wait_for(lock, std::chrono::milliseconds(100));
   }
   impl_->current = std::move(impl_->ready.front());

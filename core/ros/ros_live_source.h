@@ -55,7 +55,7 @@ class RosLiveSource : public Source {
 
   Status Open() override;
   const SourceInfo& info() const override;
-  // Waits for the next synced frame; OutOfRange when ROS shuts down (the run ends).
+  // Waits for the next synced frame; Cancelled when ROS shuts down (Ctrl-C, rosnode kill).
   Status Grab() override;
   StatusOr<Frame> Retrieve() override;
   int64_t Position() const override;

@@ -16,8 +16,10 @@
 #include <mutex>
 #include <thread>
 
+#include "core/io/dataset.h"
 #include "core/io/hand_eye_file.h"
 #include "core/pipeline/button_pipeline.h"
+#include "core/ros/ros_image.h"
 #include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
 
@@ -202,6 +204,80 @@ TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
   }
   // The last pose: the drive moved (a real comparison, not identity against identity).
   EXPECT_GT(trajectory.rbegin()->second.head<3>().norm(), 0.5);
+}
+
+// sightline-node on live ros:// topics: the test plays the stereo recording onto image and
+// camera_info topics; the odometry equals the headless run on the recording; Ctrl-C ends the
+// live run as cancelled (exit 130) with its files written.
+TEST_F(RosNode, StereoOnLiveTopicsEqualsTheHeadlessRun) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_live_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run stereo-vo " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+  StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(rec, SourceKind::kStereo);
+  ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+  ASSERT_TRUE((*dataset)->info().stereo.has_value());
+  const StereoRig rig = *(*dataset)->info().stereo;
+
+  ros::NodeHandle nh;
+  ros::Publisher left = nh.advertise<sensor_msgs::Image>("/cam/left/image_rect", 50);
+  ros::Publisher right = nh.advertise<sensor_msgs::Image>("/cam/right/image_rect", 50);
+  ros::Publisher left_info =
+      nh.advertise<sensor_msgs::CameraInfo>("/cam/left/camera_info", 1, true);
+  ros::Publisher right_info =
+      nh.advertise<sensor_msgs::CameraInfo>("/cam/right/camera_info", 1, true);
+  left_info.publish(RosInfoFromCamera(rig.left, 0, "left"));
+  sensor_msgs::CameraInfo info = RosInfoFromCamera(rig.right, 0, "right");
+  info.P[3] = rig.right.fx * rig.right_from_left.translation().x();  // -fx * baseline.
+  right_info.publish(info);
+  Inbox<nav_msgs::Odometry> odoms;
+  ros::Subscriber sub = nh.subscribe("/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  const std::string out = testing::TempDir("ros_node_live");
+  const std::string log = testing::TempDir("ros_node_live_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline stereo-vo --out " + out +
+                            " --source 'ros://?left=/cam/left/image_rect&right=/cam/right/"
+                            "image_rect&sync=exact&queue=50'",
+                        log));
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        return left.getNumSubscribers() > 0 && right.getNumSubscribers() > 0 &&
+               sub.getNumPublishers() > 0;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (int k = 0; k < 30; ++k) {
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const StereoFrame frame = std::get<StereoFrame>((*dataset)->Retrieve().value());
+    left.publish(EncodeRosImage(frame.left, frame.stamp.sensor_time_s, "left").value());
+    right.publish(EncodeRosImage(frame.right, frame.stamp.sensor_time_s, "right").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(WaitFor([&] { return odoms.messages().size() >= 30; }, 60))
+      << odoms.messages().size() << " odometry messages\n"
+      << testing::ReadTextFile(log);
+  node.Interrupt();
+  EXPECT_EQ(node.Wait(60), 130) << testing::ReadTextFile(log);
+  EXPECT_NE(testing::ReadTextFile(log).find("30 frames"), std::string::npos)
+      << testing::ReadTextFile(log);
+  EXPECT_TRUE(std::filesystem::exists(out + "/trajectory.txt"));
+  const auto received = odoms.messages();
+  ASSERT_EQ(received.size(), 30u);
+  for (const auto& odom : received) {
+    const auto row = trajectory.lower_bound(odom.header.stamp.toSec() - 1e-4);
+    ASSERT_NE(row, trajectory.end());
+    ASSERT_NEAR(row->first, odom.header.stamp.toSec(), 1e-4);
+    const auto& p = odom.pose.pose.position;
+    EXPECT_NEAR(p.x, row->second[0], 1e-6);
+    EXPECT_NEAR(p.y, row->second[1], 1e-6);
+    EXPECT_NEAR(p.z, row->second[2], 1e-6);
+  }
 }
 
 TEST_F(RosNode, PrivateParameterOverridesTheOption) {

@@ -69,7 +69,7 @@ bool MasterAnswers(int port) {
 std::string RoscoreFixture::uri() const { return "http://127.0.0.1:" + std::to_string(port_); }
 
 std::string RoscoreFixture::Env() const {
-  return "ROS_MASTER_URI=" + uri() + " ROS_HOME=" + folder_ + "/home ROS_LOG_DIR=" + folder_ +
+  return "env ROS_MASTER_URI=" + uri() + " ROS_HOME=" + folder_ + "/home ROS_LOG_DIR=" + folder_ +
          "/log ROS_IP=127.0.0.1 ";
 }
 
@@ -88,7 +88,7 @@ std::string RoscoreFixture::Start(double timeout_s) {
   std::filesystem::create_directories(folder_ + "/log");
   const std::string log = folder_ + "/roscore.log";
   ChildProcess child;
-  if (!child.Start(Env() + "exec roscore -p " + std::to_string(port_), log)) {
+  if (!child.Start(Env() + "roscore -p " + std::to_string(port_), log)) {
     return "cannot start roscore";
   }
   pid_ = child.Release();
@@ -124,7 +124,8 @@ bool ChildProcess::Start(const std::string& command, const std::string& log_path
   if (pid < 0) return false;
   if (pid == 0) {
     setpgid(0, 0);
-    const std::string line = command + " > '" + log_path + "' 2>&1";
+    // exec: the child's pid is the command's (signals reach it, not a shell).
+    const std::string line = "exec " + command + " > '" + log_path + "' 2>&1";
     execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -145,6 +146,10 @@ int ChildProcess::Wait(double timeout_s) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return -1;
+}
+
+void ChildProcess::Interrupt() {
+  if (pid_ > 0) kill(pid_, SIGINT);
 }
 
 void ChildProcess::Kill() {

@@ -25,7 +25,8 @@ class RoscoreFixture {
   int port() const { return port_; }
   std::string uri() const;
   const std::string& folder() const { return folder_; }
-  // "ROS_MASTER_URI=... ROS_HOME=... ROS_LOG_DIR=... " for a command line run through /bin/sh.
+  // "env ROS_MASTER_URI=... ROS_HOME=... ROS_LOG_DIR=... ROS_IP=127.0.0.1 " to put before a
+  // command (ChildProcess runs it with exec).
   std::string Env() const;
   // Sets those variables in this process (before ros::init).
   void ExportEnv() const;
@@ -41,7 +42,8 @@ bool MasterAnswers(int port);
 // A TCP port on 127.0.0.1 that was free a moment ago.
 int FreeLoopbackPort();
 
-// A child process run through /bin/sh -c with its output in `log_path`, in its own process group.
+// A child process (`exec COMMAND` through /bin/sh, so its pid is the command's) with its output
+// in `log_path`, in its own process group.
 class ChildProcess {
  public:
   ChildProcess() = default;
@@ -52,6 +54,8 @@ class ChildProcess {
   bool Start(const std::string& command, const std::string& log_path);
   // Waits up to `timeout_s` for the exit; the exit code, or -1 on timeout / a signal.
   int Wait(double timeout_s);
+  // SIGINT to the command (Ctrl-C).
+  void Interrupt();
   // SIGKILL to the process group, then reaps.
   void Kill();
   pid_t pid() const { return pid_; }
