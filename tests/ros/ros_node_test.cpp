@@ -9,9 +9,11 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Empty.h>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <thread>
@@ -278,6 +280,58 @@ TEST_F(RosNode, StereoOnLiveTopicsEqualsTheHeadlessRun) {
     EXPECT_NEAR(p.y, row->second[1], 1e-6);
     EXPECT_NEAR(p.z, row->second[2], 1e-6);
   }
+}
+
+// mobility's scored cloud and score grid reach a subscriber with the documented fields, scores
+// in [0, 1] (NaN unsegmented) and costs in [0, 100] or -1.
+TEST_F(RosNode, MobilityCloudAndGridArrive) {
+  const std::string rec = testing::TempDir("ros_node_terrain") + "/rec";
+  const auto sim = testing::RunProcess(testing::CliPath() + " simulate terrain --out " + rec +
+                                       " --frames 4 --quiet --set sim.rate_hz=2");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  ros::NodeHandle nh;
+  Inbox<sensor_msgs::PointCloud2> clouds;
+  Inbox<nav_msgs::OccupancyGrid> grids;
+  ros::Subscriber cloud_sub =
+      nh.subscribe("/mobility_cloud", 10, &Inbox<sensor_msgs::PointCloud2>::Take, &clouds);
+  ros::Subscriber grid_sub =
+      nh.subscribe("/mobility_grid", 10, &Inbox<nav_msgs::OccupancyGrid>::Take, &grids);
+  const std::string out = testing::TempDir("ros_node_mobility");
+  const std::string log = testing::TempDir("ros_node_mobility_log") + "/node.log";
+  ChildProcess node;
+  // 4 frames 0.5 s apart at the recorded rate: the subscribers connect within the first.
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline mobility --source " + rec + " --out " + out + " --rate recorded --linger 2",
+      log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  ASSERT_FALSE(clouds.messages().empty()) << testing::ReadTextFile(log);
+  ASSERT_FALSE(grids.messages().empty());
+  const sensor_msgs::PointCloud2 cloud = clouds.messages().back();
+  ASSERT_EQ(cloud.fields.size(), 6u);
+  const std::vector<std::string> names = {"x", "y", "z", "score_rule", "score_gpr", "segment"};
+  for (size_t i = 0; i < names.size(); ++i) EXPECT_EQ(cloud.fields[i].name, names[i]);
+  ASSERT_GT(cloud.width, 1000u);
+  int scored = 0;
+  for (uint32_t i = 0; i < cloud.width; ++i) {
+    float v[5];
+    int32_t segment = 0;
+    std::memcpy(v, &cloud.data[i * cloud.point_step], sizeof(v));
+    std::memcpy(&segment, &cloud.data[i * cloud.point_step + 20], sizeof(segment));
+    if (segment < 0) continue;
+    ++scored;
+    EXPECT_GE(v[3], 0.0f);
+    EXPECT_LE(v[3], 1.0f);
+  }
+  EXPECT_GT(scored, static_cast<int>(cloud.width) / 2);
+  const nav_msgs::OccupancyGrid grid = grids.messages().back();
+  EXPECT_EQ(grid.header.frame_id, "mobility_ground");
+  int known = 0;
+  for (int8_t c : grid.data) {
+    EXPECT_TRUE(c == -1 || (c >= 0 && c <= 100));
+    known += c >= 0;
+  }
+  EXPECT_GT(known, 100);
 }
 
 TEST_F(RosNode, PrivateParameterOverridesTheOption) {
