@@ -559,6 +559,11 @@
         <source>A recording played as a live camera (replay://PATH?fps=30&amp;loop=1)</source>
         <translation>Eine Aufnahme, als Live-Kamera abgespielt (replay://PATH?fps=30&amp;loop=1)</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp"/>
+        <source>ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth</source>
+        <translation>ROS-1-Bag-Dateien (.bag): Bilder, RGB-D, Stereo und Punktwolken, mit Referenz aus tf</translation>
+    </message>
 </context>
 <context>
     <name>sightline::DemoGenerator</name>
@@ -803,8 +808,8 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="120"/>
-        <source>Recordings (*.pcd *.oni)</source>
-        <translation>Aufnahmen (*.pcd *.oni)</translation>
+        <source>Recordings (*.pcd *.oni *.bag)</source>
+        <translation>Aufnahmen (*.pcd *.oni *.bag)</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="123"/>
@@ -3760,6 +3765,61 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Vorlage); custom: range_cut_m und max_step_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
+        <translation>Art der aus einer ROS-Bag gelesenen Bilder; auto wählt RGB-D, dann Stereo, dann Mono, dann Punktwolken, je nachdem, was die Topics der Bag erlauben.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
+        <translation>ROS-Bag: Die Referenz ist die Pose von tf_child_frame in diesem tf-Frame; leer nimmt die einzige Transformationskette der Bag auf /tf.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
+        <translation>ROS-Bag: größter Zeitstempelabstand eines Farb-/Tiefen- oder Links-/Rechts-Paars; Bilder ohne Partner werden übersprungen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
+        <translation>ROS-Bag: das CameraInfo-Topic des Bild-Topics; leer sucht neben dem Bild-Topic und nimmt dann das einzige CameraInfo-Topic der Bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
+        <translation>ROS-Bag: das PointCloud2-Topic, das als Punktwolken gelesen wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
+        <translation>ROS-Bag: der tf-Frame der Kamera, dessen Pose in tf_parent_frame die Referenz ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
+        <translation>ROS-Bag: das Farb-, linke oder Mono-Bild-Topic (Image oder CompressedImage); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
+        <translation>ROS-Bag: das Tiefenbild-Topic (16UC1 Millimeter oder 32FC1 Meter); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
+        <translation>ROS-Bag: das nav_msgs/Odometry-Topic; leer nimmt das einzige der Bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
+        <translation>ROS-Bag: das CameraInfo-Topic der rechten Kamera; seine Projektionsmatrix P ergibt die Stereobasis.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
+        <translation>ROS-Bag: das rechte Bild-Topic eines Stereopaars; leer wählt das Topic, dessen Name right sagt, neben einem, dessen Name left sagt.</translation>
     </message>
 </context>
 <context>

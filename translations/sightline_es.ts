@@ -559,6 +559,11 @@
         <source>A recording played as a live camera (replay://PATH?fps=30&amp;loop=1)</source>
         <translation>Una grabación reproducida como cámara en vivo (replay://PATH?fps=30&amp;loop=1)</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp"/>
+        <source>ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth</source>
+        <translation>Archivos bag de ROS 1 (.bag): imágenes, RGB-D, estéreo y nubes de puntos, con referencia de tf</translation>
+    </message>
 </context>
 <context>
     <name>sightline::DemoGenerator</name>
@@ -803,8 +808,8 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="120"/>
-        <source>Recordings (*.pcd *.oni)</source>
-        <translation>Grabaciones (*.pcd *.oni)</translation>
+        <source>Recordings (*.pcd *.oni *.bag)</source>
+        <translation>Grabaciones (*.pcd *.oni *.bag)</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="123"/>
@@ -3760,6 +3765,61 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide del original); custom: range_cut_m y max_step_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
+        <translation>Tipo de fotogramas leídos de una bag de ROS; auto elige RGB-D, luego estéreo, luego mono y luego nubes de puntos, según lo que permitan los topics de la bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
+        <translation>Bag de ROS: la referencia es la pose de tf_child_frame en este frame tf; vacío usa la única cadena de transformaciones de la bag en /tf.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
+        <translation>Bag de ROS: mayor diferencia de marcas de tiempo de un par color/profundidad o izquierda/derecha; las imágenes sin pareja se omiten.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
+        <translation>Bag de ROS: el topic CameraInfo del topic de imagen; vacío busca junto al topic de imagen y luego toma el único topic CameraInfo de la bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
+        <translation>Bag de ROS: el topic PointCloud2 que se lee como nubes de puntos.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
+        <translation>Bag de ROS: el frame tf de la cámara cuya pose en tf_parent_frame es la referencia.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
+        <translation>Bag de ROS: el topic de la imagen en color, izquierda o mono (Image o CompressedImage); vacío lo elige cuando la bag no deja dudas.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
+        <translation>Bag de ROS: el topic de la imagen de profundidad (16UC1 milímetros o 32FC1 metros); vacío lo elige cuando la bag no deja dudas.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
+        <translation>Bag de ROS: el topic nav_msgs/Odometry; vacío toma el único de la bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
+        <translation>Bag de ROS: el topic CameraInfo de la cámara derecha; su matriz de proyección P da la línea base estéreo.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
+        <translation>Bag de ROS: el topic de la imagen derecha de un par estéreo; vacío elige el topic cuyo nombre dice right junto a uno que dice left.</translation>
     </message>
 </context>
 <context>

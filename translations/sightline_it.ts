@@ -559,6 +559,11 @@
         <source>A recording played as a live camera (replay://PATH?fps=30&amp;loop=1)</source>
         <translation>Una registrazione riprodotta come telecamera dal vivo (replay://PATH?fps=30&amp;loop=1)</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/core_texts.cpp"/>
+        <source>ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth</source>
+        <translation>File bag di ROS 1 (.bag): immagini, RGB-D, stereo e nuvole di punti, con riferimento da tf</translation>
+    </message>
 </context>
 <context>
     <name>sightline::DemoGenerator</name>
@@ -803,8 +808,8 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="120"/>
-        <source>Recordings (*.pcd *.oni)</source>
-        <translation>Registrazioni (*.pcd *.oni)</translation>
+        <source>Recordings (*.pcd *.oni *.bag)</source>
+        <translation>Registrazioni (*.pcd *.oni *.bag)</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="123"/>
@@ -3760,6 +3765,61 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide dell&apos;originale); custom: range_cut_m e max_step_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
+        <translation>Tipo di fotogrammi letti da una bag ROS; auto sceglie RGB-D, poi stereo, poi mono, poi nuvole di punti, secondo quanto permettono i topic della bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
+        <translation>Bag ROS: il riferimento è la posa di tf_child_frame in questo frame tf; vuoto usa l&apos;unica catena di trasformazioni della bag su /tf.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
+        <translation>Bag ROS: massima differenza di timestamp di una coppia colore/profondità o sinistra/destra; le immagini senza partner vengono saltate.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
+        <translation>Bag ROS: il topic CameraInfo del topic dell&apos;immagine; vuoto cerca accanto al topic dell&apos;immagine, poi prende l&apos;unico topic CameraInfo della bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
+        <translation>Bag ROS: il topic PointCloud2 letto come nuvole di punti.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
+        <translation>Bag ROS: il frame tf della telecamera la cui posa in tf_parent_frame è il riferimento.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
+        <translation>Bag ROS: il topic dell&apos;immagine a colori, sinistra o mono (Image o CompressedImage); vuoto lo sceglie quando la bag non lascia dubbi.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
+        <translation>Bag ROS: il topic dell&apos;immagine di profondità (16UC1 millimetri o 32FC1 metri); vuoto lo sceglie quando la bag non lascia dubbi.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
+        <translation>Bag ROS: il topic nav_msgs/Odometry; vuoto prende l&apos;unico della bag.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
+        <translation>Bag ROS: il topic CameraInfo della telecamera destra; la sua matrice di proiezione P dà la base stereo.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp"/>
+        <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
+        <translation>Bag ROS: il topic dell&apos;immagine destra di una coppia stereo; vuoto sceglie il topic il cui nome dice right accanto a uno che dice left.</translation>
     </message>
 </context>
 <context>

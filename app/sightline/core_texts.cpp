@@ -16,6 +16,9 @@ const char* const kCoreTexts[] = {
     QT_TRANSLATE_NOOP("sightline::CoreText", "USB webcams through OpenCV's V4L2 backend"),
     QT_TRANSLATE_NOOP("sightline::CoreText",
                       "A recording played as a live camera (replay://PATH?fps=30&loop=1)"),
+    QT_TRANSLATE_NOOP(
+        "sightline::CoreText",
+        "ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth"),
 };
 
 }  // namespace

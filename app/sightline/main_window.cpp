@@ -117,7 +117,7 @@ void MainWindow::BuildMenus() {
   QAction* open_file = file->addAction(tr("Open recording &file (PCD, ONI)..."));
   connect(open_file, &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open point cloud"), QString(),
-                                                      tr("Recordings (*.pcd *.oni)"));
+                                                      tr("Recordings (*.pcd *.oni *.bag)"));
     if (!path.isEmpty()) OpenPath(path);
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));
@@ -142,6 +142,7 @@ void MainWindow::BuildMenus() {
   QMenu* sensors = menuBar()->addMenu(tr("&Sensors"));
   sensors->setToolTipsVisible(true);
   for (const DriverInfo& driver : BuiltinDrivers()) {
+    if (driver.name == "rosbag") continue;  // Files: File > Open recording file.
     const Status available = driver.available ? driver.available() : Status::Ok();
     QString text = CoreText(driver.description);
     text.replace('&', QStringLiteral("&&"));  // "?fps=30&loop=1" is no accelerator.

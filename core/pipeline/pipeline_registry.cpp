@@ -256,6 +256,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   context.out_dir = request.out_dir;
   if (pipeline->declare_options)
     SIGHTLINE_RETURN_IF_ERROR(pipeline->declare_options(&context.options));
+  // A file a driver reads (a .bag) takes that driver's options too (io.rosbag.*).
+  SIGHTLINE_RETURN_IF_ERROR(DeclareSourceOptions(request.dataset_path, &context.options));
   if (!request.profile_path.empty()) {
     SIGHTLINE_RETURN_IF_ERROR(context.options.LoadYaml(request.profile_path));
   }

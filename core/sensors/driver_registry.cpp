@@ -5,6 +5,7 @@
 
 #include "core/common/text_file.h"
 #include "core/io/dataset.h"
+#include "core/io/rosbag_options.h"
 #include "core/sensors/aravis_options.h"
 #include "core/sensors/openni2_options.h"
 #include "core/sensors/replay_source.h"
@@ -12,6 +13,9 @@
 
 #ifdef SIGHTLINE_HAVE_OPENNI2
 #include "core/sensors/openni2_source.h"
+#endif
+#ifdef SIGHTLINE_HAVE_ROS
+#include "core/ros/bag_source.h"
 #endif
 #ifdef SIGHTLINE_HAVE_ARAVIS
 #include "core/sensors/aravis_source.h"
@@ -25,6 +29,7 @@ constexpr char kOpenNi2Scheme[] = "openni2://";
 constexpr char kAravisScheme[] = "aravis://";
 constexpr char kV4l2Scheme[] = "v4l2://";
 constexpr char kReplayScheme[] = "replay://";
+constexpr char kRosBagScheme[] = "rosbag://";
 
 bool StartsWith(const std::string& text, const std::string& prefix) {
   return text.rfind(prefix, 0) == 0;
@@ -50,6 +55,14 @@ bool OpenNi2IsRecording(const std::string& path) {
   std::string ext = path.substr(path.size() - 4);
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext == ".oni";
+}
+
+// A path ending in ".bag", any case (as IsBagPath in core/ros, which may not be built).
+bool IsRosBagPath(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".bag";
 }
 
 // Makes a driver that was configured out say so everywhere it is asked for.
@@ -181,10 +194,43 @@ DriverInfo ReplayDriver() {
   return d;
 }
 
+DriverInfo RosBagDriver() {
+  DriverInfo d;
+  d.name = "rosbag";
+  d.description =
+      "ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth";
+  d.scheme = kRosBagScheme;
+  d.declare_options = [](OptionSet* set) { return set->Declare(RosBagOptions::Describe()); };
+#ifdef SIGHTLINE_HAVE_ROS
+  d.available = [] { return BagSource::Available(); };
+  d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
+  d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
+    StatusOr<RosBagOptions> options = ExtractChecked<RosBagOptions>(set);
+    if (!options.ok()) return options.status();
+    return std::unique_ptr<Source>(
+        std::make_unique<BagSource>(StripScheme(uri, kRosBagScheme), *options));
+  };
+#else
+  MarkNotBuilt(&d, "SIGHTLINE_WITH_ROS", "librosbag-dev");
+#endif
+  return d;
+}
+
+// The driver that opens `uri`, or nullptr for a dataset path.
+const DriverInfo* DriverFor(const std::vector<DriverInfo>& drivers, const std::string& uri) {
+  const DriverInfo* driver = nullptr;
+  for (const DriverInfo& d : drivers) {
+    if (StartsWith(uri, d.scheme)) driver = &d;
+  }
+  if (driver == nullptr && OpenNi2IsRecording(uri)) driver = FindDriver(drivers, "openni2");
+  if (driver == nullptr && IsRosBagPath(uri)) driver = FindDriver(drivers, "rosbag");
+  return driver;
+}
+
 }  // namespace
 
 std::vector<DriverInfo> BuiltinDrivers() {
-  return {OpenNi2Driver(), AravisDriver(), V4l2Driver(), ReplayDriver()};
+  return {OpenNi2Driver(), AravisDriver(), V4l2Driver(), ReplayDriver(), RosBagDriver()};
 }
 
 const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::string& name) {
@@ -202,7 +248,20 @@ Status DeclareSensorOptions(OptionSet* options) {
 
 bool IsSensorUri(const std::string& uri) {
   return StartsWith(uri, kOpenNi2Scheme) || StartsWith(uri, kAravisScheme) ||
-         StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) || OpenNi2IsRecording(uri);
+         StartsWith(uri, kV4l2Scheme) || StartsWith(uri, kReplayScheme) ||
+         StartsWith(uri, kRosBagScheme) || OpenNi2IsRecording(uri) || IsRosBagPath(uri);
+}
+
+Status DeclareSourceOptions(const std::string& uri, OptionSet* options) {
+  const std::vector<DriverInfo> drivers = BuiltinDrivers();
+  const DriverInfo* driver = DriverFor(drivers, uri);
+  if (driver == nullptr) return Status::Ok();
+  OptionSet own;
+  SIGHTLINE_RETURN_IF_ERROR(driver->declare_options(&own));
+  for (const OptionSpec& spec : own.specs()) {
+    if (!options->Has(spec.key)) SIGHTLINE_RETURN_IF_ERROR(options->Declare(spec));
+  }
+  return Status::Ok();
 }
 
 Status CheckOniFile(const std::string& path) {
@@ -224,21 +283,17 @@ Status CheckOniFile(const std::string& path) {
 
 StatusOr<std::unique_ptr<Source>> OpenSource(const std::string& uri, const OptionSet& options) {
   const std::vector<DriverInfo> drivers = BuiltinDrivers();
-  const DriverInfo* driver = nullptr;
-  for (const DriverInfo& d : drivers) {
-    if (StartsWith(uri, d.scheme)) driver = &d;
-  }
-  if (driver == nullptr && OpenNi2IsRecording(uri)) {
+  const DriverInfo* driver = DriverFor(drivers, uri);
+  if (driver != nullptr && driver->name == "openni2" && !StartsWith(uri, kOpenNi2Scheme)) {
     SIGHTLINE_RETURN_IF_ERROR(CheckOniFile(uri));
-    driver = FindDriver(drivers, "openni2");
   }
   if (driver == nullptr) {
     const size_t scheme_end = uri.find("://");
     if (scheme_end != std::string::npos && uri.find('/') > scheme_end) {
       return InvalidArgument(
           "unknown source scheme '" + uri.substr(0, scheme_end + 3) + "' in '" + uri +
-          "' (known: openni2://, aravis://, v4l2://, replay://, an .oni file or a "
-          "dataset path)");
+          "' (known: openni2://, aravis://, v4l2://, replay://, rosbag://, an .oni or .bag "
+          "file or a dataset path)");
     }
     return OpenDataset(uri);
   }

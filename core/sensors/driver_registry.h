@@ -36,7 +36,7 @@ struct DriverInfo {
       create;
 };
 
-// openni2, aravis, v4l2 and replay, in that order.
+// openni2, aravis, v4l2, replay and rosbag, in that order.
 std::vector<DriverInfo> BuiltinDrivers();
 
 // The driver called `name` in `drivers`, or nullptr.
@@ -45,8 +45,13 @@ const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::
 // Declares the options of every built-in driver.
 Status DeclareSensorOptions(OptionSet* options);
 
-// True for "openni2://...", "aravis://...", "v4l2://...", "replay://..." and paths ending in .oni.
+// True for "openni2://...", "aravis://...", "v4l2://...", "replay://...", "rosbag://..." and
+// paths ending in .oni or .bag (files a driver reads rather than dataset folders).
 bool IsSensorUri(const std::string& uri);
+
+// Declares the options of the driver that opens `uri` (e.g. io.rosbag.* for a .bag file) that
+// `options` lacks, so that a pipeline run on it takes `--set` for them. Nothing for datasets.
+Status DeclareSourceOptions(const std::string& uri, OptionSet* options);
 
 // Bytes of an ONI recording's file header ("NI10", version, largest timestamp, largest node id).
 inline constexpr size_t kOniHeaderBytes = 24;
@@ -64,6 +69,7 @@ Status CheckOniFile(const std::string& path);
 //   "aravis://LEFT_ID,RIGHT_ID?calibration_file=FILE" attaches a stereo calibration);
 //   "v4l2://0", "v4l2:///dev/video0";
 //   "replay://PATH?fps=30&loop=1" (a recording paced as a live camera, replay_source.h);
+//   "file.bag" or "rosbag://file.bag" (a ROS bag, core/ros/bag_source.h; io.rosbag.* options);
 //   anything else: a dataset or recording folder through OpenDataset().
 // core/io cannot open sensors itself (core/sensors sits above it); front ends call this.
 //

@@ -13,11 +13,12 @@ namespace {
 
 TEST(DriverRegistry, ListsEveryDriverWithAvailabilityAndReason) {
   const std::vector<DriverInfo> drivers = BuiltinDrivers();
-  ASSERT_EQ(drivers.size(), 4u);
+  ASSERT_EQ(drivers.size(), 5u);
   EXPECT_EQ(drivers[0].name, "openni2");
   EXPECT_EQ(drivers[1].name, "aravis");
   EXPECT_EQ(drivers[2].name, "v4l2");
   EXPECT_EQ(drivers[3].name, "replay");
+  EXPECT_EQ(drivers[4].name, "rosbag");
   for (const DriverInfo& d : drivers) {
     EXPECT_FALSE(d.description.empty()) << d.name;
     EXPECT_EQ(d.scheme, d.name + "://");
@@ -33,6 +34,12 @@ TEST(DriverRegistry, ListsEveryDriverWithAvailabilityAndReason) {
   EXPECT_TRUE(FindDriver(drivers, "aravis")->available().ok());
 #else
   EXPECT_NE(FindDriver(drivers, "aravis")->available().message().find("not built"),
+            std::string::npos);
+#endif
+#ifdef SIGHTLINE_HAVE_ROS
+  EXPECT_TRUE(FindDriver(drivers, "rosbag")->available().ok());
+#else
+  EXPECT_NE(FindDriver(drivers, "rosbag")->available().message().find("not built"),
             std::string::npos);
 #endif
 #ifndef SIGHTLINE_HAVE_OPENNI2
@@ -61,6 +68,8 @@ TEST(DriverRegistry, SensorUris) {
   EXPECT_TRUE(IsSensorUri("aravis://Fake_1"));
   EXPECT_TRUE(IsSensorUri("v4l2://0"));
   EXPECT_TRUE(IsSensorUri("/data/room.ONI"));
+  EXPECT_TRUE(IsSensorUri("/data/walk.bag"));
+  EXPECT_TRUE(IsSensorUri("rosbag:///data/walk.bag"));
   EXPECT_FALSE(IsSensorUri("../shared/data/tum_fr1_desk"));
 }
 

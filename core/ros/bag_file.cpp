@@ -1,0 +1,142 @@
+#include "core/ros/bag_file.h"
+
+#include <cctype>
+#include <cstring>
+#include <fstream>
+
+#include "core/common/text_file.h"
+
+namespace sightline {
+namespace {
+
+constexpr char kMagic[] = "#ROSBAG V2.0\n";
+constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
+constexpr uint8_t kOpBagHeader = 0x03;
+constexpr uint8_t kOpChunk = 0x05;
+// A record header is a few named fields; anything far larger is a damaged length.
+constexpr uint32_t kMaxHeaderBytes = 1u << 20;
+
+uint32_t ReadU32(const char* bytes) {
+  uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<uint8_t>(bytes[i]);
+  return value;
+}
+
+uint64_t ReadU64(const char* bytes) {
+  uint64_t value = 0;
+  for (int i = 7; i >= 0; --i) value = (value << 8) | static_cast<uint8_t>(bytes[i]);
+  return value;
+}
+
+// The fields of one record header: "name=value" entries, each after its 4-byte length.
+std::map<std::string, std::string> HeaderFields(const std::string& header) {
+  std::map<std::string, std::string> fields;
+  size_t pos = 0;
+  while (pos + 4 <= header.size()) {
+    const uint32_t len = ReadU32(header.data() + pos);
+    pos += 4;
+    if (len > header.size() - pos) break;
+    const std::string field = header.substr(pos, len);
+    pos += len;
+    const size_t eq = field.find('=');
+    if (eq != std::string::npos) fields[field.substr(0, eq)] = field.substr(eq + 1);
+  }
+  return fields;
+}
+
+Status Truncated(const std::string& path, int64_t at, int64_t needed, int64_t size) {
+  return ParseError(path + " is truncated: the record at byte " + std::to_string(at) + " needs " +
+                    std::to_string(needed) + " bytes but the file ends after " +
+                    std::to_string(size) + " (copied or recorded only in part?)");
+}
+
+// Checks the format line; ParseError naming what the file starts with otherwise.
+Status CheckMagic(const std::string& path, std::ifstream& in) {
+  char magic[kMagicBytes] = {};
+  in.read(magic, kMagicBytes);
+  const std::string got(magic, static_cast<size_t>(in.gcount()));
+  if (got == std::string(kMagic, kMagicBytes)) return Status::Ok();
+  if (got.rfind("#ROSBAG V", 0) == 0) {
+    const std::string version = got.substr(9, got.find('\n') - 9);
+    return ParseError(path + " is a version " + version + " ROS bag; only format 2.0 is read");
+  }
+  return ParseError(path + " is not a ROS bag (it does not start with '#ROSBAG V2.0')");
+}
+
+}  // namespace
+
+std::string BagFileLayout::CompressionText() const {
+  if (compression.empty()) return "none (no chunks)";
+  if (compression.size() == 1) return compression.begin()->first;
+  std::string text;
+  for (const auto& [name, count] : compression) {
+    text += (text.empty() ? "" : ", ") + name + " (" + std::to_string(count) + " of " +
+            std::to_string(chunks) + " chunks)";
+  }
+  return text;
+}
+
+bool IsBagPath(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".bag";
+}
+
+StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
+  if (!FileExists(path) && !DirectoryExists(path)) return NotFound(path + ": no such file");
+  SIGHTLINE_RETURN_IF_ERROR(CheckRegularFile(path, path));
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  BagFileLayout layout;
+  layout.file_bytes = static_cast<int64_t>(in.tellg());
+  in.seekg(0);
+  SIGHTLINE_RETURN_IF_ERROR(CheckMagic(path, in));
+  bool saw_header = false;
+  int64_t pos = static_cast<int64_t>(kMagicBytes);
+  while (pos < layout.file_bytes) {
+    char len_bytes[4];
+    if (layout.file_bytes - pos < 4) return Truncated(path, pos, 4, layout.file_bytes);
+    in.seekg(pos);
+    in.read(len_bytes, 4);
+    const uint32_t header_len = ReadU32(len_bytes);
+    if (header_len > kMaxHeaderBytes) {
+      return ParseError(path + ": the record at byte " + std::to_string(pos) + " has a header of " +
+                        std::to_string(header_len) + " bytes (damaged bag?)");
+    }
+    if (layout.file_bytes - pos < 8 + static_cast<int64_t>(header_len)) {
+      return Truncated(path, pos, 8 + header_len, layout.file_bytes);
+    }
+    std::string header(header_len, '\0');
+    in.read(header.data(), header_len);
+    in.read(len_bytes, 4);
+    const int64_t data_len = ReadU32(len_bytes);
+    const int64_t end = pos + 8 + header_len + data_len;
+    if (end > layout.file_bytes) return Truncated(path, pos, end - pos, layout.file_bytes);
+    const std::map<std::string, std::string> fields = HeaderFields(header);
+    const auto op = fields.find("op");
+    const uint8_t code = op == fields.end() || op->second.empty() ? 0 : op->second[0];
+    if (code == kOpBagHeader) {
+      const auto index = fields.find("index_pos");
+      if (index != fields.end() && index->second.size() == 8) {
+        layout.index_pos = ReadU64(index->second.data());
+      }
+      saw_header = true;
+    } else if (code == kOpChunk) {
+      const auto compression = fields.find("compression");
+      ++layout.chunks;
+      ++layout.compression[compression == fields.end() ? "none" : compression->second];
+    }
+    pos = end;
+  }
+  if (!saw_header) return ParseError(path + ": no bag header record (damaged bag?)");
+  if (layout.index_pos == 0) {
+    return ParseError(path + " has no index (it was not closed when recorded): run 'rosbag " +
+                      "reindex " + path + "'");
+  }
+  if (layout.index_pos >= static_cast<uint64_t>(layout.file_bytes)) {
+    return Truncated(path, static_cast<int64_t>(layout.index_pos), 1, layout.file_bytes);
+  }
+  return layout;
+}
+
+}  // namespace sightline

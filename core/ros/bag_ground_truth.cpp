@@ -1,0 +1,135 @@
+#include <tf2_msgs/TFMessage.h>
+
+#include <algorithm>
+#include <map>
+
+#include "core/ros/bag_messages.h"
+
+namespace sightline {
+namespace {
+
+std::string FrameName(const std::string& frame) {
+  return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame;
+}
+
+using FramePair = std::pair<std::string, std::string>;  // (parent, child) without leading '/'.
+
+std::string PairText(const FramePair& pair) { return pair.first + " -> " + pair.second; }
+
+Status AtMessage(const Status& status, const std::string& path, const std::string& topic,
+                 int64_t index) {
+  return status.WithContext(path + ": " + topic + " message " + std::to_string(index));
+}
+
+// Every transform on the bag's dynamic tf topics (not /tf_static), by frame pair.
+StatusOr<std::map<FramePair, Trajectory>> ReadTransforms(const rosbag::Bag& bag,
+                                                         const BagSummary& summary) {
+  std::map<FramePair, Trajectory> edges;
+  for (const BagTopic* topic : summary.OfType(kRosTfType)) {
+    if (topic->name.find("tf_static") != std::string::npos) continue;
+    int64_t index = 0;
+    for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic->name))) {
+      auto msg = m.instantiate<tf2_msgs::TFMessage>();
+      if (!msg) {
+        return ParseError(summary.path + ": " + topic->name + " message " + std::to_string(index) +
+                          " is not a tf2_msgs/TFMessage");
+      }
+      for (const geometry_msgs::TransformStamped& t : msg->transforms) {
+        StatusOr<Eigen::Isometry3d> pose =
+            IsometryFromRos(t.transform.translation, t.transform.rotation);
+        if (!pose.ok()) return AtMessage(pose.status(), summary.path, topic->name, index);
+        const double stamp = t.header.stamp.isZero() ? m.getTime().toSec() : t.header.stamp.toSec();
+        edges[{FrameName(t.header.frame_id), FrameName(t.child_frame_id)}].Add(stamp, *pose);
+      }
+      ++index;
+    }
+  }
+  for (auto& [pair, trajectory] : edges) {
+    std::stable_sort(trajectory.mutable_poses().begin(), trajectory.mutable_poses().end(),
+                     [](const TimedPose& a, const TimedPose& b) { return a.time_s < b.time_s; });
+  }
+  return edges;
+}
+
+std::string PairsText(const std::map<FramePair, Trajectory>& edges) {
+  std::string text;
+  for (const auto& [pair, trajectory] : edges) {
+    text += (text.empty() ? "" : ", ") + PairText(pair) + " (" + std::to_string(trajectory.size()) +
+            ")";
+  }
+  return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+StatusOr<Trajectory> ReadBagOdometry(const rosbag::Bag& bag, const std::string& path,
+                                     const std::string& topic) {
+  Trajectory odometry;
+  int64_t index = 0;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic))) {
+    auto msg = m.instantiate<nav_msgs::Odometry>();
+    if (!msg) {
+      return ParseError(path + ": " + topic + " message " + std::to_string(index) +
+                        " is not a nav_msgs/Odometry");
+    }
+    StatusOr<Eigen::Isometry3d> pose =
+        IsometryFromRos(msg->pose.pose.position, msg->pose.pose.orientation);
+    if (!pose.ok()) return AtMessage(pose.status(), path, topic, index);
+    odometry.Add(msg->header.stamp.isZero() ? m.getTime().toSec() : msg->header.stamp.toSec(),
+                 *pose);
+    ++index;
+  }
+  std::stable_sort(odometry.mutable_poses().begin(), odometry.mutable_poses().end(),
+                   [](const TimedPose& a, const TimedPose& b) { return a.time_s < b.time_s; });
+  return odometry;
+}
+
+StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
+                                                         const BagSummary& summary,
+                                                         const RosBagOptions& options,
+                                                         const std::string& camera_frame,
+                                                         std::vector<std::string>* notes) {
+  StatusOr<std::map<FramePair, Trajectory>> edges = ReadTransforms(bag, summary);
+  if (!edges.ok()) return edges.status();
+  if (!options.tf_parent_frame.empty()) {
+    const FramePair wanted{FrameName(options.tf_parent_frame), FrameName(options.tf_child_frame)};
+    auto it = edges->find(wanted);
+    if (it == edges->end()) {
+      return InvalidArgument(summary.path + ": no transform " + PairText(wanted) +
+                             " on /tf (io.rosbag.tf_parent_frame / tf_child_frame); the bag's " +
+                             "transforms: " + PairsText(*edges));
+    }
+    notes->push_back("ground truth: tf " + PairText(wanted) + " (" +
+                     std::to_string(it->second.size()) + " poses)");
+    return std::optional<Trajectory>(it->second);
+  }
+  if (edges->size() == 1) {
+    notes->push_back("ground truth: tf " + PairText(edges->begin()->first) + " (" +
+                     std::to_string(edges->begin()->second.size()) +
+                     " poses; the bag's only transform)");
+    return std::optional<Trajectory>(edges->begin()->second);
+  }
+  for (const auto& [pair, trajectory] : *edges) {
+    if (!camera_frame.empty() && pair.second == FrameName(camera_frame)) {
+      notes->push_back("ground truth: tf " + PairText(pair) + " (" +
+                       std::to_string(trajectory.size()) + " poses; the images' frame)");
+      return std::optional<Trajectory>(trajectory);
+    }
+  }
+  if (edges->size() > 1) {
+    notes->push_back("no ground truth: several tf transforms (" + PairsText(*edges) +
+                     "); choose with --set io.rosbag.tf_parent_frame=A --set "
+                     "io.rosbag.tf_child_frame=B");
+  }
+  return std::optional<Trajectory>();
+}
+
+std::string FirstFrameId(const rosbag::Bag& bag, const std::string& topic) {
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic))) {
+    boost::shared_ptr<RosStampOnly> header = m.instantiate<RosStampOnly>();
+    return header ? header->frame_id : "";
+  }
+  return "";
+}
+
+}  // namespace sightline

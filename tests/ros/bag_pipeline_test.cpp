@@ -1,0 +1,119 @@
+// Pipelines run on the TUM bag give the figures of the same frames as a TUM folder.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "core/io/tum_rgbd_source.h"
+#include "core/pipeline/pipeline_registry.h"
+#include "core/ros/bag_source.h"
+#include "tests/support/test_data.h"
+
+namespace sightline {
+namespace {
+
+// Figures of a run that do not depend on the host's speed.
+std::map<std::string, double> Figures(const RunReport& report) {
+  std::map<std::string, double> figures;
+  for (const auto& [key, value] : report.result.accuracy) figures["accuracy/" + key] = value;
+  for (const auto& [key, value] : report.result.counts) {
+    if (key != "wall_time_s" && key != "frames_per_second") figures["counts/" + key] = value;
+  }
+  figures["frames"] = double(report.result.frames);
+  return figures;
+}
+
+StatusOr<RunReport> RunOn(const std::string& pipeline, const std::string& path,
+                          const std::vector<std::string>& overrides = {}) {
+  RunRequest request;
+  request.pipeline = pipeline;
+  request.dataset_path = path;
+  request.out_dir = testing::TempDir(pipeline + "_" + std::to_string(path.size()));
+  request.overrides = overrides;
+  return RunPipeline(BuiltinPipelines(), request);
+}
+
+// The largest angle [deg] between the bag's ground truth and the folder's at the frames: the
+// bag's /tf holds the mocap sample at or after each colour stamp, the folder's nearest sample
+// can be 10 ms earlier (see BagSource.TumBagGivesTheFramesCameraAndTruthOfTheTumFolder).
+double TruthDifferenceDeg(const std::string& bag_path, const std::string& folder) {
+  BagSource bag(bag_path);
+  TumRgbdSource tum(folder);
+  EXPECT_TRUE(bag.Open().ok() && tum.Open().ok());
+  double worst = 0;
+  for (int64_t i = 0; i < bag.info().frame_count; ++i) {
+    auto a = bag.ground_truth()->Nearest(bag.FrameTimeS(i), 0.02);
+    auto b = tum.ground_truth()->Nearest(tum.FrameTimeS(i), 0.02);
+    if (!a || !b) return 180;
+    const Eigen::Matrix3d r = bag.ground_truth()->poses()[*a].world_from_sensor.rotation();
+    const Eigen::Matrix3d s = tum.ground_truth()->poses()[*b].world_from_sensor.rotation();
+    worst = std::max(worst, Eigen::AngleAxisd(r.transpose() * s).angle() * 180 / M_PI);
+  }
+  return worst;
+}
+
+// The poses of out_dir/trajectory.txt.
+Trajectory Estimate(const RunReport& report) {
+  StatusOr<Trajectory> t = ReadTumTrajectory(
+      std::filesystem::path(report.metrics_path).parent_path().string() + "/trajectory.txt");
+  return t.ok() ? *t : Trajectory();
+}
+
+class BagPipelines : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BagPipelines, GiveTheFiguresOfTheTumFolder) {
+  SIGHTLINE_REQUIRE_DATA(bag, "rosbags/tum_fr1_desk.bag");
+  SIGHTLINE_REQUIRE_DATA(folder, "tum_fr1_desk");
+  StatusOr<RunReport> from_folder = RunOn(GetParam(), folder);
+  StatusOr<RunReport> from_bag = RunOn(GetParam(), bag);
+  ASSERT_TRUE(from_folder.ok()) << from_folder.status().ToString();
+  ASSERT_TRUE(from_bag.ok()) << from_bag.status().ToString();
+  EXPECT_EQ(from_bag->result.dataset_format, "ROS bag");
+  const std::map<std::string, double> a = Figures(*from_folder), b = Figures(*from_bag);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(a.size(), 3u);
+  // Heading errors are measured against the ground truth, which differs by up to this much.
+  const double truth_deg = TruthDifferenceDeg(bag, folder);
+  EXPECT_LT(truth_deg, 1.0);
+  for (const auto& [key, value] : a) {
+    ASSERT_TRUE(b.count(key)) << key;
+    if (key.rfind("accuracy/heading_error_deg", 0) == 0) {
+      EXPECT_NEAR(b.at(key), value, 2 * truth_deg) << key;
+      continue;
+    }
+    // Depth PNG / 5000 and the bag's float metres round differently in the last float bits.
+    EXPECT_NEAR(b.at(key), value, 1e-5 * std::max(1.0, std::abs(value))) << key;
+  }
+  // The estimates themselves agree (mapping writes trajectory.txt; mobility has none).
+  const Trajectory x = Estimate(*from_folder), y = Estimate(*from_bag);
+  ASSERT_EQ(x.size(), y.size());
+  if (GetParam() == "mapping") EXPECT_EQ(x.size(), 9u);
+  for (size_t i = 0; i < x.size(); ++i) {
+    EXPECT_NEAR(x.poses()[i].time_s, y.poses()[i].time_s, 1e-6);
+    EXPECT_LT(
+        (x.poses()[i].world_from_sensor.matrix() - y.poses()[i].world_from_sensor.matrix()).norm(),
+        1e-5)
+        << i;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(TumFr1Desk, BagPipelines, ::testing::Values("mapping", "mobility"));
+
+TEST(BagPipelines, MonoSlamRefusesTheRgbdBagAsItRefusesTheFolderUnlessAskedForMono) {
+  SIGHTLINE_REQUIRE_DATA(bag, "rosbags/tum_fr1_desk.bag");
+  SIGHTLINE_REQUIRE_DATA(folder, "tum_fr1_desk");
+  StatusOr<RunReport> from_folder = RunOn("mono-slam", folder);
+  StatusOr<RunReport> from_bag = RunOn("mono-slam", bag);
+  ASSERT_FALSE(from_folder.ok());
+  ASSERT_FALSE(from_bag.ok());
+  EXPECT_EQ(from_bag.status().code(), from_folder.status().code());
+  EXPECT_NE(from_bag.status().message().find("RGB-D"), std::string::npos);
+  // io.rosbag.kind=mono reads the colour topic alone: every frame reaches the pipeline.
+  StatusOr<RunReport> mono = RunOn("mono-slam", bag, {"io.rosbag.kind=mono"});
+  ASSERT_TRUE(mono.ok()) << mono.status().ToString();
+  EXPECT_EQ(mono->metrics.frames, 9);
+}
+
+}  // namespace
+}  // namespace sightline
