@@ -17,6 +17,7 @@
 #include "core/common/timing.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/ros/ros_live_source.h"
+#include "core/sensors/driver_registry.h"
 
 namespace sightline::node {
 
@@ -73,6 +74,10 @@ StatusOr<std::vector<std::string>> NodeOverrides(const PipelineInfo& info, const
                                                  const ros::NodeHandle& private_nh) {
   OptionSet declared;
   if (info.declare_options) SIGHTLINE_RETURN_IF_ERROR(info.declare_options(&declared));
+  // A source file's driver options too (a .bag's io.rosbag.*), as RunPipeline declares them.
+  if (!IsRosLiveUri(args.source)) {
+    SIGHTLINE_RETURN_IF_ERROR(DeclareSourceOptions(args.source, &declared));
+  }
   std::vector<std::string> overrides;
   // The mapping frames carry the global map (for the `map` topic) every frame.
   if (declared.Has("mapping.stitch.render_every_n")) {
