@@ -178,6 +178,9 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
   if (options_.stitch.render_every_n > 0 && frames_ % options_.stitch.render_every_n == 0 &&
       !map_.empty()) {
     result->map_image = std::make_shared<const cv::Mat>(map_.RenderBgr(trajectory_));
+    result->map_gray = std::make_shared<const cv::Mat>(map_.RenderGray());
+    result->map_occupied_threshold = map_.options().occupied_threshold;
+    result->map_free_threshold = map_.options().free_threshold;
     result->map_origin = map_.origin();
     result->map_resolution_m = map_.resolution_m();
     result->trajectory = std::make_shared<const std::vector<Pose2d>>(trajectory_);

@@ -180,6 +180,11 @@ struct MappingFrameResult {
   // Every mapping.stitch.render_every_n frames (else null): the global map as BGR with the
   // trajectory in red; map_origin is the world position of its bottom-left corner.
   std::shared_ptr<const cv::Mat> map_image;
+  // With map_image: the same map as the ROS map_server image (OccupancyGridMap::RenderGray: 0
+  // occupied, 254 free, 205 unknown, row 0 the largest world y) and its thresholds.
+  std::shared_ptr<const cv::Mat> map_gray;
+  double map_occupied_threshold = 0.65;
+  double map_free_threshold = 0.196;
   Eigen::Vector2d map_origin = Eigen::Vector2d::Zero();
   double map_resolution_m = 0;
   // With map_image: the estimated poses so far (world_from_base), to draw or plot.

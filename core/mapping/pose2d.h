@@ -8,16 +8,18 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
-#include <numbers>
 
 namespace sightline {
 
+// Pi without <numbers>: the ROS translation units (C++17) include the mapping results.
+inline constexpr double kPose2dPi = 3.14159265358979323846;
+
 // Wraps an angle to [-pi, pi).
 inline double WrapAngle(double angle_rad) {
-  const double two_pi = 2 * std::numbers::pi;
-  double a = std::fmod(angle_rad + std::numbers::pi, two_pi);
+  const double two_pi = 2 * kPose2dPi;
+  double a = std::fmod(angle_rad + kPose2dPi, two_pi);
   if (a < 0) a += two_pi;
-  return a - std::numbers::pi;
+  return a - kPose2dPi;
 }
 
 // Wraps an angle to [-pi/2, pi/2): the direction of an undirected line.
@@ -27,8 +29,8 @@ inline double WrapHalfTurn(double angle_rad) { return 0.5 * WrapAngle(2 * angle_
 // 90 degrees.
 inline double WrapQuarterTurn(double angle_rad) { return 0.25 * WrapAngle(4 * angle_rad); }
 
-inline double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
-inline double RadToDeg(double rad) { return rad * 180.0 / std::numbers::pi; }
+inline double DegToRad(double deg) { return deg * kPose2dPi / 180.0; }
+inline double RadToDeg(double rad) { return rad * 180.0 / kPose2dPi; }
 
 // A pose on the floor: world_from_base as position and heading.
 struct Pose2d {

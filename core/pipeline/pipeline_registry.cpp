@@ -94,6 +94,7 @@ FeedOutcome FeedFrames(Pipeline& pipeline, Source& source, const RunContext& con
       context.timing->Add("read", (process_start - read_start) * 1000.0);
       AddFrameTiming(table, **result, (end - process_start) * 1000.0, context.timing);
     }
+    if (context.on_result) context.on_result(*result, index);
     if (context.progress) context.progress(index + 1, total);
   }
   if (out.processed == 0) out.stop = OutOfRange(context.dataset_path + " gave no frame to process");
@@ -110,7 +111,8 @@ std::string AbortReason(const Status& status) {
 StatusOr<RunResult> RunHeadless(const PipelineInfo& info, const RunContext& context) {
   if (!info.create) return Internal("pipeline '" + info.name + "' has no object to run");
   StatusOr<std::unique_ptr<Source>> opened =
-      OpenForPipeline(info, context.dataset_path, context.options);
+      context.open_source ? context.open_source(context.dataset_path)
+                          : OpenForPipeline(info, context.dataset_path, context.options);
   if (!opened.ok()) return opened.status();
   Source& source = **opened;
   if (!info.Accepts(source.info().kind)) {
@@ -268,6 +270,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   context.timing = &timing;
   context.progress = request.progress;
   context.cancel = request.cancel;
+  context.on_result = request.on_result;
+  context.open_source = request.open_source;
 
   RunReport report;
   const double start_s = HostTimeS();

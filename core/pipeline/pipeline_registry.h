@@ -18,6 +18,15 @@ namespace sightline {
 
 // Called after each frame with frames done and the total (-1 if unknown).
 using ProgressCallback = std::function<void(int64_t done, int64_t total)>;
+// Called on the loop's thread with each processed frame's result (`index`: its stream index)
+// before the next frame is read: a front end that publishes results (sightline-node) hooks into
+// the one headless loop here. It may block (e.g. to pace a recording at its recorded rate).
+using ResultCallback =
+    std::function<void(const std::shared_ptr<const PipelineResult>& result, int64_t index)>;
+
+// Opens a run's source in place of OpenSource/OpenDataset, for a source a front end opens
+// itself (sightline-node's live ros:// topics, which need its ROS node).
+using SourceOpener = std::function<StatusOr<std::unique_ptr<Source>>(const std::string& path)>;
 
 // What a headless pipeline run gets.
 struct RunContext {
@@ -27,6 +36,8 @@ struct RunContext {
   TimingStats* timing = nullptr;  // Stages add their durations here, and "total" per frame.
   ProgressCallback progress;      // May be empty.
   const std::atomic<bool>* cancel = nullptr;  // Checked between frames; may be null.
+  ResultCallback on_result;                   // May be empty.
+  SourceOpener open_source;                   // May be empty: OpenSource/OpenDataset.
 
   bool Cancelled() const { return cancel != nullptr && cancel->load(); }
 };
@@ -83,6 +94,8 @@ struct RunRequest {
   std::vector<std::string> overrides;  // "key=value", applied after the profile.
   ProgressCallback progress;
   const std::atomic<bool>* cancel = nullptr;
+  ResultCallback on_result;  // Each frame's result, as RunContext::on_result.
+  SourceOpener open_source;  // As RunContext::open_source.
 };
 
 // Adds one processed frame's timing to `timing`: every statistic of unit "ms" under its stage

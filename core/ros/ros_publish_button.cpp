@@ -1,0 +1,51 @@
+// The button pipeline's messages: the gated target and the gate's verdict.
+#include "core/ros/ros_publish.h"
+
+namespace sightline {
+
+geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target) {
+  geometry_msgs::PoseStamped out;
+  out.header.stamp = RosStamp(target.stamp_s);
+  out.header.frame_id = target.frame_id;
+  out.pose.position.x = target.position_m.x();
+  out.pose.position.y = target.position_m.y();
+  out.pose.position.z = target.position_m.z();
+  const Eigen::Quaterniond q =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), target.approach.normalized());
+  out.pose.orientation.x = q.x();
+  out.pose.orientation.y = q.y();
+  out.pose.orientation.z = q.z();
+  out.pose.orientation.w = q.w();
+  return out;
+}
+
+namespace {
+
+diagnostic_msgs::KeyValue Pair(const std::string& key, const std::string& value) {
+  diagnostic_msgs::KeyValue out;
+  out.key = key;
+  out.value = value;
+  return out;
+}
+
+}  // namespace
+
+diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result) {
+  diagnostic_msgs::DiagnosticStatus out;
+  out.name = "sightline/button/gate";
+  out.hardware_id = "sightline";
+  const GateVerdict& verdict = result.picker.verdict;
+  const bool sent = result.picker.target.has_value();
+  out.level =
+      sent ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
+  out.message = sent ? "target sent" : verdict.message;
+  out.values = {Pair("reason", GateReasonKey(verdict.reason)),
+                Pair("state", PickerStateKey(result.picker.state)),
+                Pair("stopped", result.stopped ? "true" : "false"),
+                Pair("held", result.held ? "true" : "false"),
+                Pair("tracking_only", result.tracking_only ? "true" : "false"),
+                Pair("target_published", result.target_published ? "true" : "false")};
+  return out;
+}
+
+}  // namespace sightline

@@ -1,0 +1,187 @@
+// The live ros:// source: its URI, and frames published on a private master arriving synced,
+// decoded and stamped, with the images that find no partner dropped and counted.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <chrono>
+#include <thread>
+
+#include "core/ros/ros_image.h"
+#include "core/ros/ros_live_source.h"
+#include "tests/ros/roscore_fixture.h"
+
+namespace sightline {
+namespace {
+
+TEST(RosLiveUri, RgbdTopicsAndDefaults) {
+  StatusOr<RosLiveOptions> o =
+      ParseRosLiveUri("ros://?image=/camera/rgb/image_color&depth=/camera/depth/image");
+  ASSERT_TRUE(o.ok()) << o.status().ToString();
+  EXPECT_EQ(o->kind(), SourceKind::kRgbd);
+  EXPECT_EQ(o->image, "/camera/rgb/image_color");
+  EXPECT_EQ(o->depth, "/camera/depth/image");
+  EXPECT_EQ(o->info, "/camera/rgb/camera_info");  // Beside the image topic.
+  EXPECT_FALSE(o->exact);
+  EXPECT_DOUBLE_EQ(o->slop_s, 0.02);
+  EXPECT_EQ(o->queue, 4);
+}
+
+TEST(RosLiveUri, StereoAndSyncKeys) {
+  StatusOr<RosLiveOptions> o = ParseRosLiveUri(
+      "ros://?left=/s/left/image_rect&right=/s/right/image_rect&sync=exact&queue=2&wait=1.5");
+  ASSERT_TRUE(o.ok()) << o.status().ToString();
+  EXPECT_EQ(o->kind(), SourceKind::kStereo);
+  EXPECT_EQ(o->left_info, "/s/left/camera_info");
+  EXPECT_EQ(o->right_info, "/s/right/camera_info");
+  EXPECT_TRUE(o->exact);
+  EXPECT_EQ(o->queue, 2);
+  EXPECT_DOUBLE_EQ(o->wait_s, 1.5);
+  EXPECT_EQ(ParseRosLiveUri("ros://?image=/a/b").value().kind(), SourceKind::kMono);
+}
+
+TEST(RosLiveUri, ErrorsNameTheKey) {
+  const auto message = [](const std::string& uri) {
+    return ParseRosLiveUri(uri).status().message();
+  };
+  EXPECT_NE(message("ros://?image=/a&colour=/b").find("'colour'"), std::string::npos);
+  EXPECT_NE(message("ros://?image=/a&sync=fast").find("sync"), std::string::npos);
+  EXPECT_NE(message("ros://?image=/a&slop=-1").find("slop"), std::string::npos);
+  EXPECT_NE(message("ros://?left=/a").find("right="), std::string::npos);
+  EXPECT_NE(message("ros://?depth=/d").find("image="), std::string::npos);
+  EXPECT_FALSE(ParseRosLiveUri("ros://?image=/a&queue=0").ok());
+}
+
+TEST(RosLiveSource, NeedsARosNode) {
+  RosLiveSource source(ParseRosLiveUri("ros://?image=/a/image").value());
+  if (ros::isInitialized()) GTEST_SKIP() << "this process is already a ROS node";
+  EXPECT_EQ(source.Open().code(), StatusCode::kFailedPrecondition);
+}
+
+// A colour image whose pixels encode `k`, and a depth image of k/10 + 1 metres.
+cv::Mat Colour(int k) { return cv::Mat(48, 64, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)); }
+cv::Mat Depth(int k) { return cv::Mat(48, 64, CV_32FC1, cv::Scalar(1 + 0.1 * k)); }
+
+class RosLive : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    master_ = new testing::RoscoreFixture();
+    error_ = new std::string(master_->Start());
+    if (!error_->empty()) return;
+    master_->ExportEnv();
+    int argc = 0;
+    ros::init(argc, nullptr, "sightline_live_test",
+              ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    ros::start();
+  }
+  static void TearDownTestSuite() {
+    ros::shutdown();
+    delete master_;
+    delete error_;
+  }
+  void SetUp() override { ASSERT_TRUE(error_->empty()) << *error_; }
+  static testing::RoscoreFixture* master_;
+  static std::string* error_;
+};
+testing::RoscoreFixture* RosLive::master_ = nullptr;
+std::string* RosLive::error_ = nullptr;
+
+TEST_F(RosLive, RgbdFramesArriveSyncedDecodedAndStamped) {
+  ros::NodeHandle nh;
+  ros::Publisher image = nh.advertise<sensor_msgs::Image>("/live/rgb/image", 10);
+  ros::Publisher depth = nh.advertise<sensor_msgs::Image>("/live/depth/image", 10);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/live/rgb/camera_info", 1, true);
+  PinholeCamera camera;
+  camera.width = 64;
+  camera.height = 48;
+  camera.fx = camera.fy = 50;
+  camera.cx = 32;
+  camera.cy = 24;
+  info.publish(RosInfoFromCamera(camera, 0, "camera"));
+  StatusOr<RosLiveOptions> options =
+      ParseRosLiveUri("ros://?image=/live/rgb/image&depth=/live/depth/image&slop=0.01&queue=50");
+  ASSERT_TRUE(options.ok());
+  RosLiveSource source(*options);
+  ASSERT_TRUE(source.Open().ok());
+  EXPECT_EQ(source.info().kind, SourceKind::kRgbd);
+  ASSERT_TRUE(source.info().rgbd.has_value());
+  EXPECT_DOUBLE_EQ(source.info().rgbd->color.fx, 50);
+  EXPECT_TRUE(source.info().live);
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while ((image.getNumSubscribers() == 0 || depth.getNumSubscribers() == 0) &&
+         std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_GT(depth.getNumSubscribers(), 0u);
+  // Frames 0..9 at 10 Hz; the depth of each comes 4 ms after its colour (approximate sync),
+  // and frame 5's depth is missing (its colour finds no partner).
+  for (int k = 0; k < 10; ++k) {
+    const double t = 100 + 0.1 * k;
+    image.publish(EncodeRosImage(Colour(k), t, "camera").value());
+    if (k != 5) depth.publish(EncodeRosImage(Depth(k), t + 0.004, "camera").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::vector<int> seen;
+  for (int i = 0; i < 9; ++i) {
+    ASSERT_TRUE(source.Grab().ok());
+    StatusOr<Frame> frame = source.Retrieve();
+    ASSERT_TRUE(frame.ok()) << frame.status().ToString();
+    const RgbdFrame& rgbd = std::get<RgbdFrame>(*frame);
+    const int k = static_cast<int>(std::lround((rgbd.stamp.sensor_time_s - 100) / 0.1));
+    EXPECT_NEAR(rgbd.stamp.sensor_time_s, 100 + 0.1 * k, 1e-6);
+    EXPECT_EQ(rgbd.stamp.sequence_id, i);
+    EXPECT_EQ(rgbd.color.at<cv::Vec3b>(10, 10), cv::Vec3b(k, 2 * k, 3 * k));
+    EXPECT_NEAR(rgbd.depth_m.at<float>(10, 10), 1 + 0.1 * k, 1e-5);  // Its own depth.
+    seen.push_back(k);
+  }
+  const std::vector<int> expected = {0, 1, 2, 3, 4, 6, 7, 8, 9};
+  EXPECT_EQ(seen, expected);
+  const RosLiveStats stats = source.Stats();
+  EXPECT_EQ(stats.frames, 9);
+  EXPECT_EQ(stats.unpaired, 1);  // Frame 5's colour.
+  EXPECT_EQ(stats.queue_overflows, 0);
+}
+
+TEST_F(RosLive, ExactSyncDropsApproximatePairsAndTheQueueIsBounded) {
+  ros::NodeHandle nh;
+  ros::Publisher image = nh.advertise<sensor_msgs::Image>("/exact/rgb/image", 50);
+  ros::Publisher depth = nh.advertise<sensor_msgs::Image>("/exact/depth/image", 50);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/exact/rgb/camera_info", 1, true);
+  PinholeCamera camera;
+  camera.width = 64;
+  camera.height = 48;
+  camera.fx = camera.fy = 50;
+  camera.cx = 32;
+  camera.cy = 24;
+  info.publish(RosInfoFromCamera(camera, 0, "camera"));
+  RosLiveSource source(
+      ParseRosLiveUri("ros://?image=/exact/rgb/image&depth=/exact/depth/image&sync=exact&queue=3")
+          .value());
+  ASSERT_TRUE(source.Open().ok());
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while ((image.getNumSubscribers() == 0 || depth.getNumSubscribers() == 0) &&
+         std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  // Ten exact pairs, then one pair 1 ms apart (not exact), nobody grabbing meanwhile.
+  for (int k = 0; k < 11; ++k) {
+    const double t = 200 + 0.1 * k;
+    image.publish(EncodeRosImage(Colour(k), t, "camera").value());
+    depth.publish(EncodeRosImage(Depth(k), t + (k == 10 ? 0.001 : 0), "camera").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // Only the newest three exact pairs waited; the seven older ones were dropped and counted.
+  std::vector<int> seen;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(source.Grab().ok());
+    const RgbdFrame rgbd = std::get<RgbdFrame>(source.Retrieve().value());
+    seen.push_back(static_cast<int>(std::lround((rgbd.stamp.sensor_time_s - 200) / 0.1)));
+  }
+  EXPECT_EQ(seen, std::vector<int>({7, 8, 9}));
+  const RosLiveStats stats = source.Stats();
+  EXPECT_EQ(stats.queue_overflows, 7);
+  EXPECT_GE(stats.unpaired, 1);  // Frame 10's colour (or depth) found no exact partner.
+}
+
+}  // namespace
+}  // namespace sightline

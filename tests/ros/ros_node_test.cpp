@@ -1,0 +1,487 @@
+// sightline-node against its own master: a C++ subscriber receives what the node publishes on a
+// simulated recording and checks it against the headless run (same pipeline, same frames). The
+// master dying mid-run is reported and the run's results are kept.
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/Empty.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "core/io/dataset.h"
+#include "core/io/hand_eye_file.h"
+#include "core/pipeline/button_pipeline.h"
+#include "core/ros/ros_image.h"
+#include "tests/ros/ros_test_util.h"
+#include "tests/ros/roscore_fixture.h"
+
+namespace sightline {
+namespace {
+
+using testing::ChildProcess;
+using testing::RoscoreFixture;
+
+// What a subscriber received, guarded for the spinner's thread.
+template <typename Msg>
+class Inbox {
+ public:
+  void Take(const boost::shared_ptr<const Msg>& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    messages_.push_back(*msg);
+  }
+  std::vector<Msg> messages() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return messages_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<Msg> messages_;
+};
+
+// One master for the suite, and this process as a ROS node on it.
+class RosNode : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    master_ = new RoscoreFixture();
+    error_ = new std::string(master_->Start());
+    if (!error_->empty()) return;
+    master_->ExportEnv();
+    int argc = 0;
+    ros::init(argc, nullptr, "sightline_test",
+              ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    spinner_ = new ros::AsyncSpinner(1);
+    spinner_->start();
+  }
+  static void TearDownTestSuite() {
+    if (spinner_ != nullptr) spinner_->stop();
+    ros::shutdown();
+    delete spinner_;
+    delete master_;
+    delete error_;
+  }
+  void SetUp() override { ASSERT_TRUE(error_->empty()) << *error_; }
+
+  // Starts sightline-node with `args`; its output goes to `log`.
+  static bool StartNode(ChildProcess* node, const std::string& args, const std::string& log) {
+    return node->Start(master_->Env() + testing::NodePath() + " " + args, log);
+  }
+  // Waits until `ready` holds or `timeout_s` passed.
+  template <typename Pred>
+  static bool WaitFor(Pred ready, double timeout_s) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < end) {
+      if (ready()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return ready();
+  }
+
+  static RoscoreFixture* master_;
+  static std::string* error_;
+  static ros::AsyncSpinner* spinner_;
+};
+
+RoscoreFixture* RosNode::master_ = nullptr;
+std::string* RosNode::error_ = nullptr;
+ros::AsyncSpinner* RosNode::spinner_ = nullptr;
+
+int8_t MapServerValue(uint8_t v, double occupied, double free) {
+  const double p = (255.0 - v) / 255.0;
+  return p > occupied ? 100 : (p < free ? 0 : -1);
+}
+
+TEST_F(RosNode, MappingMapAndScanMatchTheHeadlessRun) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_mapping_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mapping " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::OccupancyGrid> maps;
+  Inbox<sensor_msgs::LaserScan> scans;
+  ros::Subscriber map_sub = nh.subscribe("/map", 5, &Inbox<nav_msgs::OccupancyGrid>::Take, &maps);
+  ros::Subscriber scan_sub =
+      nh.subscribe("/scan", 100, &Inbox<sensor_msgs::LaserScan>::Take, &scans);
+  const std::string out = testing::TempDir("ros_node_mapping_node");
+  const std::string log = testing::TempDir("ros_node_mapping_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node, "--pipeline mapping --source " + rec + " --out " + out + " --rate recorded --linger 3",
+      log));
+  const int code = node.Wait(180);
+  EXPECT_EQ(code, 0) << testing::ReadTextFile(log);
+  const testing::MapServerMap files = testing::ReadMapServerMap(headless);
+  ASSERT_FALSE(files.gray.empty());
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+  const double last_time = trajectory.rbegin()->first;
+  // The latched map reaches the subscriber; the newest is the last frame's.
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const auto m = maps.messages();
+        return !m.empty() && std::abs(m.back().header.stamp.toSec() - last_time) < 1e-3;
+      },
+      10))
+      << testing::ReadTextFile(log);
+  const nav_msgs::OccupancyGrid map = maps.messages().back();
+  EXPECT_EQ(map.header.frame_id, "map");
+  ASSERT_EQ(map.info.width, static_cast<uint32_t>(files.gray.cols));
+  ASSERT_EQ(map.info.height, static_cast<uint32_t>(files.gray.rows));
+  EXPECT_NEAR(map.info.resolution, files.resolution, 1e-6);
+  EXPECT_NEAR(map.info.origin.position.x, files.origin.x(), 1e-5);
+  EXPECT_NEAR(map.info.origin.position.y, files.origin.y(), 1e-5);
+  int mismatches = 0;
+  for (int row = 0; row < files.gray.rows; ++row) {
+    for (int col = 0; col < files.gray.cols; ++col) {
+      mismatches += map.data[(files.gray.rows - 1 - row) * files.gray.cols + col] !=
+                    MapServerValue(files.gray.at<uint8_t>(row, col), files.occupied_thresh,
+                                   files.free_thresh);
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  // Scans come stamped with the frames' sensor times (those of the headless trajectory).
+  const auto received = scans.messages();
+  ASSERT_GE(received.size(), 10u);
+  for (const auto& scan : received) {
+    const auto row = trajectory.lower_bound(scan.header.stamp.toSec() - 1e-3);
+    ASSERT_NE(row, trajectory.end());
+    EXPECT_NEAR(row->first, scan.header.stamp.toSec(), 1e-3);
+    EXPECT_EQ(scan.header.frame_id, "base_link");
+  }
+}
+
+TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_stereo_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run stereo-vo " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::Odometry> odoms;
+  // Remapped by the node's arguments: odom:=/vo/odom.
+  ros::Subscriber sub = nh.subscribe("/vo/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  const std::string out = testing::TempDir("ros_node_stereo_node");
+  const std::string log = testing::TempDir("ros_node_stereo_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline stereo-vo --source " + rec + " --out " + out + " --linger 1 odom:=/vo/odom",
+      log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  const auto received = odoms.messages();
+  // Frames published before the subscriber connected are missed; at 10 Hz most arrive.
+  ASSERT_GE(received.size(), 15u) << testing::ReadTextFile(log);
+  for (const auto& odom : received) {
+    const auto row = trajectory.lower_bound(odom.header.stamp.toSec() - 1e-4);
+    ASSERT_NE(row, trajectory.end());
+    ASSERT_NEAR(row->first, odom.header.stamp.toSec(), 1e-4);
+    const auto& v = row->second;
+    const auto& p = odom.pose.pose.position;
+    EXPECT_NEAR(p.x, v[0], 1e-6);
+    EXPECT_NEAR(p.y, v[1], 1e-6);
+    EXPECT_NEAR(p.z, v[2], 1e-6);
+    const auto& o = odom.pose.pose.orientation;
+    // q and -q are one rotation.
+    const double dot = o.x * v[3] + o.y * v[4] + o.z * v[5] + o.w * v[6];
+    EXPECT_NEAR(std::abs(dot), 1.0, 1e-6);
+    EXPECT_EQ(odom.header.frame_id, "odom");
+    EXPECT_EQ(odom.child_frame_id, "camera");
+  }
+  // The last pose: the drive moved (a real comparison, not identity against identity).
+  EXPECT_GT(trajectory.rbegin()->second.head<3>().norm(), 0.5);
+}
+
+// sightline-node on live ros:// topics: the test plays the stereo recording onto image and
+// camera_info topics; the odometry equals the headless run on the recording; Ctrl-C ends the
+// live run as cancelled (exit 130) with its files written.
+TEST_F(RosNode, StereoOnLiveTopicsEqualsTheHeadlessRun) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_live_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run stereo-vo " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(trajectory.size(), 30u);
+  StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(rec, SourceKind::kStereo);
+  ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+  ASSERT_TRUE((*dataset)->info().stereo.has_value());
+  const StereoRig rig = *(*dataset)->info().stereo;
+
+  ros::NodeHandle nh;
+  ros::Publisher left = nh.advertise<sensor_msgs::Image>("/cam/left/image_rect", 50);
+  ros::Publisher right = nh.advertise<sensor_msgs::Image>("/cam/right/image_rect", 50);
+  ros::Publisher left_info =
+      nh.advertise<sensor_msgs::CameraInfo>("/cam/left/camera_info", 1, true);
+  ros::Publisher right_info =
+      nh.advertise<sensor_msgs::CameraInfo>("/cam/right/camera_info", 1, true);
+  left_info.publish(RosInfoFromCamera(rig.left, 0, "left"));
+  sensor_msgs::CameraInfo info = RosInfoFromCamera(rig.right, 0, "right");
+  info.P[3] = rig.right.fx * rig.right_from_left.translation().x();  // -fx * baseline.
+  right_info.publish(info);
+  Inbox<nav_msgs::Odometry> odoms;
+  ros::Subscriber sub = nh.subscribe("/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  const std::string out = testing::TempDir("ros_node_live");
+  const std::string log = testing::TempDir("ros_node_live_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline stereo-vo --out " + out +
+                            " --source 'ros://?left=/cam/left/image_rect&right=/cam/right/"
+                            "image_rect&sync=exact&queue=50'",
+                        log));
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        return left.getNumSubscribers() > 0 && right.getNumSubscribers() > 0 &&
+               sub.getNumPublishers() > 0;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (int k = 0; k < 30; ++k) {
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const StereoFrame frame = std::get<StereoFrame>((*dataset)->Retrieve().value());
+    left.publish(EncodeRosImage(frame.left, frame.stamp.sensor_time_s, "left").value());
+    right.publish(EncodeRosImage(frame.right, frame.stamp.sensor_time_s, "right").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(WaitFor([&] { return odoms.messages().size() >= 30; }, 60))
+      << odoms.messages().size() << " odometry messages\n"
+      << testing::ReadTextFile(log);
+  node.Interrupt();
+  EXPECT_EQ(node.Wait(60), 130) << testing::ReadTextFile(log);
+  EXPECT_NE(testing::ReadTextFile(log).find("30 frames"), std::string::npos)
+      << testing::ReadTextFile(log);
+  EXPECT_TRUE(std::filesystem::exists(out + "/trajectory.txt"));
+  const auto received = odoms.messages();
+  ASSERT_EQ(received.size(), 30u);
+  for (const auto& odom : received) {
+    const auto row = trajectory.lower_bound(odom.header.stamp.toSec() - 1e-4);
+    ASSERT_NE(row, trajectory.end());
+    ASSERT_NEAR(row->first, odom.header.stamp.toSec(), 1e-4);
+    const auto& p = odom.pose.pose.position;
+    EXPECT_NEAR(p.x, row->second[0], 1e-6);
+    EXPECT_NEAR(p.y, row->second[1], 1e-6);
+    EXPECT_NEAR(p.z, row->second[2], 1e-6);
+  }
+}
+
+// mobility's scored cloud and score grid reach a subscriber with the documented fields, scores
+// in [0, 1] (NaN unsegmented) and costs in [0, 100] or -1.
+TEST_F(RosNode, MobilityCloudAndGridArrive) {
+  const std::string rec = testing::TempDir("ros_node_terrain") + "/rec";
+  const auto sim = testing::RunProcess(testing::CliPath() + " simulate terrain --out " + rec +
+                                       " --frames 4 --quiet --set sim.rate_hz=2");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  ros::NodeHandle nh;
+  Inbox<sensor_msgs::PointCloud2> clouds;
+  Inbox<nav_msgs::OccupancyGrid> grids;
+  ros::Subscriber cloud_sub =
+      nh.subscribe("/mobility_cloud", 10, &Inbox<sensor_msgs::PointCloud2>::Take, &clouds);
+  ros::Subscriber grid_sub =
+      nh.subscribe("/mobility_grid", 10, &Inbox<nav_msgs::OccupancyGrid>::Take, &grids);
+  const std::string out = testing::TempDir("ros_node_mobility");
+  const std::string log = testing::TempDir("ros_node_mobility_log") + "/node.log";
+  ChildProcess node;
+  // 4 frames 0.5 s apart at the recorded rate: the subscribers connect within the first.
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline mobility --source " + rec + " --out " + out + " --rate recorded --linger 2",
+      log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  ASSERT_FALSE(clouds.messages().empty()) << testing::ReadTextFile(log);
+  ASSERT_FALSE(grids.messages().empty());
+  const sensor_msgs::PointCloud2 cloud = clouds.messages().back();
+  ASSERT_EQ(cloud.fields.size(), 6u);
+  const std::vector<std::string> names = {"x", "y", "z", "score_rule", "score_gpr", "segment"};
+  for (size_t i = 0; i < names.size(); ++i) EXPECT_EQ(cloud.fields[i].name, names[i]);
+  ASSERT_GT(cloud.width, 1000u);
+  int scored = 0;
+  for (uint32_t i = 0; i < cloud.width; ++i) {
+    float v[5];
+    int32_t segment = 0;
+    std::memcpy(v, &cloud.data[i * cloud.point_step], sizeof(v));
+    std::memcpy(&segment, &cloud.data[i * cloud.point_step + 20], sizeof(segment));
+    if (segment < 0) continue;
+    ++scored;
+    EXPECT_GE(v[3], 0.0f);
+    EXPECT_LE(v[3], 1.0f);
+  }
+  EXPECT_GT(scored, static_cast<int>(cloud.width) / 2);
+  const nav_msgs::OccupancyGrid grid = grids.messages().back();
+  EXPECT_EQ(grid.header.frame_id, "mobility_ground");
+  int known = 0;
+  for (int8_t c : grid.data) {
+    EXPECT_TRUE(c == -1 || (c >= 0 && c <= 100));
+    known += c >= 0;
+  }
+  EXPECT_GT(known, 100);
+}
+
+TEST_F(RosNode, PrivateParameterOverridesTheOption) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  ros::param::set("/sightline_param/mapping/stitch/resolution_m", 0.1);
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::OccupancyGrid> maps;
+  ros::Subscriber sub = nh.subscribe("/param_map", 5, &Inbox<nav_msgs::OccupancyGrid>::Take, &maps);
+  const std::string out = testing::TempDir("ros_node_param");
+  const std::string log = testing::TempDir("ros_node_param_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline mapping --source " + rec + " --out " + out +
+                            " --rate max --linger 3 __name:=sightline_param map:=/param_map",
+                        log));
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  ASSERT_TRUE(WaitFor([&] { return !maps.messages().empty(); }, 10)) << testing::ReadTextFile(log);
+  EXPECT_NEAR(maps.messages().back().info.resolution, 0.1, 1e-6);
+  EXPECT_NE(testing::ReadTextFile(log).find("parameter sets mapping.stitch.resolution_m=0.1"),
+            std::string::npos);
+  EXPECT_NEAR(testing::ReadMapServerMap(out).resolution, 0.1, 1e-6);
+}
+
+// The value of `key` in a diagnostics status, or "".
+std::string DiagValue(const diagnostic_msgs::DiagnosticStatus& status, const std::string& key) {
+  for (const auto& kv : status.values) {
+    if (kv.key == key) return kv.value;
+  }
+  return "";
+}
+
+// The button pipeline on a simulated panel approach: the operator's tap (on an image the node
+// published, named by its stamp) gives a candidate but no target until the operator confirms;
+// then targets arrive in the arm base frame at the true button.
+TEST_F(RosNode, ButtonTargetsOnlyAfterTheOperatorConfirms) {
+  const std::string rec = testing::TempDir("ros_node_panel") + "/rec";
+  const auto sim = testing::RunProcess(testing::CliPath() + " simulate panel --out " + rec +
+                                       " --quiet --set sim.arm.sideways_m=0.12");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  const StatusOr<std::vector<TrueButton>> buttons = ReadTrueButtons(rec + "/buttons.csv");
+  ASSERT_TRUE(buttons.ok()) << buttons.status().ToString();
+  const TrueButton* target = nullptr;
+  for (const TrueButton& b : *buttons) target = b.id == 5 ? &b : target;
+  ASSERT_NE(target, nullptr);
+  // The truth in the arm's base frame, where targets are.
+  const StatusOr<HandEye> hand_eye = ReadHandEyeFile(rec + "/hand_eye.yaml");
+  ASSERT_TRUE(hand_eye.ok()) << hand_eye.status().ToString();
+  ASSERT_TRUE(hand_eye->world_from_base.has_value());
+  const Eigen::Vector3d truth_in_base =
+      hand_eye->world_from_base->inverse() * target->center_in_world;
+
+  ros::NodeHandle nh;
+  Inbox<geometry_msgs::PoseStamped> targets;
+  Inbox<diagnostic_msgs::DiagnosticArray> diagnostics;
+  ros::Subscriber target_sub =
+      nh.subscribe("/button_target", 100, &Inbox<geometry_msgs::PoseStamped>::Take, &targets);
+  ros::Subscriber diag_sub = nh.subscribe(
+      "/diagnostics", 1000, &Inbox<diagnostic_msgs::DiagnosticArray>::Take, &diagnostics);
+  ros::Publisher tap_pub = nh.advertise<geometry_msgs::PointStamped>("/button_tap", 1);
+  ros::Publisher confirm_pub = nh.advertise<std_msgs::Empty>("/button_confirm", 1);
+  const std::string out = testing::TempDir("ros_node_button");
+  const std::string log = testing::TempDir("ros_node_button_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node, "--pipeline button --source " + rec + " --out " + out + " --rate recorded --linger 1",
+      log));
+  ASSERT_TRUE(WaitFor([&] { return tap_pub.getNumSubscribers() > 0; }, 60));
+  // The first image whose frame the node published: tap it (a few pixels off the centre).
+  int frame = -1;
+  double shown_stamp = 0;
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        for (const auto& array : diagnostics.messages()) {
+          for (const auto& status : array.status) {
+            if (status.name != "sightline/button") continue;
+            frame = std::stoi(DiagValue(status, "frame"));
+            shown_stamp = array.header.stamp.toSec();
+            return true;
+          }
+        }
+        return false;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  ASSERT_LT(frame, static_cast<int>(target->pixel.size()));
+  ASSERT_TRUE(target->visible[frame]);
+  geometry_msgs::PointStamped tap;
+  tap.header.stamp = ros::Time(shown_stamp);
+  tap.point.x = target->pixel[frame].x() + 2;
+  tap.point.y = target->pixel[frame].y() - 2;
+  tap_pub.publish(tap);
+  // The candidate waits for the operator's Yes: the gate says "not confirmed", no target.
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        for (const auto& array : diagnostics.messages()) {
+          for (const auto& status : array.status) {
+            if (status.name == "sightline/button/gate" && DiagValue(status, "state") == "confirm")
+              return true;
+          }
+        }
+        return false;
+      },
+      30))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_TRUE(targets.messages().empty());
+  ASSERT_TRUE(WaitFor([&] { return confirm_pub.getNumSubscribers() > 0; }, 10));
+  confirm_pub.publish(std_msgs::Empty());
+  EXPECT_EQ(node.Wait(180), 0) << testing::ReadTextFile(log);
+  const auto received = targets.messages();
+  ASSERT_FALSE(received.empty()) << testing::ReadTextFile(log);
+  const auto& last = received.back();
+  EXPECT_EQ(last.header.frame_id, "arm_base");
+  const Eigen::Vector3d position(last.pose.position.x, last.pose.position.y, last.pose.position.z);
+  // The CLI's run of this approach is within 3 mm; the tap here comes a little later.
+  EXPECT_LT((position - truth_in_base).norm(), 0.005)
+      << position.transpose() << " vs " << truth_in_base.transpose();
+  // Every target came after the confirmation, from a frame after the tapped one.
+  for (const auto& t : received) EXPECT_GT(t.header.stamp.toSec(), shown_stamp);
+}
+
+TEST(RosNodeMaster, MasterLostMidRunIsReportedAndResultsKept) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  RoscoreFixture master;
+  const std::string error = master.Start();
+  ASSERT_TRUE(error.empty()) << error;
+  const std::string out = testing::TempDir("ros_node_master_lost");
+  const std::string log = testing::TempDir("ros_node_master_lost_log") + "/node.log";
+  ChildProcess node;
+  // 30 frames at 5 Hz: about 6 s at the recorded rate.
+  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
+                             rec + " --out " + out + " --rate recorded --linger 0",
+                         log));
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (testing::ReadTextFile(log).find("running on") == std::string::npos &&
+         std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  master.Stop();
+  const int code = node.Wait(120);
+  const std::string text = testing::ReadTextFile(log);
+  EXPECT_EQ(code, 4) << text;
+  EXPECT_NE(text.find("does not answer"), std::string::npos) << text;
+  EXPECT_NE(text.find("30 frames published"), std::string::npos) << text;
+  EXPECT_TRUE(std::filesystem::exists(out + "/map.pgm"));
+  EXPECT_NE(testing::ReadTextFile(out + "/metrics.json").find("\"frames\": 30"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sightline

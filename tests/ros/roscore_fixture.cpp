@@ -1,0 +1,163 @@
+#include "tests/ros/roscore_fixture.h"
+
+#include <XmlRpcClient.h>
+#include <XmlRpcValue.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "tests/support/test_data.h"
+
+namespace sightline::testing {
+
+namespace {
+
+double NowS() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string Tail(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  return all.size() > 2000 ? all.substr(all.size() - 2000) : all;
+}
+
+// Reaps `pid` if it exited; true when it is gone.
+bool Reaped(pid_t pid, int* status) { return waitpid(pid, status, WNOHANG) == pid; }
+
+}  // namespace
+
+int FreeLoopbackPort() {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  addr.sin_port = 0;
+  int port = 0;
+  socklen_t len = sizeof(addr);
+  if (bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0 &&
+      getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0) {
+    port = ntohs(addr.sin_port);
+  }
+  close(fd);
+  return port;
+}
+
+bool MasterAnswers(int port) {
+  XmlRpc::XmlRpcClient client("127.0.0.1", port, "/");
+  XmlRpc::XmlRpcValue args, result;
+  args[0] = std::string("/roscore_fixture");
+  const bool ok = client.execute("getPid", args, result) && !client.isFault() &&
+                  result.getType() == XmlRpc::XmlRpcValue::TypeArray && result.size() >= 1 &&
+                  static_cast<int>(result[0]) == 1;
+  client.close();
+  return ok;
+}
+
+std::string RoscoreFixture::uri() const { return "http://127.0.0.1:" + std::to_string(port_); }
+
+std::string RoscoreFixture::Env() const {
+  return "env ROS_MASTER_URI=" + uri() + " ROS_HOME=" + folder_ + "/home ROS_LOG_DIR=" + folder_ +
+         "/log ROS_IP=127.0.0.1 ";
+}
+
+void RoscoreFixture::ExportEnv() const {
+  setenv("ROS_MASTER_URI", uri().c_str(), 1);
+  setenv("ROS_HOME", (folder_ + "/home").c_str(), 1);
+  setenv("ROS_LOG_DIR", (folder_ + "/log").c_str(), 1);
+  setenv("ROS_IP", "127.0.0.1", 1);
+}
+
+std::string RoscoreFixture::Start(double timeout_s) {
+  port_ = FreeLoopbackPort();
+  if (port_ == 0) return "no free loopback port";
+  folder_ = TempDir("roscore_" + std::to_string(port_));
+  std::filesystem::create_directories(folder_ + "/home");
+  std::filesystem::create_directories(folder_ + "/log");
+  const std::string log = folder_ + "/roscore.log";
+  ChildProcess child;
+  if (!child.Start(Env() + "roscore -p " + std::to_string(port_), log)) {
+    return "cannot start roscore";
+  }
+  pid_ = child.Release();
+  const double end = NowS() + timeout_s;
+  int status = 0;
+  while (NowS() < end) {
+    if (Reaped(pid_, &status)) {
+      pid_ = -1;
+      return "roscore exited at start: " + Tail(log);
+    }
+    if (MasterAnswers(port_)) return "";
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  Stop();
+  return "roscore did not answer within the timeout: " + Tail(log);
+}
+
+void RoscoreFixture::Stop() {
+  if (pid_ <= 0) return;
+  kill(-pid_, SIGINT);  // roscore shuts rosout and rosmaster down on SIGINT.
+  int status = 0;
+  const double end = NowS() + 10;
+  while (NowS() < end && !Reaped(pid_, &status)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  kill(-pid_, SIGKILL);  // Whatever of the group is left.
+  waitpid(pid_, &status, WNOHANG);
+  pid_ = -1;
+}
+
+bool ChildProcess::Start(const std::string& command, const std::string& log_path) {
+  const pid_t pid = fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    setpgid(0, 0);
+    // exec: the child's pid is the command's (signals reach it, not a shell).
+    const std::string line = "exec " + command + " > '" + log_path + "' 2>&1";
+    execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  pid_ = pid;
+  return true;
+}
+
+int ChildProcess::Wait(double timeout_s) {
+  if (pid_ <= 0) return -1;
+  const double end = NowS() + timeout_s;
+  int status = 0;
+  while (NowS() < end) {
+    if (Reaped(pid_, &status)) {
+      pid_ = -1;
+      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return -1;
+}
+
+void ChildProcess::Interrupt() {
+  if (pid_ > 0) kill(pid_, SIGINT);
+}
+
+void ChildProcess::Kill() {
+  if (pid_ <= 0) return;
+  kill(-pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+}
+
+}  // namespace sightline::testing
