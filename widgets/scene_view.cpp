@@ -202,7 +202,18 @@ void SceneView::RemoveLayer(const std::string& layer) {
 void SceneView::ClearLayers() {
   for (auto& [name, layer] : impl_->layers) impl_->renderer->RemoveActor(layer.actor);
   impl_->layers.clear();
+  followed_box_.setEmpty();
   impl_->Changed();
+}
+
+bool SceneView::FollowContent(const Eigen::AlignedBox3d& content, double min_margin) {
+  if (!follow_ || content.isEmpty() || followed_box_.contains(content)) return false;
+  const Eigen::Vector3d margin =
+      (0.25 * (content.max() - content.min())).cwiseMax(Eigen::Vector3d::Constant(min_margin));
+  followed_box_ = Eigen::AlignedBox3d(content.min() - margin, content.max() + margin);
+  ResetView();
+  ++follow_fits_;
+  return true;
 }
 
 void SceneView::SetLayerPose(const std::string& layer, const Eigen::Isometry3d& world_from_layer) {

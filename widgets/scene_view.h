@@ -93,9 +93,22 @@ class SceneView : public VtkGlWidget {
   // Background colour of the view.
   void SetBackground(QColor color);
 
+  // Follow (View > Follow the trajectory): FollowContent re-fits the view (ResetView) when
+  // `content` leaves the box it was last fitted to, that box grown by a quarter of the extent
+  // (at least `min_margin`) so that a growing trajectory re-fits every few metres, not every
+  // frame. Nothing while follow is off. Returns whether it fitted; ClearLayers forgets the box.
+  bool FollowContent(const Eigen::AlignedBox3d& content, double min_margin = 2.0);
+  void SetFollow(bool follow) { follow_ = follow; }
+  bool follow() const { return follow_; }
+  // Fits made by FollowContent since the view was made.
+  int follow_fits() const { return follow_fits_; }
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  bool follow_ = true;
+  Eigen::AlignedBox3d followed_box_;  // Empty: nothing followed yet.
+  int follow_fits_ = 0;
 };
 
 }  // namespace sightline
