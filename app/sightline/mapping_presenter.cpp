@@ -153,6 +153,14 @@ void MappingPresenter::Show(const PlaybackResult& result) {
   figures_->setText(StatisticsText(*view, MappingStatistics()));
   const std::shared_ptr<const MappingFrameResult> mapping = view->mapping;
   occupancy_view_->SetImage(OccupancyToBgr(mapping->occupancy));
+  occupancy_view_->SetKeys({{QColor(60, 160, 60), tr("free")},
+                            {QColor(220, 40, 40), tr("occupied")},
+                            {QColor(230, 230, 230), tr("person")},
+                            {QColor(255, 170, 0), tr("scan rays")},
+                            {QColor(0, 200, 255), tr("walls, first direction")},
+                            {QColor(255, 0, 255), tr("walls, perpendicular")},
+                            {QColor(255, 255, 0), tr("other lines")},
+                            {QColor(255, 220, 0), tr("robot")}});
   // Rays from the robot to each scan point, and the wall lines by Manhattan direction.
   occupancy_view_->SetOverlayPainter([mapping](QPainter& painter, const QTransform& to_widget) {
     const OccupancyImage& occ = mapping->occupancy;

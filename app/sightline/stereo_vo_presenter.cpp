@@ -178,6 +178,9 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
 
 void StereoVoPresenter::DrawImages(const std::shared_ptr<const StereoOdometryResult>& odometry) {
   tracks_view_->SetImage(odometry->left_rectified);
+  tracks_view_->SetKeys({{RoleColor(FeatureRole::kInlier), tr("inlier track")},
+                         {RoleColor(FeatureRole::kOutlier), tr("outlier track")},
+                         {RoleColor(FeatureRole::kNew), tr("new feature")}});
   tracks_view_->SetOverlayPainter([odometry](QPainter& painter, const QTransform& to_widget) {
     for (const TrackedFeature& f : odometry->features) {
       painter.setPen(QPen(RoleColor(f.role), 1.5));
@@ -189,6 +192,7 @@ void StereoVoPresenter::DrawImages(const std::shared_ptr<const StereoOdometryRes
     }
   });
   matches_view_->SetImage(odometry->right_rectified);
+  matches_view_->SetKeys({{QColor(255, 200, 0), tr("stereo match")}});
   matches_view_->SetOverlayPainter([odometry](QPainter& painter, const QTransform& to_widget) {
     painter.setPen(QPen(QColor(255, 200, 0), 1.5));
     for (const TrackedFeature& f : odometry->features) {
@@ -230,7 +234,8 @@ void StereoVoPresenter::FitViewIfGrown() {
   for (const Trajectory* t : {&estimate_, &ground_truth_drawn_}) {
     for (const TimedPose& p : t->poses()) box.extend(p.world_from_sensor.translation());
   }
-  if (box.isEmpty() || fitted_box_.contains(box)) return;
+  // View > Follow off: the user's own view stays.
+  if (!scene_->follow() || box.isEmpty() || fitted_box_.contains(box)) return;
   // Fit with a margin of a quarter of the extent (at least 2 m) so that a growing trajectory
   // re-fits every few metres rather than every frame.
   const Eigen::Vector3d margin =

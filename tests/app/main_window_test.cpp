@@ -419,6 +419,8 @@ TEST(MonoSlamPresenter, DrawsTheMapKeyframesAndTrajectoryOnKittiLeftImages) {
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/map"));
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/keyframes"));
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/trajectory"));
+  // The 3D view was fitted to the path as it started (View > Follow is on by default).
+  EXPECT_GE(window.scene_view()->follow_fits(), 1);
 }
 
 }  // namespace
