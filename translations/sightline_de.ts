@@ -362,177 +362,177 @@
 <context>
     <name>sightline::CoreMessage</name>
     <message>
-        <location filename="../widgets/core_message.cpp" line="15"/>
+        <location filename="../widgets/core_message.cpp" line="17"/>
         <source>invalid argument</source>
         <translation>ungültiges Argument</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="16"/>
+        <location filename="../widgets/core_message.cpp" line="18"/>
         <source>not found</source>
         <translation>nicht gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="17"/>
+        <location filename="../widgets/core_message.cpp" line="19"/>
         <source>parse error</source>
         <translation>Formatfehler</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="18"/>
+        <location filename="../widgets/core_message.cpp" line="20"/>
         <source>unavailable</source>
         <translation>nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="19"/>
+        <location filename="../widgets/core_message.cpp" line="21"/>
         <source>out of range</source>
         <translation>außerhalb des Bereichs</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="20"/>
+        <location filename="../widgets/core_message.cpp" line="22"/>
         <source>failed precondition</source>
         <translation>Vorbedingung nicht erfüllt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="21"/>
+        <location filename="../widgets/core_message.cpp" line="23"/>
         <source>internal error</source>
         <translation>interner Fehler</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="26"/>
+        <location filename="../widgets/core_message.cpp" line="28"/>
         <source>%1 line %2</source>
         <translation>%1 Zeile %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="27"/>
+        <location filename="../widgets/core_message.cpp" line="29"/>
         <source>profile %1</source>
         <translation>Profil %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="28"/>
+        <location filename="../widgets/core_message.cpp" line="30"/>
         <source>parameter panel</source>
         <translation>Parameterleiste</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="34"/>
+        <location filename="../widgets/core_message.cpp" line="36"/>
         <source>unknown option &apos;%1&apos;</source>
         <translation>unbekannte Option &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="35"/>
+        <location filename="../widgets/core_message.cpp" line="37"/>
         <source>option &apos;%1&apos;: %2 is outside %3</source>
         <translation>Option &apos;%1&apos;: %2 liegt außerhalb von %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="36"/>
+        <location filename="../widgets/core_message.cpp" line="38"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keiner der Werte: %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="37"/>
+        <location filename="../widgets/core_message.cpp" line="39"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist kein Wahrheitswert (true/false)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="38"/>
+        <location filename="../widgets/core_message.cpp" line="40"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine ganze Zahl</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="39"/>
+        <location filename="../widgets/core_message.cpp" line="41"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="40"/>
+        <location filename="../widgets/core_message.cpp" line="42"/>
         <source>option &apos;%1&apos;: value is not finite</source>
         <translation>Option &apos;%1&apos;: Wert ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="41"/>
+        <location filename="../widgets/core_message.cpp" line="43"/>
         <source>a profile must be a map of option keys</source>
         <translation>ein Profil muss eine Zuordnung von Optionsschlüsseln sein</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="42"/>
+        <location filename="../widgets/core_message.cpp" line="44"/>
         <source>option &apos;%1&apos; is given twice (also line %2)</source>
         <translation>Option &apos;%1&apos; ist doppelt angegeben (auch Zeile %2)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="43"/>
+        <location filename="../widgets/core_message.cpp" line="45"/>
         <source>option &apos;%1&apos; has no value</source>
         <translation>Option &apos;%1&apos; hat keinen Wert</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="44"/>
+        <location filename="../widgets/core_message.cpp" line="46"/>
         <source>option &apos;%1&apos; must be a single value, not a list</source>
         <translation>Option &apos;%1&apos; muss ein einzelner Wert sein, keine Liste</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="45"/>
+        <location filename="../widgets/core_message.cpp" line="47"/>
         <source>an option key must be a word, not a list or map</source>
         <translation>ein Optionsschlüssel muss ein Wort sein, keine Liste oder Zuordnung</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="46"/>
+        <location filename="../widgets/core_message.cpp" line="48"/>
         <source>options nest deeper than %1 levels</source>
         <translation>Optionen sind tiefer als %1 Ebenen verschachtelt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="47"/>
+        <location filename="../widgets/core_message.cpp" line="49"/>
         <source>lists or maps nest deeper than %1 levels</source>
         <translation>Listen oder Zuordnungen sind tiefer als %1 Ebenen verschachtelt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="48"/>
+        <location filename="../widgets/core_message.cpp" line="50"/>
         <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
         <translation>mehr als %1 Werte (expandierende Aliase?); ein Profil nennt jede Option einmal</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="50"/>
+        <location filename="../widgets/core_message.cpp" line="52"/>
         <source>not a readable YAML profile: %1</source>
         <translation>kein lesbares YAML-Profil: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="51"/>
+        <location filename="../widgets/core_message.cpp" line="53"/>
         <source>cannot write profile %1</source>
         <translation>Profil %1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="52"/>
+        <location filename="../widgets/core_message.cpp" line="54"/>
         <source>write to %1 failed (disk full?)</source>
         <translation>Schreiben nach %1 fehlgeschlagen (Datenträger voll?)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="53"/>
+        <location filename="../widgets/core_message.cpp" line="55"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="54"/>
+        <location filename="../widgets/core_message.cpp" line="56"/>
         <source>profile %1 is a folder, not a file</source>
         <translation>Profil %1 ist ein Ordner, keine Datei</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="55"/>
+        <location filename="../widgets/core_message.cpp" line="57"/>
         <source>profile %1 is not a regular file (a device, pipe or socket)</source>
         <translation>Profil %1 ist keine reguläre Datei (ein Gerät, eine Pipe oder ein Socket)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="57"/>
+        <location filename="../widgets/core_message.cpp" line="59"/>
         <source>profile %1 cannot be read: %2</source>
         <translation>Profil %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="58"/>
+        <location filename="../widgets/core_message.cpp" line="60"/>
         <source>profile %1 is %2 bytes; a profile holds at most %3</source>
         <translation>Profil %1 ist %2 Bytes groß; ein Profil umfasst höchstens %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="60"/>
+        <location filename="../widgets/core_message.cpp" line="62"/>
         <source>cannot read its size: %1</source>
         <translation>Größe nicht lesbar: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="61"/>
+        <location filename="../widgets/core_message.cpp" line="63"/>
         <source>read error (%1 of %2 bytes)</source>
         <translation>Lesefehler (%1 von %2 Bytes)</translation>
     </message>
@@ -632,6 +632,7 @@
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="104"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="175"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
     </message>
@@ -681,12 +682,12 @@
         <translation>Auswertung läuft...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="185"/>
         <source>Evaluation failed: %1</source>
         <translation>Auswertung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="189"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="198"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
     </message>
@@ -694,14 +695,14 @@
 <context>
     <name>sightline::ImageView</name>
     <message>
-        <location filename="../widgets/image_view.cpp" line="47"/>
-        <location filename="../widgets/image_view.cpp" line="78"/>
-        <location filename="../widgets/image_view.cpp" line="131"/>
+        <location filename="../widgets/image_view.cpp" line="49"/>
+        <location filename="../widgets/image_view.cpp" line="80"/>
+        <location filename="../widgets/image_view.cpp" line="135"/>
         <source>No image</source>
         <translation>Kein Bild</translation>
     </message>
     <message>
-        <location filename="../widgets/image_view.cpp" line="81"/>
+        <location filename="../widgets/image_view.cpp" line="83"/>
         <source>Unsupported image type %1</source>
         <translation>Nicht unterstützter Bildtyp %1</translation>
     </message>
@@ -732,7 +733,12 @@
 <context>
     <name>sightline::LogPanel</name>
     <message>
-        <location filename="../widgets/log_panel.cpp" line="36"/>
+        <location filename="../widgets/log_panel.cpp" line="33"/>
+        <source>Click a line to read it in full.</source>
+        <translation>Klicken Sie auf eine Zeile, um sie vollständig zu lesen.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/log_panel.cpp" line="51"/>
         <source>Clear messages</source>
         <translation>Meldungen löschen</translation>
     </message>
@@ -740,273 +746,283 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="46"/>
+        <location filename="../app/sightline/main_window.cpp" line="47"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="81"/>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="83"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="87"/>
+        <location filename="../app/sightline/main_window.cpp" line="89"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="89"/>
+        <location filename="../app/sightline/main_window.cpp" line="91"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="92"/>
+        <location filename="../app/sightline/main_window.cpp" line="94"/>
         <source>Evaluation</source>
         <translation>Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="100"/>
+        <location filename="../app/sightline/main_window.cpp" line="107"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <location filename="../app/sightline/main_window.cpp" line="118"/>
         <source>&amp;Open dataset folder...</source>
         <translation>Datensatz-Ordner &amp;öffnen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
         <source>Open dataset folder</source>
         <translation>Datensatz-Ordner öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="119"/>
+        <location filename="../app/sightline/main_window.cpp" line="126"/>
         <source>Open point cloud</source>
         <translation>Punktwolke öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <location filename="../app/sightline/main_window.cpp" line="124"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="120"/>
+        <location filename="../app/sightline/main_window.cpp" line="127"/>
         <source>Recordings (*.pcd *.oni)</source>
         <translation>Aufnahmen (*.pcd *.oni)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
         <source>Open &amp;recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="128"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="132"/>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="134"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="142"/>
+        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <source>&amp;Follow the trajectory</source>
+        <translation>Der Trajektorie &amp;folgen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
+        <translation>Die 3D-Ansicht neu einpassen, sobald eine wachsende Trajektorie sie verlässt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="155"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="148"/>
+        <location filename="../app/sightline/main_window.cpp" line="161"/>
         <source> (unavailable)</source>
         <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="153"/>
+        <location filename="../app/sightline/main_window.cpp" line="166"/>
         <source>Connect to the first %1 device</source>
         <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="159"/>
+        <location filename="../app/sightline/main_window.cpp" line="172"/>
         <source>Replay recording</source>
         <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="165"/>
+        <location filename="../app/sightline/main_window.cpp" line="178"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
-        <location filename="../app/sightline/main_window.cpp" line="300"/>
+        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="324"/>
         <source>None (show frames only)</source>
         <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="187"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>Trajektorie &amp;auswerten...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="193"/>
         <source>Evaluate &amp;current run</source>
         <translation>&amp;Aktuellen Lauf auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="182"/>
+        <location filename="../app/sightline/main_window.cpp" line="195"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Vergleicht die Trajektorie der laufenden Pipeline mit der Referenz des Datensatzes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="191"/>
+        <location filename="../app/sightline/main_window.cpp" line="204"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="192"/>
+        <location filename="../app/sightline/main_window.cpp" line="205"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="193"/>
+        <location filename="../app/sightline/main_window.cpp" line="206"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
 Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="224"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="225"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="215"/>
+        <location filename="../app/sightline/main_window.cpp" line="233"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="239"/>
+        <location filename="../app/sightline/main_window.cpp" line="262"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="246"/>
+        <location filename="../app/sightline/main_window.cpp" line="269"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="255"/>
+        <location filename="../app/sightline/main_window.cpp" line="278"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="262"/>
+        <location filename="../app/sightline/main_window.cpp" line="285"/>
         <source>The demo could not be made: %1</source>
         <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="318"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="353"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="333"/>
+        <location filename="../app/sightline/main_window.cpp" line="357"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="362"/>
-        <location filename="../app/sightline/main_window.cpp" line="363"/>
+        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="387"/>
         <source>Opening %1 ...</source>
         <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="381"/>
+        <location filename="../app/sightline/main_window.cpp" line="409"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="414"/>
         <source>, ground truth</source>
         <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="416"/>
         <source>Opened %1</source>
         <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="393"/>
+        <location filename="../app/sightline/main_window.cpp" line="421"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="428"/>
+        <location filename="../app/sightline/main_window.cpp" line="440"/>
         <source>frame %1, read in %2 ms</source>
         <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="450"/>
+        <location filename="../app/sightline/main_window.cpp" line="484"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="452"/>
+        <location filename="../app/sightline/main_window.cpp" line="486"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="184"/>
+        <location filename="../app/sightline/main_window.cpp" line="197"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
@@ -1090,6 +1106,26 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <source>Language: %1</source>
         <translation>Sprache: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="44"/>
+        <source>Reset the map?</source>
+        <translation>Karte zurücksetzen?</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="45"/>
+        <source>%1 has built its map over %2 frames. Seeking starts it over from the frame you seek to: the map and the trajectory so far are lost.</source>
+        <translation>%1 hat seine Karte über %2 Bilder aufgebaut. Ein Sprung beginnt sie ab dem angesprungenen Bild neu: Die bisherige Karte und Trajektorie gehen verloren.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="51"/>
+        <source>Seek and reset the map</source>
+        <translation>Springen und Karte zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
+        <source>Keep the map</source>
+        <translation>Karte behalten</translation>
+    </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
@@ -1139,17 +1175,57 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <source>free</source>
+        <translation>frei</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <source>occupied</source>
+        <translation>belegt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <source>person</source>
+        <translation>Person</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <source>scan rays</source>
+        <translation>Scanstrahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <source>walls, first direction</source>
+        <translation>Wände, erste Richtung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <source>walls, perpendicular</source>
+        <translation>Wände, senkrecht dazu</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <source>other lines</source>
+        <translation>andere Linien</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <source>robot</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
@@ -1157,19 +1233,39 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityImagePanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="72"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
         <source>Projection</source>
         <translation>Projektion</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
         <source>Top view</source>
         <translation>Draufsicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="75"/>
         <source>GPR surface</source>
         <translation>GPR-Fläche</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="85"/>
+        <source>score 0: not passable</source>
+        <translation>Bewertung 0: nicht befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="86"/>
+        <source>score 0.5</source>
+        <translation>Bewertung 0,5</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="87"/>
+        <source>score 1: passable</source>
+        <translation>Bewertung 1: befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="88"/>
+        <source>not scored</source>
+        <translation>nicht bewertet</translation>
     </message>
 </context>
 <context>
@@ -1193,52 +1289,52 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityTimingPanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="21"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="22"/>
         <source>3D colour:</source>
         <translation>3D-Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (rule)</source>
         <translation>Bewertung (Regel)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (GPR)</source>
         <translation>Bewertung (GPR)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Segment</source>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Stage</source>
         <translation>Stufe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Time (ms)</source>
         <translation>Zeit (ms)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="53"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="55"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="56"/>
         <source>%1 mode, %2 segments</source>
         <translation>Modus %1, %2 Segmente</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="59"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="60"/>
         <source>, camera %1 m above the ground</source>
         <translation>, Kamera %1 m über dem Boden</translation>
     </message>
@@ -1286,17 +1382,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="207"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <source>inlier</source>
+        <translation>Inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <source>outlier</source>
+        <translation>Ausreißer</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <source>keypoint, unmatched</source>
+        <translation>Merkmalspunkt, ohne Zuordnung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <source>frame: tracking quality</source>
+        <translation>Rahmen: Tracking-Qualität</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="217"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
     </message>
@@ -3785,37 +3901,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Alle zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="168"/>
+        <location filename="../widgets/parameter_panel.cpp" line="173"/>
         <source>All options reset to their defaults.</source>
         <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="179"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Loaded profile %1</source>
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="204"/>
+        <location filename="../widgets/parameter_panel.cpp" line="209"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="205"/>
+        <location filename="../widgets/parameter_panel.cpp" line="210"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>
@@ -3823,34 +3939,39 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::PlaybackBar</name>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="35"/>
+        <location filename="../widgets/playback_bar.cpp" line="37"/>
         <source>Step one frame</source>
         <translation>Ein Bild weiter</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="54"/>
+        <location filename="../widgets/playback_bar.cpp" line="57"/>
         <source>Playback speed relative to the recording&apos;s timestamps</source>
         <translation>Wiedergabegeschwindigkeit relativ zu den Zeitstempeln der Aufnahme</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="58"/>
+        <location filename="../widgets/playback_bar.cpp" line="61"/>
         <source>max</source>
         <translation>max</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="64"/>
+        <location filename="../widgets/playback_bar.cpp" line="67"/>
         <source>Loop</source>
         <translation>Schleife</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Play</source>
         <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="155"/>
+        <source>frame %1</source>
+        <translation>Bild %1</translation>
     </message>
 </context>
 <context>
@@ -3975,12 +4096,12 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Statistik im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
         <source>, GATED: pose held</source>
         <translation>, GESPERRT: Pose gehalten</translation>
     </message>
@@ -4055,7 +4176,27 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <source>inlier track</source>
+        <translation>Spur, Inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <source>outlier track</source>
+        <translation>Spur, Ausreißer</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <source>new feature</source>
+        <translation>neues Merkmal</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <source>stereo match</source>
+        <translation>Stereo-Zuordnung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>

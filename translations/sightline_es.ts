@@ -362,177 +362,177 @@
 <context>
     <name>sightline::CoreMessage</name>
     <message>
-        <location filename="../widgets/core_message.cpp" line="15"/>
+        <location filename="../widgets/core_message.cpp" line="17"/>
         <source>invalid argument</source>
         <translation>argumento no válido</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="16"/>
+        <location filename="../widgets/core_message.cpp" line="18"/>
         <source>not found</source>
         <translation>no encontrado</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="17"/>
+        <location filename="../widgets/core_message.cpp" line="19"/>
         <source>parse error</source>
         <translation>error de formato</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="18"/>
+        <location filename="../widgets/core_message.cpp" line="20"/>
         <source>unavailable</source>
         <translation>no disponible</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="19"/>
+        <location filename="../widgets/core_message.cpp" line="21"/>
         <source>out of range</source>
         <translation>fuera de rango</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="20"/>
+        <location filename="../widgets/core_message.cpp" line="22"/>
         <source>failed precondition</source>
         <translation>condición previa no cumplida</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="21"/>
+        <location filename="../widgets/core_message.cpp" line="23"/>
         <source>internal error</source>
         <translation>error interno</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="26"/>
+        <location filename="../widgets/core_message.cpp" line="28"/>
         <source>%1 line %2</source>
         <translation>%1 línea %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="27"/>
+        <location filename="../widgets/core_message.cpp" line="29"/>
         <source>profile %1</source>
         <translation>perfil %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="28"/>
+        <location filename="../widgets/core_message.cpp" line="30"/>
         <source>parameter panel</source>
         <translation>panel de parámetros</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="34"/>
+        <location filename="../widgets/core_message.cpp" line="36"/>
         <source>unknown option &apos;%1&apos;</source>
         <translation>opción desconocida &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="35"/>
+        <location filename="../widgets/core_message.cpp" line="37"/>
         <source>option &apos;%1&apos;: %2 is outside %3</source>
         <translation>opción &apos;%1&apos;: %2 está fuera de %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="36"/>
+        <location filename="../widgets/core_message.cpp" line="38"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
         <translation>opción &apos;%1&apos;: &apos;%2&apos; no es uno de los valores: %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="37"/>
+        <location filename="../widgets/core_message.cpp" line="39"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
         <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un booleano (true/false)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="38"/>
+        <location filename="../widgets/core_message.cpp" line="40"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
         <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un número entero</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="39"/>
+        <location filename="../widgets/core_message.cpp" line="41"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
         <translation>opción &apos;%1&apos;: &apos;%2&apos; no es un número</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="40"/>
+        <location filename="../widgets/core_message.cpp" line="42"/>
         <source>option &apos;%1&apos;: value is not finite</source>
         <translation>opción &apos;%1&apos;: el valor no es finito</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="41"/>
+        <location filename="../widgets/core_message.cpp" line="43"/>
         <source>a profile must be a map of option keys</source>
         <translation>un perfil debe ser un mapa de claves de opción</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="42"/>
+        <location filename="../widgets/core_message.cpp" line="44"/>
         <source>option &apos;%1&apos; is given twice (also line %2)</source>
         <translation>la opción &apos;%1&apos; aparece dos veces (también en la línea %2)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="43"/>
+        <location filename="../widgets/core_message.cpp" line="45"/>
         <source>option &apos;%1&apos; has no value</source>
         <translation>la opción &apos;%1&apos; no tiene valor</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="44"/>
+        <location filename="../widgets/core_message.cpp" line="46"/>
         <source>option &apos;%1&apos; must be a single value, not a list</source>
         <translation>la opción &apos;%1&apos; debe ser un valor único, no una lista</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="45"/>
+        <location filename="../widgets/core_message.cpp" line="47"/>
         <source>an option key must be a word, not a list or map</source>
         <translation>una clave de opción debe ser una palabra, no una lista ni un mapa</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="46"/>
+        <location filename="../widgets/core_message.cpp" line="48"/>
         <source>options nest deeper than %1 levels</source>
         <translation>las opciones se anidan en más de %1 niveles</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="47"/>
+        <location filename="../widgets/core_message.cpp" line="49"/>
         <source>lists or maps nest deeper than %1 levels</source>
         <translation>listas o mapas anidados en más de %1 niveles</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="48"/>
+        <location filename="../widgets/core_message.cpp" line="50"/>
         <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
         <translation>más de %1 valores (¿alias que se expanden?); un perfil enumera cada opción una sola vez</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="50"/>
+        <location filename="../widgets/core_message.cpp" line="52"/>
         <source>not a readable YAML profile: %1</source>
         <translation>no es un perfil YAML legible: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="51"/>
+        <location filename="../widgets/core_message.cpp" line="53"/>
         <source>cannot write profile %1</source>
         <translation>no se puede escribir el perfil %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="52"/>
+        <location filename="../widgets/core_message.cpp" line="54"/>
         <source>write to %1 failed (disk full?)</source>
         <translation>falló la escritura en %1 (¿disco lleno?)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="53"/>
+        <location filename="../widgets/core_message.cpp" line="55"/>
         <source>no such file</source>
         <translation>el archivo no existe</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="54"/>
+        <location filename="../widgets/core_message.cpp" line="56"/>
         <source>profile %1 is a folder, not a file</source>
         <translation>el perfil %1 es una carpeta, no un archivo</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="55"/>
+        <location filename="../widgets/core_message.cpp" line="57"/>
         <source>profile %1 is not a regular file (a device, pipe or socket)</source>
         <translation>el perfil %1 no es un archivo normal (un dispositivo, una tubería o un socket)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="57"/>
+        <location filename="../widgets/core_message.cpp" line="59"/>
         <source>profile %1 cannot be read: %2</source>
         <translation>no se puede leer el perfil %1: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="58"/>
+        <location filename="../widgets/core_message.cpp" line="60"/>
         <source>profile %1 is %2 bytes; a profile holds at most %3</source>
         <translation>el perfil %1 ocupa %2 bytes; un perfil contiene como máximo %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="60"/>
+        <location filename="../widgets/core_message.cpp" line="62"/>
         <source>cannot read its size: %1</source>
         <translation>no se puede leer su tamaño: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="61"/>
+        <location filename="../widgets/core_message.cpp" line="63"/>
         <source>read error (%1 of %2 bytes)</source>
         <translation>error de lectura (%1 de %2 bytes)</translation>
     </message>
@@ -632,6 +632,7 @@
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="104"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="175"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Elija dos archivos de trayectoria y pulse Evaluar.</translation>
     </message>
@@ -681,12 +682,12 @@
         <translation>Evaluando...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="185"/>
         <source>Evaluation failed: %1</source>
         <translation>La evaluación ha fallado: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="189"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="198"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 poses asociadas, recorrido de la referencia %2 m.</translation>
     </message>
@@ -694,14 +695,14 @@
 <context>
     <name>sightline::ImageView</name>
     <message>
-        <location filename="../widgets/image_view.cpp" line="47"/>
-        <location filename="../widgets/image_view.cpp" line="78"/>
-        <location filename="../widgets/image_view.cpp" line="131"/>
+        <location filename="../widgets/image_view.cpp" line="49"/>
+        <location filename="../widgets/image_view.cpp" line="80"/>
+        <location filename="../widgets/image_view.cpp" line="135"/>
         <source>No image</source>
         <translation>Sin imagen</translation>
     </message>
     <message>
-        <location filename="../widgets/image_view.cpp" line="81"/>
+        <location filename="../widgets/image_view.cpp" line="83"/>
         <source>Unsupported image type %1</source>
         <translation>Tipo de imagen no admitido %1</translation>
     </message>
@@ -732,7 +733,12 @@
 <context>
     <name>sightline::LogPanel</name>
     <message>
-        <location filename="../widgets/log_panel.cpp" line="36"/>
+        <location filename="../widgets/log_panel.cpp" line="33"/>
+        <source>Click a line to read it in full.</source>
+        <translation>Haga clic en una línea para leerla completa.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/log_panel.cpp" line="51"/>
         <source>Clear messages</source>
         <translation>Borrar los mensajes</translation>
     </message>
@@ -740,273 +746,283 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="46"/>
+        <location filename="../app/sightline/main_window.cpp" line="47"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="81"/>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Colour</source>
         <translation>Color</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="83"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Depth</source>
         <translation>Profundidad</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="87"/>
+        <location filename="../app/sightline/main_window.cpp" line="89"/>
         <source>Parameters</source>
         <translation>Parámetros</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="89"/>
+        <location filename="../app/sightline/main_window.cpp" line="91"/>
         <source>Log</source>
         <translation>Registro</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="92"/>
+        <location filename="../app/sightline/main_window.cpp" line="94"/>
         <source>Evaluation</source>
         <translation>Evaluación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="100"/>
+        <location filename="../app/sightline/main_window.cpp" line="107"/>
         <source>Playback</source>
         <translation>Reproducción</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <location filename="../app/sightline/main_window.cpp" line="118"/>
         <source>&amp;Open dataset folder...</source>
         <translation>&amp;Abrir carpeta de datos...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
         <source>Open dataset folder</source>
         <translation>Abrir carpeta de datos</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="119"/>
+        <location filename="../app/sightline/main_window.cpp" line="126"/>
         <source>Open point cloud</source>
         <translation>Abrir nube de puntos</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <location filename="../app/sightline/main_window.cpp" line="124"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Abrir archivo de &amp;grabación (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="120"/>
+        <location filename="../app/sightline/main_window.cpp" line="127"/>
         <source>Recordings (*.pcd *.oni)</source>
         <translation>Grabaciones (*.pcd *.oni)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
         <source>Open &amp;recent</source>
         <translation>Abrir &amp;recientes</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="128"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="132"/>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
         <source>&amp;View</source>
         <translation>&amp;Ver</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="134"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;Reset 3D view</source>
         <translation>&amp;Restablecer la vista 3D</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="142"/>
+        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <source>&amp;Follow the trajectory</source>
+        <translation>&amp;Seguir la trayectoria</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
+        <translation>Ajustar de nuevo la vista 3D cada vez que una trayectoria creciente sale de ella.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="155"/>
         <source>&amp;Sensors</source>
         <translation>Se&amp;nsores</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="148"/>
+        <location filename="../app/sightline/main_window.cpp" line="161"/>
         <source> (unavailable)</source>
         <translation> (no disponible)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="153"/>
+        <location filename="../app/sightline/main_window.cpp" line="166"/>
         <source>Connect to the first %1 device</source>
         <translation>Conectar con el primer dispositivo %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="159"/>
+        <location filename="../app/sightline/main_window.cpp" line="172"/>
         <source>Replay recording</source>
         <translation>Reproducir una grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="165"/>
+        <location filename="../app/sightline/main_window.cpp" line="178"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
-        <location filename="../app/sightline/main_window.cpp" line="300"/>
+        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="324"/>
         <source>None (show frames only)</source>
         <translation>Ninguno (solo mostrar imágenes)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="187"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>&amp;Evaluar una trayectoria...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="193"/>
         <source>Evaluate &amp;current run</source>
         <translation>Evaluar la ejecución a&amp;ctual</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="182"/>
+        <location filename="../app/sightline/main_window.cpp" line="195"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Compara la trayectoria del pipeline en ejecución con la verdad de referencia del conjunto de datos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="191"/>
+        <location filename="../app/sightline/main_window.cpp" line="204"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="192"/>
+        <location filename="../app/sightline/main_window.cpp" line="205"/>
         <source>&amp;About Sightline</source>
         <translation>&amp;Acerca de Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="193"/>
+        <location filename="../app/sightline/main_window.cpp" line="206"/>
         <source>About Sightline</source>
         <translation>Acerca de Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: percepción robótica para la robótica asistencial y móvil.
 Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localización monocular de botones con sensores en vivo o datos grabados.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="224"/>
         <source>Could not open %1: %2</source>
         <translation>No se pudo abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="225"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="215"/>
+        <location filename="../app/sightline/main_window.cpp" line="233"/>
         <source>End of recording.</source>
         <translation>Fin de la grabación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="239"/>
+        <location filename="../app/sightline/main_window.cpp" line="262"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="246"/>
+        <location filename="../app/sightline/main_window.cpp" line="269"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Generando las grabaciones de la demo (solo la primera vez)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="255"/>
+        <location filename="../app/sightline/main_window.cpp" line="278"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: un robot recorre un pasillo de oficina simulado (RGB-D, estéreo, odometría de ruedas, verdad de referencia exacta). La aproximación de la cámara del brazo al panel está en %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="262"/>
+        <location filename="../app/sightline/main_window.cpp" line="285"/>
         <source>The demo could not be made: %1</source>
         <translation>No se pudo crear la demo: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="318"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Sin pipeline: solo se muestran las imágenes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="353"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="333"/>
+        <location filename="../app/sightline/main_window.cpp" line="357"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 no puede funcionar con imágenes %2; abra otro conjunto de datos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="362"/>
-        <location filename="../app/sightline/main_window.cpp" line="363"/>
+        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="387"/>
         <source>Opening %1 ...</source>
         <translation>Abriendo %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Left</source>
         <translation>Izquierda</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Image</source>
         <translation>Imagen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Right</source>
         <translation>Derecha</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="381"/>
+        <location filename="../app/sightline/main_window.cpp" line="409"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 imágenes, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="414"/>
         <source>, ground truth</source>
         <translation>, verdad de referencia</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="416"/>
         <source>Opened %1</source>
         <translation>Abierto %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="393"/>
+        <location filename="../app/sightline/main_window.cpp" line="421"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="428"/>
+        <location filename="../app/sightline/main_window.cpp" line="440"/>
         <source>frame %1, read in %2 ms</source>
         <translation>imagen %1, leída en %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="450"/>
+        <location filename="../app/sightline/main_window.cpp" line="484"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Ningún conjunto de datos abierto. Use Archivo &gt; Abrir carpeta de datos (TUM RGB-D, EuRoC, KITTI, una carpeta de imágenes o archivos PCD), o arrastre una carpeta a esta ventana.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="452"/>
+        <location filename="../app/sightline/main_window.cpp" line="486"/>
         <source>No dataset open</source>
         <translation>Ningún conjunto de datos abierto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="184"/>
+        <location filename="../app/sightline/main_window.cpp" line="197"/>
         <source>&amp;Calibrate camera...</source>
         <translation>&amp;Calibrar la cámara...</translation>
     </message>
@@ -1090,6 +1106,26 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <source>Language: %1</source>
         <translation>Idioma: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="44"/>
+        <source>Reset the map?</source>
+        <translation>¿Reiniciar el mapa?</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="45"/>
+        <source>%1 has built its map over %2 frames. Seeking starts it over from the frame you seek to: the map and the trajectory so far are lost.</source>
+        <translation>%1 ha construido su mapa a lo largo de %2 fotogramas. Saltar lo reinicia desde el fotograma elegido: se pierden el mapa y la trayectoria hasta ahora.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="51"/>
+        <source>Seek and reset the map</source>
+        <translation>Saltar y reiniciar el mapa</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
+        <source>Keep the map</source>
+        <translation>Conservar el mapa</translation>
+    </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
@@ -1139,17 +1175,57 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Mapa unido</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <source>free</source>
+        <translation>libre</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <source>occupied</source>
+        <translation>ocupado</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <source>person</source>
+        <translation>persona</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <source>scan rays</source>
+        <translation>rayos del escaneo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <source>walls, first direction</source>
+        <translation>paredes, primera dirección</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <source>walls, perpendicular</source>
+        <translation>paredes, perpendiculares</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <source>other lines</source>
+        <translation>otras líneas</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <source>robot</source>
+        <translation>robot</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Referencia de Manhattan reiniciada: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Calibrando de nuevo el suelo con las próximas imágenes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Calibración del suelo guardada en %1</translation>
     </message>
@@ -1157,19 +1233,39 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::MobilityImagePanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="72"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
         <source>Projection</source>
         <translation>Proyección</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
         <source>Top view</source>
         <translation>Vista cenital</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="75"/>
         <source>GPR surface</source>
         <translation>Superficie GPR</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="85"/>
+        <source>score 0: not passable</source>
+        <translation>puntuación 0: no transitable</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="86"/>
+        <source>score 0.5</source>
+        <translation>puntuación 0,5</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="87"/>
+        <source>score 1: passable</source>
+        <translation>puntuación 1: transitable</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="88"/>
+        <source>not scored</source>
+        <translation>sin puntuar</translation>
     </message>
 </context>
 <context>
@@ -1193,52 +1289,52 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::MobilityTimingPanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="21"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="22"/>
         <source>3D colour:</source>
         <translation>Color 3D:</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (rule)</source>
         <translation>Puntuación (regla)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (GPR)</source>
         <translation>Puntuación (GPR)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Segment</source>
         <translation>Segmento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Time (ms)</source>
         <translation>Tiempo (ms)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Points</source>
         <translation>Puntos</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="53"/>
         <source>Total</source>
         <translation>Total</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="55"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="56"/>
         <source>%1 mode, %2 segments</source>
         <translation>modo %1, %2 segmentos</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="59"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="60"/>
         <source>, camera %1 m above the ground</source>
         <translation>, cámara a %1 m sobre el suelo</translation>
     </message>
@@ -1286,17 +1382,37 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Escala métrica (ML continua, razón única discontinua)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="207"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <source>inlier</source>
+        <translation>inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <source>outlier</source>
+        <translation>atípico</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <source>keypoint, unmatched</source>
+        <translation>punto clave, sin emparejar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <source>frame: tracking quality</source>
+        <translation>marco: calidad del seguimiento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 inliers de %3 correspondencias, %4 puntos del mapa, %5 keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="217"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Escala métrica a partir de %1: ML %2, razón única %3 unidades de mapa por metro; mapa y trayectoria en metros.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Escala desconocida (movimiento medido: %1): el mapa está en unidades arbitrarias (primera línea base = 0,1).</translation>
     </message>
@@ -3785,37 +3901,37 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Restablecer todo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="168"/>
+        <location filename="../widgets/parameter_panel.cpp" line="173"/>
         <source>All options reset to their defaults.</source>
         <translation>Todas las opciones vuelven a sus valores por defecto.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="179"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Loaded profile %1</source>
         <translation>Perfil %1 cargado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Saved profile %1</source>
         <translation>Perfil %1 guardado</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Load profile</source>
         <translation>Cargar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Perfiles YAML (*.yaml *.yml);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="204"/>
+        <location filename="../widgets/parameter_panel.cpp" line="209"/>
         <source>Save profile</source>
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="205"/>
+        <location filename="../widgets/parameter_panel.cpp" line="210"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Perfiles YAML (*.yaml *.yml)</translation>
     </message>
@@ -3823,34 +3939,39 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::PlaybackBar</name>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="35"/>
+        <location filename="../widgets/playback_bar.cpp" line="37"/>
         <source>Step one frame</source>
         <translation>Avanzar una imagen</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="54"/>
+        <location filename="../widgets/playback_bar.cpp" line="57"/>
         <source>Playback speed relative to the recording&apos;s timestamps</source>
         <translation>Velocidad de reproducción respecto a las marcas de tiempo de la grabación</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="58"/>
+        <location filename="../widgets/playback_bar.cpp" line="61"/>
         <source>max</source>
         <translation>máx</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="64"/>
+        <location filename="../widgets/playback_bar.cpp" line="67"/>
         <source>Loop</source>
         <translation>Bucle</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Play</source>
         <translation>Reproducir</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="155"/>
+        <source>frame %1</source>
+        <translation>fotograma %1</translation>
     </message>
 </context>
 <context>
@@ -3975,12 +4096,12 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Estadísticas en el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>seguidas %1, nuevas %2, estéreo %3, inliers %4, RANSAC %5 it., residuo %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
         <source>, GATED: pose held</source>
         <translation>, BLOQUEADO: pose mantenida</translation>
     </message>
@@ -4055,7 +4176,27 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>total</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <source>inlier track</source>
+        <translation>traza inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <source>outlier track</source>
+        <translation>traza atípica</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <source>new feature</source>
+        <translation>característica nueva</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <source>stereo match</source>
+        <translation>correspondencia estéreo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
         <source>residual</source>
         <translation>residuo</translation>
     </message>

@@ -362,177 +362,177 @@
 <context>
     <name>sightline::CoreMessage</name>
     <message>
-        <location filename="../widgets/core_message.cpp" line="15"/>
+        <location filename="../widgets/core_message.cpp" line="17"/>
         <source>invalid argument</source>
         <translation>argomento non valido</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="16"/>
+        <location filename="../widgets/core_message.cpp" line="18"/>
         <source>not found</source>
         <translation>non trovato</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="17"/>
+        <location filename="../widgets/core_message.cpp" line="19"/>
         <source>parse error</source>
         <translation>errore di formato</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="18"/>
+        <location filename="../widgets/core_message.cpp" line="20"/>
         <source>unavailable</source>
         <translation>non disponibile</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="19"/>
+        <location filename="../widgets/core_message.cpp" line="21"/>
         <source>out of range</source>
         <translation>fuori intervallo</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="20"/>
+        <location filename="../widgets/core_message.cpp" line="22"/>
         <source>failed precondition</source>
         <translation>precondizione non soddisfatta</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="21"/>
+        <location filename="../widgets/core_message.cpp" line="23"/>
         <source>internal error</source>
         <translation>errore interno</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="26"/>
+        <location filename="../widgets/core_message.cpp" line="28"/>
         <source>%1 line %2</source>
         <translation>%1 riga %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="27"/>
+        <location filename="../widgets/core_message.cpp" line="29"/>
         <source>profile %1</source>
         <translation>profilo %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="28"/>
+        <location filename="../widgets/core_message.cpp" line="30"/>
         <source>parameter panel</source>
         <translation>pannello dei parametri</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="34"/>
+        <location filename="../widgets/core_message.cpp" line="36"/>
         <source>unknown option &apos;%1&apos;</source>
         <translation>opzione sconosciuta &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="35"/>
+        <location filename="../widgets/core_message.cpp" line="37"/>
         <source>option &apos;%1&apos;: %2 is outside %3</source>
         <translation>opzione &apos;%1&apos;: %2 è fuori da %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="36"/>
+        <location filename="../widgets/core_message.cpp" line="38"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
         <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è uno dei valori: %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="37"/>
+        <location filename="../widgets/core_message.cpp" line="39"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
         <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un booleano (true/false)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="38"/>
+        <location filename="../widgets/core_message.cpp" line="40"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
         <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un numero intero</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="39"/>
+        <location filename="../widgets/core_message.cpp" line="41"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
         <translation>opzione &apos;%1&apos;: &apos;%2&apos; non è un numero</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="40"/>
+        <location filename="../widgets/core_message.cpp" line="42"/>
         <source>option &apos;%1&apos;: value is not finite</source>
         <translation>opzione &apos;%1&apos;: il valore non è finito</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="41"/>
+        <location filename="../widgets/core_message.cpp" line="43"/>
         <source>a profile must be a map of option keys</source>
         <translation>un profilo deve essere una mappa di chiavi di opzione</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="42"/>
+        <location filename="../widgets/core_message.cpp" line="44"/>
         <source>option &apos;%1&apos; is given twice (also line %2)</source>
         <translation>l&apos;opzione &apos;%1&apos; è indicata due volte (anche alla riga %2)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="43"/>
+        <location filename="../widgets/core_message.cpp" line="45"/>
         <source>option &apos;%1&apos; has no value</source>
         <translation>l&apos;opzione &apos;%1&apos; non ha un valore</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="44"/>
+        <location filename="../widgets/core_message.cpp" line="46"/>
         <source>option &apos;%1&apos; must be a single value, not a list</source>
         <translation>l&apos;opzione &apos;%1&apos; deve essere un valore singolo, non una lista</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="45"/>
+        <location filename="../widgets/core_message.cpp" line="47"/>
         <source>an option key must be a word, not a list or map</source>
         <translation>una chiave di opzione deve essere una parola, non una lista o una mappa</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="46"/>
+        <location filename="../widgets/core_message.cpp" line="48"/>
         <source>options nest deeper than %1 levels</source>
         <translation>le opzioni sono annidate oltre %1 livelli</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="47"/>
+        <location filename="../widgets/core_message.cpp" line="49"/>
         <source>lists or maps nest deeper than %1 levels</source>
         <translation>liste o mappe annidate oltre %1 livelli</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="48"/>
+        <location filename="../widgets/core_message.cpp" line="50"/>
         <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
         <translation>più di %1 valori (alias che si espandono?); un profilo elenca ogni opzione una sola volta</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="50"/>
+        <location filename="../widgets/core_message.cpp" line="52"/>
         <source>not a readable YAML profile: %1</source>
         <translation>non è un profilo YAML leggibile: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="51"/>
+        <location filename="../widgets/core_message.cpp" line="53"/>
         <source>cannot write profile %1</source>
         <translation>impossibile scrivere il profilo %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="52"/>
+        <location filename="../widgets/core_message.cpp" line="54"/>
         <source>write to %1 failed (disk full?)</source>
         <translation>scrittura su %1 non riuscita (disco pieno?)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="53"/>
+        <location filename="../widgets/core_message.cpp" line="55"/>
         <source>no such file</source>
         <translation>file inesistente</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="54"/>
+        <location filename="../widgets/core_message.cpp" line="56"/>
         <source>profile %1 is a folder, not a file</source>
         <translation>il profilo %1 è una cartella, non un file</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="55"/>
+        <location filename="../widgets/core_message.cpp" line="57"/>
         <source>profile %1 is not a regular file (a device, pipe or socket)</source>
         <translation>il profilo %1 non è un file regolare (un dispositivo, una pipe o un socket)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="57"/>
+        <location filename="../widgets/core_message.cpp" line="59"/>
         <source>profile %1 cannot be read: %2</source>
         <translation>impossibile leggere il profilo %1: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="58"/>
+        <location filename="../widgets/core_message.cpp" line="60"/>
         <source>profile %1 is %2 bytes; a profile holds at most %3</source>
         <translation>il profilo %1 è di %2 byte; un profilo contiene al massimo %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="60"/>
+        <location filename="../widgets/core_message.cpp" line="62"/>
         <source>cannot read its size: %1</source>
         <translation>impossibile leggerne la dimensione: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="61"/>
+        <location filename="../widgets/core_message.cpp" line="63"/>
         <source>read error (%1 of %2 bytes)</source>
         <translation>errore di lettura (%1 di %2 byte)</translation>
     </message>
@@ -632,6 +632,7 @@
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="104"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="175"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Scegli due file di traiettoria e premi Valuta.</translation>
     </message>
@@ -681,12 +682,12 @@
         <translation>Valutazione in corso...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="185"/>
         <source>Evaluation failed: %1</source>
         <translation>Valutazione non riuscita: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="189"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="198"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 pose associate, percorso della ground truth %2 m.</translation>
     </message>
@@ -694,14 +695,14 @@
 <context>
     <name>sightline::ImageView</name>
     <message>
-        <location filename="../widgets/image_view.cpp" line="47"/>
-        <location filename="../widgets/image_view.cpp" line="78"/>
-        <location filename="../widgets/image_view.cpp" line="131"/>
+        <location filename="../widgets/image_view.cpp" line="49"/>
+        <location filename="../widgets/image_view.cpp" line="80"/>
+        <location filename="../widgets/image_view.cpp" line="135"/>
         <source>No image</source>
         <translation>Nessuna immagine</translation>
     </message>
     <message>
-        <location filename="../widgets/image_view.cpp" line="81"/>
+        <location filename="../widgets/image_view.cpp" line="83"/>
         <source>Unsupported image type %1</source>
         <translation>Tipo di immagine non supportato %1</translation>
     </message>
@@ -732,7 +733,12 @@
 <context>
     <name>sightline::LogPanel</name>
     <message>
-        <location filename="../widgets/log_panel.cpp" line="36"/>
+        <location filename="../widgets/log_panel.cpp" line="33"/>
+        <source>Click a line to read it in full.</source>
+        <translation>Fai clic su una riga per leggerla per intero.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/log_panel.cpp" line="51"/>
         <source>Clear messages</source>
         <translation>Cancella i messaggi</translation>
     </message>
@@ -740,273 +746,283 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="46"/>
+        <location filename="../app/sightline/main_window.cpp" line="47"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="81"/>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Colour</source>
         <translation>Colore</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="83"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Depth</source>
         <translation>Profondità</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="87"/>
+        <location filename="../app/sightline/main_window.cpp" line="89"/>
         <source>Parameters</source>
         <translation>Parametri</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="89"/>
+        <location filename="../app/sightline/main_window.cpp" line="91"/>
         <source>Log</source>
         <translation>Registro</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="92"/>
+        <location filename="../app/sightline/main_window.cpp" line="94"/>
         <source>Evaluation</source>
         <translation>Valutazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="100"/>
+        <location filename="../app/sightline/main_window.cpp" line="107"/>
         <source>Playback</source>
         <translation>Riproduzione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <location filename="../app/sightline/main_window.cpp" line="118"/>
         <source>&amp;Open dataset folder...</source>
         <translation>&amp;Apri cartella del dataset...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
         <source>Open dataset folder</source>
         <translation>Apri cartella del dataset</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="119"/>
+        <location filename="../app/sightline/main_window.cpp" line="126"/>
         <source>Open point cloud</source>
         <translation>Apri nuvola di punti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <location filename="../app/sightline/main_window.cpp" line="124"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Apri &amp;file di registrazione (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="120"/>
+        <location filename="../app/sightline/main_window.cpp" line="127"/>
         <source>Recordings (*.pcd *.oni)</source>
         <translation>Registrazioni (*.pcd *.oni)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
         <source>Open &amp;recent</source>
         <translation>Apri &amp;recenti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="128"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Esci</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="132"/>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
         <source>&amp;View</source>
         <translation>&amp;Visualizza</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="134"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;Reset 3D view</source>
         <translation>&amp;Ripristina la vista 3D</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="142"/>
+        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <source>&amp;Follow the trajectory</source>
+        <translation>&amp;Segui la traiettoria</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
+        <translation>Riadatta la vista 3D ogni volta che una traiettoria in crescita ne esce.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="155"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensori</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="148"/>
+        <location filename="../app/sightline/main_window.cpp" line="161"/>
         <source> (unavailable)</source>
         <translation> (non disponibile)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="153"/>
+        <location filename="../app/sightline/main_window.cpp" line="166"/>
         <source>Connect to the first %1 device</source>
         <translation>Collegati al primo dispositivo %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="159"/>
+        <location filename="../app/sightline/main_window.cpp" line="172"/>
         <source>Replay recording</source>
         <translation>Riproduci una registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="165"/>
+        <location filename="../app/sightline/main_window.cpp" line="178"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
-        <location filename="../app/sightline/main_window.cpp" line="300"/>
+        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="324"/>
         <source>None (show frames only)</source>
         <translation>Nessuna (mostra solo le immagini)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="187"/>
         <source>&amp;Tools</source>
         <translation>S&amp;trumenti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>&amp;Valuta una traiettoria...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="193"/>
         <source>Evaluate &amp;current run</source>
         <translation>Valuta l&apos;esecuzione &amp;corrente</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="182"/>
+        <location filename="../app/sightline/main_window.cpp" line="195"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Confronta la traiettoria della pipeline in esecuzione con la ground truth del dataset.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="191"/>
+        <location filename="../app/sightline/main_window.cpp" line="204"/>
         <source>&amp;Help</source>
         <translation>&amp;Aiuto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="192"/>
+        <location filename="../app/sightline/main_window.cpp" line="205"/>
         <source>&amp;About Sightline</source>
         <translation>&amp;Informazioni su Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="193"/>
+        <location filename="../app/sightline/main_window.cpp" line="206"/>
         <source>About Sightline</source>
         <translation>Informazioni su Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: percezione robotica per la robotica assistiva e mobile.
 Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazione monoculare dei pulsanti da sensori dal vivo o dati registrati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="224"/>
         <source>Could not open %1: %2</source>
         <translation>Impossibile aprire %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="225"/>
         <source>Could not open %1</source>
         <translation>Impossibile aprire %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="215"/>
+        <location filename="../app/sightline/main_window.cpp" line="233"/>
         <source>End of recording.</source>
         <translation>Fine della registrazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="239"/>
+        <location filename="../app/sightline/main_window.cpp" line="262"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="246"/>
+        <location filename="../app/sightline/main_window.cpp" line="269"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Generazione delle registrazioni demo (solo la prima volta)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="255"/>
+        <location filename="../app/sightline/main_window.cpp" line="278"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: un robot percorre un corridoio d&apos;ufficio simulato (RGB-D, stereo, odometria delle ruote, ground truth esatta). L&apos;avvicinamento della telecamera del braccio al pannello è in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="262"/>
+        <location filename="../app/sightline/main_window.cpp" line="285"/>
         <source>The demo could not be made: %1</source>
         <translation>Impossibile creare la demo: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="318"/>
+        <location filename="../app/sightline/main_window.cpp" line="342"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Nessuna pipeline: mostro solo le immagini.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="353"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="333"/>
+        <location filename="../app/sightline/main_window.cpp" line="357"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 non può funzionare su immagini %2; apri un altro dataset.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="362"/>
-        <location filename="../app/sightline/main_window.cpp" line="363"/>
+        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="387"/>
         <source>Opening %1 ...</source>
         <translation>Apertura di %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Left</source>
         <translation>Sinistra</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="402"/>
         <source>Image</source>
         <translation>Immagine</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Right</source>
         <translation>Destra</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="381"/>
+        <location filename="../app/sightline/main_window.cpp" line="409"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 immagini, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="414"/>
         <source>, ground truth</source>
         <translation>, ground truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="416"/>
         <source>Opened %1</source>
         <translation>Aperto %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="393"/>
+        <location filename="../app/sightline/main_window.cpp" line="421"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="428"/>
+        <location filename="../app/sightline/main_window.cpp" line="440"/>
         <source>frame %1, read in %2 ms</source>
         <translation>immagine %1, letta in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="450"/>
+        <location filename="../app/sightline/main_window.cpp" line="484"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Nessun dataset aperto. Usa File &gt; Apri cartella del dataset (TUM RGB-D, EuRoC, KITTI, una cartella di immagini o file PCD), oppure trascina una cartella su questa finestra.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="452"/>
+        <location filename="../app/sightline/main_window.cpp" line="486"/>
         <source>No dataset open</source>
         <translation>Nessun dataset aperto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="184"/>
+        <location filename="../app/sightline/main_window.cpp" line="197"/>
         <source>&amp;Calibrate camera...</source>
         <translation>&amp;Calibra la telecamera...</translation>
     </message>
@@ -1090,6 +1106,26 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <source>Language: %1</source>
         <translation>Lingua: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="44"/>
+        <source>Reset the map?</source>
+        <translation>Azzerare la mappa?</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="45"/>
+        <source>%1 has built its map over %2 frames. Seeking starts it over from the frame you seek to: the map and the trajectory so far are lost.</source>
+        <translation>%1 ha costruito la sua mappa su %2 fotogrammi. Un salto la ricomincia dal fotogramma scelto: la mappa e la traiettoria finora vanno perse.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="51"/>
+        <source>Seek and reset the map</source>
+        <translation>Salta e azzera la mappa</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
+        <source>Keep the map</source>
+        <translation>Mantieni la mappa</translation>
+    </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
@@ -1139,17 +1175,57 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Mappa unita</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <source>free</source>
+        <translation>libero</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <source>occupied</source>
+        <translation>occupato</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <source>person</source>
+        <translation>persona</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <source>scan rays</source>
+        <translation>raggi di scansione</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <source>walls, first direction</source>
+        <translation>pareti, prima direzione</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <source>walls, perpendicular</source>
+        <translation>pareti, perpendicolari</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <source>other lines</source>
+        <translation>altre linee</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <source>robot</source>
+        <translation>robot</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Riferimento di Manhattan azzerato: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Nuova calibrazione del pavimento dalle prossime immagini.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Calibrazione del pavimento salvata in %1</translation>
     </message>
@@ -1157,19 +1233,39 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::MobilityImagePanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="72"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
         <source>Projection</source>
         <translation>Proiezione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
         <source>Top view</source>
         <translation>Vista dall&apos;alto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="75"/>
         <source>GPR surface</source>
         <translation>Superficie GPR</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="85"/>
+        <source>score 0: not passable</source>
+        <translation>punteggio 0: non percorribile</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="86"/>
+        <source>score 0.5</source>
+        <translation>punteggio 0,5</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="87"/>
+        <source>score 1: passable</source>
+        <translation>punteggio 1: percorribile</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="88"/>
+        <source>not scored</source>
+        <translation>non valutato</translation>
     </message>
 </context>
 <context>
@@ -1193,52 +1289,52 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::MobilityTimingPanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="21"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="22"/>
         <source>3D colour:</source>
         <translation>Colore 3D:</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (rule)</source>
         <translation>Punteggio (regola)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (GPR)</source>
         <translation>Punteggio (GPR)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Segment</source>
         <translation>Segmento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Stage</source>
         <translation>Fase</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Time (ms)</source>
         <translation>Tempo (ms)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Points</source>
         <translation>Punti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="53"/>
         <source>Total</source>
         <translation>Totale</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="55"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="56"/>
         <source>%1 mode, %2 segments</source>
         <translation>modalità %1, %2 segmenti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="59"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="60"/>
         <source>, camera %1 m above the ground</source>
         <translation>, telecamera a %1 m dal suolo</translation>
     </message>
@@ -1286,17 +1382,37 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Scala metrica (ML continua, rapporto singolo tratteggiata)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="207"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <source>inlier</source>
+        <translation>inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <source>outlier</source>
+        <translation>outlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <source>keypoint, unmatched</source>
+        <translation>punto chiave, non associato</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <source>frame: tracking quality</source>
+        <translation>cornice: qualità del tracciamento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 inlier su %3 corrispondenze, %4 punti mappa, %5 keyframe, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="217"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Scala metrica da %1: ML %2, rapporto singolo %3 unità di mappa per metro; mappa e traiettoria in metri.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Scala sconosciuta (moto misurato: %1): la mappa è in unità arbitrarie (prima baseline = 0,1).</translation>
     </message>
@@ -3785,37 +3901,37 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Ripristina tutto</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="168"/>
+        <location filename="../widgets/parameter_panel.cpp" line="173"/>
         <source>All options reset to their defaults.</source>
         <translation>Tutte le opzioni riportate ai valori predefiniti.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="179"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Loaded profile %1</source>
         <translation>Profilo %1 caricato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Saved profile %1</source>
         <translation>Profilo %1 salvato</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Load profile</source>
         <translation>Carica profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>Profili YAML (*.yaml *.yml);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="204"/>
+        <location filename="../widgets/parameter_panel.cpp" line="209"/>
         <source>Save profile</source>
         <translation>Salva profilo</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="205"/>
+        <location filename="../widgets/parameter_panel.cpp" line="210"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>Profili YAML (*.yaml *.yml)</translation>
     </message>
@@ -3823,34 +3939,39 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::PlaybackBar</name>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="35"/>
+        <location filename="../widgets/playback_bar.cpp" line="37"/>
         <source>Step one frame</source>
         <translation>Avanza di un&apos;immagine</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="54"/>
+        <location filename="../widgets/playback_bar.cpp" line="57"/>
         <source>Playback speed relative to the recording&apos;s timestamps</source>
         <translation>Velocità di riproduzione rispetto ai tempi della registrazione</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="58"/>
+        <location filename="../widgets/playback_bar.cpp" line="61"/>
         <source>max</source>
         <translation>max</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="64"/>
+        <location filename="../widgets/playback_bar.cpp" line="67"/>
         <source>Loop</source>
         <translation>Ciclo</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Play</source>
         <translation>Riproduci</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="155"/>
+        <source>frame %1</source>
+        <translation>fotogramma %1</translation>
     </message>
 </context>
 <context>
@@ -3975,12 +4096,12 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Statistiche nel tempo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>tracciati %1, nuovi %2, stereo %3, inlier %4, RANSAC %5 it., residuo %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
         <source>, GATED: pose held</source>
         <translation>, BLOCCATO: posa mantenuta</translation>
     </message>
@@ -4055,7 +4176,27 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>totale</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <source>inlier track</source>
+        <translation>traccia inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <source>outlier track</source>
+        <translation>traccia outlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <source>new feature</source>
+        <translation>nuova caratteristica</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <source>stereo match</source>
+        <translation>corrispondenza stereo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
         <source>residual</source>
         <translation>residuo</translation>
     </message>
