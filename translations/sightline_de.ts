@@ -1175,57 +1175,65 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
         <source>free</source>
         <translation>frei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
         <source>occupied</source>
         <translation>belegt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
         <source>person</source>
         <translation>Person</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
         <source>scan rays</source>
         <translation>Scanstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
         <source>walls, first direction</source>
         <translation>Wände, erste Richtung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>walls, perpendicular</source>
         <translation>Wände, senkrecht dazu</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
         <source>other lines</source>
         <translation>andere Linien</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
         <source>robot</source>
         <translation>Roboter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <source>floor</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
@@ -1271,19 +1279,34 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityPresenter</name>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="26"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="27"/>
         <source>Mobility map</source>
         <translation>Befahrbarkeitskarte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="36"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="37"/>
         <source>Mobility map (red 0, green 1)</source>
         <translation>Befahrbarkeitskarte (rot 0, grün 1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="41"/>
         <source>Mobility stages (Table II)</source>
         <translation>Befahrbarkeitskarte: Stufen (Tabelle II)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="77"/>
+        <source>colour: one per segment</source>
+        <translation>Farbe: eine je Segment</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 0: not passable</source>
+        <translation>Bewertung 0: nicht befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 1: passable</source>
+        <translation>Bewertung 1: befahrbar</translation>
     </message>
 </context>
 <context>
@@ -1382,39 +1405,59 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
         <source>inlier</source>
         <translation>Inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
         <source>outlier</source>
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
         <source>keypoint, unmatched</source>
         <translation>Merkmalspunkt, ohne Zuordnung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="197"/>
         <source>frame: tracking quality</source>
         <translation>Rahmen: Tracking-Qualität</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="212"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="222"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="228"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="268"/>
+        <source>camera path</source>
+        <translation>Kamerapfad</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="269"/>
+        <source>keyframes</source>
+        <translation>Schlüsselbilder</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="270"/>
+        <source>camera: tracking quality</source>
+        <translation>Kamera: Tracking-Qualität</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="271"/>
+        <source>map points: colour of their first keyframe</source>
+        <translation>Kartenpunkte: Farbe ihres ersten Schlüsselbilds</translation>
     </message>
 </context>
 <context>
@@ -4096,12 +4139,12 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Statistik im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="210"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="220"/>
         <source>, GATED: pose held</source>
         <translation>, GESPERRT: Pose gehalten</translation>
     </message>
@@ -4176,27 +4219,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="175"/>
+        <source>estimate and camera</source>
+        <translation>Schätzung und Kamera</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="176"/>
+        <source>ground truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="185"/>
         <source>inlier track</source>
         <translation>Spur, Inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="186"/>
         <source>outlier track</source>
         <translation>Spur, Ausreißer</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="187"/>
         <source>new feature</source>
         <translation>neues Merkmal</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="199"/>
         <source>stereo match</source>
         <translation>Stereo-Zuordnung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="229"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>

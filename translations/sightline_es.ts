@@ -1175,57 +1175,65 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Mapa unido</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
         <source>free</source>
         <translation>libre</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
         <source>occupied</source>
         <translation>ocupado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
         <source>person</source>
         <translation>persona</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
         <source>scan rays</source>
         <translation>rayos del escaneo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
         <source>walls, first direction</source>
         <translation>paredes, primera dirección</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>walls, perpendicular</source>
         <translation>paredes, perpendiculares</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
         <source>other lines</source>
         <translation>otras líneas</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
         <source>robot</source>
         <translation>robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <source>floor</source>
+        <translation>suelo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Referencia de Manhattan reiniciada: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Calibrando de nuevo el suelo con las próximas imágenes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Calibración del suelo guardada en %1</translation>
     </message>
@@ -1271,19 +1279,34 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::MobilityPresenter</name>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="26"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="27"/>
         <source>Mobility map</source>
         <translation>Mapa de transitabilidad</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="36"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="37"/>
         <source>Mobility map (red 0, green 1)</source>
         <translation>Mapa de transitabilidad (rojo 0, verde 1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="41"/>
         <source>Mobility stages (Table II)</source>
         <translation>Etapas del mapa de transitabilidad (Tabla II)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="77"/>
+        <source>colour: one per segment</source>
+        <translation>color: uno por segmento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 0: not passable</source>
+        <translation>puntuación 0: no transitable</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 1: passable</source>
+        <translation>puntuación 1: transitable</translation>
     </message>
 </context>
 <context>
@@ -1382,39 +1405,59 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Escala métrica (ML continua, razón única discontinua)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
         <source>inlier</source>
         <translation>inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
         <source>outlier</source>
         <translation>atípico</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
         <source>keypoint, unmatched</source>
         <translation>punto clave, sin emparejar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="197"/>
         <source>frame: tracking quality</source>
         <translation>marco: calidad del seguimiento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="212"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 inliers de %3 correspondencias, %4 puntos del mapa, %5 keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="222"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Escala métrica a partir de %1: ML %2, razón única %3 unidades de mapa por metro; mapa y trayectoria en metros.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="228"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Escala desconocida (movimiento medido: %1): el mapa está en unidades arbitrarias (primera línea base = 0,1).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="268"/>
+        <source>camera path</source>
+        <translation>trayectoria de la cámara</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="269"/>
+        <source>keyframes</source>
+        <translation>fotogramas clave</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="270"/>
+        <source>camera: tracking quality</source>
+        <translation>cámara: calidad del seguimiento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="271"/>
+        <source>map points: colour of their first keyframe</source>
+        <translation>puntos del mapa: color de su primer fotograma clave</translation>
     </message>
 </context>
 <context>
@@ -4096,12 +4139,12 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Estadísticas en el tiempo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="210"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>seguidas %1, nuevas %2, estéreo %3, inliers %4, RANSAC %5 it., residuo %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="220"/>
         <source>, GATED: pose held</source>
         <translation>, BLOQUEADO: pose mantenida</translation>
     </message>
@@ -4176,27 +4219,37 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>total</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="175"/>
+        <source>estimate and camera</source>
+        <translation>estimación y cámara</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="176"/>
+        <source>ground truth</source>
+        <translation>verdad de referencia</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="185"/>
         <source>inlier track</source>
         <translation>traza inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="186"/>
         <source>outlier track</source>
         <translation>traza atípica</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="187"/>
         <source>new feature</source>
         <translation>característica nueva</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="199"/>
         <source>stereo match</source>
         <translation>correspondencia estéreo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="229"/>
         <source>residual</source>
         <translation>residuo</translation>
     </message>

@@ -1175,57 +1175,65 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Mappa unita</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="156"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
         <source>free</source>
         <translation>libero</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
         <source>occupied</source>
         <translation>occupato</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
         <source>person</source>
         <translation>persona</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
         <source>scan rays</source>
         <translation>raggi di scansione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
         <source>walls, first direction</source>
         <translation>pareti, prima direzione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
         <source>walls, perpendicular</source>
         <translation>pareti, perpendicolari</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
         <source>other lines</source>
         <translation>altre linee</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
         <source>robot</source>
         <translation>robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <source>floor</source>
+        <translation>pavimento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Riferimento di Manhattan azzerato: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="210"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Nuova calibrazione del pavimento dalle prossime immagini.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Calibrazione del pavimento salvata in %1</translation>
     </message>
@@ -1271,19 +1279,34 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::MobilityPresenter</name>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="26"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="27"/>
         <source>Mobility map</source>
         <translation>Mappa di percorribilità</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="36"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="37"/>
         <source>Mobility map (red 0, green 1)</source>
         <translation>Mappa di percorribilità (rosso 0, verde 1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="41"/>
         <source>Mobility stages (Table II)</source>
         <translation>Fasi della mappa di percorribilità (Tabella II)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="77"/>
+        <source>colour: one per segment</source>
+        <translation>colore: uno per segmento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 0: not passable</source>
+        <translation>punteggio 0: non percorribile</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 1: passable</source>
+        <translation>punteggio 1: percorribile</translation>
     </message>
 </context>
 <context>
@@ -1382,39 +1405,59 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Scala metrica (ML continua, rapporto singolo tratteggiata)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
         <source>inlier</source>
         <translation>inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
         <source>outlier</source>
         <translation>outlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
         <source>keypoint, unmatched</source>
         <translation>punto chiave, non associato</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="197"/>
         <source>frame: tracking quality</source>
         <translation>cornice: qualità del tracciamento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="211"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="212"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 inlier su %3 corrispondenze, %4 punti mappa, %5 keyframe, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="222"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Scala metrica da %1: ML %2, rapporto singolo %3 unità di mappa per metro; mappa e traiettoria in metri.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="228"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Scala sconosciuta (moto misurato: %1): la mappa è in unità arbitrarie (prima baseline = 0,1).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="268"/>
+        <source>camera path</source>
+        <translation>percorso della camera</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="269"/>
+        <source>keyframes</source>
+        <translation>fotogrammi chiave</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="270"/>
+        <source>camera: tracking quality</source>
+        <translation>camera: qualità del tracciamento</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="271"/>
+        <source>map points: colour of their first keyframe</source>
+        <translation>punti della mappa: colore del loro primo fotogramma chiave</translation>
     </message>
 </context>
 <context>
@@ -4096,12 +4139,12 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Statistiche nel tempo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="210"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>tracciati %1, nuovi %2, stereo %3, inlier %4, RANSAC %5 it., residuo %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="216"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="220"/>
         <source>, GATED: pose held</source>
         <translation>, BLOCCATO: posa mantenuta</translation>
     </message>
@@ -4176,27 +4219,37 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>totale</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="175"/>
+        <source>estimate and camera</source>
+        <translation>stima e camera</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="176"/>
+        <source>ground truth</source>
+        <translation>ground truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="185"/>
         <source>inlier track</source>
         <translation>traccia inlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="182"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="186"/>
         <source>outlier track</source>
         <translation>traccia outlier</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="183"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="187"/>
         <source>new feature</source>
         <translation>nuova caratteristica</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="199"/>
         <source>stereo match</source>
         <translation>corrispondenza stereo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="225"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="229"/>
         <source>residual</source>
         <translation>residuo</translation>
     </message>

@@ -139,6 +139,7 @@ void MappingPresenter::Detach() {
   if (scene_ != nullptr) {
     for (const char* layer : kWallLayers) scene_->RemoveLayer(layer);
     scene_->RemoveLayer(kFloorLayer);
+    scene_->SetKeys({});
   }
   if (occupancy_dock_ != nullptr) occupancy_dock_->hide();
   if (map_dock_ != nullptr) map_dock_->hide();
@@ -189,6 +190,10 @@ void MappingPresenter::Show(const PlaybackResult& result) {
     const QColor colors[3] = {QColor(0, 200, 255), QColor(255, 0, 255), QColor(255, 255, 0)};
     for (int k = 0; k < 3; ++k) scene_->SetLines(kWallLayers[k], lines.walls[k], colors[k], 3.0);
     scene_->SetLines(kFloorLayer, lines.floor, QColor(60, 200, 60), 1.0);
+    scene_->SetKeys({{colors[0], tr("walls, first direction")},
+                     {colors[1], tr("walls, perpendicular")},
+                     {colors[2], tr("other lines")},
+                     {QColor(60, 200, 60), tr("floor")}});
   }
   if (mapping->reset) {
     emit Message(1, tr("Manhattan reference reset: %1")

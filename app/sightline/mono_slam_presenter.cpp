@@ -179,6 +179,7 @@ void MonoSlamPresenter::Detach() {
     for (const char* layer : {kMapLayer, kKeyFramesLayer, kTrajectoryLayer, kCameraLayer}) {
       scene_->RemoveLayer(layer);
     }
+    scene_->SetKeys({});
   }
 }
 
@@ -264,6 +265,10 @@ void MonoSlamPresenter::DrawScene(const MonoSlamFrameResult& view, double divide
   scene_->FollowContent(path_box, view.lambda > 0 ? 2.0 : 0.2);
   scene_->SetFrusta(kCameraLayer, {metric(slam->map_from_camera)}, QualityColor(slam->quality),
                     1.5 * frustum);
+  scene_->SetKeys({{QColor(255, 80, 80), tr("camera path")},
+                   {QColor(90, 200, 255), tr("keyframes")},
+                   {QualityColor(slam->quality), tr("camera: tracking quality")},
+                   {QColor(200, 200, 200), tr("map points: colour of their first keyframe")}});
 }
 
 }  // namespace sightline

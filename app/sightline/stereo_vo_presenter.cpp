@@ -144,6 +144,7 @@ void StereoVoPresenter::Detach() {
     for (const char* layer : {kEstimateLayer, kGroundTruthLayer, kCameraLayer}) {
       scene_->RemoveLayer(layer);
     }
+    scene_->SetKeys({});
   }
 }
 
@@ -171,6 +172,9 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
       scene_->SetTrajectory(kGroundTruthLayer, ground_truth_drawn_, QColor(80, 160, 255), 2.0);
     }
     scene_->SetFrusta(kCameraLayer, {odometry->world_from_camera}, QColor(255, 80, 80), 1.0);
+    std::vector<SceneView::Key> keys = {{QColor(255, 80, 80), tr("estimate and camera")}};
+    if (!ground_truth_drawn_.empty()) keys.push_back({QColor(80, 160, 255), tr("ground truth")});
+    scene_->SetKeys(keys);
     FitViewIfGrown();
   }
   PlotStatistics(*view);

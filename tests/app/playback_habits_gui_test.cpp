@@ -308,6 +308,10 @@ TEST(PlaybackHabits, TheThreeDViewFollowsAGrowingTrajectoryUnlessFollowIsOff) {
   // The tracks view says what its colours mean.
   ASSERT_EQ(vo->tracks_view()->keys().size(), 3u);
   EXPECT_EQ(vo->tracks_view()->keys()[0].label, "inlier track");
+  // And the 3D view says which path is which.
+  ASSERT_EQ(window.scene_view()->keys().size(), 2u);
+  EXPECT_EQ(window.scene_view()->keys()[1].label, "ground truth");
+  EXPECT_TRUE(window.scene_view()->keys_label()->isVisible());
   EXPECT_EQ(vo->view_fits(), 0) << "the view was fitted although follow is off";
 
   follow->trigger();
