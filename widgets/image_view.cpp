@@ -1,7 +1,9 @@
 #include "widgets/image_view.h"
 
 #include <QFontMetrics>
+#include <QMouseEvent>
 #include <QPainter>
+#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -127,6 +129,8 @@ void ImageView::SetDepthImage(const cv::Mat& depth_m) {
 
 void ImageView::Clear() {
   image_ = QImage();
+  zoom_ = 1.0;
+  pan_ = QPointF();
   is_depth_ = false;
   message_ = tr("No image");
   update();
@@ -179,8 +183,57 @@ QTransform ImageView::ImageToWidget() const {
   const double x0 = area.x() + 0.5 * (area.width() - scale * image_.width());
   const double y0 = area.y() + 0.5 * (area.height() - scale * image_.height());
   // Image coordinate u has its pixel spanning [u - 0.5, u + 0.5).
-  return QTransform::fromTranslate(0.5, 0.5) * QTransform::fromScale(scale, scale) *
-         QTransform::fromTranslate(x0, y0);
+  const QTransform fitted = QTransform::fromTranslate(0.5, 0.5) *
+                            QTransform::fromScale(scale, scale) * QTransform::fromTranslate(x0, y0);
+  // Zoom about the area's centre, then pan.
+  const QPointF c = QRectF(area).center();
+  return fitted * QTransform::fromTranslate(-c.x(), -c.y()) * QTransform::fromScale(zoom_, zoom_) *
+         QTransform::fromTranslate(c.x() + pan_.x(), c.y() + pan_.y());
+}
+
+void ImageView::FitImage() {
+  zoom_ = 1.0;
+  pan_ = QPointF();
+  update();
+}
+
+void ImageView::wheelEvent(QWheelEvent* event) {
+  if (image_.isNull() || event->angleDelta().y() == 0) return QWidget::wheelEvent(event);
+  const double next =
+      std::clamp(zoom_ * std::pow(1.25, event->angleDelta().y() / 120.0), 1.0, 32.0);
+  if (next == 1.0) return FitImage();
+  // The image point under the mouse stays under it.
+  const QPointF m = event->position();
+  const QPointF c = QRectF(ImageArea()).center();
+  pan_ = m - c - (m - c - pan_) * (next / zoom_);
+  zoom_ = next;
+  update();
+  event->accept();
+}
+
+void ImageView::mousePressEvent(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton || zoom_ == 1.0) return QWidget::mousePressEvent(event);
+  dragging_ = true;
+  drag_from_ = event->position();
+  setCursor(Qt::ClosedHandCursor);
+}
+
+void ImageView::mouseMoveEvent(QMouseEvent* event) {
+  if (!dragging_) return QWidget::mouseMoveEvent(event);
+  pan_ += event->position() - drag_from_;
+  drag_from_ = event->position();
+  update();
+}
+
+void ImageView::mouseReleaseEvent(QMouseEvent* event) {
+  if (!dragging_) return QWidget::mouseReleaseEvent(event);
+  dragging_ = false;
+  unsetCursor();
+}
+
+void ImageView::mouseDoubleClickEvent(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton) return QWidget::mouseDoubleClickEvent(event);
+  FitImage();
 }
 
 QRect ImageView::LegendBarRect() const {
@@ -208,18 +261,58 @@ void ImageView::paintEvent(QPaintEvent*) {
     return;
   }
   const QTransform image_to_widget = ImageToWidget();
+  painter.save();
+  painter.setClipRect(ImageArea());  // A zoomed image stays off the title and the legend.
   // The image rectangle in widget coordinates (pixel edges at -0.5 and size - 0.5).
   const QRectF target =
       image_to_widget.mapRect(QRectF(-0.5, -0.5, image_.width(), image_.height()));
   // Nearest-neighbour when enlarging keeps pixels honest; smooth when shrinking avoids aliasing.
   painter.setRenderHint(QPainter::SmoothPixmapTransform, target.width() < image_.width());
   painter.drawImage(target, image_);
-  if (legend_visible()) DrawLegend(painter);
   if (!overlay_.empty()) DrawImageOverlay(painter, image_to_widget, overlay_);
   if (overlay_painter_) {
     painter.save();
     overlay_painter_(painter, image_to_widget);
     painter.restore();
+  }
+  painter.restore();
+  if (legend_visible()) DrawLegend(painter);
+  DrawKeys(painter);
+}
+
+void ImageView::SetKeys(std::vector<Key> keys) {
+  keys_ = std::move(keys);
+  update();
+}
+
+QRect ImageView::KeySwatchRect(size_t i) const {
+  if (image_.isNull() || i >= keys_.size()) return QRect();
+  const int line = fontMetrics().height();
+  const QRect area = ImageArea();
+  return QRect(area.left() + 2 * kMargin, area.top() + 2 * kMargin + static_cast<int>(i) * line + 2,
+               line - 4, line - 4);
+}
+
+void ImageView::DrawKeys(QPainter& painter) const {
+  if (image_.isNull() || keys_.empty()) return;
+  const QFontMetrics metrics = fontMetrics();
+  int text_width = 0;
+  for (const Key& key : keys_)
+    text_width = std::max(text_width, metrics.horizontalAdvance(key.label));
+  const int line = metrics.height();
+  const QRect area = ImageArea();
+  // A dark box under the key keeps it readable on any image.
+  painter.fillRect(
+      QRect(area.left() + kMargin, area.top() + kMargin, line + text_width + 3 * kMargin,
+            static_cast<int>(keys_.size()) * line + 2 * kMargin),
+      QColor(0, 0, 0, 170));
+  for (size_t i = 0; i < keys_.size(); ++i) {
+    const QRect swatch = KeySwatchRect(i);
+    painter.fillRect(swatch, keys_[i].color);
+    painter.setPen(Qt::white);
+    painter.drawText(
+        QRect(swatch.right() + kMargin + 2, swatch.top() - 2, text_width + kMargin, line),
+        Qt::AlignLeft | Qt::AlignVCenter, keys_[i].label);
   }
 }
 

@@ -2,12 +2,15 @@
 // fit with its aspect ratio, with a title and optional overlays in image coordinates.
 #pragma once
 
+#include <QColor>
 #include <QImage>
+#include <QPointF>
 #include <QString>
 #include <QTransform>
 #include <QWidget>
 #include <functional>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "widgets/image_overlay.h"
 
@@ -69,6 +72,23 @@ class ImageView : public QWidget {
   // The rectangle of the legend's colour bar in widget coordinates (empty when not shown).
   QRect LegendBarRect() const;
 
+  // A key to the overlay's colours (e.g. wall classes, track roles), drawn as swatches with
+  // their words in the image's top-left corner; empty: none. It stays when images change.
+  struct Key {
+    QColor color;
+    QString label;
+  };
+  void SetKeys(std::vector<Key> keys);
+  const std::vector<Key>& keys() const { return keys_; }
+  // The swatch of key `i` in widget coordinates (empty when not drawn).
+  QRect KeySwatchRect(size_t i) const;
+
+  // Zoom and pan: the wheel zooms about the mouse (1x = the whole image fitted, up to 32x), a
+  // drag moves the zoomed image, a double click (or FitImage) fits it again. New images keep
+  // the zoom, so a region can be watched while playing; Clear fits.
+  double zoom() const { return zoom_; }
+  void FitImage();
+
   // Room for a 4:3 image with title and legend.
   QSize sizeHint() const override;
   // Small enough for a grid of camera views.
@@ -76,6 +96,11 @@ class ImageView : public QWidget {
 
  protected:
   void paintEvent(QPaintEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
 
  private:
   // Converts a depth image through the colour map into image_, choosing the range if automatic.
@@ -85,6 +110,7 @@ class ImageView : public QWidget {
   int TitleHeight() const;
   int LegendWidth() const;
   void DrawLegend(QPainter& painter) const;
+  void DrawKeys(QPainter& painter) const;
 
   QImage image_;
   QString title_;
@@ -96,6 +122,11 @@ class ImageView : public QWidget {
   double depth_high_m_ = 0;
   ImageOverlay overlay_;
   OverlayPainter overlay_painter_;
+  std::vector<Key> keys_;
+  double zoom_ = 1.0;  // 1: fitted.
+  QPointF pan_;        // Widget pixels the zoomed image is moved by.
+  QPointF drag_from_;  // Mouse position at the last drag event.
+  bool dragging_ = false;
 };
 
 }  // namespace sightline

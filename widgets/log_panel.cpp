@@ -2,6 +2,7 @@
 
 #include <QDateTime>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QListView>
 #include <QScrollBar>
 #include <QStandardItemModel>
@@ -28,7 +29,21 @@ LogPanel::LogPanel(QWidget* parent, int max_lines)
   view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   view_->setSelectionMode(QAbstractItemView::ExtendedSelection);
   view_->setWordWrap(false);
-  layout->addWidget(view_, 1);
+  view_->setTextElideMode(Qt::ElideRight);
+  view_->setToolTip(tr("Click a line to read it in full."));
+  detail_ = new QLabel(this);
+  detail_->setObjectName("log_detail");
+  detail_->setWordWrap(true);
+  detail_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  detail_->setFrameShape(QFrame::StyledPanel);
+  detail_->hide();
+  connect(view_, &QListView::clicked, this, [this](const QModelIndex& index) {
+    ShowDetail(index.row() == detail_row_ ? -1 : index.row());
+  });
+  auto* column = new QVBoxLayout();
+  column->addWidget(view_, 1);
+  column->addWidget(detail_);
+  layout->addLayout(column, 1);
 
   auto* tools = new QVBoxLayout();
   auto* clear = new QToolButton(this);
@@ -66,11 +81,26 @@ void LogPanel::AddMessage(Severity severity, const QString& text) {
       break;
   }
   model_->appendRow(item);
-  if (model_->rowCount() > max_lines_) model_->removeRows(0, model_->rowCount() - max_lines_);
+  if (model_->rowCount() > max_lines_) {
+    const int dropped = model_->rowCount() - max_lines_;
+    model_->removeRows(0, dropped);
+    if (detail_row_ >= 0) detail_row_ = detail_row_ >= dropped ? detail_row_ - dropped : -1;
+    if (detail_row_ < 0) detail_->hide();
+  }
   if (at_bottom) view_->scrollToBottom();
 }
 
-void LogPanel::Clear() { model_->clear(); }
+void LogPanel::Clear() {
+  model_->clear();
+  ShowDetail(-1);
+}
+
+void LogPanel::ShowDetail(int row) {
+  detail_row_ = row;
+  const QStandardItem* item = row >= 0 ? model_->item(row) : nullptr;
+  detail_->setText(item ? item->text() : QString());
+  detail_->setVisible(item != nullptr);
+}
 
 int LogPanel::count() const { return model_->rowCount(); }
 

@@ -4,6 +4,7 @@
 #include <QString>
 #include <QWidget>
 
+class QLabel;
 class QListView;
 class QStandardItemModel;
 
@@ -37,9 +38,16 @@ class LogPanel : public QWidget {
   Severity MessageSeverity(int row) const;
   // Most messages kept.
   int max_lines() const { return max_lines_; }
+  // A click on a line shows the whole message, wrapped and selectable, under the list (long
+  // lines are cut at the panel's edge); a second click on it, or Clear, hides it again.
+  QLabel* detail() const { return detail_; }
 
  private:
+  void ShowDetail(int row);
+
   QListView* view_ = nullptr;
+  QLabel* detail_ = nullptr;
+  int detail_row_ = -1;
   QStandardItemModel* model_ = nullptr;
   int max_lines_;
 };

@@ -4,9 +4,11 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
+#include <QStyleOptionSlider>
 #include <QToolButton>
 #include <algorithm>
 #include <climits>
@@ -38,6 +40,7 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
 
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setRange(0, 0);
+  slider_->installEventFilter(this);  // Click-to-seek (eventFilter).
   connect(slider_, &QSlider::valueChanged, this, [this](int value) {
     position_ = value;
     UpdateLabel();
@@ -72,20 +75,27 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
 PlaybackBar::~PlaybackBar() = default;
 
 void PlaybackBar::SetFrameCount(int64_t count) {
-  frame_count_ = std::max<int64_t>(0, count);
+  if (live()) position_ = 0;  // A live source's frame numbers mean nothing in a recording.
+  frame_count_ = std::max<int64_t>(-1, count);
   const QSignalBlocker blocker(slider_);
   // QSlider holds an int; recordings beyond 2^31 frames do not exist in practice.
   slider_->setRange(0, static_cast<int>(std::clamp<int64_t>(frame_count_ - 1, 0, INT_MAX)));
-  position_ = std::clamp<int64_t>(position_, 0, std::max<int64_t>(0, frame_count_ - 1));
+  position_ =
+      live() ? -1 : std::clamp<int64_t>(position_, 0, std::max<int64_t>(0, frame_count_ - 1));
   slider_->setValue(static_cast<int>(position_));
-  const bool enabled = frame_count_ > 0;
-  play_button_->setEnabled(enabled);
-  step_button_->setEnabled(enabled);
-  slider_->setEnabled(enabled);
+  const bool playable = frame_count_ != 0;
+  play_button_->setEnabled(playable);
+  step_button_->setEnabled(playable);
+  slider_->setEnabled(frame_count_ > 0);  // A live source cannot seek.
   UpdateLabel();
 }
 
 void PlaybackBar::SetPosition(int64_t index) {
+  if (live()) {
+    position_ = std::max<int64_t>(0, index);
+    UpdateLabel();
+    return;
+  }
   if (slider_->isSliderDown()) return;  // The user's drag wins over playback progress.
   position_ = std::clamp<int64_t>(index, 0, std::max<int64_t>(0, frame_count_ - 1));
   const QSignalBlocker blocker(slider_);
@@ -111,8 +121,40 @@ void PlaybackBar::UpdatePlayButton() {
   play_button_->setToolTip(playing_ ? tr("Pause") : tr("Play"));
 }
 
+bool PlaybackBar::eventFilter(QObject* watched, QEvent* event) {
+  if (watched != slider_ || event->type() != QEvent::MouseButtonPress || !slider_->isEnabled())
+    return QWidget::eventFilter(watched, event);
+  const auto* press = static_cast<QMouseEvent*>(event);
+  if (press->button() != Qt::LeftButton) return QWidget::eventFilter(watched, event);
+  QStyleOptionSlider option;
+  option.initFrom(slider_);
+  option.orientation = slider_->orientation();
+  option.minimum = slider_->minimum();
+  option.maximum = slider_->maximum();
+  option.sliderPosition = slider_->sliderPosition();
+  option.sliderValue = slider_->value();
+  const QRect handle = slider_->style()->subControlRect(QStyle::CC_Slider, &option,
+                                                        QStyle::SC_SliderHandle, slider_);
+  if (handle.contains(press->position().toPoint())) return false;  // A drag of the handle.
+  // The groove: jump to the frame under the mouse rather than a page step towards it.
+  const QRect groove = slider_->style()->subControlRect(QStyle::CC_Slider, &option,
+                                                        QStyle::SC_SliderGroove, slider_);
+  const int half = handle.width() / 2;
+  const int value = QStyle::sliderValueFromPosition(
+      slider_->minimum(), slider_->maximum(),
+      static_cast<int>(press->position().x()) - groove.left() - half,
+      std::max(1, groove.width() - handle.width()));
+  slider_->setValue(value);  // Emits SeekRequested through valueChanged.
+  return true;
+}
+
 void PlaybackBar::UpdateLabel() {
-  // Frames are counted from 1 for people; indices (SeekRequested) from 0.
+  // Frames are counted from 1 for people; indices (SeekRequested) from 0. A live source has no
+  // end: the label shows the newest frame's number (0 before the first).
+  if (live()) {
+    frame_label_->setText(tr("frame %1").arg(position_ + 1));
+    return;
+  }
   const int64_t shown = frame_count_ > 0 ? position_ + 1 : 0;
   frame_label_->setText(QStringLiteral("%1 / %2").arg(shown).arg(frame_count_));
 }

@@ -25,7 +25,9 @@ class PlaybackBar : public QWidget {
   explicit PlaybackBar(QWidget* parent = nullptr);
   ~PlaybackBar() override;
 
-  // Number of frames; the slider spans 0 .. count - 1. Also clamps the position.
+  // Number of frames; the slider spans 0 .. count - 1. Also clamps the position. A negative
+  // count is a live source (a camera, a replayed recording): Play and Step work, the slider
+  // does not, and the label counts the frames received.
   void SetFrameCount(int64_t count);
   // Shows the player's current frame index without emitting SeekRequested. Ignored for the
   // slider while the user drags it.
@@ -35,8 +37,10 @@ class PlaybackBar : public QWidget {
   // Shows the loop state without emitting LoopChanged.
   void SetLoop(bool loop);
 
-  // Frame count, position (index from 0), playing state and speed factor (0 = as fast as possible).
+  // Frame count (-1 live), position (index from 0), playing state and speed factor (0 = as fast
+  // as possible).
   int64_t frame_count() const { return frame_count_; }
+  bool live() const { return frame_count_ < 0; }
   int64_t position() const { return position_; }
   bool playing() const { return playing_; }
   double speed() const;
@@ -62,6 +66,10 @@ class PlaybackBar : public QWidget {
   void SpeedChanged(double factor);
   // The user toggled looping at the end of the recording.
   void LoopChanged(bool loop);
+
+ protected:
+  // A click on the slider's groove jumps to the frame under the mouse.
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void UpdatePlayButton();

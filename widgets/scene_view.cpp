@@ -10,6 +10,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <QLabel>
 #include <algorithm>
 #include <map>
 
@@ -133,6 +134,32 @@ SceneView::SceneView(QWidget* parent) : VtkGlWidget(parent), impl_(std::make_uni
   impl_->renderer->SetBackground(0.11, 0.11, 0.13);
   impl_->RebuildGrid();
   ResetView();
+  keys_label_ = new QLabel(this);
+  keys_label_->setObjectName("scene_keys");
+  keys_label_->setStyleSheet(
+      "QLabel { background: rgba(0, 0, 0, 170); color: white; padding: 4px; border-radius: 3px; }");
+  keys_label_->setAttribute(Qt::WA_TransparentForMouseEvents);  // Drags still turn the view.
+  keys_label_->move(8, 8);
+  keys_label_->hide();
+}
+
+void SceneView::SetKeys(const std::vector<Key>& keys) {
+  const bool same =
+      keys.size() == keys_.size() &&
+      std::equal(keys.begin(), keys.end(), keys_.begin(), [](const Key& a, const Key& b) {
+        return a.color == b.color && a.label == b.label;
+      });
+  if (same) return;  // Presenters set their key with every frame.
+  keys_ = keys;
+  QString html;
+  for (const Key& key : keys_) {
+    if (!html.isEmpty()) html += QStringLiteral("<br>");
+    html += QStringLiteral("<span style=\"color:%1\">&#9632;</span> %2")
+                .arg(key.color.name(), key.label.toHtmlEscaped());
+  }
+  keys_label_->setText(html);
+  keys_label_->adjustSize();
+  keys_label_->setVisible(!keys_.empty());
 }
 
 SceneView::~SceneView() = default;
@@ -202,7 +229,19 @@ void SceneView::RemoveLayer(const std::string& layer) {
 void SceneView::ClearLayers() {
   for (auto& [name, layer] : impl_->layers) impl_->renderer->RemoveActor(layer.actor);
   impl_->layers.clear();
+  followed_box_.setEmpty();
+  SetKeys({});
   impl_->Changed();
+}
+
+bool SceneView::FollowContent(const Eigen::AlignedBox3d& content, double min_margin) {
+  if (!follow_ || content.isEmpty() || followed_box_.contains(content)) return false;
+  const Eigen::Vector3d margin =
+      (0.25 * (content.max() - content.min())).cwiseMax(Eigen::Vector3d::Constant(min_margin));
+  followed_box_ = Eigen::AlignedBox3d(content.min() - margin, content.max() + margin);
+  ResetView();
+  ++follow_fits_;
+  return true;
 }
 
 void SceneView::SetLayerPose(const std::string& layer, const Eigen::Isometry3d& world_from_layer) {

@@ -4,12 +4,15 @@
 
 #include <Eigen/Geometry>
 #include <QColor>
+#include <QString>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "widgets/vtk_gl_widget.h"
+
+class QLabel;
 
 namespace sightline {
 
@@ -93,9 +96,35 @@ class SceneView : public VtkGlWidget {
   // Background colour of the view.
   void SetBackground(QColor color);
 
+  // A key to the layers' colours (e.g. estimate and ground truth, wall classes) in the view's
+  // top-left corner; empty hides it. ClearLayers removes it too.
+  struct Key {
+    QColor color;
+    QString label;
+  };
+  void SetKeys(const std::vector<Key>& keys);
+  const std::vector<Key>& keys() const { return keys_; }
+  // The widget that shows the key (hidden when there is none).
+  QLabel* keys_label() const { return keys_label_; }
+
+  // Follow (View > Follow the trajectory): FollowContent re-fits the view (ResetView) when
+  // `content` leaves the box it was last fitted to, that box grown by a quarter of the extent
+  // (at least `min_margin`) so that a growing trajectory re-fits every few metres, not every
+  // frame. Nothing while follow is off. Returns whether it fitted; ClearLayers forgets the box.
+  bool FollowContent(const Eigen::AlignedBox3d& content, double min_margin = 2.0);
+  void SetFollow(bool follow) { follow_ = follow; }
+  bool follow() const { return follow_; }
+  // Fits made by FollowContent since the view was made.
+  int follow_fits() const { return follow_fits_; }
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  std::vector<Key> keys_;
+  QLabel* keys_label_ = nullptr;
+  bool follow_ = true;
+  Eigen::AlignedBox3d followed_box_;  // Empty: nothing followed yet.
+  int follow_fits_ = 0;
 };
 
 }  // namespace sightline

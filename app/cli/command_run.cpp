@@ -7,6 +7,7 @@
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
+#include "app/cli/run_outputs.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline::cli {
@@ -65,8 +66,10 @@ int RunCommand(const std::vector<std::string>& args) {
     std::fputs(help.c_str(), stdout);
     // `run PIPELINE --help`: that pipeline's options too, as `options PIPELINE` lists them.
     if (!parsed->positionals().empty() && registry.Find(parsed->positionals()[0]) != nullptr) {
-      std::printf("\nOptions of %s (key, type, default, range, unit, meaning):\n",
-                  parsed->positionals()[0].c_str());
+      const std::string& name = parsed->positionals()[0];
+      std::printf("\nFiles %s writes into --out DIR:\n%s", name.c_str(),
+                  RunOutputsHelp(name).c_str());
+      std::printf("\nOptions of %s (key, type, default, range, unit, meaning):\n", name.c_str());
       std::fflush(stdout);
       return OptionsCommand({parsed->positionals()[0]});
     }
@@ -126,7 +129,7 @@ int RunCommand(const std::vector<std::string>& args) {
     for (const auto& [key, value] : m.accuracy)
       std::printf("accuracy.%s = %.6g\n", key.c_str(), value);
     for (const std::string& note : report->result.notes) std::printf("note: %s\n", note.c_str());
-    std::printf("wrote %s\n", report->metrics_path.c_str());
+    PrintWrittenFiles(request.out_dir, report->result.outputs);  // Every file, one line each.
   }
   if (!stop.ok()) return stop.code() == StatusCode::kCancelled ? kExitCancelled : kExitError;
   return report->result.nothing_achieved.empty() ? 0 : kExitNothingAchieved;

@@ -168,6 +168,15 @@ void EvaluationPanel::Evaluate(const QString& estimate_path, const QString& grou
   });
 }
 
+void EvaluationPanel::Clear() {
+  ++generation_;  // An evaluation still running belongs to the previous source.
+  run_button_->setEnabled(true);
+  figures_->removeRows(0, figures_->rowCount());
+  summary_label_->setText(tr("Choose two trajectory files and press Evaluate."));
+  top_view_->Clear();
+  error_view_->Clear();
+}
+
 void EvaluationPanel::Show(const std::shared_ptr<const EvaluationOutcome>& outcome) {
   run_button_->setEnabled(true);
   figures_->removeRows(0, figures_->rowCount());

@@ -34,6 +34,8 @@ class EvaluationPanel : public QWidget {
   void Evaluate(const QString& estimate_path, const QString& ground_truth_path,
                 const QString& align);
 
+  // Empties the figures, the summary and the plots (another source was opened).
+  void Clear();
   // The value shown for a figure key such as "ate_rmse_m"; NaN when absent.
   double Figure(const QString& key) const;
   // The plots currently shown (empty before the first evaluation).

@@ -16,6 +16,7 @@
 #include <QProgressBar>
 #include <QScreen>
 #include <QSettings>
+#include <QSlider>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -84,7 +85,8 @@ void MainWindow::BuildViews() {
   parameter_panel_ = new ParameterPanel(this);
   parameter_panel_->SetProfileExclusion("view.");  // Profiles hold pipeline options only.
   parameter_panel_->SetOptions(options_);
-  add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
+  QDockWidget* parameters_dock =
+      add_dock(parameter_panel_, tr("Parameters"), "parameters_dock", Qt::RightDockWidgetArea);
   log_panel_ = new LogPanel(this);
   QDockWidget* log_dock = add_dock(log_panel_, tr("Log"), "log_dock", Qt::RightDockWidgetArea);
   evaluation_panel_ = new EvaluationPanel(this);
@@ -94,7 +96,12 @@ void MainWindow::BuildViews() {
   log_dock->raise();
   // The images and the 3D view get the full height; dock sizes apply once the window has its
   // size, hence after the first event-loop turn.
-  QTimer::singleShot(0, this, [this] { resizeDocks({primary_dock_}, {420}, Qt::Horizontal); });
+  // Tuning needs a dozen rows in sight: the Parameters dock takes the right side's height but
+  // what the log and the evaluation need (they stay readable, and grow when dragged).
+  QTimer::singleShot(0, this, [this, parameters_dock, log_dock] {
+    resizeDocks({primary_dock_}, {420}, Qt::Horizontal);
+    resizeDocks({parameters_dock, log_dock}, {4, 1}, Qt::Vertical);
+  });
 
   playback_bar_ = new PlaybackBar(this);
   auto* bar = new QToolBar(tr("Playback"), this);
@@ -134,6 +141,12 @@ void MainWindow::BuildMenus() {
   QAction* reset = view_menu_->addAction(tr("&Reset 3D view"));
   reset->setShortcut(Qt::Key_R | Qt::CTRL);
   connect(reset, &QAction::triggered, scene_view_, &SceneView::ResetView);
+  QAction* follow = view_menu_->addAction(tr("&Follow the trajectory"));
+  follow->setObjectName("follow_action");
+  follow->setToolTip(tr("Fit the 3D view again whenever a growing trajectory leaves it."));
+  follow->setCheckable(true);
+  follow->setChecked(scene_view_->follow());
+  connect(follow, &QAction::toggled, scene_view_, &SceneView::SetFollow);
   view_menu_->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view_menu_->addAction(dock->toggleViewAction());
@@ -200,6 +213,11 @@ void MainWindow::BuildMenus() {
 
 void MainWindow::ConnectPlayback() {
   connect(playback_, &PlaybackController::FrameReady, this, &MainWindow::ShowFrame);
+  // A recording's first frame in the views at once, before Play (nothing is counted as shown).
+  connect(playback_, &PlaybackController::FirstFrame, this,
+          [this](const std::shared_ptr<const PlaybackResult>& result) {
+            if (result && frames_shown_ == 0) ShowImages(*result);
+          });
   connect(playback_, &PlaybackController::Opened, this, &MainWindow::OnOpened);
   connect(playback_, &PlaybackController::OpenFailed, this,
           [this](const QString& path, const QString& message) {
@@ -228,7 +246,12 @@ void MainWindow::ConnectPlayback() {
     playback_->Step();
     playback_bar_->SetPlaying(false);
   });
-  connect(playback_bar_, &PlaybackBar::SeekRequested, playback_, &PlaybackController::Seek);
+  connect(playback_bar_, &PlaybackBar::SeekRequested, this, &MainWindow::OnSeekRequested);
+  connect(playback_bar_->slider(), &QSlider::sliderReleased, this, [this] {
+    const int64_t pending = pending_seek_;
+    pending_seek_ = -1;
+    if (pending >= 0) OnSeekRequested(pending);
+  });
   connect(playback_bar_, &PlaybackBar::SpeedChanged, playback_, &PlaybackController::SetSpeed);
   connect(playback_bar_, &PlaybackBar::LoopChanged, playback_, &PlaybackController::SetLoop);
   connect(parameter_panel_, &ParameterPanel::OptionsChanged, this, &MainWindow::OnOptionsChanged);
@@ -297,6 +320,7 @@ bool MainWindow::ActivatePipeline(const QString& title) {
   if (!title.isEmpty() && next == nullptr) return false;
   if (active_pipeline_ != nullptr) active_pipeline_->Detach();
   active_pipeline_ = next;
+  pipeline_frames_ = 0;
   for (QAction* action : pipeline_actions_->actions()) {
     action->setChecked(action->text() == (next ? next->Title() : tr("None (show frames only)")));
   }
@@ -368,17 +392,21 @@ void MainWindow::OpenPath(const QString& path) {
 void MainWindow::OnOpened(const QString& path) {
   const SourceInfo* info = playback_->info();
   frames_shown_ = 0;
+  pipeline_frames_ = 0;
+  last_shown_id_ = 0;
+  pending_seek_ = -1;
   first_cloud_ = true;
   scene_view_->ClearLayers();
+  ClearRunViews();  // The colour and depth views too.
   const bool rgbd = info->kind == SourceKind::kRgbd;
   const bool stereo = info->kind == SourceKind::kStereo;
   primary_dock_->setWindowTitle(rgbd ? tr("Colour") : stereo ? tr("Left") : tr("Image"));
   secondary_dock_->setWindowTitle(stereo ? tr("Right") : tr("Depth"));
-  primary_view_->Clear();
-  secondary_view_->Clear();
-  playback_bar_->SetFrameCount(info->frame_count);
+  // A live source (camera, replay://) has no end: the bar plays it and counts its frames.
+  playback_bar_->SetFrameCount(info->live ? -1 : std::max<int64_t>(0, info->frame_count));
   playback_bar_->SetPosition(0);
   playback_bar_->SetPlaying(false);
+  playback_bar_->SetLoop(playback_->loop());
   const QString summary = tr("%1: %2, %3 frames, %4x%5%6")
                               .arg(QFileInfo(path).fileName(), QString::fromStdString(info->format))
                               .arg(info->frame_count)
@@ -399,38 +427,44 @@ void MainWindow::OnOpened(const QString& path) {
 
 void MainWindow::ShowFrame(const std::shared_ptr<const PlaybackResult>& result) {
   if (!result) return;
-  if (!result->primary_image.empty()) {
-    primary_view_->SetImage(result->primary_image);
-  }
-  if (!result->secondary_image.empty()) {
-    if (result->secondary_is_depth) {
-      const ViewOptions view = options_.Extract(ViewOptions::Describe());
-      secondary_view_->SetDepthRange(0.0, view.depth_range_m);
-      secondary_view_->SetImage(result->secondary_image, ImageView::Kind::kDepthMeters);
-    } else {
-      secondary_view_->SetImage(result->secondary_image);
-    }
-  }
-  if (result->cloud) {
-    scene_view_->SetPointCloud("cloud", result->cloud, SceneView::ColorMode::kAuto);
-    if (first_cloud_) {
-      scene_view_->ResetView();
-      first_cloud_ = false;
-    }
-  }
+  ShowImages(*result);
   if (active_pipeline_ != nullptr && result->pipeline) {
     if (!result->pipeline->status.ok()) {
       log_panel_->AddMessage(LogPanel::Severity::kWarning,
                              QString::fromStdString(result->pipeline->status.ToString()));
     }
     active_pipeline_->Show(*result);
+    if (result->pipeline->status.ok()) ++pipeline_frames_;
   }
+  last_shown_id_ = result->stamp.sequence_id;
   playback_bar_->SetPosition(result->stamp.sequence_id);
   status_label_->setToolTip(tr("frame %1, read in %2 ms")
                                 .arg(result->stamp.sequence_id)
                                 .arg(result->prepare_ms, 0, 'f', 1));
   ++frames_shown_;
   emit FrameShown(result->stamp.sequence_id);
+}
+
+void MainWindow::ShowImages(const PlaybackResult& result) {
+  if (!result.primary_image.empty()) {
+    primary_view_->SetImage(result.primary_image);
+  }
+  if (!result.secondary_image.empty()) {
+    if (result.secondary_is_depth) {
+      const ViewOptions view = options_.Extract(ViewOptions::Describe());
+      secondary_view_->SetDepthRange(0.0, view.depth_range_m);
+      secondary_view_->SetImage(result.secondary_image, ImageView::Kind::kDepthMeters);
+    } else {
+      secondary_view_->SetImage(result.secondary_image);
+    }
+  }
+  if (result.cloud) {
+    scene_view_->SetPointCloud("cloud", result.cloud, SceneView::ColorMode::kAuto);
+    if (first_cloud_) {
+      scene_view_->ResetView();
+      first_cloud_ = false;
+    }
+  }
 }
 
 void MainWindow::OnOptionsChanged(const OptionSet& options) {

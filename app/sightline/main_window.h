@@ -81,6 +81,8 @@ class MainWindow : public QMainWindow {
   void ResetLayout();
   // Frames shown since the last open.
   int64_t frames_shown() const { return frames_shown_; }
+  // Frames the active pipeline has processed since it last started over (open, switch, seek).
+  int64_t pipeline_frames() const { return pipeline_frames_; }
 
  signals:
   // A frame reached the views (after they were updated).
@@ -107,7 +109,15 @@ class MainWindow : public QMainWindow {
   void BuildLayoutMemory();
   void EvaluateSavedRun(const QString& folder);
   void ConnectPlayback();
+  // The playback bar's seek (main_window_playback.cpp): a pipeline that builds a map (SLAM,
+  // odometry) starts over at a seek, so the window asks first; a drag asks once, at release.
+  void OnSeekRequested(int64_t index);
+  bool ConfirmMapReset();
+  // Empties every image view and plot of the previous run (pipeline docks, evaluation).
+  void ClearRunViews();
   void ShowFrame(const std::shared_ptr<const PlaybackResult>& result);
+  // The colour, depth (or right) images and the cloud of a frame.
+  void ShowImages(const PlaybackResult& result);
   void OnOpened(const QString& path);
   void OnOptionsChanged(const OptionSet& options);
   void ShowWelcome();
@@ -138,6 +148,9 @@ class MainWindow : public QMainWindow {
   PipelinePresenter* active_pipeline_ = nullptr;
   OptionSet options_;
   int64_t frames_shown_ = 0;
+  int64_t pipeline_frames_ = 0;
+  int64_t last_shown_id_ = 0;
+  int64_t pending_seek_ = -1;  // A seek asked for during a slider drag, done at release.
   bool first_cloud_ = true;
   std::unique_ptr<QTemporaryDir> evaluation_folder_;  // Where Evaluate current run saves.
 };

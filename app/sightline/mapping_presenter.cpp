@@ -139,6 +139,7 @@ void MappingPresenter::Detach() {
   if (scene_ != nullptr) {
     for (const char* layer : kWallLayers) scene_->RemoveLayer(layer);
     scene_->RemoveLayer(kFloorLayer);
+    scene_->SetKeys({});
   }
   if (occupancy_dock_ != nullptr) occupancy_dock_->hide();
   if (map_dock_ != nullptr) map_dock_->hide();
@@ -153,6 +154,14 @@ void MappingPresenter::Show(const PlaybackResult& result) {
   figures_->setText(StatisticsText(*view, MappingStatistics()));
   const std::shared_ptr<const MappingFrameResult> mapping = view->mapping;
   occupancy_view_->SetImage(OccupancyToBgr(mapping->occupancy));
+  occupancy_view_->SetKeys({{QColor(60, 160, 60), tr("free")},
+                            {QColor(220, 40, 40), tr("occupied")},
+                            {QColor(230, 230, 230), tr("person")},
+                            {QColor(255, 170, 0), tr("scan rays")},
+                            {QColor(0, 200, 255), tr("walls, first direction")},
+                            {QColor(255, 0, 255), tr("walls, perpendicular")},
+                            {QColor(255, 255, 0), tr("other lines")},
+                            {QColor(255, 220, 0), tr("robot")}});
   // Rays from the robot to each scan point, and the wall lines by Manhattan direction.
   occupancy_view_->SetOverlayPainter([mapping](QPainter& painter, const QTransform& to_widget) {
     const OccupancyImage& occ = mapping->occupancy;
@@ -181,6 +190,10 @@ void MappingPresenter::Show(const PlaybackResult& result) {
     const QColor colors[3] = {QColor(0, 200, 255), QColor(255, 0, 255), QColor(255, 255, 0)};
     for (int k = 0; k < 3; ++k) scene_->SetLines(kWallLayers[k], lines.walls[k], colors[k], 3.0);
     scene_->SetLines(kFloorLayer, lines.floor, QColor(60, 200, 60), 1.0);
+    scene_->SetKeys({{colors[0], tr("walls, first direction")},
+                     {colors[1], tr("walls, perpendicular")},
+                     {colors[2], tr("other lines")},
+                     {QColor(60, 200, 60), tr("floor")}});
   }
   if (mapping->reset) {
     emit Message(1, tr("Manhattan reference reset: %1")

@@ -5,6 +5,7 @@
 #include <QMainWindow>
 
 #include "app/sightline/mobility_views.h"
+#include "core/mobility/mobility_map.h"
 #include "core/pipeline/mobility_result.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "widgets/scene_view.h"
@@ -56,6 +57,7 @@ void MobilityPresenter::Detach() {
   if (scene_ != nullptr) {
     for (const std::string& layer : SceneLayers()) scene_->RemoveLayer(layer);
     scene_->SetLayerVisible(kInputLayer, true);
+    scene_->SetKeys({});
   }
 }
 
@@ -65,6 +67,17 @@ void MobilityPresenter::ApplyColorChoice() {
   const char* layers[3] = {kScoreLayer, kGprLayer, kSegmentLayer};
   for (int k = 0; k < 3; ++k) {
     if (scene_->HasLayer(layers[k])) scene_->SetLayerVisible(layers[k], k == choice);
+  }
+  // Rule and GPR clouds are coloured by score (as core's ScoreColorBgr); segments by region.
+  const auto colour = [](float score) {
+    const cv::Vec3b bgr = ScoreColorBgr(score);
+    return QColor(bgr[2], bgr[1], bgr[0]);
+  };
+  if (choice == 2) {
+    scene_->SetKeys({{QColor(200, 200, 200), tr("colour: one per segment")}});
+  } else {
+    scene_->SetKeys(
+        {{colour(0.f), tr("score 0: not passable")}, {colour(1.f), tr("score 1: passable")}});
   }
 }
 

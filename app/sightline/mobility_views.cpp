@@ -8,6 +8,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "core/mobility/mobility_map.h"
 #include "widgets/image_view.h"
@@ -76,6 +77,16 @@ MobilityImagePanel::MobilityImagePanel(QWidget* parent) : QWidget(parent) {
 }
 
 void MobilityImagePanel::Show(const MobilityResult& result) {
+  // The score colours, as core's ScoreColorBgr draws them.
+  const auto colour = [](float score) {
+    const cv::Vec3b bgr = ScoreColorBgr(score);
+    return QColor(bgr[2], bgr[1], bgr[0]);
+  };
+  const std::vector<ImageView::Key> keys = {{colour(0.f), tr("score 0: not passable")},
+                                            {colour(0.5f), tr("score 0.5")},
+                                            {colour(1.f), tr("score 1: passable")},
+                                            {colour(NAN), tr("not scored")}};
+  for (ImageView* view : {projection_, top_}) view->SetKeys(keys);
   if (!result.projection.empty()) projection_->SetImage(result.projection);
   if (result.ground.found) top_->SetImage(RenderTopView(result.map));
 }

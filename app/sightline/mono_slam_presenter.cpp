@@ -179,6 +179,7 @@ void MonoSlamPresenter::Detach() {
     for (const char* layer : {kMapLayer, kKeyFramesLayer, kTrajectoryLayer, kCameraLayer}) {
       scene_->RemoveLayer(layer);
     }
+    scene_->SetKeys({});
   }
 }
 
@@ -190,6 +191,10 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   last_id_ = slam->stamp.sequence_id;
 
   image_view_->SetImage(slam->image);
+  image_view_->SetKeys({{QColor(40, 220, 40), tr("inlier")},
+                        {QColor(230, 40, 40), tr("outlier")},
+                        {QColor(150, 150, 150), tr("keypoint, unmatched")},
+                        {QualityColor(slam->quality), tr("frame: tracking quality")}});
   image_view_->SetOverlayPainter([slam](QPainter& painter, const QTransform& to_widget) {
     for (size_t i = 0; i < slam->keypoints.size(); ++i) {
       const uint8_t state = slam->keypoint_state[i];
@@ -227,7 +232,11 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   if (view->scale_history) scale_plot_->SetHistory(*view->scale_history);
 
   if (slam->tracked) trajectory_.Add(slam->stamp.sensor_time_s, slam->map_from_camera);
-  if (scene_ == nullptr) return;
+  if (scene_ != nullptr) DrawScene(*view, divide);
+}
+
+void MonoSlamPresenter::DrawScene(const MonoSlamFrameResult& view, double divide) {
+  const std::shared_ptr<const MonoSlamResult>& slam = view.slam;
   auto metric = [divide](Eigen::Isometry3d pose) {
     pose.translation() /= divide;
     return pose;
@@ -243,13 +252,23 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   for (const MapSnapshot::Frame& k : slam->map->keyframes)
     keyframes.push_back(metric(k.map_from_camera));
   keyframes_drawn_ = keyframes.size();
-  const double frustum = view->lambda > 0 ? 0.03 : 0.03 * divide;
+  const double frustum = view.lambda > 0 ? 0.03 : 0.03 * divide;
   scene_->SetFrusta(kKeyFramesLayer, keyframes, QColor(90, 200, 255), frustum);
   Trajectory drawn;
-  for (const TimedPose& p : trajectory_.poses()) drawn.Add(p.time_s, metric(p.world_from_sensor));
+  Eigen::AlignedBox3d path_box;
+  for (const TimedPose& p : trajectory_.poses()) {
+    drawn.Add(p.time_s, metric(p.world_from_sensor));
+    path_box.extend(drawn.poses().back().world_from_sensor.translation());
+  }
   scene_->SetTrajectory(kTrajectoryLayer, drawn, QColor(255, 80, 80), 2.0);
+  // The view follows the camera's path as it grows (metres, or the map's units unscaled).
+  scene_->FollowContent(path_box, view.lambda > 0 ? 2.0 : 0.2);
   scene_->SetFrusta(kCameraLayer, {metric(slam->map_from_camera)}, QualityColor(slam->quality),
                     1.5 * frustum);
+  scene_->SetKeys({{QColor(255, 80, 80), tr("camera path")},
+                   {QColor(90, 200, 255), tr("keyframes")},
+                   {QualityColor(slam->quality), tr("camera: tracking quality")},
+                   {QColor(200, 200, 200), tr("map points: colour of their first keyframe")}});
 }
 
 }  // namespace sightline

@@ -49,6 +49,9 @@ class MonoSlamPresenter : public PipelinePresenter {
 
  private:
   MonoSlamPresenter(std::shared_ptr<MonoSlamCommands> commands, QObject* parent);
+  // The map, keyframes, trajectory and camera in the 3D view, in metres when the scale is known
+  // (`divide` map units per metre); the view follows the growing path.
+  void DrawScene(const MonoSlamFrameResult& view, double divide);
 
   std::shared_ptr<MonoSlamCommands> commands_;
   QDockWidget* image_dock_ = nullptr;

@@ -34,9 +34,10 @@ void PlaybackController::Open(const QString& path) {
   // waits for background tasks, so `this` outlives them.
   Track(QtConcurrent::run([this, self, generation, path, path_utf8] {
     auto opened = std::make_shared<StatusOr<std::unique_ptr<Source>>>(OpenRunSource(path_utf8));
+    std::shared_ptr<const Frame> first = opened->ok() ? ReadFirstFrame(***opened) : nullptr;
     QMetaObject::invokeMethod(
         this,
-        [self, generation, path, opened] {
+        [self, generation, path, opened, first] {
           if (!self || generation != self->open_generation_) return;  // A newer Open won.
           if (!opened->ok()) {
             emit self->OpenFailed(path, QString::fromStdString(opened->status().ToString()));
@@ -55,6 +56,36 @@ void PlaybackController::Open(const QString& path) {
           self->live_ = dynamic_cast<const LiveSource*>(opened->value().get());
           self->StartWorker(std::make_unique<Player>(std::move(**opened)));
           emit self->Opened(path);
+          if (first) self->PublishPreview(first, generation);
+        },
+        Qt::QueuedConnection);
+  }));
+}
+
+std::shared_ptr<const Frame> PlaybackController::ReadFirstFrame(Source& source) {
+  // Only a recording that can go back: the first frame is read, then the source rewinds so
+  // that playing still starts with it. A camera's frames are not to be skipped.
+  if (!source.info().seekable || source.info().live || !source.Grab().ok()) return nullptr;
+  StatusOr<Frame> frame = source.Retrieve();
+  const Status rewound = source.Seek(0);
+  if (!frame.ok() || !rewound.ok()) return nullptr;  // Playing reports a reading error itself.
+  return std::make_shared<const Frame>(std::move(*frame));
+}
+
+void PlaybackController::PublishPreview(std::shared_ptr<const Frame> frame, uint64_t generation) {
+  ViewOptions options;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    options = view_options_;
+  }
+  QPointer<PlaybackController> self(this);
+  Track(QtConcurrent::run([this, self, frame, options, generation] {
+    std::shared_ptr<const PlaybackResult> preview = Prepare(*frame, options);
+    QMetaObject::invokeMethod(
+        this,
+        [self, preview, generation] {
+          // Not when another source was opened since, or the frame itself is already shown.
+          if (self && generation == self->open_generation_) emit self->FirstFrame(preview);
         },
         Qt::QueuedConnection);
   }));
@@ -102,6 +133,9 @@ std::optional<SensorStats> PlaybackController::live_stats() const {
 
 void PlaybackController::Play() {
   if (!player_) return;
+  // Play at the end of a recording starts it again from the first frame (the pipeline starts
+  // over, as on a seek back).
+  if (ended_ && info_ && info_->seekable && !info_->live) player_->Seek(0);
   player_->Play();
   SetPlayState(true, false);
 }
@@ -121,9 +155,11 @@ void PlaybackController::Seek(int64_t index) {
   SetPlayState(playing_, false);
 }
 void PlaybackController::SetSpeed(double factor) {
+  speed_ = factor;
   if (player_) player_->SetSpeed(factor);
 }
 void PlaybackController::SetLoop(bool loop) {
+  loop_ = loop;
   if (player_) player_->SetLoop(loop);
 }
 
@@ -288,6 +324,9 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::FailedResult(cons
 
 void PlaybackController::StartWorker(std::unique_ptr<Player> player) {
   player_ = std::move(player);
+  // Loop and speed are the window's settings, not the source's: every source opened honours them.
+  player_->SetLoop(loop_);
+  player_->SetSpeed(speed_);
   stop_ = false;
   worker_ = std::thread([this] { WorkerLoop(); });
 }

@@ -48,8 +48,10 @@ class PlaybackController : public QObject {
   void Pause();
   void Step();
   void Seek(int64_t index);
+  // Speed and loop hold for the open source and every one opened later.
   void SetSpeed(double factor);
   void SetLoop(bool loop);
+  bool loop() const { return loop_; }
   // New view options, applied to the next frame and to the current one at once.
   void SetViewOptions(const ViewOptions& options);
 
@@ -85,6 +87,9 @@ class PlaybackController : public QObject {
   void Opened(const QString& path);
   void OpenFailed(const QString& path, const QString& message);
   void FrameReady(std::shared_ptr<const sightline::PlaybackResult> result);
+  // Soon after Opened, for a recording: its first frame prepared for the views (no pipeline
+  // result), while the player still waits before it. Not a frame played: no FrameReady.
+  void FirstFrame(std::shared_ptr<const sightline::PlaybackResult> result);
   // A frame could not be read; playback pauses. The message names the file.
   void ReadError(const QString& message);
   void EndOfStream();
@@ -95,6 +100,10 @@ class PlaybackController : public QObject {
   void SaveFailed(const QString& message);
 
  private:
+  // Reads a seekable recording's first frame and rewinds (any thread); nullptr otherwise.
+  static std::shared_ptr<const Frame> ReadFirstFrame(Source& source);
+  // Prepares `frame` in the background and emits FirstFrame unless another Open came since.
+  void PublishPreview(std::shared_ptr<const Frame> frame, uint64_t generation);
   void StartWorker(std::unique_ptr<Player> player);
   void StopWorker();
   void WorkerLoop();
@@ -126,6 +135,8 @@ class PlaybackController : public QObject {
   std::vector<QFuture<void>> background_;  // GUI thread only.
   bool playing_ = false;                   // GUI thread only.
   bool ended_ = false;                     // GUI thread only.
+  bool loop_ = false;                      // GUI thread only.
+  double speed_ = 1.0;                     // GUI thread only.
 
   ProcessorFactory processor_factory_;                     // GUI thread only.
   std::shared_ptr<const Trajectory> source_ground_truth_;  // The open source's; GUI thread only.

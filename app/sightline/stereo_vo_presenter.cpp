@@ -144,6 +144,7 @@ void StereoVoPresenter::Detach() {
     for (const char* layer : {kEstimateLayer, kGroundTruthLayer, kCameraLayer}) {
       scene_->RemoveLayer(layer);
     }
+    scene_->SetKeys({});
   }
 }
 
@@ -171,6 +172,9 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
       scene_->SetTrajectory(kGroundTruthLayer, ground_truth_drawn_, QColor(80, 160, 255), 2.0);
     }
     scene_->SetFrusta(kCameraLayer, {odometry->world_from_camera}, QColor(255, 80, 80), 1.0);
+    std::vector<SceneView::Key> keys = {{QColor(255, 80, 80), tr("estimate and camera")}};
+    if (!ground_truth_drawn_.empty()) keys.push_back({QColor(80, 160, 255), tr("ground truth")});
+    scene_->SetKeys(keys);
     FitViewIfGrown();
   }
   PlotStatistics(*view);
@@ -178,6 +182,9 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
 
 void StereoVoPresenter::DrawImages(const std::shared_ptr<const StereoOdometryResult>& odometry) {
   tracks_view_->SetImage(odometry->left_rectified);
+  tracks_view_->SetKeys({{RoleColor(FeatureRole::kInlier), tr("inlier track")},
+                         {RoleColor(FeatureRole::kOutlier), tr("outlier track")},
+                         {RoleColor(FeatureRole::kNew), tr("new feature")}});
   tracks_view_->SetOverlayPainter([odometry](QPainter& painter, const QTransform& to_widget) {
     for (const TrackedFeature& f : odometry->features) {
       painter.setPen(QPen(RoleColor(f.role), 1.5));
@@ -189,6 +196,7 @@ void StereoVoPresenter::DrawImages(const std::shared_ptr<const StereoOdometryRes
     }
   });
   matches_view_->SetImage(odometry->right_rectified);
+  matches_view_->SetKeys({{QColor(255, 200, 0), tr("stereo match")}});
   matches_view_->SetOverlayPainter([odometry](QPainter& painter, const QTransform& to_widget) {
     painter.setPen(QPen(QColor(255, 200, 0), 1.5));
     for (const TrackedFeature& f : odometry->features) {
@@ -230,7 +238,8 @@ void StereoVoPresenter::FitViewIfGrown() {
   for (const Trajectory* t : {&estimate_, &ground_truth_drawn_}) {
     for (const TimedPose& p : t->poses()) box.extend(p.world_from_sensor.translation());
   }
-  if (box.isEmpty() || fitted_box_.contains(box)) return;
+  // View > Follow off: the user's own view stays.
+  if (!scene_->follow() || box.isEmpty() || fitted_box_.contains(box)) return;
   // Fit with a margin of a quarter of the extent (at least 2 m) so that a growing trajectory
   // re-fits every few metres rather than every frame.
   const Eigen::Vector3d margin =

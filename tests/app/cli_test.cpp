@@ -46,6 +46,25 @@ TEST(Cli, RunPipelineHelpListsThatPipelinesOptions) {
   EXPECT_NE(r.out.find("Options of stereo-vo"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("stereo.subsample"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("mapping.run.floor_file"), std::string::npos) << "another pipeline's";
+  // And the files it writes.
+  EXPECT_NE(r.out.find("Files stereo-vo writes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("trajectory.txt"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("metrics.json"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("map.pgm"), std::string::npos) << "another pipeline's file";
+}
+
+// The desktop application answers --help and --version on a machine without a display (a
+// server, a CI job, ssh without X forwarding) instead of aborting in Qt's platform plugin.
+TEST(SightlineExecutable, HelpAndVersionWorkWithoutADisplay) {
+  const std::string gui = std::string(SIGHTLINE_BIN_DIR) + "/sightline";
+  const std::string no_display = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM ";
+  const auto help = testing::RunProcess(no_display + gui + " --help");
+  EXPECT_EQ(help.exit_code, 0) << help.out;
+  EXPECT_NE(help.out.find("--open"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("--pipeline"), std::string::npos) << help.out;
+  const auto version = testing::RunProcess(no_display + gui + " --version");
+  EXPECT_EQ(version.exit_code, 0) << version.out;
+  EXPECT_NE(version.out.find("(commit "), std::string::npos) << version.out;
 }
 
 TEST(Cli, UnknownCommandFailsWithOneLine) {
@@ -89,6 +108,12 @@ TEST(Cli, RunInspectWritesMetricsJson) {
   EXPECT_NE(json.find("\"frames\": 7"), std::string::npos) << json;
   EXPECT_NE(json.find("\"timing_ms\""), std::string::npos);
   EXPECT_NE(json.find("\"inspect.max_frames\": 7"), std::string::npos);
+  // The run names every file it wrote, and each one exists.
+  for (const char* file : {"frames.csv", "metrics.json"}) {
+    const std::string path = out + "/" + file;
+    EXPECT_NE(r.out.find("wrote " + path + "\n"), std::string::npos) << file << "\n" << r.out;
+    EXPECT_FALSE(ReadAll(path).empty()) << path;
+  }
 }
 
 TEST(Cli, RunWithOutOfRangeOptionFailsNamingTheKey) {

@@ -300,6 +300,10 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
     ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == i + 1; }, 20000)) << "step " << i;
   }
   EXPECT_FALSE(mapping->occupancy_view()->image().isNull());
+  // Both views say what their colours mean: cells, scan rays, wall classes, the floor.
+  EXPECT_EQ(mapping->occupancy_view()->keys().size(), 8u);
+  ASSERT_EQ(window.scene_view()->keys().size(), 4u);
+  EXPECT_EQ(window.scene_view()->keys()[3].label, "floor");
   EXPECT_FALSE(mapping->map_view()->image().isNull());
   // The 3D view shows the floor grid and the walls found beside the cloud.
   for (const std::string& layer : MappingPresenter::SceneLayers()) {
@@ -419,6 +423,8 @@ TEST(MonoSlamPresenter, DrawsTheMapKeyframesAndTrajectoryOnKittiLeftImages) {
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/map"));
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/keyframes"));
   EXPECT_TRUE(window.scene_view()->HasLayer("mono/trajectory"));
+  // The 3D view was fitted to the path as it started (View > Follow is on by default).
+  EXPECT_GE(window.scene_view()->follow_fits(), 1);
 }
 
 }  // namespace

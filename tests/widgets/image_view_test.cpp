@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QPainter>
+#include <QTest>
+#include <QWheelEvent>
 #include <cmath>
 #include <limits>
 #include <opencv2/imgproc.hpp>
@@ -144,6 +147,76 @@ TEST_F(ImageViewTest, OverlaysUseImageCoordinates) {
                    QColor(255, 0, 0), 60));
   const QPointF dot = t.map(QPointF(49.5, 49.5)) + QPointF(2, 2);
   EXPECT_EQ(grab.pixelColor(dot.toPoint()), QColor(Qt::green));
+}
+
+void Wheel(QWidget* widget, QPointF at, int delta) {
+  QWheelEvent event(at, widget->mapToGlobal(at), QPoint(), QPoint(0, delta), Qt::NoButton,
+                    Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(widget, &event);
+}
+
+// The wheel zooms about the mouse (the image pixel under it stays under it), a drag pans the
+// zoomed image, and a double click fits the whole image again.
+TEST_F(ImageViewTest, WheelZoomsAboutTheMouseDragPansAndDoubleClickFits) {
+  cv::Mat image(100, 200, CV_8UC1, cv::Scalar(0));
+  image(cv::Rect(150, 20, 10, 10)).setTo(255);  // A white square to zoom in on.
+  view_.SetImage(image);
+  view_.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&view_));
+  const QTransform fitted = view_.ImageToWidget();
+  const QPointF square = fitted.map(QPointF(154.5, 24.5));
+  const double fitted_scale = fitted.m11();
+
+  Wheel(&view_, square, 3 * 120);  // Three notches in.
+  EXPECT_NEAR(view_.zoom(), 1.25 * 1.25 * 1.25, 1e-9);
+  const QTransform zoomed = view_.ImageToWidget();
+  EXPECT_NEAR(zoomed.m11(), view_.zoom() * fitted_scale, 1e-9);
+  const QPointF still = zoomed.map(QPointF(154.5, 24.5));
+  EXPECT_NEAR(still.x(), square.x(), 1e-6) << "the pixel under the mouse moved";
+  EXPECT_NEAR(still.y(), square.y(), 1e-6);
+  // The square now covers about 1.95 times as many widget pixels per side.
+  const QImage grab = Grab();
+  EXPECT_TRUE(Near(grab.pixelColor(square.toPoint()), QColor(255, 255, 255), 10));
+  const QPointF corner = zoomed.map(QPointF(150.2, 20.2));
+  EXPECT_TRUE(Near(grab.pixelColor(corner.toPoint()), QColor(255, 255, 255), 10));
+
+  QTest::mousePress(&view_, Qt::LeftButton, {}, QPoint(250, 200));
+  QTest::mouseMove(&view_, QPoint(220, 190));
+  QTest::mouseRelease(&view_, Qt::LeftButton, {}, QPoint(220, 190));
+  const QPointF moved = view_.ImageToWidget().map(QPointF(154.5, 24.5));
+  EXPECT_NEAR(moved.x() - still.x(), -30, 1e-6) << "the drag did not pan";
+  EXPECT_NEAR(moved.y() - still.y(), -10, 1e-6);
+
+  QTest::mouseDClick(&view_, Qt::LeftButton, {}, QPoint(100, 100));
+  EXPECT_EQ(view_.zoom(), 1.0);
+  EXPECT_EQ(view_.ImageToWidget(), fitted) << "a double click does not fit the image again";
+  Wheel(&view_, square, -120);  // Out beyond the fit: stays fitted.
+  EXPECT_EQ(view_.ImageToWidget(), fitted);
+}
+
+// A key to the overlay's colours: one swatch per entry in its colour, drawn over the image and
+// kept when the next image comes.
+TEST_F(ImageViewTest, KeysShowEachColourBesideItsWord) {
+  view_.SetImage(cv::Mat(240, 320, CV_8UC3, cv::Scalar(128, 128, 128)));
+  view_.SetKeys({{QColor(40, 220, 40), "inlier"}, {QColor(230, 40, 40), "outlier"}});
+  view_.SetImage(cv::Mat(240, 320, CV_8UC3, cv::Scalar(128, 128, 128)));  // The next frame.
+  ASSERT_EQ(view_.keys().size(), 2u);
+  const QImage grab = Grab();
+  SaveScreenshot(grab, "image_view_keys.png");
+  const QRect first = view_.KeySwatchRect(0), second = view_.KeySwatchRect(1);
+  ASSERT_FALSE(first.isEmpty());
+  EXPECT_GT(second.top(), first.bottom()) << "swatches overlap";
+  EXPECT_TRUE(Near(grab.pixelColor(first.center()), QColor(40, 220, 40)));
+  EXPECT_TRUE(Near(grab.pixelColor(second.center()), QColor(230, 40, 40)));
+  // The words are drawn right of the swatch: bright pixels on the dark box.
+  int bright = 0;
+  for (int x = first.right() + 4; x < first.right() + 60; ++x) {
+    for (int y = first.top(); y <= first.bottom(); ++y)
+      bright += grab.pixelColor(x, y).value() > 200;
+  }
+  EXPECT_GT(bright, 5) << "no label beside the swatch";
+  view_.Clear();
+  EXPECT_TRUE(view_.KeySwatchRect(0).isEmpty()) << "no key without an image";
 }
 
 }  // namespace

@@ -92,5 +92,44 @@ TEST_F(PlaybackBarTest, EmptyRecordingDisablesTheControls) {
   EXPECT_EQ(bar_.frame_label()->text(), "1 / 3");
 }
 
+// A click on the groove jumps to the frame under the mouse, not a page step towards it (Qt's
+// default), as in every video player.
+TEST_F(PlaybackBarTest, AClickOnTheGrooveSeeksToTheFrameUnderTheMouse) {
+  bar_.resize(600, 40);
+  bar_.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&bar_));
+  bar_.SetFrameCount(101);
+  QSlider* slider = bar_.slider();
+  ASSERT_EQ(slider->pageStep(), 10);
+  QTest::mouseClick(slider, Qt::LeftButton, {},
+                    QPoint(slider->width() * 3 / 4, slider->height() / 2));
+  ASSERT_EQ(seeks_.size(), 1u);
+  EXPECT_NEAR(seeks_[0], 75, 4) << "a page step would give 10";
+  QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(slider->width() / 4, slider->height() / 2));
+  ASSERT_EQ(seeks_.size(), 2u);
+  EXPECT_NEAR(seeks_[1], 25, 4) << "a page step back would give " << seeks_[0] - 10;
+  EXPECT_EQ(bar_.position(), seeks_[1]);
+}
+
+// A live source (a camera, replay://) has no frame count: Play and Step work, the slider does
+// not, and the label shows the newest frame's number.
+TEST_F(PlaybackBarTest, ALiveSourcePlaysAndCountsItsFrames) {
+  bar_.SetFrameCount(-1);
+  EXPECT_TRUE(bar_.live());
+  EXPECT_TRUE(bar_.play_button()->isEnabled());
+  EXPECT_TRUE(bar_.step_button()->isEnabled());
+  EXPECT_FALSE(bar_.slider()->isEnabled());
+  EXPECT_EQ(bar_.frame_label()->text(), "frame 0");
+  bar_.SetPosition(41);
+  EXPECT_EQ(bar_.frame_label()->text(), "frame 42");
+  bar_.SetPosition(1000);  // No end to clamp to.
+  EXPECT_EQ(bar_.frame_label()->text(), "frame 1001");
+  EXPECT_TRUE(seeks_.empty());
+  bar_.play_button()->click();
+  EXPECT_EQ(plays_, 1);
+  bar_.SetFrameCount(5);  // A recording again.
+  EXPECT_EQ(bar_.frame_label()->text(), "1 / 5");
+}
+
 }  // namespace
 }  // namespace sightline

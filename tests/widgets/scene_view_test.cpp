@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QLabel>
 #include <QTest>
 #include <QWheelEvent>
 #include <cmath>
@@ -210,6 +211,34 @@ TEST_F(SceneViewTest, WheelZoomsAndExitKeysAreIgnored) {
   QTest::keyClick(view_.get(), Qt::Key_Q);
   QTest::keyClick(view_.get(), Qt::Key_E);
   EXPECT_FALSE(view_->grabFramebuffer().isNull());
+}
+
+// A key to the layers' colours sits in the top-left corner, its swatches in their colours; it
+// stays out of the way of the mouse, and goes with ClearLayers.
+TEST_F(SceneViewTest, KeysNameTheLayersColoursUntilTheLayersAreCleared) {
+  ASSERT_NE(view_->keys_label(), nullptr);
+  EXPECT_FALSE(view_->keys_label()->isVisible());
+  view_->SetKeys({{QColor(255, 80, 80), "estimate"}, {QColor(80, 160, 255), "ground truth"}});
+  QLabel* label = view_->keys_label();
+  EXPECT_TRUE(label->isVisible());
+  EXPECT_TRUE(label->text().contains("ground truth"));
+  EXPECT_TRUE(label->testAttribute(Qt::WA_TransparentForMouseEvents));
+  EXPECT_LT(label->geometry().right(), view_->width() / 2) << "the key covers the view";
+  const QImage image = label->grab().toImage();
+  SaveScreenshot(image, "scene_view_keys.png");
+  int red = 0, blue = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      red += std::abs(c.red() - 255) + std::abs(c.green() - 80) + std::abs(c.blue() - 80) < 40;
+      blue += std::abs(c.red() - 80) + std::abs(c.green() - 160) + std::abs(c.blue() - 255) < 40;
+    }
+  }
+  EXPECT_GT(red, 10) << "no swatch in the estimate's colour";
+  EXPECT_GT(blue, 10) << "no swatch in the ground truth's colour";
+  view_->ClearLayers();
+  EXPECT_FALSE(label->isVisible());
+  EXPECT_TRUE(view_->keys().empty());
 }
 
 TEST(SceneViewComposed, OpticalFrameSceneWithGridLooksLikeARoboticsViewer) {
