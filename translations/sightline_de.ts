@@ -362,177 +362,177 @@
 <context>
     <name>sightline::CoreMessage</name>
     <message>
-        <location filename="../widgets/core_message.cpp" line="15"/>
+        <location filename="../widgets/core_message.cpp" line="17"/>
         <source>invalid argument</source>
         <translation>ungültiges Argument</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="16"/>
+        <location filename="../widgets/core_message.cpp" line="18"/>
         <source>not found</source>
         <translation>nicht gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="17"/>
+        <location filename="../widgets/core_message.cpp" line="19"/>
         <source>parse error</source>
         <translation>Formatfehler</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="18"/>
+        <location filename="../widgets/core_message.cpp" line="20"/>
         <source>unavailable</source>
         <translation>nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="19"/>
+        <location filename="../widgets/core_message.cpp" line="21"/>
         <source>out of range</source>
         <translation>außerhalb des Bereichs</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="20"/>
+        <location filename="../widgets/core_message.cpp" line="22"/>
         <source>failed precondition</source>
         <translation>Vorbedingung nicht erfüllt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="21"/>
+        <location filename="../widgets/core_message.cpp" line="23"/>
         <source>internal error</source>
         <translation>interner Fehler</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="26"/>
+        <location filename="../widgets/core_message.cpp" line="28"/>
         <source>%1 line %2</source>
         <translation>%1 Zeile %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="27"/>
+        <location filename="../widgets/core_message.cpp" line="29"/>
         <source>profile %1</source>
         <translation>Profil %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="28"/>
+        <location filename="../widgets/core_message.cpp" line="30"/>
         <source>parameter panel</source>
         <translation>Parameterleiste</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="34"/>
+        <location filename="../widgets/core_message.cpp" line="36"/>
         <source>unknown option &apos;%1&apos;</source>
         <translation>unbekannte Option &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="35"/>
+        <location filename="../widgets/core_message.cpp" line="37"/>
         <source>option &apos;%1&apos;: %2 is outside %3</source>
         <translation>Option &apos;%1&apos;: %2 liegt außerhalb von %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="36"/>
+        <location filename="../widgets/core_message.cpp" line="38"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not one of: %3</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keiner der Werte: %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="37"/>
+        <location filename="../widgets/core_message.cpp" line="39"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a boolean (true/false)</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist kein Wahrheitswert (true/false)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="38"/>
+        <location filename="../widgets/core_message.cpp" line="40"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not an integer</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine ganze Zahl</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="39"/>
+        <location filename="../widgets/core_message.cpp" line="41"/>
         <source>option &apos;%1&apos;: &apos;%2&apos; is not a number</source>
         <translation>Option &apos;%1&apos;: &apos;%2&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="40"/>
+        <location filename="../widgets/core_message.cpp" line="42"/>
         <source>option &apos;%1&apos;: value is not finite</source>
         <translation>Option &apos;%1&apos;: Wert ist nicht endlich</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="41"/>
+        <location filename="../widgets/core_message.cpp" line="43"/>
         <source>a profile must be a map of option keys</source>
         <translation>ein Profil muss eine Zuordnung von Optionsschlüsseln sein</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="42"/>
+        <location filename="../widgets/core_message.cpp" line="44"/>
         <source>option &apos;%1&apos; is given twice (also line %2)</source>
         <translation>Option &apos;%1&apos; ist doppelt angegeben (auch Zeile %2)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="43"/>
+        <location filename="../widgets/core_message.cpp" line="45"/>
         <source>option &apos;%1&apos; has no value</source>
         <translation>Option &apos;%1&apos; hat keinen Wert</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="44"/>
+        <location filename="../widgets/core_message.cpp" line="46"/>
         <source>option &apos;%1&apos; must be a single value, not a list</source>
         <translation>Option &apos;%1&apos; muss ein einzelner Wert sein, keine Liste</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="45"/>
+        <location filename="../widgets/core_message.cpp" line="47"/>
         <source>an option key must be a word, not a list or map</source>
         <translation>ein Optionsschlüssel muss ein Wort sein, keine Liste oder Zuordnung</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="46"/>
+        <location filename="../widgets/core_message.cpp" line="48"/>
         <source>options nest deeper than %1 levels</source>
         <translation>Optionen sind tiefer als %1 Ebenen verschachtelt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="47"/>
+        <location filename="../widgets/core_message.cpp" line="49"/>
         <source>lists or maps nest deeper than %1 levels</source>
         <translation>Listen oder Zuordnungen sind tiefer als %1 Ebenen verschachtelt</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="48"/>
+        <location filename="../widgets/core_message.cpp" line="50"/>
         <source>more than %1 values (aliases expanding?); a profile lists each option once</source>
         <translation>mehr als %1 Werte (expandierende Aliase?); ein Profil nennt jede Option einmal</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="50"/>
+        <location filename="../widgets/core_message.cpp" line="52"/>
         <source>not a readable YAML profile: %1</source>
         <translation>kein lesbares YAML-Profil: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="51"/>
+        <location filename="../widgets/core_message.cpp" line="53"/>
         <source>cannot write profile %1</source>
         <translation>Profil %1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="52"/>
+        <location filename="../widgets/core_message.cpp" line="54"/>
         <source>write to %1 failed (disk full?)</source>
         <translation>Schreiben nach %1 fehlgeschlagen (Datenträger voll?)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="53"/>
+        <location filename="../widgets/core_message.cpp" line="55"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="54"/>
+        <location filename="../widgets/core_message.cpp" line="56"/>
         <source>profile %1 is a folder, not a file</source>
         <translation>Profil %1 ist ein Ordner, keine Datei</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="55"/>
+        <location filename="../widgets/core_message.cpp" line="57"/>
         <source>profile %1 is not a regular file (a device, pipe or socket)</source>
         <translation>Profil %1 ist keine reguläre Datei (ein Gerät, eine Pipe oder ein Socket)</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="57"/>
+        <location filename="../widgets/core_message.cpp" line="59"/>
         <source>profile %1 cannot be read: %2</source>
         <translation>Profil %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="58"/>
+        <location filename="../widgets/core_message.cpp" line="60"/>
         <source>profile %1 is %2 bytes; a profile holds at most %3</source>
         <translation>Profil %1 ist %2 Bytes groß; ein Profil umfasst höchstens %3</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="60"/>
+        <location filename="../widgets/core_message.cpp" line="62"/>
         <source>cannot read its size: %1</source>
         <translation>Größe nicht lesbar: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/core_message.cpp" line="61"/>
+        <location filename="../widgets/core_message.cpp" line="63"/>
         <source>read error (%1 of %2 bytes)</source>
         <translation>Lesefehler (%1 von %2 Bytes)</translation>
     </message>
@@ -560,7 +560,7 @@
         <translation>Eine Aufnahme, als Live-Kamera abgespielt (replay://PATH?fps=30&amp;loop=1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/core_texts.cpp"/>
+        <location filename="../app/sightline/core_texts.cpp" line="19"/>
         <source>ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth</source>
         <translation>ROS-1-Bag-Dateien (.bag): Bilder, RGB-D, Stereo und Punktwolken, mit Referenz aus tf</translation>
     </message>
@@ -637,6 +637,7 @@
     </message>
     <message>
         <location filename="../app/sightline/evaluation_panel.cpp" line="104"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="175"/>
         <source>Choose two trajectory files and press Evaluate.</source>
         <translation>Zwei Trajektoriendateien wählen und Auswerten drücken.</translation>
     </message>
@@ -686,12 +687,12 @@
         <translation>Auswertung läuft...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="176"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="185"/>
         <source>Evaluation failed: %1</source>
         <translation>Auswertung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/evaluation_panel.cpp" line="189"/>
+        <location filename="../app/sightline/evaluation_panel.cpp" line="198"/>
         <source>%1 associated poses, ground-truth path %2 m.</source>
         <translation>%1 zugeordnete Posen, Weglänge der Ground Truth %2 m.</translation>
     </message>
@@ -699,14 +700,14 @@
 <context>
     <name>sightline::ImageView</name>
     <message>
-        <location filename="../widgets/image_view.cpp" line="47"/>
-        <location filename="../widgets/image_view.cpp" line="78"/>
-        <location filename="../widgets/image_view.cpp" line="131"/>
+        <location filename="../widgets/image_view.cpp" line="49"/>
+        <location filename="../widgets/image_view.cpp" line="80"/>
+        <location filename="../widgets/image_view.cpp" line="135"/>
         <source>No image</source>
         <translation>Kein Bild</translation>
     </message>
     <message>
-        <location filename="../widgets/image_view.cpp" line="81"/>
+        <location filename="../widgets/image_view.cpp" line="83"/>
         <source>Unsupported image type %1</source>
         <translation>Nicht unterstützter Bildtyp %1</translation>
     </message>
@@ -737,7 +738,12 @@
 <context>
     <name>sightline::LogPanel</name>
     <message>
-        <location filename="../widgets/log_panel.cpp" line="36"/>
+        <location filename="../widgets/log_panel.cpp" line="33"/>
+        <source>Click a line to read it in full.</source>
+        <translation>Klicken Sie auf eine Zeile, um sie vollständig zu lesen.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/log_panel.cpp" line="51"/>
         <source>Clear messages</source>
         <translation>Meldungen löschen</translation>
     </message>
@@ -745,273 +751,283 @@
 <context>
     <name>sightline::MainWindow</name>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="46"/>
+        <location filename="../app/sightline/main_window.cpp" line="47"/>
         <source>Sightline</source>
         <translation>Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="81"/>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="82"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="83"/>
+        <location filename="../app/sightline/main_window.cpp" line="404"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="87"/>
+        <location filename="../app/sightline/main_window.cpp" line="89"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="89"/>
+        <location filename="../app/sightline/main_window.cpp" line="91"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="92"/>
+        <location filename="../app/sightline/main_window.cpp" line="94"/>
         <source>Evaluation</source>
         <translation>Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="100"/>
+        <location filename="../app/sightline/main_window.cpp" line="107"/>
         <source>Playback</source>
         <translation>Wiedergabe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="110"/>
+        <location filename="../app/sightline/main_window.cpp" line="117"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="111"/>
+        <location filename="../app/sightline/main_window.cpp" line="118"/>
         <source>&amp;Open dataset folder...</source>
         <translation>Datensatz-Ordner &amp;öffnen...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="114"/>
+        <location filename="../app/sightline/main_window.cpp" line="121"/>
         <source>Open dataset folder</source>
         <translation>Datensatz-Ordner öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="119"/>
+        <location filename="../app/sightline/main_window.cpp" line="126"/>
         <source>Open point cloud</source>
         <translation>Punktwolke öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="117"/>
+        <location filename="../app/sightline/main_window.cpp" line="124"/>
         <source>Open recording &amp;file (PCD, ONI)...</source>
         <translation>Aufnahme&amp;datei öffnen (PCD, ONI)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="120"/>
+        <location filename="../app/sightline/main_window.cpp" line="127"/>
         <source>Recordings (*.pcd *.oni *.bag)</source>
         <translation>Aufnahmen (*.pcd *.oni *.bag)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="123"/>
+        <location filename="../app/sightline/main_window.cpp" line="130"/>
         <source>Open &amp;recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="128"/>
+        <location filename="../app/sightline/main_window.cpp" line="135"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="132"/>
+        <location filename="../app/sightline/main_window.cpp" line="139"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="134"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="142"/>
+        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <source>&amp;Follow the trajectory</source>
+        <translation>Der Trajektorie &amp;folgen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
+        <translation>Die 3D-Ansicht neu einpassen, sobald eine wachsende Trajektorie sie verlässt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window.cpp" line="155"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="148"/>
+        <location filename="../app/sightline/main_window.cpp" line="162"/>
         <source> (unavailable)</source>
         <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="153"/>
+        <location filename="../app/sightline/main_window.cpp" line="167"/>
         <source>Connect to the first %1 device</source>
         <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="159"/>
+        <location filename="../app/sightline/main_window.cpp" line="173"/>
         <source>Replay recording</source>
         <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="165"/>
+        <location filename="../app/sightline/main_window.cpp" line="179"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
-        <location filename="../app/sightline/main_window.cpp" line="300"/>
+        <location filename="../app/sightline/main_window.cpp" line="181"/>
+        <location filename="../app/sightline/main_window.cpp" line="325"/>
         <source>None (show frames only)</source>
         <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="174"/>
+        <location filename="../app/sightline/main_window.cpp" line="188"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="175"/>
+        <location filename="../app/sightline/main_window.cpp" line="189"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>Trajektorie &amp;auswerten...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="180"/>
+        <location filename="../app/sightline/main_window.cpp" line="194"/>
         <source>Evaluate &amp;current run</source>
         <translation>&amp;Aktuellen Lauf auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="182"/>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Vergleicht die Trajektorie der laufenden Pipeline mit der Referenz des Datensatzes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="191"/>
+        <location filename="../app/sightline/main_window.cpp" line="205"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="192"/>
+        <location filename="../app/sightline/main_window.cpp" line="206"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="193"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="208"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
 Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="225"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="226"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="215"/>
+        <location filename="../app/sightline/main_window.cpp" line="234"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="239"/>
+        <location filename="../app/sightline/main_window.cpp" line="263"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="246"/>
+        <location filename="../app/sightline/main_window.cpp" line="270"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="255"/>
+        <location filename="../app/sightline/main_window.cpp" line="279"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="262"/>
+        <location filename="../app/sightline/main_window.cpp" line="286"/>
         <source>The demo could not be made: %1</source>
         <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="318"/>
+        <location filename="../app/sightline/main_window.cpp" line="343"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="329"/>
+        <location filename="../app/sightline/main_window.cpp" line="354"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="333"/>
+        <location filename="../app/sightline/main_window.cpp" line="358"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="362"/>
-        <location filename="../app/sightline/main_window.cpp" line="363"/>
+        <location filename="../app/sightline/main_window.cpp" line="387"/>
+        <location filename="../app/sightline/main_window.cpp" line="388"/>
         <source>Opening %1 ...</source>
         <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="374"/>
+        <location filename="../app/sightline/main_window.cpp" line="403"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="375"/>
+        <location filename="../app/sightline/main_window.cpp" line="404"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="381"/>
+        <location filename="../app/sightline/main_window.cpp" line="410"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="386"/>
+        <location filename="../app/sightline/main_window.cpp" line="415"/>
         <source>, ground truth</source>
         <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
         <source>Opened %1</source>
         <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="393"/>
+        <location filename="../app/sightline/main_window.cpp" line="422"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="428"/>
+        <location filename="../app/sightline/main_window.cpp" line="441"/>
         <source>frame %1, read in %2 ms</source>
         <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="450"/>
+        <location filename="../app/sightline/main_window.cpp" line="485"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="452"/>
+        <location filename="../app/sightline/main_window.cpp" line="487"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="184"/>
+        <location filename="../app/sightline/main_window.cpp" line="198"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
@@ -1095,6 +1111,26 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <source>Language: %1</source>
         <translation>Sprache: %1</translation>
     </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="44"/>
+        <source>Reset the map?</source>
+        <translation>Karte zurücksetzen?</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="45"/>
+        <source>%1 has built its map over %2 frames. Seeking starts it over from the frame you seek to: the map and the trajectory so far are lost.</source>
+        <translation>%1 hat seine Karte über %2 Bilder aufgebaut. Ein Sprung beginnt sie ab dem angesprungenen Bild neu: Die bisherige Karte und Trajektorie gehen verloren.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="51"/>
+        <source>Seek and reset the map</source>
+        <translation>Springen und Karte zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
+        <source>Keep the map</source>
+        <translation>Karte behalten</translation>
+    </message>
 </context>
 <context>
     <name>sightline::MappingPresenter</name>
@@ -1144,17 +1180,65 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <source>free</source>
+        <translation>frei</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <source>occupied</source>
+        <translation>belegt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <source>person</source>
+        <translation>Person</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <source>scan rays</source>
+        <translation>Scanstrahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
+        <source>walls, first direction</source>
+        <translation>Wände, erste Richtung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <source>walls, perpendicular</source>
+        <translation>Wände, senkrecht dazu</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
+        <source>other lines</source>
+        <translation>andere Linien</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
+        <source>robot</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <source>floor</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>
@@ -1162,88 +1246,123 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MobilityImagePanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="72"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
         <source>Projection</source>
         <translation>Projektion</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="73"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
         <source>Top view</source>
         <translation>Draufsicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="74"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="75"/>
         <source>GPR surface</source>
         <translation>GPR-Fläche</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="85"/>
+        <source>score 0: not passable</source>
+        <translation>Bewertung 0: nicht befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="86"/>
+        <source>score 0.5</source>
+        <translation>Bewertung 0,5</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="87"/>
+        <source>score 1: passable</source>
+        <translation>Bewertung 1: befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_views.cpp" line="88"/>
+        <source>not scored</source>
+        <translation>nicht bewertet</translation>
     </message>
 </context>
 <context>
     <name>sightline::MobilityPresenter</name>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="26"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="27"/>
         <source>Mobility map</source>
         <translation>Befahrbarkeitskarte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="36"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="37"/>
         <source>Mobility map (red 0, green 1)</source>
         <translation>Befahrbarkeitskarte (rot 0, grün 1)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_presenter.cpp" line="40"/>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="41"/>
         <source>Mobility stages (Table II)</source>
         <translation>Befahrbarkeitskarte: Stufen (Tabelle II)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="77"/>
+        <source>colour: one per segment</source>
+        <translation>Farbe: eine je Segment</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 0: not passable</source>
+        <translation>Bewertung 0: nicht befahrbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mobility_presenter.cpp" line="80"/>
+        <source>score 1: passable</source>
+        <translation>Bewertung 1: befahrbar</translation>
     </message>
 </context>
 <context>
     <name>sightline::MobilityTimingPanel</name>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="21"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="22"/>
         <source>3D colour:</source>
         <translation>3D-Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (rule)</source>
         <translation>Bewertung (Regel)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Score (GPR)</source>
         <translation>Bewertung (GPR)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="23"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="24"/>
         <source>Segment</source>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Stage</source>
         <translation>Stufe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Time (ms)</source>
         <translation>Zeit (ms)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="31"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="32"/>
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="52"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="53"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="55"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="56"/>
         <source>%1 mode, %2 segments</source>
         <translation>Modus %1, %2 Segmente</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mobility_views.cpp" line="59"/>
+        <location filename="../app/sightline/mobility_views.cpp" line="60"/>
         <source>, camera %1 m above the ground</source>
         <translation>, Kamera %1 m über dem Boden</translation>
     </message>
@@ -1291,19 +1410,59 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Metrischer Maßstab (ML durchgezogen, Einzelverhältnis gestrichelt)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="207"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="194"/>
+        <source>inlier</source>
+        <translation>Inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="195"/>
+        <source>outlier</source>
+        <translation>Ausreißer</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="196"/>
+        <source>keypoint, unmatched</source>
+        <translation>Merkmalspunkt, ohne Zuordnung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="197"/>
+        <source>frame: tracking quality</source>
+        <translation>Rahmen: Tracking-Qualität</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="212"/>
         <source>%1: %2 inliers of %3 matches, %4 map points, %5 keyframes, %6 ms</source>
         <translation>%1: %2 Inlier von %3 Zuordnungen, %4 Kartenpunkte, %5 Keyframes, %6 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="217"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="222"/>
         <source>Metric scale from %1: ML %2, single ratio %3 map units per metre; map and trajectory in metres.</source>
         <translation>Metrischer Maßstab (Quelle: %1): ML %2, Einzelverhältnis %3 Karteneinheiten pro Meter; Karte und Trajektorie in Metern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mono_slam_presenter.cpp" line="223"/>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="228"/>
         <source>Scale unknown (measured motion: %1): the map is in arbitrary units (first baseline = 0.1).</source>
         <translation>Maßstab unbekannt (gemessene Bewegung: %1): Die Karte ist in beliebigen Einheiten (erste Basislinie = 0,1).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="268"/>
+        <source>camera path</source>
+        <translation>Kamerapfad</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="269"/>
+        <source>keyframes</source>
+        <translation>Schlüsselbilder</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="270"/>
+        <source>camera: tracking quality</source>
+        <translation>Kamera: Tracking-Qualität</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mono_slam_presenter.cpp" line="271"/>
+        <source>map points: colour of their first keyframe</source>
+        <translation>Kartenpunkte: Farbe ihres ersten Schlüsselbilds</translation>
     </message>
 </context>
 <context>
@@ -2352,1472 +2511,1472 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Seitenlänge des KLT-Fensters (ungerade).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="198"/>
+        <location filename="../app/sightline/option_texts.cpp" line="199"/>
         <source>Larger 1-sigma position uncertainty: no target.</source>
         <translation>Größere 1-Sigma-Positionsunsicherheit: kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="199"/>
+        <location filename="../app/sightline/option_texts.cpp" line="200"/>
         <source>Larger 1-sigma uncertainty of the approach direction (the panel normal): no target.</source>
         <translation>Größere 1-Sigma-Unsicherheit der Anfahrrichtung (der Panelnormale): kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="200"/>
+        <location filename="../app/sightline/option_texts.cpp" line="201"/>
         <source>Larger change of velocity from the last accepted motion is rejected; 0 = no check.</source>
         <translation>Eine größere Geschwindigkeitsänderung gegenüber der letzten akzeptierten Bewegung wird verworfen; 0 = keine Prüfung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="201"/>
+        <location filename="../app/sightline/option_texts.cpp" line="202"/>
         <source>Larger median offset of the face points from the panel plane is not applied.</source>
         <translation>Ein größerer Medianabstand der Flächenpunkte von der Panelebene wird nicht angewandt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="202"/>
+        <location filename="../app/sightline/option_texts.cpp" line="203"/>
         <source>Largest Hamming distance of a new-point match.</source>
         <translation>Größte Hamming-Distanz einer Übereinstimmung neuer Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="203"/>
+        <location filename="../app/sightline/option_texts.cpp" line="204"/>
         <source>Largest Hamming distance of a tracked ORB match.</source>
         <translation>Größte Hamming-Distanz einer verfolgten ORB-Übereinstimmung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="204"/>
+        <location filename="../app/sightline/option_texts.cpp" line="205"/>
         <source>Largest Hough circle radius.</source>
         <translation>Größter Radius der Hough-Kreise.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="205"/>
+        <location filename="../app/sightline/option_texts.cpp" line="206"/>
         <source>Largest angle between the floor normal and the camera&apos;s up axis (-y).</source>
         <translation>Größter Winkel zwischen der Bodennormale und der Aufwärtsachse der Kamera (-y).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="206"/>
+        <location filename="../app/sightline/option_texts.cpp" line="207"/>
         <source>Largest button region as a fraction of the image area.</source>
         <translation>Größte Knopfregion als Anteil der Bildfläche.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="207"/>
+        <location filename="../app/sightline/option_texts.cpp" line="208"/>
         <source>Largest depth/colour timestamp difference of an RGB-D pair from a device; frames without a partner are dropped and counted.</source>
         <translation>Größter Zeitstempelunterschied zwischen Tiefe und Farbe eines RGB-D-Paars eines Geräts; Bilder ohne Partner werden verworfen und gezählt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="208"/>
+        <location filename="../app/sightline/option_texts.cpp" line="209"/>
         <source>Largest difference between the left and right timestamps of a pair; frames without a partner are dropped and counted.</source>
         <translation>Größter Unterschied zwischen den Zeitstempeln links und rechts eines Paars; Bilder ohne Partner werden verworfen und gezählt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="209"/>
+        <location filename="../app/sightline/option_texts.cpp" line="210"/>
         <source>Largest disparity searched and accepted.</source>
         <translation>Größte gesuchte und akzeptierte Disparität.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="210"/>
+        <location filename="../app/sightline/option_texts.cpp" line="211"/>
         <source>Largest size change (either way) since the last tracked frame at re-acquisition.</source>
         <translation>Größte Größenänderung (in beide Richtungen) seit dem letzten verfolgten Bild beim Wiederfinden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="211"/>
+        <location filename="../app/sightline/option_texts.cpp" line="212"/>
         <source>Left-right check: the right point tracked back must land this close; 0 = no check.</source>
         <translation>Links-rechts-Prüfung: Der zurückverfolgte rechte Punkt muss so nah landen; 0 = keine Prüfung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="212"/>
+        <location filename="../app/sightline/option_texts.cpp" line="213"/>
         <source>Length of the first baseline in map units (PTAM: 0.1); metric scale comes later.</source>
         <translation>Länge der ersten Basislinie in Karteneinheiten (PTAM: 0.1); die metrische Skala kommt später.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="213"/>
+        <location filename="../app/sightline/option_texts.cpp" line="214"/>
         <source>Levenberg-Marquardt iterations per frame.</source>
         <translation>Levenberg-Marquardt-Iterationen pro Bild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="214"/>
+        <location filename="../app/sightline/option_texts.cpp" line="215"/>
         <source>Lines vote with weight length / (1 + (rms / rms_scale_m)^2): scattered consensus sets (a wall merged with a door recess) count less.</source>
         <translation>Linien stimmen mit dem Gewicht Länge / (1 + (rms / rms_scale_m)^2) ab: verstreute Konsensmengen (eine mit einer Türnische verschmolzene Wand) zählen weniger.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="215"/>
+        <location filename="../app/sightline/option_texts.cpp" line="216"/>
         <source>Lines with fewer points are dropped.</source>
         <translation>Linien mit weniger Punkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="216"/>
+        <location filename="../app/sightline/option_texts.cpp" line="217"/>
         <source>Log-odds added when a frame sees a cell free.</source>
         <translation>Log-Odds, die addiert werden, wenn ein Bild eine Zelle frei sieht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="217"/>
+        <location filename="../app/sightline/option_texts.cpp" line="218"/>
         <source>Log-odds added when a frame sees a cell occupied.</source>
         <translation>Log-Odds, die addiert werden, wenn ein Bild eine Zelle belegt sieht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="218"/>
+        <location filename="../app/sightline/option_texts.cpp" line="219"/>
         <source>Longer client lines are discarded; an over-long token line closes the connection.</source>
         <translation>Längere Client-Zeilen werden verworfen; eine überlange Token-Zeile schließt die Verbindung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="219"/>
+        <location filename="../app/sightline/option_texts.cpp" line="220"/>
         <source>Longer image side at which contours are searched; larger frames are scaled down.</source>
         <translation>Längere Bildseite, auf der Konturen gesucht werden; größere Bilder werden verkleinert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="220"/>
+        <location filename="../app/sightline/option_texts.cpp" line="221"/>
         <source>Longest over shortest side of the region&apos;s rotated box.</source>
         <translation>Längste durch kürzeste Seite des gedrehten Rahmens der Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="221"/>
+        <location filename="../app/sightline/option_texts.cpp" line="222"/>
         <source>Looming needs the largest and smallest depth to differ by this fraction ...</source>
         <translation>Die Größenzunahme (Looming) verlangt, dass größte und kleinste Tiefe sich um diesen Anteil unterscheiden ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="222"/>
+        <location filename="../app/sightline/option_texts.cpp" line="223"/>
         <source>Lowe&apos;s ratio test: best over second-best descriptor distance must be below this.</source>
         <translation>Lowes Verhältnistest: Bester durch zweitbesten Deskriptorabstand muss unter diesem Wert liegen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="223"/>
+        <location filename="../app/sightline/option_texts.cpp" line="224"/>
         <source>Lower clamp of a cell&apos;s log-odds.</source>
         <translation>Untere Begrenzung der Log-Odds einer Zelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="224"/>
+        <location filename="../app/sightline/option_texts.cpp" line="225"/>
         <source>Lowest plausible camera height above the floor.</source>
         <translation>Niedrigste plausible Kamerahöhe über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="225"/>
+        <location filename="../app/sightline/option_texts.cpp" line="226"/>
         <source>Map points projecting within this distance of the button centre are used.</source>
         <translation>Kartenpunkte, die innerhalb dieses Abstands von der Knopfmitte projiziert werden, werden verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="226"/>
+        <location filename="../app/sightline/option_texts.cpp" line="227"/>
         <source>Map points within this many tracked button radii (the button&apos;s face) are used first; 0 = always use radius_px.</source>
         <translation>Kartenpunkte innerhalb so vieler verfolgter Knopfradien (die Knopffläche) werden zuerst verwendet; 0 = immer radius_px verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="227"/>
+        <location filename="../app/sightline/option_texts.cpp" line="228"/>
         <source>Matches with a smaller disparity (too far to triangulate) are rejected.</source>
         <translation>Übereinstimmungen mit kleinerer Disparität (zu weit für die Triangulation) werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="228"/>
+        <location filename="../app/sightline/option_texts.cpp" line="229"/>
         <source>Matches with the first frame needed before initialisation is tried.</source>
         <translation>Übereinstimmungen mit dem ersten Bild, die vor einem Initialisierungsversuch nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="229"/>
+        <location filename="../app/sightline/option_texts.cpp" line="230"/>
         <source>Measured displacements shorter than this are dropped.</source>
         <translation>Gemessene Verschiebungen, die kürzer als dies sind, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="230"/>
+        <location filename="../app/sightline/option_texts.cpp" line="231"/>
         <source>Measured motion for the metric scale: the arm&apos;s recorded poses (arm_poses.txt), the arm&apos;s poses streamed live to the button pipeline&apos;s arm-target server (arm_stream), ground-truth displacements, or none. auto: the recorded arm poses when arm_poses.txt is there; else, for the button pipeline while serving, the stream; else (mono-slam) ground truth.</source>
         <translation>Gemessene Bewegung für die metrische Skala: die aufgezeichneten Posen des Arms (arm_poses.txt), die live an den Armzielserver der Knopf-Pipeline gestreamten Posen des Arms (arm_stream), Ground-Truth-Verschiebungen oder keine. auto: die aufgezeichneten Armposen, wenn arm_poses.txt vorhanden ist; sonst, für die Knopf-Pipeline beim Bereitstellen, der Stream; sonst (mono-slam) die Ground Truth.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="231"/>
+        <location filename="../app/sightline/option_texts.cpp" line="232"/>
         <source>Median angle between the rays of a match needed before trying (move sideways).</source>
         <translation>Medianwinkel zwischen den Strahlen einer Übereinstimmung, der vor einem Versuch nötig ist (seitlich bewegen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="232"/>
+        <location filename="../app/sightline/option_texts.cpp" line="233"/>
         <source>Minimum distance between corners.</source>
         <translation>Mindestabstand zwischen Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="233"/>
+        <location filename="../app/sightline/option_texts.cpp" line="234"/>
         <source>Mirror images left-right, as OpenNI does by default for people facing the camera.</source>
         <translation>Bilder links-rechts spiegeln, wie OpenNI es standardmäßig für Personen vor der Kamera tut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="234"/>
+        <location filename="../app/sightline/option_texts.cpp" line="235"/>
         <source>Morphological closing that joins broken button outlines; 0 = none.</source>
         <translation>Morphologisches Schließen, das unterbrochene Knopfumrisse verbindet; 0 = keins.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="235"/>
+        <location filename="../app/sightline/option_texts.cpp" line="236"/>
         <source>Most recent keyframes whose poses local bundle adjustment optimises.</source>
         <translation>So viele jüngste Schlüsselbilder, deren Posen die lokale Bündelausgleichung optimiert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="236"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
         <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the seed&apos;s rule).</source>
         <translation>Neue Mitte: die Modellmitte über eine RANSAC-Ähnlichkeitstransformation der Übereinstimmungen oder der Schwerpunkt der übereinstimmenden Keypoints (die Regel der Vorlage).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Nice-Wert des Mapping-Threads (Thread-Modus, Linux); 10 lässt das Tracking einen mit dem Mapping geteilten Kern gewinnen, lässt das Mapping aber auf einem ausgelasteten Rechner verhungern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="238"/>
+        <location filename="../app/sightline/option_texts.cpp" line="239"/>
         <source>No pose is interpolated across a larger gap between two arm_pose messages.</source>
         <translation>Über eine größere Lücke zwischen zwei arm_pose-Nachrichten wird keine Pose interpoliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="239"/>
+        <location filename="../app/sightline/option_texts.cpp" line="240"/>
         <source>No second reset within this many frames of the last one.</source>
         <translation>Kein zweiter Reset innerhalb so vieler Bilder nach dem letzten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="240"/>
+        <location filename="../app/sightline/option_texts.cpp" line="241"/>
         <source>No target until the online hand-eye check has seen the mount&apos;s translation (the arm must rotate between keyframes); without it that translation is taken on trust.</source>
         <translation>Kein Ziel, bis die Online-Hand-Auge-Prüfung die Translation der Montage gesehen hat (der Arm muss sich zwischen Schlüsselbildern drehen); ohne sie wird diese Translation ungeprüft übernommen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="241"/>
+        <location filename="../app/sightline/option_texts.cpp" line="242"/>
         <source>Noise of a camera displacement measured in the map (sigma_x of the ML estimator).</source>
         <translation>Rauschen einer in der Karte gemessenen Kameraverschiebung (sigma_x des ML-Schätzers).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="242"/>
+        <location filename="../app/sightline/option_texts.cpp" line="243"/>
         <source>Noise of a displacement measured by the arm or robot (sigma_y).</source>
         <translation>Rauschen einer vom Arm oder Roboter gemessenen Verschiebung (sigma_y).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="243"/>
+        <location filename="../app/sightline/option_texts.cpp" line="244"/>
         <source>ORB keypoints extracted per frame.</source>
         <translation>Pro Bild extrahierte ORB-Keypoints.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="244"/>
+        <location filename="../app/sightline/option_texts.cpp" line="245"/>
         <source>Observations reprojecting worse than this are dropped from the window.</source>
         <translation>Beobachtungen, die schlechter als dies reprojizieren, werden aus dem Fenster entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="245"/>
+        <location filename="../app/sightline/option_texts.cpp" line="246"/>
         <source>Observations with a smaller disparity (no usable depth) are left out.</source>
         <translation>Beobachtungen mit kleinerer Disparität (keine nutzbare Tiefe) bleiben unberücksichtigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="246"/>
+        <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Belegte Zellen, die näher als dies am Roboter liegen, werden ignoriert (Roboterkörper, Rauschen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="247"/>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
         <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as the seed; depth noise behind walls stays).</source>
         <translation>Belegt-Evidenz: die Treffer des Polarscans (sichtbare Flächen, dünne Wände) oder jede belegte Zelle des Belegungsbilds (wie die Vorlage; Tiefenrauschen hinter Wänden bleibt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <location filename="../app/sightline/option_texts.cpp" line="249"/>
         <source>Of the re-acquiring matches, at least this many lie on the button itself.</source>
         <translation>Von den wiederfindenden Übereinstimmungen liegen mindestens so viele auf dem Knopf selbst.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="249"/>
+        <location filename="../app/sightline/option_texts.cpp" line="250"/>
         <source>Older estimates are not sent.</source>
         <translation>Ältere Schätzungen werden nicht gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="250"/>
+        <location filename="../app/sightline/option_texts.cpp" line="251"/>
         <source>Older frames&apos; normals fade with exp(-age / this) in the average (data time); 0 = this frame&apos;s normal only.</source>
         <translation>Die Normalen älterer Bilder klingen im Mittel mit exp(-Alter / diesem Wert) ab (Datenzeit); 0 = nur die Normale dieses Bildes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="251"/>
+        <location filename="../app/sightline/option_texts.cpp" line="252"/>
         <source>On close: how long the stop lines may take to go out before the sockets close.</source>
         <translation>Beim Schließen: wie lange das Senden der Stoppzeilen dauern darf, bevor die Sockets schließen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="252"/>
+        <location filename="../app/sightline/option_texts.cpp" line="253"/>
         <source>On the button: within this many radii of its centre.</source>
         <translation>Auf dem Knopf: innerhalb so vieler Radien um seine Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="253"/>
+        <location filename="../app/sightline/option_texts.cpp" line="254"/>
         <source>Only frames tracked at least this confidently refresh the model.</source>
         <translation>Nur Bilder, die mindestens so sicher verfolgt wurden, erneuern das Modell.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="254"/>
+        <location filename="../app/sightline/option_texts.cpp" line="255"/>
         <source>Otherwise: the camera&apos;s optical centre this far ahead of the odometry base.</source>
         <translation>Sonst: das optische Zentrum der Kamera so weit vor der Odometriebasis.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="255"/>
+        <location filename="../app/sightline/option_texts.cpp" line="256"/>
         <source>Outlier removal: keep points with mean neighbour distance &lt;= mu + alpha sigma.</source>
         <translation>Ausreißerentfernung: Punkte mit mittlerem Nachbarabstand &lt;= mu + alpha sigma behalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="256"/>
+        <location filename="../app/sightline/option_texts.cpp" line="257"/>
         <source>Pairs weigh |measured displacement|^-e in the ML estimate: 1 = the map&apos;s error grows with the distance travelled, 0 = every pair equally noisy.</source>
         <translation>Paare gehen mit |gemessene Verschiebung|^-e in die ML-Schätzung ein: 1 = der Fehler der Karte wächst mit der zurückgelegten Strecke, 0 = jedes Paar gleich verrauscht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="257"/>
+        <location filename="../app/sightline/option_texts.cpp" line="258"/>
         <source>Pairs whose own ratio lies outside a factor of this from the estimate are dropped.</source>
         <translation>Paare, deren eigenes Verhältnis außerhalb eines Faktors dieses Werts von der Schätzung liegt, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="258"/>
+        <location filename="../app/sightline/option_texts.cpp" line="259"/>
         <source>Pause between attempts to reopen a lost device.</source>
         <translation>Pause zwischen Versuchen, ein verlorenes Gerät neu zu öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="259"/>
+        <location filename="../app/sightline/option_texts.cpp" line="260"/>
         <source>Per-client queue length; a slow client loses its oldest messages (counted).</source>
         <translation>Warteschlangenlänge pro Client; ein langsamer Client verliert seine ältesten Nachrichten (gezählt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="260"/>
+        <location filename="../app/sightline/option_texts.cpp" line="261"/>
         <source>Per-segment plane RANSAC inlier distance.</source>
         <translation>RANSAC-Inlier-Abstand der Ebene pro Segment.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="261"/>
+        <location filename="../app/sightline/option_texts.cpp" line="262"/>
         <source>Per-segment plane RANSAC iterations before the least-squares refit (0 = PCA only).</source>
         <translation>RANSAC-Iterationen der Ebene pro Segment vor der Neuanpassung nach kleinsten Quadraten (0 = nur PCA).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="262"/>
+        <location filename="../app/sightline/option_texts.cpp" line="263"/>
         <source>Pixel format as a FOURCC, e.g. MJPG for high resolutions over USB 2; empty keeps the camera&apos;s.</source>
         <translation>Pixelformat als FOURCC, z. B. MJPG für hohe Auflösungen über USB 2; leer behält das der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="263"/>
+        <location filename="../app/sightline/option_texts.cpp" line="264"/>
         <source>Pixels in a person box within this depth of the box&apos;s median depth are the person.</source>
         <translation>Pixel in einem Personenrahmen innerhalb dieser Tiefe um die Mediantiefe des Rahmens gehören zur Person.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="264"/>
+        <location filename="../app/sightline/option_texts.cpp" line="265"/>
         <source>Place every kept position again with the newest metric scale (kept in map units).</source>
         <translation>Jede behaltene Position mit der neuesten metrischen Skala neu platzieren (in Karteneinheiten behalten).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="265"/>
+        <location filename="../app/sightline/option_texts.cpp" line="266"/>
         <source>Plane RANSAC hypotheses of the panel normal.</source>
         <translation>RANSAC-Ebenenhypothesen der Panelnormale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="266"/>
+        <location filename="../app/sightline/option_texts.cpp" line="267"/>
         <source>Plane RANSAC hypotheses.</source>
         <translation>RANSAC-Ebenenhypothesen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="267"/>
+        <location filename="../app/sightline/option_texts.cpp" line="268"/>
         <source>Plane inlier distance.</source>
         <translation>Inlier-Abstand der Ebene.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="268"/>
+        <location filename="../app/sightline/option_texts.cpp" line="269"/>
         <source>Point-to-plane distance of an inlier while fitting the floor.</source>
         <translation>Punkt-Ebene-Abstand eines Inliers bei der Anpassung des Bodens.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="269"/>
+        <location filename="../app/sightline/option_texts.cpp" line="270"/>
         <source>Points are subsampled evenly to at most this many.</source>
         <translation>Punkte werden gleichmäßig auf höchstens so viele unterabgetastet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="270"/>
+        <location filename="../app/sightline/option_texts.cpp" line="271"/>
         <source>Points each ground hypothesis is scored on.</source>
         <translation>Punkte, an denen jede Bodenhypothese bewertet wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="271"/>
+        <location filename="../app/sightline/option_texts.cpp" line="272"/>
         <source>Points farther than this are not used for the fit.</source>
         <translation>Weiter entfernte Punkte werden für die Anpassung nicht verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="272"/>
+        <location filename="../app/sightline/option_texts.cpp" line="273"/>
         <source>Points found in fewer of the frames that should see them are culled.</source>
         <translation>Punkte, die in weniger der Bilder gefunden werden, die sie sehen sollten, werden entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="273"/>
+        <location filename="../app/sightline/option_texts.cpp" line="274"/>
         <source>Points higher than this above the floor (ceiling, lamps) are ignored.</source>
         <translation>Punkte, die höher als dies über dem Boden liegen (Decke, Lampen), werden ignoriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="274"/>
+        <location filename="../app/sightline/option_texts.cpp" line="275"/>
         <source>Points on the button&apos;s face that move the panel plane onto the face.</source>
         <translation>Punkte auf der Knopffläche, die die Panelebene auf die Fläche verschieben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="275"/>
+        <location filename="../app/sightline/option_texts.cpp" line="276"/>
         <source>Points whose neighbourhood bends more (surface variation, 0 = flat) get no normal and stay unsegmented: edges between surfaces.</source>
         <translation>Punkte, deren Nachbarschaft sich stärker krümmt (Oberflächenvariation, 0 = flach), erhalten keine Normale und bleiben unsegmentiert: Kanten zwischen Flächen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="276"/>
+        <location filename="../app/sightline/option_texts.cpp" line="277"/>
         <source>Prior standard deviation of the offset around zero; smaller trusts the calibration longer.</source>
         <translation>A-priori-Standardabweichung des Versatzes um null; kleiner vertraut der Kalibrierung länger.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="277"/>
+        <location filename="../app/sightline/option_texts.cpp" line="278"/>
         <source>Probability above which a cell is occupied (map.yaml occupied_thresh).</source>
         <translation>Wahrscheinlichkeit, über der eine Zelle belegt ist (map.yaml occupied_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="278"/>
+        <location filename="../app/sightline/option_texts.cpp" line="279"/>
         <source>Probability below which a cell is free (map.yaml free_thresh).</source>
         <translation>Wahrscheinlichkeit, unter der eine Zelle frei ist (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="279"/>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
         <source>Process every k-th frame (the seed&apos;s subsampling sweep); --subsample K.</source>
         <translation>Jedes k-te Bild verarbeiten (der Unterabtastungsdurchlauf der Vorlage); --subsample K.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Jedes stride-te gelesene Bild verarbeiten, ab dem ersten (1 = alle): eine Sequenz in Schlüsselbildrate aus einer Aufnahme mit voller Rate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="281"/>
+        <location filename="../app/sightline/option_texts.cpp" line="282"/>
         <source>Publish the targets through the arm-target server (button.arm.*); --serve HOST:PORT.</source>
         <translation>Die Ziele über den Armzielserver veröffentlichen (button.arm.*); --serve HOST:PORT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="282"/>
+        <location filename="../app/sightline/option_texts.cpp" line="283"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Pyramidenstufe, auf der Shi-Tomasi-Ecken erkannt werden (0 = volle Auflösung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Pyramidenstufe der Zeilensuche für Merkmale ohne Disparitätsschätzung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Pyramidenstufen des zweiten Tracking-Versuchs (reicht etwa 2^levels weiter).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
         <source>Pyramid levels.</source>
         <translation>Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>RANSAC-Inlier-Abstand der essenziellen Matrix und der Homographie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>RANSAC-Ebenenhypothesen (die Hälfte davon innerhalb eines Voxels gezogen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>Random generator seed.</source>
         <translation>Startwert des Zufallsgenerators.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Startwert des Zufallsgenerators; jeder Scan beginnt damit, sodass Ergebnisse reproduzierbar sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Zufalls-Startwert des Ebenen-RANSAC.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Rate, mit der eine wiedergegebene Aufzeichnung Bilder liefert; 0 folgt ihren Zeitstempeln.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Strahlwinkel, den ein erster Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Strahlwinkel, den ein neuer Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>Strahlen enden bei dieser Reichweite; 0 = am Rand des Belegungsbilds.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>Das Wiederfinden wird abgelehnt, wenn die übrigen Übereinstimmungen eine zweite Ähnlichkeitstransformation mit diesem Anteil der Inlier stützen (ein anderer Knopf eines Panels mit Wiederholungen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Jüngste Schlüsselbilder, mit denen ein neues Schlüsselbild neue Punkte trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Auch rektifizieren, wenn das Rig angibt, seine Bilder seien rektifiziert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Jede verfolgte Position gegen den Anker des Tracks verfeinern (wo er zuerst gesehen wurde), dessen Patch mit der Bewegung seither verzerrt, damit Tracks nicht von Bild zu Bild driften.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Die 3D-Punkte mit der Bewegung verfeinern (Zwei-Bild-Bündelausgleichung); entfernt die Tiefenverzerrung der Triangulation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Die Posen der letzten Bilder und die Punkte ihrer Tracks gemeinsam auf dem Stereo-Reprojektionsfehler verfeinern (Bündelausgleichung im gleitenden Fenster), damit sich Fehler einzelner Bilder nicht aufaddieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Ein verfeinerter RMS-Reprojektionsfehler über diesem Wert wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Verfeinerungsrunden: verfeinern, Inlier anhand der Reprojektionsschwelle neu wählen, verfeinern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the seed&apos;s rule (the centroid nearest the tap within max_tap_distance_px).</source>
         <translation>Region ab der Tippstelle: Umrisse in zwei Skalen plus Hough-Kreise, diejenige, die die Tippstelle am nächsten an ihrer Mitte enthält (multiscale), oder die Regel der Vorlage (der Schwerpunkt, der der Tippstelle innerhalb max_tap_distance_px am nächsten liegt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Regionenwachstum: größter RGB-N-Farbabstand zwischen Nachbarn (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Höhe des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Breite des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Tiefe im Gerät auf die Farbkamera registrieren, wenn es das unterstützt, damit sich Tiefen- und Farbpixel entsprechen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Reprojektionsfehler, den ein erster Kartenpunkt in jeder Ansicht haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Reprojektionsfehler, den ein neuer Kartenpunkt in jedem Schlüsselbild haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildrate; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildhöhe; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Gewünschte Bildbreite; 0 behält die der Kamera. V4L2 wählt den nächstliegenden Modus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Bewegung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Drehung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Reset-Regel: So viele aufeinanderfolgende Bilder, deren Wände um mehr als max_correction_deg abweichen, setzen die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuum, ab dem eine Übereinstimmung ein Ausreißer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Neu gewichtete Gauß-Newton-Iterationen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Mindestens so viele versuchte starre Stichproben, bevor der adaptive Abbruch greifen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangulation für die Rauheit in Ebenenkoordinaten: das Zellraster oder 2D-Delaunay.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>Die Rauheit verwendet die Punkte des Segments innerhalb dieser Reichweite (alle, wenn keiner darin liegt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rauheit: Punkte werden in Ebenenzellen dieser Größe gemittelt und dann trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Zeilensuche: Eine mittlere absolute Differenz über diesem Wert bedeutet keine Übereinstimmung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Mapping in einem eigenen Thread ausführen (live); aus = direkt nach jedem Schlüsselbild, deterministisch.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Seitenlänge des SAD-Fensters der Zeilensuche, auf ihrer Stufe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>SIFT contrast threshold.</source>
         <translation>SIFT-Kontrastschwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>SIFT-Kontrastschwelle; niedriger findet mehr Keypoints auf schlichten Knöpfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>SIFT-Keypoints bis zu so weit außerhalb der Region gehören zum Knopfmodell.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>SVM score a HOG window needs to count as a person.</source>
         <translation>SVM-Wert, den ein HOG-Fenster braucht, um als Person zu gelten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Scale between pyramid levels.</source>
         <translation>Skalierung zwischen Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Score drawn in the maps: the seed&apos;s Table I rule or the Gaussian process.</source>
         <translation>In den Karten gezeichnete Bewertung: die Regel aus Tabelle I der Vorlage oder der Gaußprozess.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Scored cloud written per frame.</source>
         <translation>Pro Bild geschriebene bewertete Punktwolke.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Suchfenster um die vorhergesagte Position eines Kartenpunkts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>Seed eq. 13: depth-to-colour sensor offset along x.</source>
         <translation>Vorlage Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang x.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>Seed eq. 13: depth-to-colour sensor offset along y.</source>
         <translation>Vorlage Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang y.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>Seed eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
         <translation>Vorlage Gl. 6: erwartete Inlier-Quote w; Iterationen = log(1-p) / log(1-w^3).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>Seed eq. 6: wanted probability p of drawing one all-inlier sample.</source>
         <translation>Vorlage Gl. 6: gewünschte Wahrscheinlichkeit p, eine Stichprobe nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>Serve the targets to the arm over TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 by default. The same as button.run.serve. Switching it keeps the run (map, button, STOP); switching it off sends the arm a stop line.</source>
         <translation>Die Ziele per TCP an den Arm liefern (button.arm.bind_address, port, token); standardmäßig 127.0.0.1:5757. Dasselbe wie button.run.serve. Das Umschalten behält den Lauf (Karte, Knopf, STOPP); das Ausschalten sendet dem Arm eine Stoppzeile.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Shi-Tomasi gradient window.</source>
         <translation>Shi-Tomasi-Gradientenfenster.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
         <source>Shi-Tomasi: smallest minimum eigenvalue of a corner (cv::cornerMinEigenVal units).</source>
         <translation>Shi-Tomasi: kleinster minimaler Eigenwert einer Ecke (Einheiten von cv::cornerMinEigenVal).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Shorter lines are dropped.</source>
         <translation>Kürzere Linien werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Side of the aligned patch (odd).</source>
         <translation>Seitenlänge des ausgerichteten Patches (ungerade).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="353"/>
         <source>Side of the detection grid&apos;s buckets; each holds at most its share of max_features.</source>
         <translation>Seitenlänge der Zellen (Buckets) des Erkennungsrasters; jede hält höchstens ihr Kontingent an max_features.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="354"/>
         <source>Similarity RANSAC inlier distance.</source>
         <translation>Inlier-Abstand der RANSAC-Ähnlichkeitstransformation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="355"/>
         <source>Size change since the last refresh that triggers the next.</source>
         <translation>Größenänderung seit der letzten Erneuerung, die die nächste auslöst.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="356"/>
         <source>Smaller estimates are not applied: within the spread the estimate shows on a rig without offset (the simulator: +-0.03 px).</source>
         <translation>Kleinere Schätzungen werden nicht angewandt: Sie liegen innerhalb der Streuung, die die Schätzung auf einem Rig ohne Versatz zeigt (der Simulator: +-0.03 px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
+        <location filename="../app/sightline/option_texts.cpp" line="357"/>
         <source>Smaller regions stay unsegmented and unscored.</source>
         <translation>Kleinere Regionen bleiben unsegmentiert und unbewertet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="358"/>
         <source>Smallest 1-sigma stated for one frame&apos;s normal (the map points&apos; errors are correlated, so the fit&apos;s own figure is optimistic).</source>
         <translation>Kleinstes für die Normale eines Bildes angegebenes 1-Sigma (die Fehler der Kartenpunkte sind korreliert, daher ist der eigene Wert der Anpassung zu optimistisch).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="359"/>
         <source>Smallest Hough circle radius.</source>
         <translation>Kleinster Radius der Hough-Kreise.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
+        <location filename="../app/sightline/option_texts.cpp" line="360"/>
         <source>Smallest approach_sigma_deg a target states: the average of frames that share one map does not beat the map&apos;s own bias (on the simulated approach with the SLAM&apos;s map, up to 4.3 deg against per-frame fits of 0.5 deg).</source>
         <translation>Kleinstes approach_sigma_deg, das ein Ziel angibt: Das Mittel von Bildern, die sich eine Karte teilen, ist nicht besser als die eigene Verzerrung der Karte (bei der simulierten Anfahrt mit der Karte des SLAM bis zu 4.3 deg gegenüber Anpassungen einzelner Bilder von 0.5 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <location filename="../app/sightline/option_texts.cpp" line="361"/>
         <source>Smallest button region.</source>
         <translation>Kleinste Knopfregion.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
+        <location filename="../app/sightline/option_texts.cpp" line="362"/>
         <source>Split a piece while a point lies farther than this from its chord; merge pieces that fit one line within it (cells, like RANSAC&apos;s err_max).</source>
         <translation>Ein Stück teilen, solange ein Punkt weiter als dies von seiner Sehne entfernt liegt; Stücke zusammenführen, die innerhalb dieses Werts auf eine Linie passen (Zellen, wie err_max von RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
+        <location filename="../app/sightline/option_texts.cpp" line="363"/>
         <source>Start a new map when the reset rule fires (seed); off keeps stitching.</source>
         <translation>Eine neue Karte beginnen, wenn die Reset-Regel greift (Vorlage); aus setzt das Zusammenfügen fort.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="353"/>
+        <location filename="../app/sightline/option_texts.cpp" line="364"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Am Ende von vorn beginnen (die Zeitstempel steigen weiter), statt den Stream zu beenden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="354"/>
+        <location filename="../app/sightline/option_texts.cpp" line="365"/>
         <source>Step B2: ... and at most this far apart (no lines across the room).</source>
         <translation>Schritt B2: ... und höchstens so weit auseinander (keine Linien quer durch den Raum).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="355"/>
+        <location filename="../app/sightline/option_texts.cpp" line="366"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Schritt B2: Die beiden gezogenen Punkte müssen mindestens so weit auseinanderliegen (keine kurzen Linien).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="356"/>
+        <location filename="../app/sightline/option_texts.cpp" line="367"/>
         <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = seed: no cut).</source>
         <translation>Schritt B6: die Konsensmenge an Lücken entlang der Linie, die breiter als dies sind, schneiden und das längste Stück behalten, damit Linien zusammenhängende Wände sind (0 = Vorlage: kein Schnitt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="357"/>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
         <source>Step B7: keep the hypothesis with the lowest summed error (seed) or mean error.</source>
         <translation>Schritt B7: die Hypothese mit dem kleinsten summierten Fehler (Vorlage) oder mittleren Fehler behalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="358"/>
+        <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = seed: the line of step B6 as is).</source>
         <translation>Schritt C: die dominante Fläche der gewählten Linie neu finden, indem ihre Richtung so weit in beide Richtungen geschwenkt wird, dann darauf neu anpassen (0 = Vorlage: die Linie aus Schritt B6 unverändert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="359"/>
+        <location filename="../app/sightline/option_texts.cpp" line="370"/>
         <source>Stereo calibration (OpenCV stereo YAML as `sightline-cli calibrate stereo` writes) used instead of the source&apos;s; needed for live pairs (aravis://L,R) opened without one.</source>
         <translation>Stereokalibrierung (OpenCV-Stereo-YAML, wie `sightline-cli calibrate stereo` sie schreibt), die statt der der Quelle verwendet wird; nötig für Live-Paare (aravis://L,R), die ohne eine geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="360"/>
+        <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Stereo calibration of the pair (OpenCV stereo YAML: M1 D1 M2 D2 R T, image_width/height, as `sightline-cli calibrate stereo` writes); the stereo odometry needs it. Also as aravis://LEFT,RIGHT?calibration_file=FILE.</source>
         <translation>Stereokalibrierung des Paars (OpenCV-Stereo-YAML: M1 D1 M2 D2 R T, image_width/height, wie `sightline-cli calibrate stereo` sie schreibt); die Stereo-Odometrie braucht sie. Auch als aravis://LEFT,RIGHT?calibration_file=FILE.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="361"/>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
         <source>Stop when the update is smaller (radians or metres).</source>
         <translation>Aufhören, wenn die Aktualisierung kleiner ist (Radiant oder Meter).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="362"/>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
         <source>Stream colour.</source>
         <translation>Farbe streamen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="363"/>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
         <source>Stream depth.</source>
         <translation>Tiefe streamen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="364"/>
+        <location filename="../app/sightline/option_texts.cpp" line="375"/>
         <source>Stream height for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Streamhöhe für Tiefe und Farbe; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="365"/>
+        <location filename="../app/sightline/option_texts.cpp" line="376"/>
         <source>Stream rate; 0 keeps the device&apos;s default mode.</source>
         <translation>Streamrate; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="366"/>
+        <location filename="../app/sightline/option_texts.cpp" line="377"/>
         <source>Stream width for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Streambreite für Tiefe und Farbe; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="367"/>
+        <location filename="../app/sightline/option_texts.cpp" line="378"/>
         <source>TCP port of the target server; 0 = any free port.</source>
         <translation>TCP-Port des Zielservers; 0 = ein beliebiger freier Port.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <location filename="../app/sightline/option_texts.cpp" line="379"/>
         <source>Take the camera&apos;s offset ahead of the odometry base from the recording&apos;s scene.yaml (simulator) when present.</source>
         <translation>Den Versatz der Kamera vor der Odometriebasis aus der scene.yaml der Aufzeichnung (Simulator) übernehmen, wenn vorhanden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="369"/>
+        <location filename="../app/sightline/option_texts.cpp" line="380"/>
         <source>The SIFT margin grows to this many region radii when that is larger.</source>
         <translation>Der SIFT-Rand wächst auf so viele Regionsradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="370"/>
+        <location filename="../app/sightline/option_texts.cpp" line="381"/>
         <source>The approach direction is the normal of a plane through the map points within this distance of the located button (the panel around it).</source>
         <translation>Die Anfahrrichtung ist die Normale einer Ebene durch die Kartenpunkte innerhalb dieses Abstands vom gefundenen Knopf (das Panel um ihn herum).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="371"/>
+        <location filename="../app/sightline/option_texts.cpp" line="382"/>
         <source>The arm&apos;s and the SLAM&apos;s displacement directions disagree by more than this (online hand-eye check; a wrong mount rotation): no target.</source>
         <translation>Die Verschiebungsrichtungen von Arm und SLAM weichen um mehr als dies voneinander ab (Online-Hand-Auge-Prüfung; eine falsche Montagerotation): kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <location filename="../app/sightline/option_texts.cpp" line="383"/>
         <source>The arm&apos;s clock minus the camera&apos;s (configured; arm stamp = frame stamp + this).</source>
         <translation>Die Uhr des Arms minus die der Kamera (konfiguriert; Armzeitstempel = Bildzeitstempel + dieser Wert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <location filename="../app/sightline/option_texts.cpp" line="384"/>
         <source>The colour image is downscaled to at most this width before detection.</source>
         <translation>Das Farbbild wird vor der Erkennung auf höchstens diese Breite verkleinert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <location filename="../app/sightline/option_texts.cpp" line="385"/>
         <source>The current frame becomes the keyframe when fewer keyframe tracks agree with the motion.</source>
         <translation>Das aktuelle Bild wird zum Schlüsselbild, wenn weniger Tracks des Schlüsselbilds mit der Bewegung übereinstimmen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="375"/>
+        <location filename="../app/sightline/option_texts.cpp" line="386"/>
         <source>The current frame becomes the keyframe when fewer of the keyframe&apos;s tracks survive.</source>
         <translation>Das aktuelle Bild wird zum Schlüsselbild, wenn weniger Tracks des Schlüsselbilds überleben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="376"/>
+        <location filename="../app/sightline/option_texts.cpp" line="387"/>
         <source>The depth colour map spans zero to this range.</source>
         <translation>Die Tiefen-Farbskala reicht von null bis zu diesem Wert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="377"/>
+        <location filename="../app/sightline/option_texts.cpp" line="388"/>
         <source>The estimated offset is clamped to +- this.</source>
         <translation>Der geschätzte Versatz wird auf +- diesen Wert begrenzt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="378"/>
+        <location filename="../app/sightline/option_texts.cpp" line="389"/>
         <source>The floor is the lowest plane: at most this fraction of points may lie clearly below it (rejects table tops).</source>
         <translation>Der Boden ist die niedrigste Ebene: Höchstens dieser Anteil der Punkte darf deutlich darunter liegen (verwirft Tischplatten).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="379"/>
+        <location filename="../app/sightline/option_texts.cpp" line="390"/>
         <source>The floor must hold at least this fraction of the valid points.</source>
         <translation>Der Boden muss mindestens diesen Anteil der gültigen Punkte enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="380"/>
+        <location filename="../app/sightline/option_texts.cpp" line="391"/>
         <source>The gate grows to this many predicted button radii when that is larger.</source>
         <translation>Das Gate wächst auf so viele vorhergesagte Knopfradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="381"/>
+        <location filename="../app/sightline/option_texts.cpp" line="392"/>
         <source>The gate widens by this per metre driven since the last correction (expected heading drift of the pose source).</source>
         <translation>Das Gate weitet sich um diesen Wert pro seit der letzten Korrektur gefahrenem Meter (erwartete Richtungsdrift der Posenquelle).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="382"/>
+        <location filename="../app/sightline/option_texts.cpp" line="393"/>
         <source>The homography is chosen when its share of the inliers exceeds this.</source>
         <translation>Die Homographie wird gewählt, wenn ihr Anteil an den Inliern diesen Wert übersteigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="383"/>
+        <location filename="../app/sightline/option_texts.cpp" line="394"/>
         <source>The map grows by at least this much each time it must.</source>
         <translation>Die Karte wächst jedes Mal, wenn sie muss, um mindestens so viel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="384"/>
+        <location filename="../app/sightline/option_texts.cpp" line="395"/>
         <source>The maximum-likelihood estimate is reported from this many pairs on.</source>
         <translation>Die Maximum-Likelihood-Schätzung wird ab so vielen Paaren gemeldet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="385"/>
+        <location filename="../app/sightline/option_texts.cpp" line="396"/>
         <source>The metric scale counts as converged with this many displacement pairs in the ML estimate at least ...</source>
         <translation>Die metrische Skala gilt als konvergiert mit mindestens so vielen Verschiebungspaaren in der ML-Schätzung ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="386"/>
+        <location filename="../app/sightline/option_texts.cpp" line="397"/>
         <source>The model never grows beyond this many keypoints.</source>
         <translation>Das Modell wächst nie über so viele Keypoints hinaus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="387"/>
+        <location filename="../app/sightline/option_texts.cpp" line="398"/>
         <source>The offset is measured between an anchor frame and the first later frame whose translation from it reaches this fraction of the common tracks&apos; median depth: with less parallax, tracking errors dominate the measurement.</source>
         <translation>Der Versatz wird zwischen einem Ankerbild und dem ersten späteren Bild gemessen, dessen Translation davon diesen Anteil der Mediantiefe der gemeinsamen Tracks erreicht: Bei weniger Parallaxe dominieren Tracking-Fehler die Messung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="388"/>
+        <location filename="../app/sightline/option_texts.cpp" line="399"/>
         <source>The online hand-eye check compares keyframes at least this far apart (measured): the directions of shorter displacements drown in the noise.</source>
         <translation>Die Online-Hand-Auge-Prüfung vergleicht Schlüsselbilder, die mindestens so weit auseinanderliegen (gemessen): Die Richtungen kürzerer Verschiebungen gehen im Rauschen unter.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="389"/>
+        <location filename="../app/sightline/option_texts.cpp" line="400"/>
         <source>The online hand-eye check sees the mount&apos;s translation only when the arm rotates at least this much between two keyframes.</source>
         <translation>Die Online-Hand-Auge-Prüfung sieht die Translation der Montage nur, wenn sich der Arm zwischen zwei Schlüsselbildern mindestens so weit dreht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="390"/>
+        <location filename="../app/sightline/option_texts.cpp" line="401"/>
         <source>The operator&apos;s tap is refused when the frame it was made on is older than this (data time) by the time the pipeline takes it.</source>
         <translation>Das Antippen des Bedieners wird abgelehnt, wenn das Bild, auf dem es erfolgte, älter als dies ist (Datenzeit), sobald die Pipeline es übernimmt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="391"/>
+        <location filename="../app/sightline/option_texts.cpp" line="402"/>
         <source>The operator&apos;s tap: X,Y in pixels, optionally @FRAME (frame index, default 0); confirmed at once. sightline-cli run button --tap X,Y[@FRAME] sets it.</source>
         <translation>Das Antippen des Bedieners: X,Y in Pixeln, optional @FRAME (Bildindex, Standard 0); sofort bestätigt. sightline-cli run button --tap X,Y[@FRAME] setzt es.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="392"/>
+        <location filename="../app/sightline/option_texts.cpp" line="403"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>Die Größe allein aus den eigenen Schlüsselpunkten des Tippens (nicht den aufgefrischten, deren Maßstab driftet; das Looming in button.triangulate.*) braucht so viele konsistente Zuordnungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="393"/>
+        <location filename="../app/sightline/option_texts.cpp" line="404"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>Die Größe nur aus den eigenen Schlüsselpunkten des Tippens (ButtonTrack::anchor_scale: die vom Auffrischen des Trackers hinzugefügten Schlüsselpunkte tragen den Maßstabsfehler jedes Auffrischens weiter); false: der verfolgte Radius.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="394"/>
+        <location filename="../app/sightline/option_texts.cpp" line="405"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>Das Ziel ist der achsweise Median so vieler jüngster Positionen im Basissystem (verlässliche Ebene, konvergierte Skala); 0 = jede seit dem Antippen, 1 = keine Fusion.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="395"/>
+        <location filename="../app/sightline/option_texts.cpp" line="406"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>Das Tracking-Gate überschreitet nie diesen Wert: Größere Korrekturen werden nicht angewandt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="396"/>
+        <location filename="../app/sightline/option_texts.cpp" line="407"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>Das Fenster wächst auf so viele vorhergesagte Knopfradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="397"/>
+        <location filename="../app/sightline/option_texts.cpp" line="408"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Toleranz von accuracy.map_iou: Eine Kartenzelle innerhalb so vieler Zellen einer wahren Wand zählt als darauf liegend.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="398"/>
+        <location filename="../app/sightline/option_texts.cpp" line="409"/>
         <source>Top-view grid cell.</source>
         <translation>Rasterzelle der Draufsicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="399"/>
+        <location filename="../app/sightline/option_texts.cpp" line="410"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Auf dem Overlay hinter dem Knopf gezeichnete Trackpunkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="400"/>
+        <location filename="../app/sightline/option_texts.cpp" line="411"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Tracking-Gate direkt nach einer Korrektur: Linien, die weiter als dies von der erwarteten Richtung abweichen, stimmen weder ab noch korrigieren sie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="401"/>
+        <location filename="../app/sightline/option_texts.cpp" line="412"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>Das Tracking ist verloren, wenn weniger als dieser Anteil der im Bild vorhergesagten Kartenpunkte gefunden wird (der Test von PTAM gegen eine falsche Pose nach einem Sprung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="402"/>
+        <location filename="../app/sightline/option_texts.cpp" line="413"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern gut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="403"/>
+        <location filename="../app/sightline/option_texts.cpp" line="414"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern schlecht; weniger gilt als verloren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="404"/>
+        <location filename="../app/sightline/option_texts.cpp" line="415"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Triangulierte Punkte, die zum Akzeptieren der Initialisierung nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="405"/>
+        <location filename="../app/sightline/option_texts.cpp" line="416"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: Änderung eines paarweisen Abstands, die eine starre Stichprobe zeigen darf, bevor die Tiefenunsicherheit addiert wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="406"/>
+        <location filename="../app/sightline/option_texts.cpp" line="417"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: Starrheitsablehnungen, nach denen RANSAC scheitert (die letzte Bewegung bleibt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="407"/>
+        <location filename="../app/sightline/option_texts.cpp" line="418"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: Reprojektionsfehler (RMS beider Bilder) eines Inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="408"/>
+        <location filename="../app/sightline/option_texts.cpp" line="419"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: das Ziehen beenden, sobald dieser Anteil der Punkte Inlier ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="409"/>
+        <location filename="../app/sightline/option_texts.cpp" line="420"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: versuchte starre Stichproben, bevor die beste Inlier-Menge übernommen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="410"/>
+        <location filename="../app/sightline/option_texts.cpp" line="421"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Gesuchte nach oben gerichtete Ebenen; die niedrigste große ist der Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="411"/>
+        <location filename="../app/sightline/option_texts.cpp" line="422"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Obere Begrenzung der Log-Odds einer Zelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="412"/>
+        <location filename="../app/sightline/option_texts.cpp" line="423"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Jedes n-te Tiefenpixel für die 3D-Wolke verwenden; 1 zeigt alle (langsamer).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="413"/>
+        <location filename="../app/sightline/option_texts.cpp" line="424"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Neben den Strahlen die scheinbare Größe nutzen (Looming: der Radius wächst mit 1 / Tiefe, während der Arm um eine gemessene Strecke vorfährt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="414"/>
+        <location filename="../app/sightline/option_texts.cpp" line="425"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Sehstrahl paralleler zur Ebene als dieses |cos|: keine Position.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="415"/>
+        <location filename="../app/sightline/option_texts.cpp" line="426"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Abstimmende Linien innerhalb dieses Werts um ihren längengewichteten Median werden gemittelt; andere (eine mit einer Türnische verschmolzene Wand, eine Kiste) werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="416"/>
+        <location filename="../app/sightline/option_texts.cpp" line="427"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Abstimmende Wandlänge, die ein Bild braucht, bevor es die Referenzrichtung setzen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="417"/>
+        <location filename="../app/sightline/option_texts.cpp" line="428"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Voxelgröße für lokal gezogene Hypothesen (findet einen Boden, der wenig vom Bild bedeckt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="418"/>
+        <location filename="../app/sightline/option_texts.cpp" line="429"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Wandlinien, die kürzer als dies sind, stimmen nicht über die Richtung ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="419"/>
+        <location filename="../app/sightline/option_texts.cpp" line="430"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Wandlinien mit weniger Scanpunkten stimmen nicht ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="420"/>
+        <location filename="../app/sightline/option_texts.cpp" line="431"/>
         <source>Wall-line extractor: the seed&apos;s multi-line RANSAC or split-and-merge.</source>
         <translation>Wandlinien-Extraktor: das Mehrlinien-RANSAC der Vorlage oder Split-and-Merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="421"/>
+        <location filename="../app/sightline/option_texts.cpp" line="432"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Geringere Tracking-Sicherheit: kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="422"/>
+        <location filename="../app/sightline/option_texts.cpp" line="433"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Jede Position mit 1 / ihrer eigenen Varianz gewichten (Ebenenanpassung und verfolgte Mitte, mit dem Abstand wachsend): Die nahen Bilder der Anfahrt zählen am meisten. Standardmäßig aus: bei den simulierten Anfahrten schlechter gemessen (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="423"/>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt, wie es die Zwei-Bild-Verfeinerung tut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="424"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="425"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Gewicht der Streuung der fusionierten Positionen (1.4826 x mittlere absolute Abweichung vom fusionierten Ziel) in der angegebenen Unsicherheit.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="426"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Was eine verworfene Bewegung ersetzt: die letzte akzeptierte oder keine.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="427"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Wenn weniger Tracks überleben als dieser Anteil des im vorigen Bild überlebenden Anteils (schlechte Bewegungsvorhersage), werden die verlorenen mit retrack_pyramid_levels erneut verfolgt; 0 = nie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="428"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Wenn gesetzt, muss ein Client {&quot;token&quot;: &quot;...&quot;} senden, bevor er etwas erhält; erforderlich, wenn bind_address keine Loopback-Adresse ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="429"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, OpenCV&apos;s HOG detector, auto (ground truth when present, else HOG) or none.</source>
         <translation>Woher Personenrahmen stammen: Ground Truth des Datensatzes, der HOG-Detektor von OpenCV, auto (Ground Truth, wenn vorhanden, sonst HOG) oder none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="430"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>Width of the occupancy image (seed: 400); the robot sits at its bottom centre.</source>
         <translation>Breite des Belegungsbilds (Vorlage: 400); der Roboter sitzt unten in der Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="431"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Fenster des zweiten Durchgangs, nach einer ersten Pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="432"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Fenster, das verwendet wird, wenn die erste Suche zu wenige Punkte findet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Mit einem Token: Eine Verbindung, die es nach dieser Zeit nicht vorgelegt hat, wird geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Bei weniger als min_matches, aber mindestens so vielen Zuordnungen leitet eine daraus geschätzte Essentielle Matrix eine zweite Zuordnung entlang der Epipolarlinien (große Bewegung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Mit png: auch overlay.avi (Motion-JPEG über den eingebauten Writer von OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Mit serve: das Warten auf Clients nach dieser Zeit aufgeben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Mit serve: nach dem letzten Bild noch so lange weiter bereitstellen, damit wartende Ziele hinausgehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Mit serve: vor dem ersten Bild auf so viele verbundene Clients warten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Ohne Referenz: Linien innerhalb dieses Werts um die am besten gestützte Richtung (modulo 90 deg) stimmen ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>Workspace box, base x max.</source>
         <translation>Arbeitsraumquader, Basis x max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>Workspace box, base x min.</source>
         <translation>Arbeitsraumquader, Basis x min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>Workspace box, base y max.</source>
         <translation>Arbeitsraumquader, Basis y max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>Workspace box, base y min.</source>
         <translation>Arbeitsraumquader, Basis y min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>Workspace box, base z max.</source>
         <translation>Arbeitsraumquader, Basis z max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Workspace box, base z min.</source>
         <translation>Arbeitsraumquader, Basis z min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Die Projektions- und Draufsicht-PNGs pro Bild schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: Eine wahre Wand ist in einem Bild sichtbar, wenn mindestens so viel von ihr im Blickfeld liegt ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>arm_pose-Nachrichten, die in der Zeit des Arms näher als 1/dieser Wert beieinanderliegen, werden verworfen (gezählt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>arm_pose-Nachrichten, die weiter als dies hinter der neuesten liegen, werden vergessen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); leer = neben dem Sensorordner.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Plattform custom: Ein Segment, das mehr als dies über den Boden erhöht ist, erhält den Wert 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Plattform custom: Weiter vom Sensor entfernte Punkte werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: Dreiecke mit einer Kante, die länger als so viele Zellen ist, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: Paare nach Kamerazeitstempeln bilden (Kameras mit gemeinsamer Uhr, z. B. PTP oder gemeinsamer Trigger); host: Paare nach Ankunftszeit am Host bilden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (seed 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (Vorlage 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>err_max: inlier distance in occupancy cells (seed: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: Inlier-Abstand in Belegungszellen (Vorlage: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: Die Kamera läuft mit eigenem Takt; software: Der Host triggert jedes Bild (beide Kameras eines Paars gemeinsam); hardware: ein externer Impuls auf trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: jedes n-te Pixel in beiden Richtungen (anstelle des Voxelgitters).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: Rasternachbarn, deren Tiefen sich um mehr als diesen Anteil unterscheiden, sind getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>grid: half-width of the integral-image normal window.</source>
         <translation>grid: halbe Breite des Normalenfensters im Integralbild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>grid: organized pixel-grid path (fast); pcl: the seed&apos;s voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Vorlage mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); leer = neben arm_poses (für arm_stream: neben den Bildern); none = Identität.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (Schritt E): höchstens so viele Linien.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>j_max: hypotheses per line (seed: 250); also caps the adaptive count.</source>
         <translation>j_max: Hypothesen pro Linie (Vorlage: 250); begrenzt auch die adaptive Anzahl.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: Hough-Kreise hinzufügen (runde Knöpfe, dünne Ringe).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: Unschärfe der zweiten Skala, mal blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: halbe Größe des Fensters um die Tippstelle, das durchsucht wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: längste durch kürzeste Seite des gedrehten Rahmens einer Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: Regionen werden nach (Versatz + Bias) / Radius gereiht, sodass der Umriss des Knopfs gegen ein Symbol darauf gewinnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: Der Schwerpunkt der Region liegt höchstens so viele Radien von der Tippstelle entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: Die beiden Canny-Paare sind die Schwellen mal 2/(1+s) und 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p der adaptiven Anzahl: Wahrscheinlichkeit, ein Paar nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: Nachbarradius des Regionenwachstums.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: Nachbarn der Normalenanpassung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: Nachbarn der Ausreißerentfernung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: Blattgröße des Voxelgitters.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (Schritt B8): Eine Hypothese mit mehr Inliern als diesem Anteil beendet die Suche.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (Schritte B5, B6): Eine Linie braucht diesen Anteil der verbleibenden Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (Schritt E): aufhören, sobald dieser Anteil der Punkte auf Linien liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Vorlage); custom: range_cut_m und max_step_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="198"/>
         <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
         <translation>Art der aus einer ROS-Bag gelesenen Bilder; auto wählt RGB-D, dann Stereo, dann Mono, dann Punktwolken, je nachdem, was die Topics der Bag erlauben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>ROS-Bag: Die Referenz ist die Pose von tf_child_frame in diesem tf-Frame; leer nimmt die einzige Transformationskette der Bag auf /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>ROS-Bag: größter Zeitstempelabstand eines Farb-/Tiefen- oder Links-/Rechts-Paars; Bilder ohne Partner werden übersprungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>ROS-Bag: das CameraInfo-Topic des Bild-Topics; leer sucht neben dem Bild-Topic und nimmt dann das einzige CameraInfo-Topic der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>ROS-Bag: das PointCloud2-Topic, das als Punktwolken gelesen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>ROS-Bag: der tf-Frame der Kamera, dessen Pose in tf_parent_frame die Referenz ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Farb-, linke oder Mono-Bild-Topic (Image oder CompressedImage); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Tiefenbild-Topic (16UC1 Millimeter oder 32FC1 Meter); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>ROS-Bag: das nav_msgs/Odometry-Topic; leer nimmt das einzige der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>ROS-Bag: das CameraInfo-Topic der rechten Kamera; seine Projektionsmatrix P ergibt die Stereobasis.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>ROS-Bag: das rechte Bild-Topic eines Stereopaars; leer wählt das Topic, dessen Name right sagt, neben einem, dessen Name left sagt.</translation>
     </message>
@@ -3845,37 +4004,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Alle zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="168"/>
+        <location filename="../widgets/parameter_panel.cpp" line="173"/>
         <source>All options reset to their defaults.</source>
         <translation>Alle Optionen auf ihre Standardwerte zurückgesetzt.</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="179"/>
+        <location filename="../widgets/parameter_panel.cpp" line="184"/>
         <source>Loaded profile %1</source>
         <translation>Profil %1 geladen</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="190"/>
+        <location filename="../widgets/parameter_panel.cpp" line="195"/>
         <source>Saved profile %1</source>
         <translation>Profil %1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>Load profile</source>
         <translation>Profil laden</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="197"/>
+        <location filename="../widgets/parameter_panel.cpp" line="202"/>
         <source>YAML profiles (*.yaml *.yml);;All files (*)</source>
         <translation>YAML-Profile (*.yaml *.yml);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="204"/>
+        <location filename="../widgets/parameter_panel.cpp" line="209"/>
         <source>Save profile</source>
         <translation>Profil speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/parameter_panel.cpp" line="205"/>
+        <location filename="../widgets/parameter_panel.cpp" line="210"/>
         <source>YAML profiles (*.yaml *.yml)</source>
         <translation>YAML-Profile (*.yaml *.yml)</translation>
     </message>
@@ -3883,34 +4042,39 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::PlaybackBar</name>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="35"/>
+        <location filename="../widgets/playback_bar.cpp" line="37"/>
         <source>Step one frame</source>
         <translation>Ein Bild weiter</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="54"/>
+        <location filename="../widgets/playback_bar.cpp" line="57"/>
         <source>Playback speed relative to the recording&apos;s timestamps</source>
         <translation>Wiedergabegeschwindigkeit relativ zu den Zeitstempeln der Aufnahme</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="58"/>
+        <location filename="../widgets/playback_bar.cpp" line="61"/>
         <source>max</source>
         <translation>max</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="64"/>
+        <location filename="../widgets/playback_bar.cpp" line="67"/>
         <source>Loop</source>
         <translation>Schleife</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../widgets/playback_bar.cpp" line="111"/>
+        <location filename="../widgets/playback_bar.cpp" line="121"/>
         <source>Play</source>
         <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/playback_bar.cpp" line="155"/>
+        <source>frame %1</source>
+        <translation>Bild %1</translation>
     </message>
 </context>
 <context>
@@ -4035,12 +4199,12 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Statistik im Zeitverlauf</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="202"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="210"/>
         <source>tracked %1, new %2, stereo %3, inliers %4, RANSAC %5 it., residual %6 %7, %8 %9%10</source>
         <translation>verfolgt %1, neu %2, Stereo %3, Inlier %4, RANSAC %5 It., Residuum %6 %7, %8 %9%10</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="220"/>
         <source>, GATED: pose held</source>
         <translation>, GESPERRT: Pose gehalten</translation>
     </message>
@@ -4115,7 +4279,37 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>gesamt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="221"/>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="175"/>
+        <source>estimate and camera</source>
+        <translation>Schätzung und Kamera</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="176"/>
+        <source>ground truth</source>
+        <translation>Ground Truth</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="185"/>
+        <source>inlier track</source>
+        <translation>Spur, Inlier</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="186"/>
+        <source>outlier track</source>
+        <translation>Spur, Ausreißer</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="187"/>
+        <source>new feature</source>
+        <translation>neues Merkmal</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="199"/>
+        <source>stereo match</source>
+        <translation>Stereo-Zuordnung</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/stereo_vo_presenter.cpp" line="229"/>
         <source>residual</source>
         <translation>Residuum</translation>
     </message>
