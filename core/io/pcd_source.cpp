@@ -6,6 +6,7 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -103,6 +104,83 @@ Status CheckFieldTypes(const std::vector<std::string>& names, const std::vector<
   return Status::Ok();
 }
 
+// PCL 1.13's PCDReader takes a header line by the prefix of its first word ("WIDTHX" is a
+// WIDTH line), stops the header at the first word it does not know, sizes its buffer at POINTS
+// with the point size known then (a later SIZE or COUNT line makes the ASCII reader write past
+// it), and goes on reading header lines after DATA. The header must therefore be one
+// unambiguous list: known keys, each once, in plain text, the field layout before POINTS, and
+// no header line where the data begins.
+constexpr const char* kPcdKeys[] = {"VERSION", "FIELDS", "COLUMNS",   "SIZE",   "TYPE", "COUNT",
+                                    "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+
+// The header key PCL takes `word` for (by prefix), or "" for none.
+std::string PclKeyOf(const std::string& word) {
+  for (const char* key : kPcdKeys) {
+    if (word.rfind(key, 0) == 0) return key;
+  }
+  return "";
+}
+
+// Printable ASCII, tabs and carriage returns only (PCL and this check split words alike).
+bool IsPlainHeaderText(const std::string& line) {
+  for (const unsigned char c : line) {
+    if (c != '\t' && c != '\r' && (c < 0x20 || c >= 0x7f)) return false;
+  }
+  return true;
+}
+
+// One header line before DATA: ParseError naming the line for what PCL would read otherwise.
+Status CheckHeaderKey(const std::string& line, const std::string& key, int line_number,
+                      const std::set<std::string>& seen, const std::string& path) {
+  const std::string where = path + ": PCD header line " + std::to_string(line_number) + ": ";
+  if (!IsPlainHeaderText(line)) return ParseError(where + "holds control or non-ASCII bytes");
+  if (key.empty()) return ParseError(where + "is blank but not empty (ends the header early)");
+  const std::string pcl_key = PclKeyOf(key);
+  if (pcl_key.empty()) return ParseError(where + "unknown key '" + key + "'");
+  if (pcl_key != key) {
+    return ParseError(where + "'" + key + "' is not a header key (PCL would take it for " +
+                      pcl_key + ")");
+  }
+  if (key == "COLUMNS") return ParseError(where + "COLUMNS (PCD 0.5) is not read; use FIELDS");
+  if (seen.count(key)) return ParseError(where + "repeats the " + key + " line");
+  const bool layout = key == "FIELDS" || key == "SIZE" || key == "TYPE" || key == "COUNT";
+  if (layout && seen.count("POINTS")) {
+    return ParseError(where + key + " must come before POINTS (the point size is fixed there)");
+  }
+  return Status::Ok();
+}
+
+// The lines PCL still reads as header after DATA: empty lines are skipped, a '#' line is skipped
+// by the header but read as a point by the ASCII body, and a line whose first word starts like a
+// key would be taken as one. Reads at most 64 KiB.
+Status CheckDataStart(std::ifstream& in, const std::string& path) {
+  std::string chunk(64 * 1024, '\0');
+  in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+  chunk.resize(static_cast<size_t>(in.gcount()));
+  size_t begin = 0;
+  while (begin < chunk.size()) {
+    const size_t end = std::min(chunk.find('\n', begin), chunk.size());
+    const std::string line = chunk.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty()) continue;
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (!first.empty() && first[0] == '#') {
+      // PCL's header skips it, but its ASCII body reads it as a malformed point.
+      return ParseError(path + ": PCD data begins with a '#' line, which PCL would read as a " +
+                        "malformed point");
+    }
+    if (!PclKeyOf(first).empty()) {
+      return ParseError(path + ": PCD data begins with a header line ('" + first.substr(0, 16) +
+                        "'), which PCL would read as part of the header");
+    }
+    return Status::Ok();
+  }
+  return in.eof() ? Status::Ok()
+                  : ParseError(path + ": PCD data begins with over 64 KiB of empty lines");
+}
+
 // PCL 1.13's PCDReader crashes on some garbage files (no FIELDS, no DATA line) and allocates
 // what a header declares before checking it, so the header is read and bounded here first.
 Status CheckHeaderText(const std::string& path) {
@@ -115,10 +193,12 @@ Status CheckHeaderText(const std::string& path) {
   std::string line;
   for (int n = 0; n < 64 && std::getline(in, line, '\n'); ++n) {
     if (line.size() > 4096) break;  // Binary junk, not a header line.
+    if (line.empty()) continue;
     std::istringstream words(line);
     std::string key;
     words >> key;
-    if (key.empty() || key[0] == '#') continue;
+    if (!key.empty() && key[0] == '#') continue;
+    SIGHTLINE_RETURN_IF_ERROR(CheckHeaderKey(line, key, n + 1, seen, path));
     seen.insert(key);
     if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS" || key == "SIZE" || key == "COUNT") {
       StatusOr<std::vector<double>> values = HeaderCounts(words, key, path);
@@ -155,6 +235,7 @@ Status CheckHeaderText(const std::string& path) {
     for (size_t i = 0; i < sizes.size(); ++i)
       h.point_bytes += sizes[i] * (counts.empty() ? 1 : counts[i]);
     h.data_end = in.tellg();
+    SIGHTLINE_RETURN_IF_ERROR(CheckDataStart(in, path));
     return CheckDeclaredSize(h, path);
   }
   return ParseError(path +

@@ -275,5 +275,44 @@ TEST_F(HostilePcd, InconsistentFieldsAreRefused) {
   ExpectRefused(dir_ + "/double.pcd", "4-byte float");
 }
 
+// PCL reads a header line by the prefix of its first word, sizes its buffer at POINTS, and goes
+// on reading header lines after DATA: a layout line after POINTS made its ASCII reader write
+// past its buffer. Each such header is refused before PCL reads it.
+TEST_F(HostilePcd, HeadersPclWouldReadOtherwiseAreRefused) {
+  const std::string layout_after_points =
+      "VERSION 0.7\nFIELDS x y\nSIZE 4 4\nTYPE F F\nWIDTH 2\nHEIGHT 1\nPOINTS 2\n"
+      "FIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F F\nDATA ascii\n4 4 4 4\n4 4 4 4\n";
+  WriteText(dir_ + "/late_fields.pcd", layout_after_points);
+  ExpectRefused(dir_ + "/late_fields.pcd", "line 8: repeats the FIELDS line");
+  const std::string size_after_points =
+      "VERSION 0.7\nFIELDS x y z\nTYPE F F F\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nSIZE 4 4 4\n"
+      "DATA ascii\n4 4 4\n4 4 4\n";
+  WriteText(dir_ + "/late_size.pcd", size_after_points);
+  ExpectRefused(dir_ + "/late_size.pcd", "SIZE must come before POINTS");
+  WriteText(dir_ + "/prefix.pcd", Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "WIDTHS 9\n1 2 3\n");
+  ExpectRefused(dir_ + "/prefix.pcd", "data begins with a header line ('WIDTHS')");
+  std::string prefix_key = Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "1 2 3\n";
+  prefix_key.replace(prefix_key.find("HEIGHT 1"), 8, "HEIGHTS 1");
+  WriteText(dir_ + "/prefix_key.pcd", prefix_key);
+  ExpectRefused(dir_ + "/prefix_key.pcd", "'HEIGHTS' is not a header key");
+  std::string control = Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "1 2 3\n";
+  control.replace(control.find("SIZE 4 4 4"), 10, "SIZE 4\v4 4");
+  WriteText(dir_ + "/control.pcd", control);
+  ExpectRefused(dir_ + "/control.pcd", "control or non-ASCII bytes");
+  std::string unknown = Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "1 2 3\n";
+  unknown.insert(unknown.find("WIDTH"), "SCALE 1\n");
+  WriteText(dir_ + "/unknown.pcd", unknown);
+  ExpectRefused(dir_ + "/unknown.pcd", "unknown key 'SCALE'");
+  // PCL's header skips a '#' line after DATA, its ASCII body reads it as a point (z = 0).
+  WriteText(dir_ + "/comment.pcd", Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "# a\n1 2 3\n");
+  ExpectRefused(dir_ + "/comment.pcd", "data begins with a '#' line");
+  // The same cloud without the extra line reads: the checks refuse only what is ambiguous.
+  WriteText(dir_ + "/plain.pcd", Header("4 4 4", "F F F", 1, 1, 1, "ascii") + "\n1 2 3\n");
+  auto plain = ReadPcdFile(dir_ + "/plain.pcd");
+  ASSERT_TRUE(plain.ok()) << plain.status().ToString();
+  ASSERT_EQ(plain->size(), 1u);
+  EXPECT_FLOAT_EQ(plain->points[0].z(), 3.0f);
+}
+
 }  // namespace
 }  // namespace sightline
