@@ -40,6 +40,9 @@ class FrameWriter {
   virtual const std::string& folder() const = 0;
   // The reader's format name ("TUM RGB-D", "EuRoC MAV", "image folder").
   virtual const char* format() const = 0;
+  // Completes what is written after the last frame (a bag's index). Folder layouts are
+  // complete after every frame. Called once by Recorder::Stop.
+  virtual Status Finish() { return Status::Ok(); }
   // Bytes of images and index lines written so far.
   int64_t bytes_written() const { return bytes_; }
   // Facts a user should know, e.g. that a calibration is nominal.

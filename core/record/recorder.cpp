@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/common/timing.h"
+#include "core/record/bag_frame_writer.h"
 
 namespace sightline {
 namespace {
@@ -11,7 +12,8 @@ namespace {
 // Checks that `dir` may receive a recording of `kind`: absent or an empty folder, or with
 // `overwrite` any folder, whose sensor folder is then removed (no image of the old recording may
 // stay beside the new index files).
-Status PrepareRecordingFolder(const std::string& dir, SourceKind kind, bool overwrite) {
+// `replaced`: what overwrite removes, the sensor folder or the bag.
+Status PrepareRecordingFolder(const std::string& dir, const std::string& replaced, bool overwrite) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(dir, ec);
@@ -25,7 +27,7 @@ Status PrepareRecordingFolder(const std::string& dir, SourceKind kind, bool over
   }
   if (ec) return Unavailable("cannot record into " + dir + ": " + ec.message());
   if (names.empty()) return Status::Ok();
-  const fs::path sensor = fs::path(dir) / SensorFolderName(kind);
+  const fs::path sensor = fs::path(dir) / replaced;
   if (!overwrite) {
     std::sort(names.begin(), names.end());
     return FailedPrecondition(
@@ -52,6 +54,9 @@ bool RecorderOptions::IsValid(std::string* error) const {
   if (png_compression < 0 || png_compression > 9) {
     return fail("record.png_compression must be in [0, 9]");
   }
+  if (format != "folders" && format != "bag") {
+    return fail("record.format must be folders or bag, not '" + format + "'");
+  }
   return true;
 }
 
@@ -70,7 +75,11 @@ OptionTable<RecorderOptions> RecorderOptions::Describe() {
             "being written.")
       .Bool("overwrite", &RecorderOptions::overwrite,
             "Record into a folder that already holds files; its sensor folder (rgbd/, stereo/ "
-            "or mono/) is replaced as a whole, other files stay. Off: such a folder is refused.");
+            "or mono/) is replaced as a whole, other files stay. Off: such a folder is refused.")
+      .Choice("format", &RecorderOptions::format, {"folders", "bag"},
+              "folders: one sensor folder in the readers' layouts (TUM RGB-D, EuRoC, image "
+              "folder), every listed frame complete on disk; bag: one ROS 1 bag, "
+              "recording.bag (lz4), indexed when the recording ends.");
 }
 
 StatusOr<std::unique_ptr<Recorder>> Recorder::Start(
@@ -79,12 +88,16 @@ StatusOr<std::unique_ptr<Recorder>> Recorder::Start(
   std::string error;
   if (!options.IsValid(&error)) return InvalidArgument(error);
   if (info.kind != SourceKind::kCloud) {  // Point clouds are refused by CreateFrameWriter.
-    SIGHTLINE_RETURN_IF_ERROR(PrepareRecordingFolder(dir, info.kind, options.overwrite));
+    const bool bag = options.format == "bag";
+    SIGHTLINE_RETURN_IF_ERROR(PrepareRecordingFolder(
+        dir, bag ? kRecordingBagName : SensorFolderName(info.kind), options.overwrite));
   }
   FrameWriterSettings settings;
   settings.png_compression = options.png_compression;
   settings.sync = options.sync;
-  StatusOr<std::unique_ptr<FrameWriter>> writer = CreateFrameWriter(dir, info, settings);
+  StatusOr<std::unique_ptr<FrameWriter>> writer = options.format == "bag"
+                                                      ? CreateBagFrameWriter(dir, info)
+                                                      : CreateFrameWriter(dir, info, settings);
   if (!writer.ok()) return writer.status();
   std::unique_ptr<Recorder> recorder(new Recorder());
   recorder->options_ = options;
@@ -155,7 +168,9 @@ Status Recorder::Stop() {
   if (thread_.joinable()) {
     queue_->Shutdown();
     thread_.join();
+    const Status finished = writer_->Finish();
     std::lock_guard<std::mutex> lock(mutex_);
+    if (status_.ok() && !finished.ok()) status_ = finished;
     stop_s_ = HostTimeS();
   }
   return status();

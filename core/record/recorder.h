@@ -21,13 +21,14 @@ namespace sightline {
 
 // How a Recorder buffers and stores frames; keys `record.*`.
 struct RecorderOptions {
-  int queue_capacity = 64;       // Frames buffered between the producer and the disk.
-  bool block_when_full = false;  // Wait for the disk instead of dropping (recorded sources).
-  int png_compression = 1;       // zlib level 0 (fast, large) to 9 (slow, small).
-  bool sync = true;              // fsync every image and index line (a pulled plug loses at most
-                                 // the frame being written).
-  bool overwrite = false;        // Record into a folder that already holds files: its sensor
-                                 // folder (e.g. DIR/mono) is removed first, other files stay.
+  int queue_capacity = 64;         // Frames buffered between the producer and the disk.
+  bool block_when_full = false;    // Wait for the disk instead of dropping (recorded sources).
+  int png_compression = 1;         // zlib level 0 (fast, large) to 9 (slow, small).
+  bool sync = true;                // fsync every image and index line (a pulled plug loses at most
+                                   // the frame being written).
+  bool overwrite = false;          // Record into a folder that already holds files: its sensor
+                                   // folder (e.g. DIR/mono) is removed first, other files stay.
+  std::string format = "folders";  // "folders" (DIR/<sensor>/) or "bag" (DIR/recording.bag).
 
   bool IsValid(std::string* error) const;
   static OptionTable<RecorderOptions> Describe();
