@@ -87,6 +87,14 @@ Status CheckDeclaredSize(const HeaderNumbers& h, const std::string& path) {
 }
 
 // Each field's TYPE and SIZE must name a real type: F of 4 or 8 bytes, I or U of 1, 2, 4 or 8.
+// A SIZE value as written (any magnitude; a cast to int overflows for a hostile header).
+std::string FormatSize(double size) {
+  std::ostringstream out;
+  out.precision(15);
+  out << size;
+  return out.str();
+}
+
 Status CheckFieldTypes(const std::vector<std::string>& names, const std::vector<std::string>& types,
                        const std::vector<double>& sizes, const std::string& path) {
   for (size_t i = 0; i < names.size(); ++i) {
@@ -97,7 +105,7 @@ Status CheckFieldTypes(const std::vector<std::string>& names, const std::vector<
                         : false;
     if (!ok) {
       return ParseError(path + ": PCD field '" + names[i] + "' has TYPE " + types[i] +
-                        " with SIZE " + std::to_string(static_cast<int>(size)) +
+                        " with SIZE " + FormatSize(size) +
                         " (F is 4 or 8 bytes, I and U 1, 2, 4 or 8)");
     }
   }

@@ -271,6 +271,9 @@ TEST_F(HostilePcd, InconsistentFieldsAreRefused) {
   ExpectRefused(dir_ + "/size3.pcd", "field 'x'");
   WriteText(dir_ + "/points.pcd", Header("4 4 4", "F F F", 2, 1, 1, "binary") + point + point);
   ExpectRefused(dir_ + "/points.pcd", "is not POINTS");
+  // A SIZE beyond int's range is named as written (its message once overflowed an int cast).
+  WriteText(dir_ + "/huge_size.pcd", Header("4 4 3297380000", "F F F", 1, 1, 1, "binary") + point);
+  ExpectRefused(dir_ + "/huge_size.pcd", "with SIZE 3297380000");
   WriteText(dir_ + "/double.pcd", Header("8 8 8", "F F F", 1, 1, 1, "binary") + point + point);
   ExpectRefused(dir_ + "/double.pcd", "4-byte float");
 }
