@@ -56,7 +56,7 @@ class ButtonPublisher : public ResultPublisher {
     if (result == nullptr) return;
     seen_.Add(result->stamp.sensor_time_s, result->stamp.sequence_id);
     diagnostic_msgs::DiagnosticArray gate;
-    gate.header.stamp = RosStamp(result->stamp.sensor_time_s);
+    gate.header.stamp = RosTimeFromSeconds(result->stamp.sensor_time_s);
     gate.status.push_back(ButtonGateStatus(*result));
     gate_.publish(gate);
     if (!stop_sent_ || result->stopped != last_stopped_) {

@@ -4,23 +4,10 @@
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 
 namespace sightline {
-namespace {
-
-geometry_msgs::Quaternion RosQuaternion(const Eigen::Isometry3d& pose) {
-  const Eigen::Quaterniond q(pose.rotation());
-  geometry_msgs::Quaternion out;
-  out.x = q.x();
-  out.y = q.y();
-  out.z = q.z();
-  out.w = q.w();
-  return out;
-}
-
-}  // namespace
-
 struct BagWriter::Impl {
   std::string path;
   rosbag::Bag bag;
@@ -84,29 +71,13 @@ Status BagWriter::WriteCameraInfo(const std::string& topic, double time_s,
 Status BagWriter::WriteOdometry(const std::string& topic, double time_s,
                                 const Eigen::Isometry3d& pose, const std::string& frame,
                                 const std::string& child_frame) {
-  nav_msgs::Odometry msg;
-  msg.header.stamp = RosTimeFromSeconds(time_s);
-  msg.header.frame_id = frame;
-  msg.child_frame_id = child_frame;
-  msg.pose.pose.position.x = pose.translation().x();
-  msg.pose.pose.position.y = pose.translation().y();
-  msg.pose.pose.position.z = pose.translation().z();
-  msg.pose.pose.orientation = RosQuaternion(pose);
-  return impl_->Write(topic, time_s, msg);
+  return impl_->Write(topic, time_s, OdometryMessage(pose, time_s, frame, child_frame));
 }
 
 Status BagWriter::WriteTransform(double time_s, const std::string& parent_frame,
                                  const std::string& child_frame, const Eigen::Isometry3d& pose) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = RosTimeFromSeconds(time_s);
-  t.header.frame_id = parent_frame;
-  t.child_frame_id = child_frame;
-  t.transform.translation.x = pose.translation().x();
-  t.transform.translation.y = pose.translation().y();
-  t.transform.translation.z = pose.translation().z();
-  t.transform.rotation = RosQuaternion(pose);
   tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(t);
+  msg.transforms.push_back(TransformMessage(pose, time_s, parent_frame, child_frame));
   return impl_->Write("/tf", time_s, msg);
 }
 

@@ -26,6 +26,8 @@
 #include "core/pipeline/button_result.h"
 #include "core/pipeline/mapping_result.h"
 #include "core/pipeline/pipeline.h"
+#include "core/ros/ros_geometry.h"
+#include "core/ros/ros_image.h"
 
 namespace sightline {
 
@@ -38,18 +40,8 @@ struct RosFrames {
   std::string ground = "mobility_ground";  // Mobility's ground frame: x forward, y left, z up.
 };
 
-// --- Common pieces ---
+// --- Common pieces (stamps: RosTimeFromSeconds, ros_image.h; poses: ros_geometry.h) ---
 
-// A ROS time from seconds of sensor time.
-ros::Time RosStamp(double seconds);
-// The transform `parent_from_child` as a tf message (header.frame_id = parent).
-geometry_msgs::TransformStamped TransformMessage(const Eigen::Isometry3d& parent_from_child,
-                                                 double stamp_s, const std::string& parent,
-                                                 const std::string& child);
-// A pose as nav_msgs/Odometry of `child` in `parent` (no twist, covariance left unknown: -1 on
-// the diagonal's first element as REP 145 suggests for "not given").
-nav_msgs::Odometry OdometryMessage(const Eigen::Isometry3d& parent_from_child, double stamp_s,
-                                   const std::string& parent, const std::string& child);
 // Points as a PointCloud2 with float32 fields x y z (dense, little-endian).
 sensor_msgs::PointCloud2 PointCloudMessage(const std::vector<Eigen::Vector3d>& points,
                                            double stamp_s, const std::string& frame_id);

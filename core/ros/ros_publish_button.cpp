@@ -5,7 +5,7 @@ namespace sightline {
 
 geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target) {
   geometry_msgs::PoseStamped out;
-  out.header.stamp = RosStamp(target.stamp_s);
+  out.header.stamp = RosTimeFromSeconds(target.stamp_s);
   out.header.frame_id = target.frame_id;
   out.pose.position.x = target.position_m.x();
   out.pose.position.y = target.position_m.y();

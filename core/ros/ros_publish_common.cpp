@@ -1,5 +1,5 @@
-// Messages shared by every pipeline's publishers: transforms, odometry, clouds, grids and
-// diagnostics.
+// Messages shared by every pipeline's publishers: clouds, grids and diagnostics (transforms and
+// odometry: ros_geometry.h).
 #include <cmath>
 #include <cstring>
 
@@ -7,24 +7,7 @@
 
 namespace sightline {
 
-ros::Time RosStamp(double seconds) {
-  if (!(seconds > 0)) return ros::Time(0, 0);
-  const double whole = std::floor(seconds);
-  return ros::Time(static_cast<uint32_t>(whole),
-                   static_cast<uint32_t>(std::lround((seconds - whole) * 1e9) % 1000000000));
-}
-
 namespace {
-
-geometry_msgs::Quaternion QuaternionMessage(const Eigen::Matrix3d& rotation) {
-  const Eigen::Quaterniond q(rotation);
-  geometry_msgs::Quaternion out;
-  out.x = q.x();
-  out.y = q.y();
-  out.z = q.z();
-  out.w = q.w();
-  return out;
-}
 
 sensor_msgs::PointField Field(const std::string& name, uint32_t offset, uint8_t datatype) {
   sensor_msgs::PointField field;
@@ -37,41 +20,10 @@ sensor_msgs::PointField Field(const std::string& name, uint32_t offset, uint8_t 
 
 }  // namespace
 
-geometry_msgs::TransformStamped TransformMessage(const Eigen::Isometry3d& parent_from_child,
-                                                 double stamp_s, const std::string& parent,
-                                                 const std::string& child) {
-  geometry_msgs::TransformStamped out;
-  out.header.stamp = RosStamp(stamp_s);
-  out.header.frame_id = parent;
-  out.child_frame_id = child;
-  const Eigen::Vector3d t = parent_from_child.translation();
-  out.transform.translation.x = t.x();
-  out.transform.translation.y = t.y();
-  out.transform.translation.z = t.z();
-  out.transform.rotation = QuaternionMessage(parent_from_child.rotation());
-  return out;
-}
-
-nav_msgs::Odometry OdometryMessage(const Eigen::Isometry3d& parent_from_child, double stamp_s,
-                                   const std::string& parent, const std::string& child) {
-  nav_msgs::Odometry out;
-  out.header.stamp = RosStamp(stamp_s);
-  out.header.frame_id = parent;
-  out.child_frame_id = child;
-  const Eigen::Vector3d t = parent_from_child.translation();
-  out.pose.pose.position.x = t.x();
-  out.pose.pose.position.y = t.y();
-  out.pose.pose.position.z = t.z();
-  out.pose.pose.orientation = QuaternionMessage(parent_from_child.rotation());
-  out.pose.covariance[0] = -1;  // Not estimated.
-  out.twist.covariance[0] = -1;
-  return out;
-}
-
 sensor_msgs::PointCloud2 PointCloudMessage(const std::vector<Eigen::Vector3d>& points,
                                            double stamp_s, const std::string& frame_id) {
   sensor_msgs::PointCloud2 out;
-  out.header.stamp = RosStamp(stamp_s);
+  out.header.stamp = RosTimeFromSeconds(stamp_s);
   out.header.frame_id = frame_id;
   out.height = 1;
   out.width = static_cast<uint32_t>(points.size());
@@ -96,7 +48,7 @@ nav_msgs::OccupancyGrid OccupancyGridFromMapImage(const cv::Mat& gray, double re
                                                   double occupied_thresh, double free_thresh,
                                                   double stamp_s, const std::string& frame_id) {
   nav_msgs::OccupancyGrid out;
-  out.header.stamp = RosStamp(stamp_s);
+  out.header.stamp = RosTimeFromSeconds(stamp_s);
   out.header.frame_id = frame_id;
   out.info.map_load_time = out.header.stamp;
   out.info.resolution = static_cast<float>(resolution_m);
@@ -135,7 +87,7 @@ diagnostic_msgs::DiagnosticArray DiagnosticsMessage(const std::string& pipeline,
                                                     const StatisticTable& table,
                                                     const PipelineResult& result) {
   diagnostic_msgs::DiagnosticArray out;
-  out.header.stamp = RosStamp(result.stamp.sensor_time_s);
+  out.header.stamp = RosTimeFromSeconds(result.stamp.sensor_time_s);
   diagnostic_msgs::DiagnosticStatus stats;
   stats.name = "sightline/" + pipeline;
   stats.hardware_id = "sightline";

@@ -24,7 +24,7 @@ std::optional<sensor_msgs::LaserScan> MappingScanMessage(const MappingResult& re
   const MappingFrameResult& m = *result.mapping;
   const PolarScan& scan = m.scan;
   sensor_msgs::LaserScan out;
-  out.header.stamp = RosStamp(result.stamp.sensor_time_s);
+  out.header.stamp = RosTimeFromSeconds(result.stamp.sensor_time_s);
   out.header.frame_id = frames.base;
   out.angle_min = static_cast<float>(scan.fov_min_rad);
   out.angle_max = static_cast<float>(scan.fov_max_rad);
@@ -53,7 +53,7 @@ visualization_msgs::MarkerArray MappingWallMarkers(const MappingResult& result,
   visualization_msgs::MarkerArray out;
   visualization_msgs::Marker clear;
   clear.header.frame_id = frames.base;
-  clear.header.stamp = RosStamp(result.stamp.sensor_time_s);
+  clear.header.stamp = RosTimeFromSeconds(result.stamp.sensor_time_s);
   clear.action = visualization_msgs::Marker::DELETEALL;
   out.markers.push_back(clear);
   if (!result.mapping) return out;

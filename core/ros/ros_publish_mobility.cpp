@@ -25,7 +25,7 @@ sensor_msgs::PointCloud2 MobilityCloudMessage(const MobilityResult& result,
                                               const RosFrames& frames) {
   using sensor_msgs::PointField;
   sensor_msgs::PointCloud2 out;
-  out.header.stamp = RosStamp(result.stamp.sensor_time_s);
+  out.header.stamp = RosTimeFromSeconds(result.stamp.sensor_time_s);
   out.header.frame_id = frames.camera;
   out.height = 1;
   out.width = static_cast<uint32_t>(result.points.size());
@@ -55,7 +55,7 @@ sensor_msgs::PointCloud2 MobilityCloudMessage(const MobilityResult& result,
 nav_msgs::OccupancyGrid MobilityGridMessage(const MobilityResult& result, const RosFrames& frames) {
   const TopViewMap& map = result.map;
   nav_msgs::OccupancyGrid out;
-  out.header.stamp = RosStamp(result.stamp.sensor_time_s);
+  out.header.stamp = RosTimeFromSeconds(result.stamp.sensor_time_s);
   out.header.frame_id = frames.ground;
   out.info.map_load_time = out.header.stamp;
   out.info.resolution = static_cast<float>(map.cell_m);

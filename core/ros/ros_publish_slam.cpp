@@ -16,7 +16,7 @@ visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double s
   visualization_msgs::MarkerArray out;
   visualization_msgs::Marker marker;
   marker.header.frame_id = frame_id;
-  marker.header.stamp = RosStamp(stamp_s);
+  marker.header.stamp = RosTimeFromSeconds(stamp_s);
   marker.action = visualization_msgs::Marker::DELETEALL;
   out.markers.push_back(marker);
   marker.action = visualization_msgs::Marker::ADD;

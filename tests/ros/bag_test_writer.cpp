@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 #include "core/sim/simulator.h"
 
@@ -16,36 +17,9 @@ namespace {
 // The simulator's clock starts at 0, before the earliest time a bag takes (ros::TIME_MIN).
 constexpr double kSimBagEpochS = 1000.0;
 
-geometry_msgs::Quaternion RosQuaternion(const Eigen::Isometry3d& pose) {
-  const Eigen::Quaterniond q(pose.rotation());
-  geometry_msgs::Quaternion out;
-  out.x = q.x(), out.y = q.y(), out.z = q.z(), out.w = q.w();
-  return out;
-}
-
 tf2_msgs::TFMessage TfMessage(const Eigen::Isometry3d& pose, double stamp_s) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = RosTimeFromSeconds(stamp_s);
-  t.header.frame_id = "/world";
-  t.child_frame_id = "/camera";
-  t.transform.translation.x = pose.translation().x();
-  t.transform.translation.y = pose.translation().y();
-  t.transform.translation.z = pose.translation().z();
-  t.transform.rotation = RosQuaternion(pose);
   tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(t);
-  return msg;
-}
-
-nav_msgs::Odometry OdometryMessage(const Eigen::Isometry3d& pose, double stamp_s) {
-  nav_msgs::Odometry msg;
-  msg.header.stamp = RosTimeFromSeconds(stamp_s);
-  msg.header.frame_id = "odom";
-  msg.child_frame_id = "base_link";
-  msg.pose.pose.position.x = pose.translation().x();
-  msg.pose.pose.position.y = pose.translation().y();
-  msg.pose.pose.position.z = pose.translation().z();
-  msg.pose.pose.orientation = RosQuaternion(pose);
+  msg.transforms.push_back(TransformMessage(pose, stamp_s, "/world", "/camera"));
   return msg;
 }
 
@@ -93,7 +67,7 @@ Status WriteSimFrame(sim::Simulator& simulator, int i, const SimBagOptions& opti
     const TimedPose& p = odometry.poses()[static_cast<size_t>(i)];
     const double odometry_t = kSimBagEpochS + p.time_s;
     bag.write("/odom", RosTimeFromSeconds(odometry_t),
-              OdometryMessage(p.world_from_sensor, odometry_t));
+              OdometryMessage(p.world_from_sensor, odometry_t, "odom", "base_link"));
     out->odometry.Add(odometry_t, p.world_from_sensor);
   }
   if (!options.stereo) return Status::Ok();

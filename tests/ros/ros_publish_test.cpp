@@ -90,7 +90,8 @@ TEST(RosPublish, MappingGridAndScanMatchTheRun) {
   EXPECT_EQ(mismatches, 0);
   EXPECT_GT(occupied, 50);  // Walls were seen ...
   EXPECT_GT(free, 500);     // ... and floor.
-  EXPECT_DOUBLE_EQ(grid->header.stamp.toSec(), RosStamp(last->stamp.sensor_time_s).toSec());
+  EXPECT_DOUBLE_EQ(grid->header.stamp.toSec(),
+                   RosTimeFromSeconds(last->stamp.sensor_time_s).toSec());
 
   const auto scan = MappingScanMessage(*last, RosFrames());
   ASSERT_TRUE(scan.has_value());
