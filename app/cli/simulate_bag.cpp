@@ -20,35 +20,22 @@ Status WriteSensorFrame(sim::Simulator& simulator, const std::string& sensor, in
   if (sensor == "rgbd") {
     sim::SimulatedRgbd f;
     SIGHTLINE_RETURN_IF_ERROR(simulator.RenderRgbd(i, &f));
-    const std::string frame = "camera_rgb_optical_frame";
-    SIGHTLINE_RETURN_IF_ERROR(bag.WriteImage("/camera/rgb/image_color", t, f.color, frame));
-    SIGHTLINE_RETURN_IF_ERROR(bag.WriteImage("/camera/depth/image", t, f.depth_m, frame));
-    SIGHTLINE_RETURN_IF_ERROR(
-        bag.WriteCameraInfo("/camera/rgb/camera_info", t, simulator.rgbd_camera(), frame));
+    SIGHTLINE_RETURN_IF_ERROR(bag.WriteRgbdFrame(t, f.color, f.depth_m, simulator.rgbd_camera()));
     *messages += 4;
-    return bag.WriteTransform(t, "world", frame, f.world_from_camera);
+    return bag.WriteTransform(t, "world", BagWriter::kRgbdFrameId, f.world_from_camera);
   }
   if (sensor == "stereo") {
     sim::SimulatedStereo f;
     SIGHTLINE_RETURN_IF_ERROR(simulator.RenderStereo(i, &f));
-    const StereoRig rig = simulator.stereo_rig();
-    SIGHTLINE_RETURN_IF_ERROR(bag.WriteImage("/stereo/left/image_raw", t, f.left, "stereo_left"));
-    SIGHTLINE_RETURN_IF_ERROR(
-        bag.WriteImage("/stereo/right/image_raw", t, f.right, "stereo_right"));
-    SIGHTLINE_RETURN_IF_ERROR(
-        bag.WriteCameraInfo("/stereo/left/camera_info", t, rig.left, "stereo_left"));
-    SIGHTLINE_RETURN_IF_ERROR(bag.WriteCameraInfo("/stereo/right/camera_info", t, rig.right,
-                                                  "stereo_right", rig.BaselineM()));
+    SIGHTLINE_RETURN_IF_ERROR(bag.WriteStereoFrame(t, f.left, f.right, simulator.stereo_rig()));
     *messages += 5;
-    return bag.WriteTransform(t, "world", "stereo_left", f.world_from_left);
+    return bag.WriteTransform(t, "world", BagWriter::kLeftFrameId, f.world_from_left);
   }
   sim::SimulatedMono f;
   SIGHTLINE_RETURN_IF_ERROR(simulator.RenderMono(i, &f));
-  SIGHTLINE_RETURN_IF_ERROR(bag.WriteImage("/mono/image_raw", t, f.image, "mono_camera"));
-  SIGHTLINE_RETURN_IF_ERROR(
-      bag.WriteCameraInfo("/mono/camera_info", t, simulator.mono_camera(), "mono_camera"));
+  SIGHTLINE_RETURN_IF_ERROR(bag.WriteMonoFrame(t, f.image, simulator.mono_camera()));
   *messages += 3;
-  return bag.WriteTransform(t, "world", "mono_camera", f.world_from_camera);
+  return bag.WriteTransform(t, "world", BagWriter::kMonoFrameId, f.world_from_camera);
 }
 
 // Wheel odometry on /odom and the arm's reported poses on /tf.

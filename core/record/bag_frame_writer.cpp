@@ -46,26 +46,13 @@ class BagFrameWriter : public FrameWriter {
 
  private:
   Status WriteFrame(const RgbdFrame& f, double t) {
-    const std::string id = "camera_rgb_optical_frame";
-    if (!f.color.empty()) {
-      SIGHTLINE_RETURN_IF_ERROR(bag_->WriteImage("/camera/rgb/image_color", t, f.color, id));
-    }
-    SIGHTLINE_RETURN_IF_ERROR(bag_->WriteImage("/camera/depth/image", t, f.depth_m, id));
-    return bag_->WriteCameraInfo("/camera/rgb/camera_info", t, info_.rgbd->color, id);
+    return bag_->WriteRgbdFrame(t, f.color, f.depth_m, info_.rgbd->color);
   }
   Status WriteFrame(const StereoFrame& f, double t) {
-    const StereoRig& rig = *info_.stereo;
-    SIGHTLINE_RETURN_IF_ERROR(bag_->WriteImage("/stereo/left/image_raw", t, f.left, "stereo_left"));
-    SIGHTLINE_RETURN_IF_ERROR(
-        bag_->WriteImage("/stereo/right/image_raw", t, f.right, "stereo_right"));
-    SIGHTLINE_RETURN_IF_ERROR(
-        bag_->WriteCameraInfo("/stereo/left/camera_info", t, rig.left, "stereo_left"));
-    return bag_->WriteCameraInfo("/stereo/right/camera_info", t, rig.right, "stereo_right",
-                                 rig.BaselineM());
+    return bag_->WriteStereoFrame(t, f.left, f.right, *info_.stereo);
   }
   Status WriteFrame(const MonoFrame& f, double t) {
-    SIGHTLINE_RETURN_IF_ERROR(bag_->WriteImage("/mono/image_raw", t, f.image, "mono_camera"));
-    return bag_->WriteCameraInfo("/mono/camera_info", t, *info_.camera, "mono_camera");
+    return bag_->WriteMonoFrame(t, f.image, *info_.camera);
   }
   Status WriteFrame(const CloudFrame&, double) {
     return InvalidArgument("point clouds are not recorded");

@@ -1,10 +1,5 @@
-// A FrameWriter that records into one ROS 1 bag, DIR/recording.bag, in the topic layout the
-// simulator's bags and TUM's published bags use (core/ros/bag_source.h reads it back):
-//   RGB-D   /camera/rgb/image_color (bgr8), /camera/depth/image (32FC1 metres, NaN = none),
-//           /camera/rgb/camera_info
-//   stereo  /stereo/left/image_raw, /stereo/right/image_raw and their camera_info (the right
-//           one's P gives the baseline)
-//   mono    /mono/image_raw, /mono/camera_info
+// A FrameWriter that records into one ROS 1 bag, DIR/recording.bag, in Sightline's bag layout
+// (BagWriter::WriteRgbdFrame and its siblings; core/ros/bag_source.h reads it back).
 // Stamps are the frames' sensor times (shifted by whole seconds when they start before 1 s:
 // a bag holds no time 0; a note says so). lz4 chunks. A bag is indexed when the recording
 // ends; one cut off before (power loss) opens after `rosbag reindex`.

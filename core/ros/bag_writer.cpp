@@ -81,6 +81,30 @@ Status BagWriter::WriteTransform(double time_s, const std::string& parent_frame,
   return impl_->Write("/tf", time_s, msg);
 }
 
+Status BagWriter::WriteRgbdFrame(double time_s, const cv::Mat& color, const cv::Mat& depth_m,
+                                 const PinholeCamera& camera) {
+  if (!color.empty()) {
+    SIGHTLINE_RETURN_IF_ERROR(WriteImage("/camera/rgb/image_color", time_s, color, kRgbdFrameId));
+  }
+  SIGHTLINE_RETURN_IF_ERROR(WriteImage("/camera/depth/image", time_s, depth_m, kRgbdFrameId));
+  return WriteCameraInfo("/camera/rgb/camera_info", time_s, camera, kRgbdFrameId);
+}
+
+Status BagWriter::WriteStereoFrame(double time_s, const cv::Mat& left, const cv::Mat& right,
+                                   const StereoRig& rig) {
+  SIGHTLINE_RETURN_IF_ERROR(WriteImage("/stereo/left/image_raw", time_s, left, kLeftFrameId));
+  SIGHTLINE_RETURN_IF_ERROR(WriteImage("/stereo/right/image_raw", time_s, right, kRightFrameId));
+  SIGHTLINE_RETURN_IF_ERROR(
+      WriteCameraInfo("/stereo/left/camera_info", time_s, rig.left, kLeftFrameId));
+  return WriteCameraInfo("/stereo/right/camera_info", time_s, rig.right, kRightFrameId,
+                         rig.BaselineM());
+}
+
+Status BagWriter::WriteMonoFrame(double time_s, const cv::Mat& image, const PinholeCamera& camera) {
+  SIGHTLINE_RETURN_IF_ERROR(WriteImage("/mono/image_raw", time_s, image, kMonoFrameId));
+  return WriteCameraInfo("/mono/camera_info", time_s, camera, kMonoFrameId);
+}
+
 Status BagWriter::Close() {
   if (!impl_ || !impl_->open) return Status::Ok();
   impl_->open = false;

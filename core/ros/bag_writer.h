@@ -35,6 +35,22 @@ class BagWriter {
   // One transform on /tf: the pose of `child_frame` in `parent_frame`.
   Status WriteTransform(double time_s, const std::string& parent_frame,
                         const std::string& child_frame, const Eigen::Isometry3d& pose);
+  // One frame in Sightline's bag layout (the simulator's and the recorder's bags, TUM's topic
+  // names), images and camera_info stamped `time_s`, with the frame ids below:
+  //   RGB-D   /camera/rgb/image_color (bgr8; skipped when empty), /camera/depth/image (32FC1
+  //           metres), /camera/rgb/camera_info
+  //   stereo  /stereo/{left,right}/image_raw and /stereo/{left,right}/camera_info (the right
+  //           one's P carries the baseline)
+  //   mono    /mono/image_raw, /mono/camera_info
+  static constexpr const char* kRgbdFrameId = "camera_rgb_optical_frame";
+  static constexpr const char* kLeftFrameId = "stereo_left";
+  static constexpr const char* kRightFrameId = "stereo_right";
+  static constexpr const char* kMonoFrameId = "mono_camera";
+  Status WriteRgbdFrame(double time_s, const cv::Mat& color, const cv::Mat& depth_m,
+                        const PinholeCamera& camera);
+  Status WriteStereoFrame(double time_s, const cv::Mat& left, const cv::Mat& right,
+                          const StereoRig& rig);
+  Status WriteMonoFrame(double time_s, const cv::Mat& image, const PinholeCamera& camera);
   // Writes the index; the bag is complete after it. Also done by the destructor.
   Status Close();
 
