@@ -328,22 +328,10 @@ StatusOr<Frame> BagSource::LoadFrame(int64_t index) {
   const RosImageRole role = kind == SourceKind::kRgbd ? RosImageRole::kDepth : RosImageRole::kColor;
   StatusOr<cv::Mat> other = DecodeImage(impl_->secondary, second, role, path_);
   if (!other.ok()) return other.status();
-  if (other->size() != image->size()) {
-    return ParseError(path_ + ": " + impl_->secondary.topic + " message " + std::to_string(second) +
-                      ": image is " + std::to_string(other->cols) + "x" +
-                      std::to_string(other->rows) + " but " + impl_->primary.topic + " message " +
-                      std::to_string(first) + " is " + std::to_string(image->cols) + "x" +
-                      std::to_string(image->rows));
-  }
-  if (kind == SourceKind::kStereo) {
-    if (other->type() != image->type()) {
-      cv::cvtColor(*other, *other,
-                   other->channels() == 1 ? cv::COLOR_GRAY2BGR : cv::COLOR_BGR2GRAY);
-    }
-    return Frame(StereoFrame{MakeStamp(index), std::move(*image), std::move(*other)});
-  }
-  if (image->channels() == 1) cv::cvtColor(*image, *image, cv::COLOR_GRAY2BGR);
-  return Frame(RgbdFrame{MakeStamp(index), std::move(*image), std::move(*other)});
+  return FrameFromRosImages(
+      kind, MakeStamp(index), std::move(*image), std::move(*other),
+      impl_->primary.topic + " message " + std::to_string(first),
+      path_ + ": " + impl_->secondary.topic + " message " + std::to_string(second));
 }
 
 StatusOr<BagSummary> ReadBagSummary(const std::string& path) {

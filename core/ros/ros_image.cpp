@@ -212,6 +212,26 @@ sensor_msgs::CameraInfo RosInfoFromCamera(const PinholeCamera& camera, double st
   return info;
 }
 
+StatusOr<Frame> FrameFromRosImages(SourceKind kind, const FrameStamp& stamp, cv::Mat first,
+                                   cv::Mat second, const std::string& first_name,
+                                   const std::string& second_name) {
+  if (kind == SourceKind::kMono) return Frame(MonoFrame{stamp, std::move(first)});
+  if (second.size() != first.size()) {
+    return ParseError(second_name + ": image is " + std::to_string(second.cols) + "x" +
+                      std::to_string(second.rows) + " but " + first_name + " is " +
+                      std::to_string(first.cols) + "x" + std::to_string(first.rows));
+  }
+  if (kind == SourceKind::kStereo) {
+    if (second.type() != first.type()) {
+      cv::cvtColor(second, second,
+                   second.channels() == 1 ? cv::COLOR_GRAY2BGR : cv::COLOR_BGR2GRAY);
+    }
+    return Frame(StereoFrame{stamp, std::move(first), std::move(second)});
+  }
+  if (first.channels() == 1) cv::cvtColor(first, first, cv::COLOR_GRAY2BGR);
+  return Frame(RgbdFrame{stamp, std::move(first), std::move(second)});
+}
+
 double RosSeconds(const ros::Time& time) { return time.toSec(); }
 
 ros::Time RosTimeFromSeconds(double seconds) {

@@ -11,7 +11,9 @@
 #include <string>
 
 #include "core/common/camera.h"
+#include "core/common/frame.h"
 #include "core/common/status.h"
+#include "core/io/source.h"
 
 namespace sightline {
 
@@ -44,6 +46,14 @@ StatusOr<PinholeCamera> CameraFromRosInfo(const sensor_msgs::CameraInfo& info);
 // A CameraInfo for a camera (plumb_bob, identity R, P = [K | 0]).
 sensor_msgs::CameraInfo RosInfoFromCamera(const PinholeCamera& camera, double stamp_s,
                                           const std::string& frame_id);
+
+// A frame of `kind` from its decoded images, the same for bags and live topics: RGB-D pairs a
+// colour image (a mono one becomes BGR) with a depth image, stereo a left with a right image
+// (converted to the left's type), mono uses `first` alone. ParseError when a pair's sizes
+// differ: "<second_name>: image is WxH but <first_name> is WxH".
+StatusOr<Frame> FrameFromRosImages(SourceKind kind, const FrameStamp& stamp, cv::Mat first,
+                                   cv::Mat second, const std::string& first_name,
+                                   const std::string& second_name);
 
 // Seconds of a ROS time, and back.
 double RosSeconds(const ros::Time& time);

@@ -203,9 +203,10 @@ StatusOr<Frame> RosLiveSource::Retrieve() {
   }
   if (!a.ok()) return a.status();
   if (!b.ok()) return b.status();
-  if (kind == SourceKind::kRgbd) return Frame(RgbdFrame{stamp, *a, *b});
-  if (kind == SourceKind::kStereo) return Frame(StereoFrame{stamp, *a, *b});
-  return Frame(MonoFrame{stamp, *a});
+  const RosLiveOptions& o = impl_->options;
+  const bool rgbd = kind == SourceKind::kRgbd;
+  return FrameFromRosImages(kind, stamp, std::move(*a), std::move(*b), rgbd ? o.image : o.left,
+                            "ros:// " + (rgbd ? o.depth : o.right));
 }
 
 int64_t RosLiveSource::Position() const { return impl_->position; }

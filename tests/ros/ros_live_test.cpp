@@ -183,5 +183,30 @@ TEST_F(RosLive, ExactSyncDropsApproximatePairsAndTheQueueIsBounded) {
   EXPECT_GE(stats.unpaired, 1);  // Frame 10's colour (or depth) found no exact partner.
 }
 
+// Bags and live topics build frames by one rule: a pair of one size, RGB-D colour as BGR, a
+// stereo right image of the left's type.
+TEST(FrameFromRosImages, PairsOfOneSizeWithColourAsBgrAndStereoOfOneType) {
+  FrameStamp stamp;
+  stamp.sequence_id = 3;
+  const cv::Mat gray(4, 6, CV_8UC1, cv::Scalar(7));
+  const cv::Mat bgr(4, 6, CV_8UC3, cv::Scalar(1, 2, 3));
+  const cv::Mat depth(4, 6, CV_32FC1, cv::Scalar(1.5f));
+  StatusOr<Frame> rgbd = FrameFromRosImages(SourceKind::kRgbd, stamp, gray, depth, "a", "b");
+  ASSERT_TRUE(rgbd.ok());
+  EXPECT_EQ(std::get<RgbdFrame>(*rgbd).color.type(), CV_8UC3);
+  EXPECT_EQ(std::get<RgbdFrame>(*rgbd).stamp.sequence_id, 3);
+  StatusOr<Frame> stereo = FrameFromRosImages(SourceKind::kStereo, stamp, gray, bgr, "a", "b");
+  ASSERT_TRUE(stereo.ok());
+  EXPECT_EQ(std::get<StereoFrame>(*stereo).right.type(), CV_8UC1);
+  StatusOr<Frame> bad = FrameFromRosImages(SourceKind::kRgbd, stamp, bgr, cv::Mat(5, 6, CV_32FC1),
+                                           "/cam/image", "ros:// /cam/depth");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().code(), StatusCode::kParseError);
+  EXPECT_EQ(bad.status().message(), "ros:// /cam/depth: image is 6x5 but /cam/image is 6x4");
+  StatusOr<Frame> mono = FrameFromRosImages(SourceKind::kMono, stamp, bgr, cv::Mat(), "a", "b");
+  ASSERT_TRUE(mono.ok());
+  EXPECT_EQ(std::get<MonoFrame>(*mono).image.cols, 6);
+}
+
 }  // namespace
 }  // namespace sightline
