@@ -41,4 +41,17 @@ PointCloud DepthToCloud(const cv::Mat& depth_m, const cv::Mat& color_bgr,
   return cloud;
 }
 
+cv::Mat RawDepthToMetres(const cv::Mat& raw, double units_per_metre) {
+  CV_Assert(raw.type() == CV_16UC1 && units_per_metre > 0);
+  cv::Mat metres(raw.size(), CV_32FC1);
+  const float scale = static_cast<float>(1.0 / units_per_metre);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int r = 0; r < raw.rows; ++r) {
+    const uint16_t* in = raw.ptr<uint16_t>(r);
+    float* out = metres.ptr<float>(r);
+    for (int c = 0; c < raw.cols; ++c) out[c] = in[c] == 0 ? nan : in[c] * scale;
+  }
+  return metres;
+}
+
 }  // namespace sightline

@@ -6,6 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/depth_cloud.h"
+
 namespace sightline {
 namespace {
 
@@ -65,18 +67,16 @@ StatusOr<cv::Mat> RowsView(const sensor_msgs::Image& msg, const EncodingInfo& e)
                  const_cast<uint8_t*>(msg.data.data()), msg.step);
 }
 
+// 32FC1 metres with 0, NaN and inf as NaN (no reading); 16UC1 millimetres through
+// RawDepthToMetres.
 cv::Mat DepthToMetres(const cv::Mat& raw) {
+  if (raw.type() == CV_16UC1) return RawDepthToMetres(raw, 1000);
   cv::Mat metres(raw.size(), CV_32FC1);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int r = 0; r < raw.rows; ++r) {
+    const float* in = raw.ptr<float>(r);
     float* out = metres.ptr<float>(r);
-    if (raw.type() == CV_16UC1) {
-      const uint16_t* in = raw.ptr<uint16_t>(r);
-      for (int c = 0; c < raw.cols; ++c) out[c] = in[c] == 0 ? nan : in[c] * 0.001f;
-    } else {
-      const float* in = raw.ptr<float>(r);
-      for (int c = 0; c < raw.cols; ++c) out[c] = std::isfinite(in[c]) && in[c] > 0 ? in[c] : nan;
-    }
+    for (int c = 0; c < raw.cols; ++c) out[c] = std::isfinite(in[c]) && in[c] > 0 ? in[c] : nan;
   }
   return metres;
 }
