@@ -14,9 +14,11 @@ PACKAGES=(
   libceres-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   iproute2 util-linux
+  # catkin: tf2_ros's CMake config reaches genmsg through actionlib_msgs, and genmsg needs
+  # catkin's CMake files (without it configure stops at find_package(tf2_ros)).
   libroscpp-dev librosbag-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev
   libtf2-ros-dev libtf2-msgs-dev libvisualization-msgs-dev libdiagnostic-msgs-dev libstd-srvs-dev
-  ros-core
+  ros-core catkin
 )
 
 if [ "$(id -u)" -ne 0 ]; then
