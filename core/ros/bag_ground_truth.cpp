@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/ros/bag_messages.h"
+#include "core/ros/message_check.h"
 
 namespace sightline {
 namespace {
@@ -29,7 +30,7 @@ StatusOr<std::map<FramePair, Trajectory>> ReadTransforms(const rosbag::Bag& bag,
     if (topic->name.find("tf_static") != std::string::npos) continue;
     int64_t index = 0;
     for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic->name))) {
-      auto msg = m.instantiate<tf2_msgs::TFMessage>();
+      auto msg = InstantiateChecked<tf2_msgs::TFMessage>(m);
       if (!msg) {
         return ParseError(summary.path + ": " + topic->name + " message " + std::to_string(index) +
                           " is not a tf2_msgs/TFMessage");
@@ -67,7 +68,7 @@ StatusOr<Trajectory> ReadBagOdometry(const rosbag::Bag& bag, const std::string& 
   Trajectory odometry;
   int64_t index = 0;
   for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic))) {
-    auto msg = m.instantiate<nav_msgs::Odometry>();
+    auto msg = InstantiateChecked<nav_msgs::Odometry>(m);
     if (!msg) {
       return ParseError(path + ": " + topic + " message " + std::to_string(index) +
                         " is not a nav_msgs/Odometry");

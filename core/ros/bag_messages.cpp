@@ -9,6 +9,8 @@
 #include <limits>
 #include <map>
 
+#include "core/ros/message_check.h"
+
 namespace sightline {
 namespace {
 
@@ -17,8 +19,8 @@ std::string FirstEncoding(const rosbag::Bag& bag, const BagTopic& topic) {
   rosbag::View view(bag, rosbag::TopicQuery(topic.name));
   for (const rosbag::MessageInstance& m : view) {
     if (topic.type == kRosImageType) {
-      if (auto image = m.instantiate<sensor_msgs::Image>()) return image->encoding;
-    } else if (auto compressed = m.instantiate<sensor_msgs::CompressedImage>()) {
+      if (auto image = InstantiateChecked<sensor_msgs::Image>(m)) return image->encoding;
+    } else if (auto compressed = InstantiateChecked<sensor_msgs::CompressedImage>(m)) {
       return compressed->format;
     }
     break;

@@ -10,6 +10,7 @@
 
 #include "core/io/tum_rgbd_source.h"
 #include "core/ros/bag_messages.h"
+#include "core/ros/message_check.h"
 #include "core/ros/ros_image.h"
 
 namespace sightline {
@@ -57,10 +58,10 @@ StatusOr<cv::Mat> DecodeImage(const TopicMessages& t, size_t index, RosImageRole
   const rosbag::MessageInstance& m = t.messages[index];
   StatusOr<cv::Mat> image = InvalidArgument("is a " + m.getDataType() + ", not an image");
   if (m.getDataType() == kRosCompressedImageType && role == RosImageRole::kColor) {
-    if (auto msg = m.instantiate<sensor_msgs::CompressedImage>()) {
+    if (auto msg = InstantiateChecked<sensor_msgs::CompressedImage>(m)) {
       image = DecodeRosCompressedImage(*msg);
     }
-  } else if (auto msg = m.instantiate<sensor_msgs::Image>()) {
+  } else if (auto msg = InstantiateChecked<sensor_msgs::Image>(m)) {
     image = DecodeRosImage(*msg, role);
   }
   if (!image.ok()) return AtMessage(image.status(), path, t.topic, int64_t(index));
@@ -70,7 +71,7 @@ StatusOr<cv::Mat> DecodeImage(const TopicMessages& t, size_t index, RosImageRole
 StatusOr<sensor_msgs::CameraInfo> FirstCameraInfo(const rosbag::Bag& bag, const std::string& path,
                                                   const std::string& topic) {
   for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic))) {
-    if (auto info = m.instantiate<sensor_msgs::CameraInfo>()) return *info;
+    if (auto info = InstantiateChecked<sensor_msgs::CameraInfo>(m)) return *info;
     return ParseError(path + ": " + topic + " message 0 is a " + m.getDataType() +
                       ", not a sensor_msgs/CameraInfo");
   }
@@ -313,7 +314,7 @@ StatusOr<Frame> BagSource::LoadFrame(int64_t index) {
   const SourceKind kind = impl_->choice.kind;
   if (kind == SourceKind::kCloud) {
     const rosbag::MessageInstance& m = impl_->primary.messages[first];
-    auto msg = m.instantiate<sensor_msgs::PointCloud2>();
+    auto msg = InstantiateChecked<sensor_msgs::PointCloud2>(m);
     if (!msg) return ParseError(FrameFile(index) + " is not a sensor_msgs/PointCloud2");
     StatusOr<PointCloud> cloud = CloudFromRos(*msg);
     if (!cloud.ok()) return cloud.status().WithContext(FrameFile(index));

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "core/common/timing.h"
+#include "core/ros/checked_subscribe.h"
 #include "core/ros/ros_image.h"
 #include "core/sensors/timestamp_pairer.h"
 
@@ -77,18 +78,28 @@ void RosLiveSource::Impl::Subscribe() {
   const uint32_t depth = static_cast<uint32_t>(2 * options.queue);
   const std::string a = stereo ? options.left : options.image;
   const std::string b = stereo ? options.right : options.depth;
-  subs.push_back(
-      nh->subscribe<sensor_msgs::Image>(a, depth, [this](const ImagePtr& m) { OnImage(0, m); }));
+  auto refused = [this](const std::string& topic) {
+    return [this, topic](const std::string& why) {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++stats.refused;
+      stats.last_refused = nh->resolveName(topic) + ": " + why;
+    };
+  };
+  subs.push_back(SubscribeChecked<sensor_msgs::Image>(
+      *nh, a, depth, [this](const ImagePtr& m) { OnImage(0, m); }, refused(a)));
   if (!b.empty()) {
-    subs.push_back(
-        nh->subscribe<sensor_msgs::Image>(b, depth, [this](const ImagePtr& m) { OnImage(1, m); }));
+    subs.push_back(SubscribeChecked<sensor_msgs::Image>(
+        *nh, b, depth, [this](const ImagePtr& m) { OnImage(1, m); }, refused(b)));
   }
-  subs.push_back(nh->subscribe<sensor_msgs::CameraInfo>(
-      stereo ? options.left_info : options.info, 1,
-      [this](const sensor_msgs::CameraInfoConstPtr& m) { OnInfo(0, m); }));
+  const std::string info_a_topic = stereo ? options.left_info : options.info;
+  subs.push_back(SubscribeChecked<sensor_msgs::CameraInfo>(
+      *nh, info_a_topic, 1, [this](const sensor_msgs::CameraInfoConstPtr& m) { OnInfo(0, m); },
+      refused(info_a_topic)));
   if (stereo) {
-    subs.push_back(nh->subscribe<sensor_msgs::CameraInfo>(
-        options.right_info, 1, [this](const sensor_msgs::CameraInfoConstPtr& m) { OnInfo(1, m); }));
+    subs.push_back(SubscribeChecked<sensor_msgs::CameraInfo>(
+        *nh, options.right_info, 1,
+        [this](const sensor_msgs::CameraInfoConstPtr& m) { OnInfo(1, m); },
+        refused(options.right_info)));
   }
 }
 
@@ -164,7 +175,11 @@ Status RosLiveSource::Open() {
                        (stereo ? impl_->options.left_info + " and " + impl_->options.right_info
                                : impl_->options.info) +
                        " within " + std::to_string(impl_->options.wait_s) +
-                       " s (is the camera running? set info=TOPIC)");
+                       " s (is the camera running? set info=TOPIC)" +
+                       (impl_->stats.refused > 0
+                            ? "; " + std::to_string(impl_->stats.refused) +
+                                  " messages refused, the last: " + impl_->stats.last_refused
+                            : std::string()));
   }
   return impl_->FillInfo();
 }

@@ -44,6 +44,8 @@ struct RosLiveStats {
   int64_t unpaired = 0;         // Images dropped by the time sync (no partner).
   int64_t queue_overflows = 0;  // Synced frames dropped because the pipeline lagged.
   int64_t decode_errors = 0;    // Messages whose encoding could not be decoded.
+  int64_t refused = 0;          // Messages whose bytes do not hold what their type declares.
+  std::string last_refused;     // "/camera/camera_info: sensor_msgs/CameraInfo: field D ...".
 };
 
 // A source on live topics (not yet opened). Open fails with FailedPrecondition when ROS is not

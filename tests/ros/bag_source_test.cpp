@@ -4,6 +4,7 @@
 #include "core/ros/bag_source.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -373,6 +374,24 @@ TEST(BagSource, CameraInfoOfZerosOrMissingNamesTheTopicAndTheOption) {
   chosen.camera_info_topic = "/other/info_b";
   BagSource with_option(none, chosen);
   EXPECT_TRUE(with_option.Open().ok());
+}
+
+// A CameraInfo of a few hundred bytes whose D claims 0xfffffff0 doubles: refused by its length
+// before anything is allocated for it (decoding it would ask for 34 GB), naming the field.
+TEST(BagSource, AnArrayLongerThanItsMessageIsRefusedNamingTheField) {
+  const std::string path = TempDir("lying_info") + "/lying.bag";
+  ASSERT_TRUE(testing::WriteDefectiveBag(path, "lying_info").ok());
+  BagSource source(path);
+  const Status opened = source.Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), path)) << opened.ToString();
+  EXPECT_TRUE(Contains(opened.message(),
+                       "/cam/camera_info: sensor_msgs/CameraInfo: field D "
+                       "declares 4294967280 float64 values"))
+      << opened.ToString();
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  EXPECT_LT(usage.ru_maxrss, 1024L * 1024) << "peak RSS in KiB";
 }
 
 TEST(BagSource, TwoImageTopicsWithoutLeftAndRightAskForTheOption) {

@@ -10,6 +10,7 @@
 #include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 #include "core/sim/simulator.h"
+#include "tests/ros/raw_message.h"
 
 namespace sightline::testing {
 namespace {
@@ -128,7 +129,9 @@ Status WriteDefectiveBag(const std::string& path, const std::string& defect) {
         info = sensor_msgs::CameraInfo();
         info.header.stamp = RosTimeFromSeconds(t);
       }
-      if (defect == "no_info") {
+      if (defect == "lying_info") {
+        bag.write("/cam/camera_info", RosTimeFromSeconds(t), LyingCameraInfo(info));
+      } else if (defect == "no_info") {
         bag.write("/other/info_a", RosTimeFromSeconds(t), info);
         bag.write("/other/info_b", RosTimeFromSeconds(t), info);
       } else {

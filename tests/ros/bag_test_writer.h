@@ -43,6 +43,7 @@ StatusOr<SimBag> WriteSimBag(const std::string& path, const SimBagOptions& optio
 // "encoding": message 2 of the images has encoding 'yuv422';
 // "zero_info": the CameraInfo is all zeros;
 // "no_info": no CameraInfo topic at all (the camera info is on /other/info_a and /other/info_b);
+// "lying_info": every CameraInfo's distortion claims 0xfffffff0 doubles (a few hundred bytes);
 // "two_images": a second image topic /cam2/image_raw and no left/right in the names.
 Status WriteDefectiveBag(const std::string& path, const std::string& defect);
 

@@ -8,6 +8,7 @@
 
 #include "core/ros/ros_image.h"
 #include "core/ros/ros_live_source.h"
+#include "tests/ros/raw_message.h"
 #include "tests/ros/roscore_fixture.h"
 
 namespace sightline {
@@ -181,6 +182,41 @@ TEST_F(RosLive, ExactSyncDropsApproximatePairsAndTheQueueIsBounded) {
   const RosLiveStats stats = source.Stats();
   EXPECT_EQ(stats.queue_overflows, 7);
   EXPECT_GE(stats.unpaired, 1);  // Frame 10's colour (or depth) found no exact partner.
+}
+
+// A publisher whose CameraInfo claims 0xfffffff0 doubles of distortion in a few hundred bytes:
+// the source refuses it before roscpp would allocate 34 GB for it, says so when no usable
+// CameraInfo came, and takes the next good one from the same publisher.
+TEST_F(RosLive, AMessageThatLiesAboutItsLengthIsRefusedAndNamed) {
+  ros::NodeHandle nh;
+  ros::Publisher info =
+      nh.advertise<testing::RawMessage<sensor_msgs::CameraInfo>>("/lie/camera_info", 1, true);
+  PinholeCamera camera;
+  camera.width = 64;
+  camera.height = 48;
+  camera.fx = camera.fy = 50;
+  camera.cx = 32;
+  camera.cy = 24;
+  const sensor_msgs::CameraInfo good = RosInfoFromCamera(camera, 0, "camera");
+  info.publish(testing::LyingCameraInfo(good));
+  {
+    RosLiveSource source(ParseRosLiveUri("ros://?image=/lie/image&wait=2").value());
+    const Status opened = source.Open();
+    ASSERT_EQ(opened.code(), StatusCode::kUnavailable) << opened.ToString();
+    EXPECT_NE(opened.message().find("messages refused, the last: /lie/camera_info: "
+                                    "sensor_msgs/CameraInfo: field D declares 4294967280"),
+              std::string::npos)
+        << opened.ToString();
+    EXPECT_GE(source.Stats().refused, 1);
+  }
+  testing::RawMessage<sensor_msgs::CameraInfo> raw;
+  raw.bytes = testing::SerializedBytes(good);
+  info.publish(raw);
+  RosLiveSource source(ParseRosLiveUri("ros://?image=/lie/image&wait=10").value());
+  ASSERT_TRUE(source.Open().ok());
+  ASSERT_TRUE(source.info().camera.has_value());
+  EXPECT_DOUBLE_EQ(source.info().camera->fx, 50);
+  EXPECT_EQ(source.Stats().refused, 0);
 }
 
 // Bags and live topics build frames by one rule: a pair of one size, RGB-D colour as BGR, a
