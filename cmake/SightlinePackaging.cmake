@@ -1,6 +1,7 @@
-# What `cmake --install` and the Debian package hold: the two programs, their man pages
-# (generated from --help at build time), the desktop entry, the icon, the AppStream metainfo,
-# the translations and the README. No test, benchmark or static library is installed.
+# What `cmake --install` and the Debian package hold: the programs (sightline-node too when
+# built with ROS), their man pages (generated from --help at build time), the desktop entry,
+# the icon, the AppStream metainfo, the translations and the README. No test, benchmark or
+# static library is installed.
 # packaging/make-deb.sh builds the package from an existing build folder with CPack.
 include(GNUInstallDirs)
 
@@ -8,14 +9,21 @@ include(GNUInstallDirs)
 # exactly the installed targets first.
 set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
-install(TARGETS sightline sightline-cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# sightline-node (the ROS 1 front end) when the build has ROS.
+set(_programs sightline sightline-cli)
+if(TARGET sightline-node)
+  list(APPEND _programs sightline-node)
+endif()
+install(TARGETS ${_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Man pages from each program's --help, so they never drift from it.
 set(_man_dir ${CMAKE_BINARY_DIR}/man)
 set(_man_pages)
-foreach(_program IN ITEMS sightline sightline-cli)
+foreach(_program IN LISTS _programs)
   if(_program STREQUAL "sightline")
     set(_summary "robot perception on live sensors and recorded data (desktop application)")
+  elseif(_program STREQUAL "sightline-node")
+    set(_summary "run one Sightline pipeline as a ROS 1 node and publish its results")
   else()
     set(_summary "run Sightline's perception pipelines, evaluations and recordings headless")
   endif()
@@ -64,7 +72,8 @@ set(CPACK_PACKAGE_DESCRIPTION
     "Sightline runs robot perception pipelines (indoor mapping, stereo visual odometry, a\n"
     "mobility map, monocular SLAM, a button picker for a wheelchair-mounted arm) on RGB-D,\n"
     "stereo and monocular cameras, live or recorded. sightline is the desktop application,\n"
-    "sightline-cli runs every pipeline and evaluation headless.")
+    "sightline-cli runs every pipeline and evaluation headless, sightline-node runs them as\n"
+    "a ROS 1 node.")
 string(JOIN "" CPACK_PACKAGE_DESCRIPTION ${CPACK_PACKAGE_DESCRIPTION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the Debian package build/packages/sightline_VERSION_ARCH.deb from the build folder:
-# builds only what the package holds (the two programs and their man pages; an up-to-date build
+# builds only what the package holds (the programs and their man pages; an up-to-date build
 # folder builds nothing), then CPack installs them into a staging folder and dpkg-shlibdeps
 # computes the dependencies. Prints the package's path on its last line.
 # Usage: make-deb.sh [BUILD_DIR]   (default: build/, configured first when it does not exist)
@@ -20,7 +20,11 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
 fi
 if [ "${SIGHTLINE_DEB_NO_BUILD:-0}" != 1 ]; then
-  cmake --build "$build" --target sightline sightline-cli sightline_man_pages -j"$jobs"
+  targets="sightline sightline-cli"
+  # sightline-node when the build has ROS (SIGHTLINE_WITH_ROS).
+  grep -q '^SIGHTLINE_WITH_ROS:BOOL=ON' "$build/CMakeCache.txt" && targets="$targets sightline-node"
+  # shellcheck disable=SC2086
+  cmake --build "$build" --target $targets sightline_man_pages -j"$jobs"
 fi
 rm -f "$build"/packages/sightline_*.deb
 (cd "$build" && cpack -G DEB -C Release >"$build/cpack.log" 2>&1) || {

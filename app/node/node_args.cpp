@@ -23,6 +23,7 @@ const char kHelp[] =
     "--out: the run's files and metrics.json (default $ROS_HOME/sightline/PIPELINE).\n"
     "--linger S: after the source ends, keep serving the latched topics S seconds (default:\n"
     "until Ctrl-C or rosnode kill).\n"
+    "'sightline-node --version' prints the version and the git commit it was built from.\n"
     "\nExit codes: 0 results written; 1 an error (no master, bad option, source, data);\n"
     "3 the run achieved nothing; 4 the ROS master went away during the run (the run went on to\n"
     "its end and wrote its files; subscribers already connected kept receiving); 130 cancelled\n"

@@ -5,8 +5,10 @@
 
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 
 #include "app/node/node_run.h"
+#include "sightline_version.h"
 
 namespace {
 
@@ -27,6 +29,10 @@ void InstallInterruptHandlers() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-v") == 0)) {
+    std::printf("sightline-node %s (commit %s)\n", SIGHTLINE_VERSION, SIGHTLINE_GIT_COMMIT);
+    return 0;
+  }
   // ros::init takes the remappings (topic:=/other, __name:=, __ns:=, _param:=value) out of argv.
   ros::init(argc, argv, "sightline", ros::init_options::NoSigintHandler);
   const std::vector<std::string> args(argv + 1, argv + argc);

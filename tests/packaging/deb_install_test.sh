@@ -39,6 +39,14 @@ for needed in libc6 libstdc++6 libqt6widgets6 libqt6gui6 libqt6core6 libvtk9.1 \
               libopencv-core406 libyaml-cpp0.7 qt6-qpa-plugins; do
   grep -qxF "$needed" depends.txt || fail "Depends lacks $needed"
 done
+# A build with ROS ships sightline-node, which needs Debian's roscpp at run time.
+with_ros=0
+grep -q '^SIGHTLINE_WITH_ROS:BOOL=ON' "$build_dir/CMakeCache.txt" && with_ros=1
+if [ "$with_ros" = 1 ]; then
+  for needed in libroscpp4d librosbag-storage4d; do
+    grep -qxF "$needed" depends.txt || fail "Depends lacks $needed (sightline-node)"
+  done
+fi
 grep -E '^libqt5|-dev$' depends.txt && fail "Depends names Qt5 or a -dev package (above)"
 grep -q '^ Installed-Size: ' info.txt || fail "no Installed-Size in the control data"
 
@@ -56,6 +64,11 @@ for ts in "$source_dir"/translations/sightline_*.ts; do
   qm="/usr/share/sightline/translations/$(basename "${ts%.ts}").qm"
   grep -qx "$qm" files.txt || fail "the package lacks $qm"
 done
+if [ "$with_ros" = 1 ]; then
+  for file in /usr/bin/sightline-node /usr/share/man/man1/sightline-node.1.gz; do
+    grep -qx "$file" files.txt || fail "the package lacks $file"
+  done
+fi
 grep -E '/(test_|bench_)[^/]*$|\.a$|/include/' files.txt && fail "test, benchmark or build files above"
 
 mkdir root && dpkg -x "$deb" root || { echo "FAIL: dpkg -x failed"; exit 1; }
@@ -63,7 +76,9 @@ cli="$work/root/usr/bin/sightline-cli"
 gui="$work/root/usr/bin/sightline"
 unset QT_QPA_PLATFORM_PLUGIN_PATH QT_PLUGIN_PATH  # Qt finds its plugins as installed.
 
-for program in "$cli" "$gui"; do
+programs=("$cli" "$gui")
+[ "$with_ros" = 1 ] && programs+=("$work/root/usr/bin/sightline-node")
+for program in "${programs[@]}"; do
   out=$(QT_QPA_PLATFORM=offscreen "$program" --version 2>&1)
   echo "$out" | grep -Eq "$version \(commit [0-9a-f]{7,}" ||
     fail "$(basename "$program") --version printed '$out'"
@@ -72,6 +87,10 @@ zcat root/usr/share/man/man1/sightline-cli.1.gz | grep -q 'info PATH' ||
   fail "the sightline-cli man page lacks its commands"
 zcat root/usr/share/man/man1/sightline.1.gz | grep -q '\\-\\-screenshot' ||
   fail "the sightline man page lacks its options"
+if [ "$with_ros" = 1 ]; then
+  zcat root/usr/share/man/man1/sightline-node.1.gz | grep -q '\\-\\-pipeline' ||
+    fail "the sightline-node man page lacks its options"
+fi
 grep -q '^Exec=sightline' root/usr/share/applications/sightline.desktop ||
   fail "the desktop entry does not start sightline"
 if command -v desktop-file-validate >/dev/null; then
