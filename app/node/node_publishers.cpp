@@ -4,6 +4,8 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <cmath>
+
 #include "core/pipeline/mobility_result.h"
 #include "core/pipeline/mono_slam_result.h"
 #include "core/pipeline/stereo_vo_result.h"
@@ -61,11 +63,18 @@ class MappingPublisher : public BasePublisher {
   ros::Publisher map_, scan_, walls_;
 };
 
+// stereo-vo: odometry + tf, the frame's triangulated inliers, and a keyframe arrow every
+// kKeyframeStepM travelled or kKeyframeTurnRad turned (for viewers; the estimator has none).
 class StereoVoPublisher : public BasePublisher {
  public:
+  static constexpr double kKeyframeStepM = 0.5;
+  static constexpr double kKeyframeTurnRad = 15 * M_PI / 180;
+
   StereoVoPublisher(const StatisticTable& table, ros::NodeHandle& nh, const RosFrames& frames)
       : BasePublisher("stereo-vo", table, nh, frames) {
     odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+    points_ = nh.advertise<sensor_msgs::PointCloud2>("map_points", 2);
+    keyframes_ = nh.advertise<visualization_msgs::MarkerArray>("keyframes", 1, /*latch=*/true);
   }
 
  protected:
@@ -76,10 +85,21 @@ class StereoVoPublisher : public BasePublisher {
     const Eigen::Isometry3d& pose = result->odometry->world_from_camera;
     odom_.publish(OdometryMessage(pose, t, frames().odom, frames().camera));
     tf().sendTransform(TransformMessage(pose, t, frames().odom, frames().camera));
+    points_.publish(StereoPointsMessage(*result->odometry, result->camera, frames().odom));
+    const bool first = keyframes_so_far_.empty();
+    const Eigen::Isometry3d step =
+        first ? Eigen::Isometry3d::Identity()
+              : keyframes_so_far_.back().frame_from_camera.inverse() * pose;
+    if (first || step.translation().norm() >= kKeyframeStepM ||
+        Eigen::AngleAxisd(step.rotation()).angle() >= kKeyframeTurnRad) {
+      keyframes_so_far_.push_back({result->stamp.sequence_id, pose});
+      keyframes_.publish(PoseArrowMarkers(keyframes_so_far_, t, frames().odom));
+    }
   }
 
  private:
-  ros::Publisher odom_;
+  ros::Publisher odom_, points_, keyframes_;
+  std::vector<IdentifiedPose> keyframes_so_far_;
 };
 
 // mono-slam; the button pipeline's SLAM part too (its result derives from mono-slam's).

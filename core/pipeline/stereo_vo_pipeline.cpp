@@ -201,6 +201,7 @@ StatusOr<std::shared_ptr<const PipelineResult>> StereoVoPipeline::Process(const 
   auto result = std::make_shared<StereoVoResult>();
   result->stamp = r.stamp;
   result->odometry = *odometry;
+  result->camera = odometry_->camera();
   result->stats = StatValues(r.stats, ran);
   // A gated frame says why, as frames.csv's status. The first frame is the origin, not a
   // problem: its status stays ok (frames.csv's status is empty, the GUI logs nothing).

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/pipeline/pipeline.h"
+#include "core/stereo/stereo_geometry.h"
 #include "core/stereo/stereo_types.h"
 
 namespace sightline {
@@ -16,6 +17,8 @@ namespace sightline {
 struct StereoVoResult : PipelineResult {
   // Features, matches, pose and rectified images (null when the frame gave no estimate).
   std::shared_ptr<const StereoOdometryResult> odometry;
+  // The rectified camera the feature positions refer to (triangulates them).
+  RectifiedStereoCamera camera;
   // The recording's ground-truth pose of this frame (within stereo.gt_tolerance_s), expressed
   // relative to the first frame that had one, as the estimate starts at identity.
   std::optional<Eigen::Isometry3d> ground_truth;

@@ -28,6 +28,8 @@
 #include "core/pipeline/pipeline.h"
 #include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
+#include "core/stereo/stereo_geometry.h"
+#include "core/stereo/stereo_types.h"
 
 namespace sightline {
 
@@ -83,9 +85,23 @@ std::vector<geometry_msgs::TransformStamped> MappingTransforms(const MappingResu
 // The map points of a SLAM map snapshot in `frame_id`.
 sensor_msgs::PointCloud2 MapPointsMessage(const MapSnapshot& map, double stamp_s,
                                           const std::string& frame_id);
-// The keyframes as one ARROW marker each (the camera's z axis), after a DELETEALL marker.
+// A camera pose with the id its marker takes.
+struct IdentifiedPose {
+  int64_t id = 0;
+  Eigen::Isometry3d frame_from_camera = Eigen::Isometry3d::Identity();
+};
+// One ARROW marker per pose (its camera's z axis, 10 cm), after a DELETEALL marker, so that the
+// array replaces what an earlier one showed.
+visualization_msgs::MarkerArray PoseArrowMarkers(const std::vector<IdentifiedPose>& poses,
+                                                 double stamp_s, const std::string& frame_id);
+// The keyframes of a SLAM map snapshot as PoseArrowMarkers.
 visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double stamp_s,
                                                 const std::string& frame_id);
+// stereo-vo: the frame's inlier features triangulated with the rectified `camera` and placed
+// by the frame's pose (world_from_camera) in `frame_id`; stamped with the frame's time.
+sensor_msgs::PointCloud2 StereoPointsMessage(const StereoOdometryResult& odometry,
+                                             const RectifiedStereoCamera& camera,
+                                             const std::string& frame_id);
 
 // --- mobility ---
 

@@ -11,8 +11,8 @@ sensor_msgs::PointCloud2 MapPointsMessage(const MapSnapshot& map, double stamp_s
   return PointCloudMessage(points, stamp_s, frame_id);
 }
 
-visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double stamp_s,
-                                                const std::string& frame_id) {
+visualization_msgs::MarkerArray PoseArrowMarkers(const std::vector<IdentifiedPose>& poses,
+                                                 double stamp_s, const std::string& frame_id) {
   visualization_msgs::MarkerArray out;
   visualization_msgs::Marker marker;
   marker.header.frame_id = frame_id;
@@ -29,10 +29,10 @@ visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double s
   marker.color.b = 1.0f;
   marker.color.a = 1;
   marker.pose.orientation.w = 1;
-  for (const MapSnapshot::Frame& keyframe : map.keyframes) {
-    marker.id = static_cast<int>(keyframe.id);
-    const Eigen::Vector3d from = keyframe.map_from_camera.translation();
-    const Eigen::Vector3d to = keyframe.map_from_camera * Eigen::Vector3d(0, 0, 0.1);
+  for (const IdentifiedPose& pose : poses) {
+    marker.id = static_cast<int>(pose.id);
+    const Eigen::Vector3d from = pose.frame_from_camera.translation();
+    const Eigen::Vector3d to = pose.frame_from_camera * Eigen::Vector3d(0, 0, 0.1);
     marker.points.resize(2);
     marker.points[0].x = from.x();
     marker.points[0].y = from.y();
@@ -43,6 +43,30 @@ visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double s
     out.markers.push_back(marker);
   }
   return out;
+}
+
+visualization_msgs::MarkerArray KeyframeMarkers(const MapSnapshot& map, double stamp_s,
+                                                const std::string& frame_id) {
+  std::vector<IdentifiedPose> poses;
+  poses.reserve(map.keyframes.size());
+  for (const MapSnapshot::Frame& keyframe : map.keyframes) {
+    poses.push_back({keyframe.id, keyframe.map_from_camera});
+  }
+  return PoseArrowMarkers(poses, stamp_s, frame_id);
+}
+
+sensor_msgs::PointCloud2 StereoPointsMessage(const StereoOdometryResult& odometry,
+                                             const RectifiedStereoCamera& camera,
+                                             const std::string& frame_id) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(odometry.features.size());
+  for (const TrackedFeature& f : odometry.features) {
+    const double disparity = f.left.x - f.right.x;
+    if (f.role != FeatureRole::kInlier || !(disparity > 0) || !(camera.f > 0)) continue;
+    points.push_back(odometry.world_from_camera *
+                     camera.Triangulate(f.left.x, f.left.y, disparity));
+  }
+  return PointCloudMessage(points, odometry.stamp.sensor_time_s, frame_id);
 }
 
 }  // namespace sightline

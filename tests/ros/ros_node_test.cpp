@@ -11,7 +11,9 @@
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Empty.h>
+#include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -177,6 +179,12 @@ TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
   Inbox<nav_msgs::Odometry> odoms;
   // Remapped by the node's arguments: odom:=/vo/odom.
   ros::Subscriber sub = nh.subscribe("/vo/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  Inbox<sensor_msgs::PointCloud2> clouds;
+  ros::Subscriber points_sub =
+      nh.subscribe("/map_points", 100, &Inbox<sensor_msgs::PointCloud2>::Take, &clouds);
+  Inbox<visualization_msgs::MarkerArray> keyframes;
+  ros::Subscriber keyframes_sub =
+      nh.subscribe("/keyframes", 100, &Inbox<visualization_msgs::MarkerArray>::Take, &keyframes);
   const std::string out = testing::TempDir("ros_node_stereo_node");
   const std::string log = testing::TempDir("ros_node_stereo_log") + "/node.log";
   ChildProcess node;
@@ -206,6 +214,62 @@ TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
   }
   // The last pose: the drive moved (a real comparison, not identity against identity).
   EXPECT_GT(trajectory.rbegin()->second.head<3>().norm(), 0.5);
+
+  // map_points: each frame's triangulated inliers in odom; back in that frame's camera (by the
+  // headless pose of its stamp) every point lies in front of it, within the corridor's reach.
+  const auto pose_at = [&](double stamp) {
+    const auto row = trajectory.lower_bound(stamp - 1e-4);
+    EXPECT_NE(row, trajectory.end());
+    const auto& v = row->second;
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = Eigen::Quaterniond(v[6], v[3], v[4], v[5]).normalized().toRotationMatrix();
+    pose.translation() = v.head<3>();
+    return pose;
+  };
+  const auto received_clouds = clouds.messages();
+  ASSERT_GE(received_clouds.size(), 15u);
+  size_t most_points = 0;
+  for (const auto& cloud : received_clouds) {
+    EXPECT_EQ(cloud.header.frame_id, "odom");
+    const Eigen::Isometry3d camera_from_odom = pose_at(cloud.header.stamp.toSec()).inverse();
+    ASSERT_EQ(cloud.point_step % 4, 0u);
+    const size_t n = cloud.width * cloud.height;
+    most_points = std::max(most_points, n);
+    for (size_t i = 0; i < n; ++i) {
+      float xyz[3];
+      std::memcpy(xyz, &cloud.data[i * cloud.point_step], sizeof(xyz));
+      const Eigen::Vector3d p = camera_from_odom * Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+      EXPECT_GT(p.z(), 0.2) << "point " << i << " at " << cloud.header.stamp.toSec();
+      EXPECT_LT(p.norm(), 60.0) << "point " << i << " at " << cloud.header.stamp.toSec();
+    }
+  }
+  EXPECT_GE(most_points, 50u);
+
+  // keyframes (latched, whole list each time): an arrow at the first pose and at every pose
+  // 0.5 m or 15 deg away from the last arrow's, the same rule applied to the headless poses.
+  std::vector<Eigen::Vector3d> expected_arrows;
+  Eigen::Isometry3d last = Eigen::Isometry3d::Identity();
+  for (const auto& [stamp, row] : trajectory) {
+    const Eigen::Isometry3d pose = pose_at(stamp);
+    const Eigen::Isometry3d step = last.inverse() * pose;
+    if (expected_arrows.empty() || step.translation().norm() >= 0.5 ||
+        Eigen::AngleAxisd(step.rotation()).angle() >= 15 * M_PI / 180) {
+      expected_arrows.push_back(pose.translation());
+      last = pose;
+    }
+  }
+  ASSERT_GE(expected_arrows.size(), 2u);
+  const auto arrays = keyframes.messages();
+  ASSERT_FALSE(arrays.empty());
+  const auto& markers = arrays.back().markers;
+  ASSERT_EQ(markers.size(), expected_arrows.size() + 1);  // After the DELETEALL marker.
+  EXPECT_EQ(markers[0].action, visualization_msgs::Marker::DELETEALL);
+  for (size_t i = 0; i < expected_arrows.size(); ++i) {
+    const auto& from = markers[i + 1].points.at(0);
+    EXPECT_NEAR(from.x, expected_arrows[i].x(), 1e-5) << "arrow " << i;
+    EXPECT_NEAR(from.y, expected_arrows[i].y(), 1e-5) << "arrow " << i;
+    EXPECT_NEAR(from.z, expected_arrows[i].z(), 1e-5) << "arrow " << i;
+  }
 }
 
 // sightline-node on live ros:// topics: the test plays the stereo recording onto image and
