@@ -1,7 +1,11 @@
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "core/common/json_writer.h"
 #include "core/io/dataset.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/sensors/driver_registry.h"
@@ -20,36 +24,100 @@ int Fail(const std::string& message) {
 namespace {
 
 #ifdef SIGHTLINE_HAVE_ROS
-// "pipelines:" lines of a bag: what each pipeline would read from it, and with which option
-// when the automatic choice is another kind.
-std::string BagPipelinesText(const BagSummary& bag, const RosBagOptions& options,
-                             const Source* opened) {
+// What one pipeline would read from a bag.
+struct BagPipelineUse {
+  std::string pipeline;
+  std::optional<BagTopicChoice> choice;  // None when the bag has no frames it takes.
+  std::string kind_word;                 // "stereo" when it needs --set io.rosbag.kind=stereo.
+  std::string needs;                     // "stereo frames" when there is no choice.
+};
+
+// For each pipeline, the frames it would read from the bag (the opened source's kind when it
+// takes that), and with which option when the automatic choice is another kind.
+std::vector<BagPipelineUse> BagPipelineUses(const BagSummary& bag, const RosBagOptions& options,
+                                            const Source* opened) {
+  static const char* const kKindWords[] = {"rgbd", "stereo", "mono", "cloud"};
   const std::vector<BagTopicChoice> possible = PossibleBagChoices(bag, options);
-  std::string text = "pipelines:\n";
+  std::vector<BagPipelineUse> uses;
   const PipelineRegistry registry = BuiltinPipelines();
   for (const PipelineInfo& p : registry.pipelines()) {
-    std::string line = "  " + p.name + ": ";
-    const BagTopicChoice* use = nullptr;
+    BagPipelineUse use;
+    use.pipeline = p.name;
     for (const BagTopicChoice& c : possible) {
       if (!p.Accepts(c.kind)) continue;
-      if (use == nullptr || (opened != nullptr && c.kind == opened->info().kind)) use = &c;
+      if (!use.choice || (opened != nullptr && c.kind == opened->info().kind)) use.choice = c;
     }
-    if (use == nullptr) {
+    if (!use.choice) {
       std::string kinds;
       for (SourceKind k : p.accepts)
         kinds += (kinds.empty() ? "" : " or ") + std::string(SourceKindName(k));
-      line += "no (needs " + (kinds.empty() ? std::string("frames") : kinds) + " frames)";
-    } else {
-      line += use->Describe();
-      if (opened == nullptr || use->kind != opened->info().kind) {
-        static const char* const kKindWords[] = {"rgbd", "stereo", "mono", "cloud"};
-        line += std::string(" (with --set io.rosbag.kind=") +
-                kKindWords[static_cast<int>(use->kind)] + ")";
-      }
+      use.needs = (kinds.empty() ? std::string("frames") : kinds) + " frames";
+    } else if (opened == nullptr || use.choice->kind != opened->info().kind) {
+      use.kind_word = kKindWords[static_cast<int>(use.choice->kind)];
     }
-    text += line + "\n";
+    uses.push_back(std::move(use));
+  }
+  return uses;
+}
+
+// "pipelines:" lines of `info`.
+std::string BagPipelinesText(const std::vector<BagPipelineUse>& uses) {
+  std::string text = "pipelines:\n";
+  for (const BagPipelineUse& use : uses) {
+    text += "  " + use.pipeline + ": ";
+    if (!use.choice) {
+      text += "no (needs " + use.needs + ")\n";
+      continue;
+    }
+    text += use.choice->Describe();
+    if (!use.kind_word.empty()) text += " (with --set io.rosbag.kind=" + use.kind_word + ")";
+    text += "\n";
   }
   return text;
+}
+
+// `info --json`'s "pipelines": {"mapping": {"reads": "...", "set": "io.rosbag.kind=mono" or
+// null, "needs": null}, "stereo-vo": {"reads": null, "set": null, "needs": "stereo frames"}}.
+std::string BagPipelinesJson(const std::vector<BagPipelineUse>& uses) {
+  JsonWriter w;
+  w.BeginObject();
+  for (const BagPipelineUse& use : uses) {
+    w.Key(use.pipeline).BeginObject();
+    w.Key("reads");
+    use.choice ? w.String(use.choice->Describe()) : w.Null();
+    w.Key("set");
+    use.kind_word.empty() ? w.Null() : w.String("io.rosbag.kind=" + use.kind_word);
+    w.Key("needs");
+    use.needs.empty() ? w.Null() : w.String(use.needs);
+    w.EndObject();
+  }
+  w.EndObject();
+  return w.str();
+}
+
+// `info --json` of a bag: the source's object (or the path and the error when its frames
+// cannot be read) with "bag" and "pipelines" added.
+std::string BagInfoJson(const std::string& path, const BagSummary& bag,
+                        const StatusOr<std::unique_ptr<Source>>& source,
+                        const std::vector<BagPipelineUse>& uses) {
+  std::string head;
+  if (source.ok()) {
+    head = DescribeSourceJson(**source);
+    head.erase(head.find_last_of('}'));  // Reopen the object to add the bag's keys.
+    while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
+    head += ",\n";
+  } else {
+    head = "{\n  \"path\": \"" + JsonWriter::Escape(path) + "\",\n  \"error\": \"" +
+           JsonWriter::Escape(source.status().ToString()) + "\",\n";
+  }
+  const auto indented = [](std::string json) {  // One level deeper than the top object.
+    for (size_t i = json.find('\n'); i != std::string::npos; i = json.find('\n', i + 3)) {
+      json.insert(i + 1, "  ");
+    }
+    return json;
+  };
+  return head + "  \"bag\": " + indented(DescribeBagSummaryJson(bag)) +
+         ",\n  \"pipelines\": " + indented(BagPipelinesJson(uses)) + "\n}\n";
 }
 #endif
 
@@ -60,15 +128,15 @@ int BagInfo(const std::string& path, const OptionSet& options, bool json) {
   StatusOr<BagSummary> bag = ReadBagSummary(path);
   if (!bag.ok()) return Fail(bag.status().ToString());
   StatusOr<std::unique_ptr<Source>> source = OpenSource(path, options);
+  const std::vector<BagPipelineUse> uses = BagPipelineUses(
+      *bag, options.Extract(RosBagOptions::Describe()), source.ok() ? source->get() : nullptr);
   if (json) {
-    if (!source.ok()) return Fail(source.status().ToString());
-    std::fputs((DescribeSourceJson(**source) + "\n").c_str(), stdout);
-    return 0;
+    std::fputs(BagInfoJson(path, *bag, source, uses).c_str(), stdout);
+    return source.ok() ? 0 : Fail(source.status().ToString());
   }
   std::string text = DescribeBagSummaryText(*bag);
   if (source.ok()) text += DescribeSourceText(**source);
-  text += BagPipelinesText(*bag, options.Extract(RosBagOptions::Describe()),
-                           source.ok() ? source->get() : nullptr);
+  text += BagPipelinesText(uses);
   std::fputs(text.c_str(), stdout);
   if (!source.ok()) return Fail(source.status().ToString());
   return 0;
@@ -89,7 +157,7 @@ int InfoCommand(const std::vector<std::string>& args) {
       "resolution, calibration, ground truth and duration. --json prints the same as JSON.\n"
       "A .bag also lists its topics (type, messages), duration and compression, and what each\n"
       "pipeline would read from it; --set io.rosbag.image_topic=... (see 'sightline-cli options\n"
-      "stereo-vo') chooses topics.\n";
+      "stereo-vo') chooses topics. With --json a .bag adds \"bag\" (topics) and \"pipelines\".\n";
   StatusOr<CliArgs> parsed = CliArgs::Parse(args, {"--set"}, {"--json", "--help"});
   if (!parsed.ok()) return Fail("info: " + parsed.status().message());
   if (parsed->Has("--help")) {

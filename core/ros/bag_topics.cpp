@@ -4,6 +4,8 @@
 #include <optional>
 #include <sstream>
 
+#include "core/common/json_writer.h"
+
 namespace sightline {
 namespace {
 
@@ -356,6 +358,32 @@ std::string DescribeBagSummaryText(const BagSummary& bag) {
     out << "\n";
   }
   return out.str();
+}
+
+std::string DescribeBagSummaryJson(const BagSummary& bag) {
+  JsonWriter w;
+  w.BeginObject();
+  w.Key("duration_s").Double(bag.end_s - bag.start_s);
+  w.Key("messages").Int(bag.messages);
+  w.Key("compression").String(bag.layout.CompressionText());
+  w.Key("chunks").Int(bag.layout.chunks);
+  w.Key("topics").BeginArray();
+  for (const BagTopic& t : bag.topics) {
+    w.BeginObject();
+    w.Key("name").String(t.name);
+    w.Key("type").String(t.type);
+    w.Key("messages").Int(t.messages);
+    w.Key("encoding");
+    if (t.encoding.empty()) {
+      w.Null();
+    } else {
+      w.String(t.encoding);
+    }
+    w.EndObject();
+  }
+  w.EndArray();
+  w.EndObject();
+  return w.str();
 }
 
 }  // namespace sightline

@@ -81,5 +81,8 @@ StatusOr<BagSummary> ReadBagSummary(const std::string& path);
 
 // "topics:" lines (name, type, messages), duration and compression, as `info` prints them.
 std::string DescribeBagSummaryText(const BagSummary& bag);
+// The same as a JSON object: {"duration_s", "messages", "compression", "chunks", "topics":
+// [{"name", "type", "messages", "encoding"}]} (`info --json`'s "bag").
+std::string DescribeBagSummaryJson(const BagSummary& bag);
 
 }  // namespace sightline

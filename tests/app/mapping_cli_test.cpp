@@ -183,6 +183,35 @@ TEST_F(MappingCli, ABagsOdometryTopicGivesTheTranslationAsOdometryTxtDoes) {
   // mapped from the bag, so the figures are close, not equal.
   EXPECT_NEAR(*value(b, "ate_rmse_m"), *value(a, "ate_rmse_m"), 0.1);
 }
+// info --json of a bag: the source's keys, the bag's topics and what each pipeline reads; when
+// the frames cannot be read, the error beside the topics (exit 1).
+TEST(BagInfoCli, JsonListsTheTopicsAndWhatEachPipelineReads) {
+  const std::string dir = testing::TempDir("bag_info_json");
+  const auto sim = Cli("simulate corridor --out " + dir +
+                       " --frames 3 --sensors rgbd,stereo --quiet --format bag"
+                       " --set sim.rgbd.resolution=320x240");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  const std::string bag = dir + "/corridor.bag";
+  const auto info = Cli("info --json " + bag);
+  ASSERT_EQ(info.exit_code, 0) << info.out;
+  for (const char* part :
+       {"\"kind\": \"RGB-D\"", "\"frames\": 3", "\"compression\": \"none\"",
+        "\"name\": \"/odom\",\n        \"type\": \"nav_msgs/Odometry\",\n        \"messages\": 3",
+        "\"name\": \"/camera/depth/image\",\n        \"type\": \"sensor_msgs/Image\",\n"
+        "        \"messages\": 3,\n        \"encoding\": \"32FC1\"",
+        "\"stereo-vo\": {\n      \"reads\": \"stereo pairs from /stereo/left/image_raw (left) + "
+        "/stereo/right/image_raw (right)\",\n      \"set\": \"io.rosbag.kind=stereo\"",
+        "\"mapping\": {\n      \"reads\": \"RGB-D frames from /camera/rgb/image_color (colour) + "
+        "/camera/depth/image (depth)\",\n      \"set\": null"}) {
+    EXPECT_TRUE(Contains(info.out, part)) << part << "\n" << info.out;
+  }
+  const auto broken = Cli("info --json " + bag + " --set io.rosbag.image_topic=/nope");
+  EXPECT_EQ(broken.exit_code, 1) << broken.out;
+  EXPECT_TRUE(Contains(broken.out, "\"error\": \"invalid argument: " + bag +
+                                       ": io.rosbag.image_topic '/nope' is not a topic"))
+      << broken.out;
+  EXPECT_TRUE(Contains(broken.out, "\"name\": \"/stereo/right/image_raw\"")) << broken.out;
+}
 #endif  // SIGHTLINE_HAVE_ROS
 
 }  // namespace
