@@ -1,6 +1,8 @@
 #include "app/node/node_button.h"
 
 #include <geometry_msgs/PointStamped.h>
+#include <sensor_msgs/CompressedImage.h>
+#include <sensor_msgs/Image.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
@@ -39,10 +41,15 @@ class ButtonPublisher : public ResultPublisher {
  public:
   ButtonPublisher(const StatisticTable& table, ros::NodeHandle& nh, const RosFrames& frames,
                   std::shared_ptr<ButtonCommands> commands)
-      : slam_(MakeSlamPublisher("button", table, nh, frames)), commands_(std::move(commands)) {
+      : slam_(MakeSlamPublisher("button", table, nh, frames)),
+        commands_(std::move(commands)),
+        camera_frame_(frames.camera) {
     target_ = nh.advertise<geometry_msgs::PoseStamped>("button_target", 10);
     stop_ = nh.advertise<std_msgs::Bool>("stop", 1, /*latch=*/true);
     gate_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("diagnostics", 10);
+    // The image the operator taps on, stamped with its frame's time (a tap carries that stamp).
+    image_ = nh.advertise<sensor_msgs::Image>("button_image", 2);
+    jpeg_ = nh.advertise<sensor_msgs::CompressedImage>("button_image/compressed", 2);
     subs_.push_back(nh.subscribe("button_tap", 10, &ButtonPublisher::OnTap, this));
     subs_.push_back(nh.subscribe("button_confirm", 10, &ButtonPublisher::OnConfirm, this));
     subs_.push_back(nh.subscribe("button_cancel", 10, &ButtonPublisher::OnCancel, this));
@@ -55,6 +62,7 @@ class ButtonPublisher : public ResultPublisher {
     const auto* result = dynamic_cast<const ButtonFrameResult*>(&base);
     if (result == nullptr) return;
     seen_.Add(result->stamp.sensor_time_s, result->stamp.sequence_id);
+    PublishImage(*result);
     diagnostic_msgs::DiagnosticArray gate;
     gate.header.stamp = RosTimeFromSeconds(result->stamp.sensor_time_s);
     gate.status.push_back(ButtonGateStatus(*result));
@@ -77,6 +85,21 @@ class ButtonPublisher : public ResultPublisher {
   }
 
  private:
+  // Encoded only for subscribers (a remote operator panel); the stamp is the frame's.
+  void PublishImage(const ButtonFrameResult& result) {
+    if (!result.slam || result.slam->image.empty()) return;
+    const double t = result.stamp.sensor_time_s;
+    if (image_.getNumSubscribers() > 0) {
+      if (auto msg = EncodeRosImage(result.slam->image, t, camera_frame_); msg.ok()) {
+        image_.publish(*msg);
+      }
+    }
+    if (jpeg_.getNumSubscribers() > 0) {
+      if (auto msg = EncodeRosJpeg(result.slam->image, t, camera_frame_, 85); msg.ok()) {
+        jpeg_.publish(*msg);
+      }
+    }
+  }
   void OnTap(const geometry_msgs::PointStamped::ConstPtr& msg) {
     ButtonTapRequest tap;
     tap.x = msg->point.x;
@@ -96,7 +119,8 @@ class ButtonPublisher : public ResultPublisher {
   std::unique_ptr<ResultPublisher> slam_;
   std::shared_ptr<ButtonCommands> commands_;
   SeenStamps seen_;
-  ros::Publisher target_, stop_, gate_;
+  ros::Publisher target_, stop_, gate_, image_, jpeg_;
+  std::string camera_frame_;
   std::vector<ros::Subscriber> subs_;
   bool stop_sent_ = false, last_stopped_ = false;
 };

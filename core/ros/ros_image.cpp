@@ -1,5 +1,6 @@
 #include "core/ros/ros_image.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -128,6 +129,23 @@ StatusOr<cv::Mat> DecodeRosCompressedImage(const sensor_msgs::CompressedImage& m
   }
   if (image.channels() == 4) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
   return image;
+}
+
+StatusOr<sensor_msgs::CompressedImage> EncodeRosJpeg(const cv::Mat& image, double stamp_s,
+                                                     const std::string& frame_id, int quality) {
+  if (image.type() != CV_8UC1 && image.type() != CV_8UC3) {
+    return InvalidArgument("JPEG needs an 8-bit grey or BGR image");
+  }
+  sensor_msgs::CompressedImage msg;
+  msg.header.stamp = RosTimeFromSeconds(stamp_s);
+  msg.header.frame_id = frame_id;
+  const char* encoding = image.type() == CV_8UC1 ? "mono8" : "bgr8";
+  msg.format = std::string(encoding) + "; jpeg compressed " + encoding;
+  const std::vector<int> params = {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)};
+  if (!cv::imencode(".jpg", image, msg.data, params)) {
+    return Internal("the image does not encode as JPEG");
+  }
+  return msg;
 }
 
 StatusOr<sensor_msgs::Image> EncodeRosImage(const cv::Mat& image, double stamp_s,

@@ -38,6 +38,12 @@ StatusOr<cv::Mat> DecodeRosCompressedImage(const sensor_msgs::CompressedImage& m
 StatusOr<sensor_msgs::Image> EncodeRosImage(const cv::Mat& image, double stamp_s,
                                             const std::string& frame_id);
 
+// A JPEG CompressedImage (format "bgr8; jpeg compressed bgr8" or "mono8; jpeg compressed mono8",
+// as image_transport's compressed publisher writes) of a CV_8UC1 or CV_8UC3 BGR image at
+// `quality` (1-100). InvalidArgument for other types.
+StatusOr<sensor_msgs::CompressedImage> EncodeRosJpeg(const cv::Mat& image, double stamp_s,
+                                                     const std::string& frame_id, int quality);
+
 // The pinhole camera of a CameraInfo: K, width, height and plumb_bob / rational_polynomial's first
 // five coefficients (k1 k2 p1 p2 k3). InvalidArgument naming the field for zero sizes, a zero or
 // non-finite K, or an unsupported distortion model ("distortion_model 'equidistant' ...").

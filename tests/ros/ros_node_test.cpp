@@ -8,6 +8,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/CompressedImage.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Empty.h>
@@ -455,6 +456,12 @@ TEST_F(RosNode, ButtonTargetsOnlyAfterTheOperatorConfirms) {
       nh.subscribe("/button_target", 100, &Inbox<geometry_msgs::PoseStamped>::Take, &targets);
   ros::Subscriber diag_sub = nh.subscribe(
       "/diagnostics", 1000, &Inbox<diagnostic_msgs::DiagnosticArray>::Take, &diagnostics);
+  Inbox<sensor_msgs::Image> button_images;
+  ros::Subscriber image_sub =
+      nh.subscribe("/button_image", 10, &Inbox<sensor_msgs::Image>::Take, &button_images);
+  Inbox<sensor_msgs::CompressedImage> button_jpegs;
+  ros::Subscriber jpeg_sub = nh.subscribe(
+      "/button_image/compressed", 10, &Inbox<sensor_msgs::CompressedImage>::Take, &button_jpegs);
   ros::Publisher tap_pub = nh.advertise<geometry_msgs::PointStamped>("/button_tap", 1);
   ros::Publisher confirm_pub = nh.advertise<std_msgs::Empty>("/button_confirm", 1);
   const std::string out = testing::TempDir("ros_node_button");
@@ -464,16 +471,22 @@ TEST_F(RosNode, ButtonTargetsOnlyAfterTheOperatorConfirms) {
       &node, "--pipeline button --source " + rec + " --out " + out + " --rate recorded --linger 1",
       log));
   ASSERT_TRUE(WaitFor([&] { return tap_pub.getNumSubscribers() > 0; }, 60));
-  // The first image whose frame the node published: tap it (a few pixels off the centre).
+  // The operator's panel taps on the image the node publishes (button_image, stamped with its
+  // frame's time): the first one, a few pixels off the button's centre.
   int frame = -1;
   double shown_stamp = 0;
+  sensor_msgs::Image shown;
   ASSERT_TRUE(WaitFor(
       [&] {
+        const auto images = button_images.messages();
+        if (images.empty()) return false;
+        shown = images.front();
+        shown_stamp = shown.header.stamp.toSec();
         for (const auto& array : diagnostics.messages()) {
           for (const auto& status : array.status) {
             if (status.name != "sightline/button") continue;
+            if (std::abs(array.header.stamp.toSec() - shown_stamp) > 1e-6) continue;
             frame = std::stoi(DiagValue(status, "frame"));
-            shown_stamp = array.header.stamp.toSec();
             return true;
           }
         }
@@ -483,6 +496,25 @@ TEST_F(RosNode, ButtonTargetsOnlyAfterTheOperatorConfirms) {
       << testing::ReadTextFile(log);
   ASSERT_LT(frame, static_cast<int>(target->pixel.size()));
   ASSERT_TRUE(target->visible[frame]);
+  // The published image is the recording's frame, pixel for pixel; its JPEG is close to it.
+  {
+    StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(rec, SourceKind::kMono);
+    ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+    ASSERT_TRUE((*dataset)->Seek(frame).ok());
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const MonoFrame recorded = std::get<MonoFrame>((*dataset)->Retrieve().value());
+    const StatusOr<cv::Mat> decoded = DecodeRosImage(shown, RosImageRole::kColor);
+    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+    ASSERT_EQ(decoded->size(), recorded.image.size());
+    ASSERT_EQ(decoded->type(), recorded.image.type());
+    EXPECT_EQ(cv::norm(*decoded, recorded.image, cv::NORM_INF), 0.0);
+    ASSERT_TRUE(WaitFor([&] { return !button_jpegs.messages().empty(); }, 10));
+    const auto jpeg = button_jpegs.messages().front();
+    EXPECT_NE(jpeg.format.find("jpeg"), std::string::npos) << jpeg.format;
+    const StatusOr<cv::Mat> unpacked = DecodeRosCompressedImage(jpeg);
+    ASSERT_TRUE(unpacked.ok()) << unpacked.status().ToString();
+    EXPECT_EQ(unpacked->size(), recorded.image.size());
+  }
   geometry_msgs::PointStamped tap;
   tap.header.stamp = ros::Time(shown_stamp);
   tap.point.x = target->pixel[frame].x() + 2;
