@@ -1,8 +1,10 @@
 #include "core/ros/bag_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <fstream>
+#include <set>
 
 #include "core/common/text_file.h"
 
@@ -12,7 +14,9 @@ namespace {
 constexpr char kMagic[] = "#ROSBAG V2.0\n";
 constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
 constexpr uint8_t kOpBagHeader = 0x03;
+constexpr uint8_t kOpIndexData = 0x04;
 constexpr uint8_t kOpChunk = 0x05;
+constexpr uint8_t kOpChunkInfo = 0x06;
 // A record header is a few named fields; anything far larger is a damaged length.
 constexpr uint32_t kMaxHeaderBytes = 1u << 20;
 
@@ -92,6 +96,11 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
   in.seekg(0);
   SIGHTLINE_RETURN_IF_ERROR(CheckMagic(path, in));
   bool saw_header = false;
+  // rosbag seeks to index_pos, to each chunk_pos and to each message's offset in its chunk
+  // without checking them: each must be where a record starts, or it reads a length from the
+  // middle of one (a 1 GB allocation, a read past the chunk).
+  std::set<int64_t> record_starts, chunk_starts, chunk_positions_named;
+  int64_t chunk_size = -1;  // Uncompressed size of the last chunk (its "size" field).
   int64_t pos = static_cast<int64_t>(kMagicBytes);
   while (pos < layout.file_bytes) {
     char len_bytes[4];
@@ -115,6 +124,12 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
     const std::map<std::string, std::string> fields = HeaderFields(header);
     const auto op = fields.find("op");
     const uint8_t code = op == fields.end() || op->second.empty() ? 0 : op->second[0];
+    const auto field_u32 = [&](const char* name) -> int64_t {
+      const auto f = fields.find(name);
+      return f != fields.end() && f->second.size() == 4 ? ReadU32(f->second.data()) : -1;
+    };
+    const std::string at = path + ": the record at byte " + std::to_string(pos);
+    record_starts.insert(pos);
     if (code == kOpBagHeader) {
       const auto index = fields.find("index_pos");
       if (index != fields.end() && index->second.size() == 8) {
@@ -125,8 +140,40 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
       const auto compression = fields.find("compression");
       ++layout.chunks;
       ++layout.compression[compression == fields.end() ? "none" : compression->second];
+      chunk_starts.insert(pos);
+      chunk_size = field_u32("size");
+      if (chunk_size < 0) return ParseError(at + " is a chunk without its size (damaged bag?)");
+    } else if (code == kOpIndexData) {
+      // Version 1: `count` entries of (time: 8 bytes, offset in the chunk: 4 bytes).
+      const int64_t count = field_u32("count");
+      if (count < 0 || data_len != 12 * count) {
+        return ParseError(at + " is an index of " + std::to_string(count) + " messages in " +
+                          std::to_string(data_len) + " bytes (damaged bag?)");
+      }
+      std::string entries(static_cast<size_t>(data_len), '\0');
+      in.read(entries.data(), data_len);
+      for (int64_t i = 0; i < count; ++i) {
+        const int64_t offset = ReadU32(entries.data() + 12 * i + 8);
+        if (chunk_size < 0 || offset + 8 > chunk_size) {
+          return ParseError(at + " indexes a message at offset " + std::to_string(offset) +
+                            " of a chunk of " + std::to_string(std::max<int64_t>(chunk_size, 0)) +
+                            " bytes (damaged bag?)");
+        }
+      }
+    } else if (code == kOpChunkInfo) {
+      const auto chunk_pos = fields.find("chunk_pos");
+      if (chunk_pos == fields.end() || chunk_pos->second.size() != 8) {
+        return ParseError(at + " is a chunk summary without chunk_pos (damaged bag?)");
+      }
+      chunk_positions_named.insert(static_cast<int64_t>(ReadU64(chunk_pos->second.data())));
     }
     pos = end;
+  }
+  for (int64_t named : chunk_positions_named) {
+    if (chunk_starts.count(named) == 0) {
+      return ParseError(path + ": the index names a chunk at byte " + std::to_string(named) +
+                        " where no chunk starts (damaged bag?)");
+    }
   }
   if (!saw_header) return ParseError(path + ": no bag header record (damaged bag?)");
   if (layout.index_pos == 0) {
@@ -135,6 +182,10 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
   }
   if (layout.index_pos >= static_cast<uint64_t>(layout.file_bytes)) {
     return Truncated(path, static_cast<int64_t>(layout.index_pos), 1, layout.file_bytes);
+  }
+  if (record_starts.count(static_cast<int64_t>(layout.index_pos)) == 0) {
+    return ParseError(path + ": the bag header puts the index at byte " +
+                      std::to_string(layout.index_pos) + ", where no record starts (damaged bag?)");
   }
   return layout;
 }

@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 #include "core/io/dataset.h"
@@ -392,6 +394,42 @@ TEST(BagSource, AnArrayLongerThanItsMessageIsRefusedNamingTheField) {
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   EXPECT_LT(usage.ru_maxrss, 1024L * 1024) << "peak RSS in KiB";
+}
+
+// Adds `delta` to the little-endian uint64 after the first "name=" in the file (a header field).
+void ShiftU64Field(const std::string& path, const std::string& name, int64_t delta) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const size_t at = bytes.find(name + "=");
+  ASSERT_NE(at, std::string::npos) << name;
+  uint64_t value = 0;
+  std::memcpy(&value, bytes.data() + at + name.size() + 1, 8);
+  value += delta;
+  std::memcpy(bytes.data() + at + name.size() + 1, &value, 8);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+// rosbag seeks to the bag header's index_pos and to each chunk summary's chunk_pos without
+// checking them; a position inside a record made it read a length from the middle of one (a
+// 1.1 GB allocation, found by fuzz_rosbag). Both are refused before rosbag opens the file.
+TEST(BagSource, PositionsThatAreNotRecordStartsAreRefused) {
+  const std::string index = TempDir("index_mid_record") + "/index.bag";
+  ASSERT_TRUE(testing::WriteDefectiveBag(index, "zero_info").ok());
+  ShiftU64Field(index, "index_pos", 3);
+  const Status opened = BagSource(index).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), index + ": the bag header puts the index at byte"))
+      << opened.ToString();
+  EXPECT_TRUE(Contains(opened.message(), "where no record starts")) << opened.ToString();
+
+  const std::string chunk = TempDir("chunk_mid_record") + "/chunk.bag";
+  ASSERT_TRUE(testing::WriteDefectiveBag(chunk, "zero_info").ok());
+  ShiftU64Field(chunk, "chunk_pos", 5);
+  const Status chunk_opened = BagSource(chunk).Open();
+  ASSERT_FALSE(chunk_opened.ok());
+  EXPECT_TRUE(Contains(chunk_opened.message(), chunk + ": the index names a chunk at byte"))
+      << chunk_opened.ToString();
 }
 
 TEST(BagSource, TwoImageTopicsWithoutLeftAndRightAskForTheOption) {
