@@ -49,8 +49,9 @@ void PlaybackController::Open(const QString& path) {
             std::lock_guard<std::mutex> lock(self->mutex_);
             self->info_ = std::make_shared<SourceInfo>((**opened)->info());
           }
-          // The pipeline is made before the player takes the source: keep its ground truth.
-          self->source_ground_truth_ = PipelineSource::From(***opened).ground_truth;
+          // The pipeline is made before the player takes the source: keep what it carries
+          // beside its frames (ground truth, odometry), as the CLI's runs get it.
+          self->source_extras_ = PipelineSource::From(***opened);
           self->RebuildProcessor("source changed");
           self->SetPlayState(false, false);
           self->live_ = dynamic_cast<const LiveSource*>(opened->value().get());
@@ -105,7 +106,7 @@ void PlaybackController::Close(const std::string& reason) {
     std::lock_guard<std::mutex> lock(mutex_);
     info_.reset();
   }
-  source_ground_truth_.reset();
+  source_extras_ = PipelineSource();
   RebuildProcessor(reason);
   SetPlayState(false, false);
 }
@@ -194,8 +195,8 @@ void PlaybackController::RebuildProcessor(const std::string& reason) {
   std::unique_ptr<Pipeline> processor;
   PipelineSource source;
   if (info_) {
+    source = source_extras_;
     source.info = *info_;
-    source.ground_truth = source_ground_truth_;
   }
   if (processor_factory_ && info_) processor = processor_factory_(source);
   std::unique_ptr<Pipeline> previous;

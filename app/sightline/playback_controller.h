@@ -138,8 +138,9 @@ class PlaybackController : public QObject {
   bool loop_ = false;                      // GUI thread only.
   double speed_ = 1.0;                     // GUI thread only.
 
-  ProcessorFactory processor_factory_;                     // GUI thread only.
-  std::shared_ptr<const Trajectory> source_ground_truth_;  // The open source's; GUI thread only.
+  ProcessorFactory processor_factory_;  // GUI thread only.
+  // The open source's ground truth and odometry (PipelineSource::From); GUI thread only.
+  PipelineSource source_extras_;
 
   std::mutex processor_mutex_;  // Guards the processor and its bookkeeping.
   std::unique_ptr<Pipeline> processor_;

@@ -26,6 +26,7 @@
 #include "app/sightline/playback_controller.h"
 #include "app/sightline/stereo_vo_presenter.h"
 #include "core/sim/simulate.h"
+#include "tests/app/process.h"
 #include "tests/support/test_data.h"
 #include "widgets/image_view.h"
 #include "widgets/playback_bar.h"
@@ -322,6 +323,36 @@ TEST(PlaybackHabits, TheThreeDViewFollowsAGrowingTrajectoryUnlessFollowIsOff) {
     EXPECT_TRUE(vo->fitted_box().contains(p.world_from_sensor.translation()));
   }
 }
+
+#ifdef SIGHTLINE_HAVE_ROS
+// A pipeline run in the window gets what the source carries beside its frames, as the CLI's run
+// does: a bag's odometry topic and its ground truth reach the pipeline the GUI makes.
+TEST(PlaybackHabits, ThePipelineGetsTheOdometryAndTruthOfABag) {
+  const std::string dir = testing::TempDir("gui_bag_odometry");
+  const auto sim = testing::RunProcess(std::string(SIGHTLINE_BIN_DIR) +
+                                       "/sightline-cli simulate corridor --out " + dir +
+                                       " --frames 6 --sensors rgbd --quiet --format bag"
+                                       " --set sim.rgbd.resolution=320x240");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out;
+  PlaybackController playback;
+  std::vector<std::pair<size_t, size_t>>
+      given;  // Odometry and ground-truth poses per factory call.
+  OptionSet options;
+  playback.SetProcessorFactory(
+      [&](const PipelineSource& source) -> std::unique_ptr<Pipeline> {
+        given.emplace_back(source.odometry ? source.odometry->size() : 0,
+                           source.ground_truth ? source.ground_truth->size() : 0);
+        return nullptr;
+      },
+      options);
+  QSignalSpy opened(&playback, &PlaybackController::Opened);
+  playback.Open(QString::fromStdString(dir + "/corridor.bag"));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return opened.count() == 1; }, 30000));
+  ASSERT_FALSE(given.empty());
+  EXPECT_EQ(given.back().first, 6u);   // /odom: one pose a frame.
+  EXPECT_EQ(given.back().second, 6u);  // /tf world -> camera.
+}
+#endif
 
 }  // namespace
 }  // namespace sightline
