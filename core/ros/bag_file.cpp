@@ -17,8 +17,6 @@ constexpr uint8_t kOpBagHeader = 0x03;
 constexpr uint8_t kOpIndexData = 0x04;
 constexpr uint8_t kOpChunk = 0x05;
 constexpr uint8_t kOpChunkInfo = 0x06;
-// A record header is a few named fields; anything far larger is a damaged length.
-constexpr uint32_t kMaxHeaderBytes = 1u << 20;
 
 uint32_t ReadU32(const char* bytes) {
   uint32_t value = 0;
@@ -108,7 +106,7 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
     in.seekg(pos);
     in.read(len_bytes, 4);
     const uint32_t header_len = ReadU32(len_bytes);
-    if (header_len > kMaxHeaderBytes) {
+    if (header_len > kMaxBagRecordHeaderBytes) {
       return ParseError(path + ": the record at byte " + std::to_string(pos) + " has a header of " +
                         std::to_string(header_len) + " bytes (damaged bag?)");
     }

@@ -12,6 +12,10 @@
 namespace sightline {
 
 // What the records of a format 2.0 bag say.
+// The largest record header the reader accepts: a header is a few named fields; anything far
+// larger is a damaged length (rosbag would allocate it before reading).
+inline constexpr uint32_t kMaxBagRecordHeaderBytes = 1u << 20;
+
 struct BagFileLayout {
   int64_t file_bytes = 0;
   uint64_t index_pos = 0;                      // Where the connection and chunk index starts.

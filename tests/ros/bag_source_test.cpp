@@ -16,6 +16,7 @@
 
 #include "core/io/dataset.h"
 #include "core/io/tum_rgbd_source.h"
+#include "core/ros/bag_file.h"
 #include "core/ros/bag_writer.h"
 #include "core/sensors/driver_registry.h"
 #include "tests/ros/bag_test_writer.h"
@@ -325,6 +326,28 @@ TEST(BagSource, ATruncatedBagSaysSo) {
     ASSERT_FALSE(source.ok()) << keep;
     EXPECT_TRUE(Contains(source.status().message(), path)) << source.status().ToString();
     EXPECT_TRUE(Contains(source.status().message(), "truncated")) << source.status().ToString();
+  }
+}
+
+// A record header of kMaxBagRecordHeaderBytes + 1 is refused by its length before anything is
+// read or allocated for it; one at the cap is read as far as the file goes (here: truncated).
+TEST(BagSource, ARecordHeaderBeyondTheCapIsRefusedByItsLength) {
+  for (const uint32_t len : {kMaxBagRecordHeaderBytes + 1, kMaxBagRecordHeaderBytes}) {
+    const std::string path = TempDir("header_cap_" + std::to_string(len)) + "/cap.bag";
+    std::string bytes = "#ROSBAG V2.0\n";
+    for (int i = 0; i < 4; ++i) bytes += static_cast<char>((len >> (8 * i)) & 0xff);
+    bytes += std::string(64, 'x');
+    std::ofstream(path, std::ios::binary) << bytes;
+    const StatusOr<BagFileLayout> layout = ReadBagFileLayout(path);
+    ASSERT_FALSE(layout.ok()) << len;
+    if (len > kMaxBagRecordHeaderBytes) {
+      EXPECT_TRUE(Contains(layout.status().message(),
+                           path + ": the record at byte 13 has a header of 1048577 bytes"))
+          << layout.status().ToString();
+    } else {
+      EXPECT_TRUE(Contains(layout.status().message(), path + " is truncated"))
+          << layout.status().ToString();
+    }
   }
 }
 
