@@ -30,20 +30,23 @@ uint64_t ReadU64(const char* bytes) {
   return value;
 }
 
-// The fields of one record header: "name=value" entries, each after its 4-byte length.
-std::map<std::string, std::string> HeaderFields(const std::string& header) {
-  std::map<std::string, std::string> fields;
+// The fields of one record header: "name=value" entries, each after its 4-byte length. False
+// when the entries do not tile the header exactly or one lacks its '=' (rosbag's header parser
+// reads a field's declared length without checking it against the header's).
+bool HeaderFields(const std::string& header, std::map<std::string, std::string>* fields) {
   size_t pos = 0;
-  while (pos + 4 <= header.size()) {
+  while (pos < header.size()) {
+    if (header.size() - pos < 4) return false;
     const uint32_t len = ReadU32(header.data() + pos);
     pos += 4;
-    if (len > header.size() - pos) break;
+    if (len > header.size() - pos) return false;
     const std::string field = header.substr(pos, len);
     pos += len;
     const size_t eq = field.find('=');
-    if (eq != std::string::npos) fields[field.substr(0, eq)] = field.substr(eq + 1);
+    if (eq == std::string::npos) return false;
+    (*fields)[field.substr(0, eq)] = field.substr(eq + 1);
   }
-  return fields;
+  return true;
 }
 
 Status Truncated(const std::string& path, int64_t at, int64_t needed, int64_t size) {
@@ -119,7 +122,12 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
     const int64_t data_len = ReadU32(len_bytes);
     const int64_t end = pos + 8 + header_len + data_len;
     if (end > layout.file_bytes) return Truncated(path, pos, end - pos, layout.file_bytes);
-    const std::map<std::string, std::string> fields = HeaderFields(header);
+    std::map<std::string, std::string> fields;
+    if (!HeaderFields(header, &fields)) {
+      return ParseError(path + ": the record at byte " + std::to_string(pos) +
+                        " has a header whose fields do not fit in its " +
+                        std::to_string(header_len) + " bytes (damaged bag?)");
+    }
     const auto op = fields.find("op");
     const uint8_t code = op == fields.end() || op->second.empty() ? 0 : op->second[0];
     const auto field_u32 = [&](const char* name) -> int64_t {

@@ -455,6 +455,25 @@ TEST(BagSource, PositionsThatAreNotRecordStartsAreRefused) {
       << chunk_opened.ToString();
 }
 
+// A header field whose length runs past its record's header: rosbag's header parser copied past
+// the header (a heap overflow found by a 10-minute fuzz_rosbag run); refused, naming the byte.
+TEST(BagSource, AHeaderFieldLongerThanItsHeaderIsRefused) {
+  const std::string path = TempDir("field_overrun") + "/field.bag";
+  ASSERT_TRUE(testing::WriteDefectiveBag(path, "zero_info").ok());
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const size_t field = bytes.find("compression=");  // The first chunk's header.
+  ASSERT_NE(field, std::string::npos);
+  ASSERT_GE(field, 4u);
+  bytes[field - 4] = static_cast<char>(static_cast<uint8_t>(bytes[field - 4]) + 200);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  const Status opened = BagSource(path).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), "has a header whose fields do not fit in its"))
+      << opened.ToString();
+}
+
 TEST(BagSource, TwoImageTopicsWithoutLeftAndRightAskForTheOption) {
   const std::string path = TempDir("two_images") + "/two.bag";
   ASSERT_TRUE(testing::WriteDefectiveBag(path, "two_images").ok());
