@@ -312,6 +312,12 @@ void RunLive(benchmark::State& state, const LiveCase& c) {
     return;
   }
   const SourceInfo info = (*dataset)->info();
+  if ((c.kind == SourceKind::kRgbd && !info.rgbd) ||
+      (c.kind == SourceKind::kStereo && !info.stereo) ||
+      (c.kind == SourceKind::kMono && !info.camera)) {
+    state.SkipWithError((c.recording + ": the recording has no camera calibration").c_str());
+    return;
+  }
   std::vector<Frame> frames;
   while ((*dataset)->Grab().ok()) {
     StatusOr<Frame> frame = (*dataset)->Retrieve();
