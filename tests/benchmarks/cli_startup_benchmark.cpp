@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <string>
@@ -80,8 +81,20 @@ void BM_InfoTumFr1Desk(benchmark::State& state) {
   RunPair(state, {"info", path});
 }
 
-BENCHMARK(BM_Help)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
-BENCHMARK(BM_InfoTumFr1Desk)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+// The fastest repetition beside the median: on a loaded machine the minimum is the closest to
+// what the programs cost themselves.
+double Min(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+BENCHMARK(BM_Help)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
+    ->ComputeStatistics("min", Min);
+BENCHMARK(BM_InfoTumFr1Desk)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0)
+    ->ComputeStatistics("min", Min);
 
 }  // namespace
 }  // namespace sightline
