@@ -1,8 +1,16 @@
 #include "app/cli/cli_args.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "app/cli/commands.h"
 
 namespace sightline::cli {
+
+int Fail(const std::string& message) {
+  std::fprintf(stderr, "sightline-cli: %s\n", message.c_str());
+  return 1;
+}
 
 StatusOr<CliArgs> CliArgs::Parse(const std::vector<std::string>& args,
                                  const std::vector<std::string>& value_flags,

@@ -5,6 +5,7 @@
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "app/cli/info_output.h"
 #include "core/common/json_writer.h"
 #include "core/io/dataset.h"
 #include "core/pipeline/pipeline_registry.h"
@@ -15,11 +16,6 @@
 #endif
 
 namespace sightline::cli {
-
-int Fail(const std::string& message) {
-  std::fprintf(stderr, "sightline-cli: %s\n", message.c_str());
-  return 1;
-}
 
 namespace {
 
@@ -180,11 +176,7 @@ int InfoCommand(const std::vector<std::string>& args) {
   }
   StatusOr<std::unique_ptr<Source>> source = OpenSource(path, options);
   if (!source.ok()) return Fail(source.status().ToString());
-  const std::string text =
-      parsed->Has("--json") ? DescribeSourceJson(**source) : DescribeSourceText(**source);
-  std::fputs(text.c_str(), stdout);
-  if (!text.empty() && text.back() != '\n') std::fputc('\n', stdout);
-  return 0;
+  return PrintSourceInfo(**source, parsed->Has("--json"));
 }
 
 }  // namespace sightline::cli

@@ -114,7 +114,7 @@ std::unique_ptr<Source> MakeDatasetSource(const DetectedDataset& dataset) {
     case DatasetFormat::kKitti:
       return std::make_unique<KittiSource>(dataset.path);
     case DatasetFormat::kPcd:
-      return std::make_unique<PcdSource>(dataset.path);
+      return MakePcdSource(dataset.path);
     case DatasetFormat::kImageFolder:
       return std::make_unique<ImageFolderSource>(dataset.path);
   }

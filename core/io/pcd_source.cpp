@@ -514,4 +514,8 @@ StatusOr<Frame> PcdSource::Load(int64_t index) {
   return Frame(std::move(frame));
 }
 
+std::unique_ptr<Source> MakePcdSource(const std::string& path) {
+  return std::make_unique<PcdSource>(path);
+}
+
 }  // namespace sightline

@@ -1,6 +1,7 @@
 // Reader for PCL .pcd point clouds: one file or a folder of them. PCL stays inside the .cpp.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,11 @@ class PcdSource : public RecordedSource {
   double default_rate_hz_;
   std::vector<std::string> files_;
 };
+
+// A PcdSource for `path`, not yet opened; what OpenDataset() reads PCD datasets with. Defined in
+// pcd_source.cpp (sightline_io); a program that links sightline_io_readers, which lacks PCL,
+// defines its own (sightline-cli's front binary hands PCD paths to the full program).
+std::unique_ptr<Source> MakePcdSource(const std::string& path);
 
 // The time a file name encodes (see PcdSource), or nullopt. Exposed for tests.
 std::optional<double> TimeFromFileName(const std::string& file_name);

@@ -52,7 +52,8 @@ grep -q '^ Installed-Size: ' info.txt || fail "no Installed-Size in the control 
 
 # Its files: the programs, man pages, desktop entry, icons, metainfo, translations; no tests.
 dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|' >files.txt
-for file in /usr/bin/sightline /usr/bin/sightline-cli /usr/share/man/man1/sightline.1.gz \
+for file in /usr/bin/sightline /usr/bin/sightline-cli /usr/libexec/sightline/sightline-cli-full \
+            /usr/share/man/man1/sightline.1.gz \
             /usr/share/man/man1/sightline-cli.1.gz /usr/share/applications/sightline.desktop \
             /usr/share/icons/hicolor/scalable/apps/sightline.svg \
             /usr/share/icons/hicolor/256x256/apps/sightline.png \
@@ -83,6 +84,10 @@ for program in "${programs[@]}"; do
   echo "$out" | grep -Eq "$version \(commit [0-9a-f]{7,}" ||
     fail "$(basename "$program") --version printed '$out'"
 done
+# sightline-cli hands `run` to /usr/libexec/sightline/sightline-cli-full inside the installed tree.
+"$cli" run --help >run-help.out 2>&1 || { cat run-help.out; fail "installed sightline-cli run --help failed"; }
+grep -q '^usage: sightline-cli run PIPELINE' run-help.out ||
+  { cat run-help.out; fail "installed sightline-cli run --help did not print the run usage"; }
 zcat root/usr/share/man/man1/sightline-cli.1.gz | grep -q 'info PATH' ||
   fail "the sightline-cli man page lacks its commands"
 zcat root/usr/share/man/man1/sightline.1.gz | grep -q '\\-\\-screenshot' ||

@@ -1,0 +1,100 @@
+// sightline-cli: the front binary. It answers --help, --version and `info` of recorded datasets
+// (TUM RGB-D, EuRoC, KITTI, image folders, recordings of them) with only core/io's readers
+// linked, so these start in a few milliseconds; every other command line is handed with execv
+// to sightline-cli-full (main.cpp), which links every module (PCL, ROS, the sensor drivers).
+#include <cctype>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli/cli_args.h"
+#include "app/cli/commands.h"
+#include "app/cli/full_program.h"
+#include "app/cli/info_output.h"
+#include "app/cli/top_level.h"
+#include "core/io/dataset.h"
+#include "core/io/pcd_source.h"
+#include "core/io/recorded_source.h"
+
+namespace sightline {
+namespace {
+
+// Stands in for the PCD reader, which needs PCL: Open() says the full program reads PCD.
+class PcdInFullProgram : public RecordedSource {
+ public:
+  explicit PcdInFullProgram(std::string path) : path_(std::move(path)) {}
+  Status Open() override {
+    return Unavailable(path_ + ": PCD clouds are read by sightline-cli-full");
+  }
+
+ protected:
+  StatusOr<Frame> Load(int64_t) override { return Unavailable(path_ + ": not open"); }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace
+
+// sightline_io_readers leaves the PCD reader to the program (pcd_source.h). `info` hands PCD
+// paths to sightline-cli-full before opening anything, so this is reached only if that check
+// misses one, and then fails with a message instead of linking PCL.
+std::unique_ptr<Source> MakePcdSource(const std::string& path) {
+  return std::make_unique<PcdInFullProgram>(path);
+}
+
+}  // namespace sightline
+
+namespace sightline::cli {
+namespace {
+
+bool EndsWithNoCase(const std::string& text, const std::string& suffix) {
+  if (text.size() < suffix.size()) return false;
+  for (size_t i = 0; i < suffix.size(); ++i) {
+    const char c = text[text.size() - suffix.size() + i];
+    if (std::tolower(static_cast<unsigned char>(c)) != suffix[i]) return false;
+  }
+  return true;
+}
+
+// True when `info` of `args` describes a recorded dataset this binary reads: one PATH, no --set
+// or --help, no sensor URI (scheme://), .bag or .oni, and a dataset, or a recording with a
+// sensor, other than PCD clouds (OpenDataset prefers RGB-D, stereo and mono to clouds). All
+// else, errors included, is answered by the full program, so the messages are its own.
+bool InfoReadsHere(const CliArgs& args) {
+  if (args.Has("--help") || args.Has("--set") || args.positionals().size() != 1) return false;
+  const std::string& path = args.positionals()[0];
+  if (path.find("://") != std::string::npos || EndsWithNoCase(path, ".bag") ||
+      EndsWithNoCase(path, ".oni")) {
+    return false;
+  }
+  if (std::optional<DetectedDataset> dataset = DetectDataset(path)) {
+    return dataset->format != DatasetFormat::kPcd;
+  }
+  for (const DetectedDataset& sensor : FindRecordingSensors(path)) {
+    if (sensor.format != DatasetFormat::kPcd) return true;
+  }
+  return false;
+}
+
+}  // namespace
+}  // namespace sightline::cli
+
+int main(int argc, char** argv) {
+  using namespace sightline;
+  using namespace sightline::cli;
+  if (std::optional<int> code = RunTopLevel(argc, argv)) return *code;
+  if (std::strcmp(argv[1], "info") == 0) {
+    // The same flags as InfoCommand (command_info.cpp).
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    StatusOr<CliArgs> parsed = CliArgs::Parse(args, {"--set"}, {"--json", "--help"});
+    if (parsed.ok() && InfoReadsHere(*parsed)) {
+      StatusOr<std::unique_ptr<Source>> source = OpenDataset(parsed->positionals()[0]);
+      if (!source.ok()) return Fail(source.status().ToString());
+      return PrintSourceInfo(**source, parsed->Has("--json"));
+    }
+  }
+  return HandOverToFullProgram(argv);
+}
