@@ -64,6 +64,8 @@ struct PipelineSource {
   std::shared_ptr<const Trajectory> ground_truth;
   // The platform's odometry the source carries beside its frames (Source::odometry()), or null.
   std::shared_ptr<const Trajectory> odometry;
+  // The arm's poses (base_from_end_effector) the source carries (Source::arm_poses()), or null.
+  std::shared_ptr<const Trajectory> arm_poses;
 
   // The info and a copy of the ground truth of an opened source.
   static PipelineSource From(const Source& source);
