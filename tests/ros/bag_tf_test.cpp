@@ -11,6 +11,8 @@
 
 #include "core/common/trajectory.h"
 #include "core/pipeline/button_pipeline.h"
+#include "core/pipeline/mapping_pipeline.h"
+#include "core/pipeline/mapping_recording.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/ros/bag_source.h"
 #include "core/ros/bag_writer.h"
@@ -273,6 +275,40 @@ TEST(BagTf, ButtonWithTheArmOnTfMatchesArmPosesTxt) {
   EXPECT_NEAR(y.at("accuracy/scale_ml") / x.at("accuracy/scale_ml"), 1.0, 1e-3);
   EXPECT_NEAR(y.at("accuracy/scale_true"), x.at("accuracy/scale_true"),
               1e-3 * x.at("accuracy/scale_true"));
+}
+
+// A live source (ros://) has no odometry when the pipeline opens: mapping takes each frame's
+// pose from the source's odometry as it grows (RosLive.OdometryAndArmPosesFromTfAtTheFrameStamps
+// shows the source extending it at each frame's stamp).
+TEST(BagTf, MappingTakesALiveSourcesOdometryFrameByFrame) {
+  auto live = std::make_shared<Trajectory>();
+  PipelineSource source;
+  source.info.live = true;
+  source.info.path = "ros://?image=/c/image&depth=/c/depth";
+  PinholeCamera camera;
+  camera.width = 8, camera.height = 6, camera.fx = camera.fy = 5, camera.cx = 4, camera.cy = 3;
+  RgbdCalibration rgbd;
+  rgbd.color = camera;
+  source.info.rgbd = rgbd;
+  source.live_odometry = [live] { return live->empty() ? nullptr : live.get(); };
+  StatusOr<MappingRecording> recording = LoadMappingRecording(source, MappingRunOptions());
+  ASSERT_TRUE(recording.ok()) << recording.status().ToString();
+  ASSERT_FALSE(recording->odometry.has_value());
+  EXPECT_TRUE(Contains(recording->log_lines.front(), "live source's odometry"));
+  RgbdFrame frame;
+  frame.stamp.sensor_time_s = 30.0;
+  frame.depth_m = cv::Mat(6, 8, CV_32FC1, cv::Scalar(1));
+  EXPECT_FALSE(recording->MakeInput(frame, 0.02).odometry.has_value());  // Nothing yet.
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(1.5, -2, 0);
+  pose.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  live->Add(30.0, pose);  // The source's pose at this frame's stamp, added by its Retrieve.
+  const std::optional<Pose2d> odometry = recording->MakeInput(frame, 0.02).odometry;
+  ASSERT_TRUE(odometry.has_value());
+  const double forward = recording->camera_forward_m;
+  EXPECT_NEAR(odometry->x, 1.5 + forward * std::cos(0.4), 1e-9);
+  EXPECT_NEAR(odometry->y, -2 + forward * std::sin(0.4), 1e-9);
+  EXPECT_NEAR(odometry->heading_rad, 0.4, 1e-9);
 }
 
 }  // namespace
