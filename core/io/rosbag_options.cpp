@@ -11,6 +11,14 @@ bool RosBagOptions::IsValid(std::string* error) const {
     return fail("io.rosbag.tf_parent_frame and io.rosbag.tf_child_frame must be given together");
   }
   if (!(pair_tolerance_ms >= 0)) return fail("io.rosbag.pair_tolerance_ms must be >= 0");
+  if (!(tf_max_gap_s > 0)) return fail("io.rosbag.tf_max_gap_s must be > 0");
+  for (const auto& [key, frame] :
+       {std::pair<const char*, const std::string*>{"odom_frame", &odom_frame},
+        {"base_frame", &base_frame},
+        {"arm_base_frame", &arm_base_frame},
+        {"end_effector_frame", &end_effector_frame}}) {
+    if (frame->empty()) return fail(std::string("io.rosbag.") + key + " must name a tf frame");
+  }
   if (kind == "stereo" && !image_topic.empty() && image_topic == right_image_topic) {
     return fail("io.rosbag.image_topic and right_image_topic are the same topic '" + image_topic +
                 "'");
@@ -49,7 +57,20 @@ OptionTable<RosBagOptions> RosBagOptions::Describe() {
               "ROS bag: the camera's tf frame whose pose in tf_parent_frame is the ground truth.")
       .Double("pair_tolerance_ms", &RosBagOptions::pair_tolerance_ms, "ms", 0, 1000, 1,
               "ROS bag: largest stamp difference of a colour/depth or left/right pair; images "
-              "without a partner are skipped.");
+              "without a partner are skipped.")
+      .String("odom_frame", &RosBagOptions::odom_frame,
+              "ROS bag: the tf frame of the odometry; without an odometry topic, the pose of "
+              "base_frame in it on /tf is the platform's odometry.")
+      .String("base_frame", &RosBagOptions::base_frame,
+              "ROS bag: the platform's tf frame whose pose in odom_frame is the odometry.")
+      .String("arm_base_frame", &RosBagOptions::arm_base_frame,
+              "ROS bag: the arm's base tf frame; the pose of end_effector_frame in it is the "
+              "arm's pose when there is no arm_poses.txt.")
+      .String("end_effector_frame", &RosBagOptions::end_effector_frame,
+              "ROS bag: the arm's end-effector tf frame.")
+      .Double("tf_max_gap_s", &RosBagOptions::tf_max_gap_s, "s", 0.001, 60, 0.1,
+              "ROS bag: largest time between the two tf samples a pose at a frame's stamp is "
+              "interpolated between; frames in a longer gap get no pose.");
 }
 
 }  // namespace sightline

@@ -23,6 +23,13 @@ struct RosBagOptions {
   std::string tf_parent_frame;          // Ground truth: pose of tf_child_frame in this frame.
   std::string tf_child_frame;           // Ground truth: the camera's tf frame.
   double pair_tolerance_ms = 20;        // Largest stamp difference of a colour/depth or L/R pair.
+  // tf frames: odometry is odom_frame -> base_frame when no odometry topic is chosen; the arm's
+  // pose is arm_base_frame -> end_effector_frame (base_from_end_effector).
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
+  std::string arm_base_frame = "base_link";
+  std::string end_effector_frame = "end_effector";
+  double tf_max_gap_s = 0.5;  // Largest time between two tf samples interpolated between.
 
   bool IsValid(std::string* error) const;
   static OptionTable<RosBagOptions> Describe();

@@ -72,6 +72,9 @@ class Source {
   // The odometry of the platform the sensor rides on (world_from_base), when the recording
   // carries it beside its frames (a ROS bag's nav_msgs/Odometry topic); null otherwise.
   virtual const Trajectory* odometry() const { return nullptr; }
+  // The arm's poses (base_from_end_effector) at the frames' stamps, when the recording carries
+  // them (a ROS bag's tf); null otherwise.
+  virtual const Trajectory* arm_poses() const { return nullptr; }
   // Releases devices and files. Also done by the destructor.
   virtual void Close() {}
 };

@@ -308,13 +308,16 @@ int64_t FrameId(const FrameStamp& stamp, int64_t index) {
 }
 
 // The arm's pose stream, not arm_poses.txt: explicitly, or by auto while serving when the
-// recording has no arm_poses.txt (and mono.run.arm_poses names none) but a hand-eye
+// recording has no arm_poses.txt (and mono.run.arm_poses names none, and the source carries no
+// arm poses of its own) but a hand-eye
 // (mono.run.hand_eye, or hand_eye.yaml beside the images).
-bool UsesArmStream(const MonoSlamRunOptions& run, bool serve, const std::string& path) {
+bool UsesArmStream(const MonoSlamRunOptions& run, bool serve, const std::string& path,
+                   bool source_arm) {
   if (run.metric_source != "auto") return run.metric_source == "arm_stream";
   // auto also needs the camera's mount on the arm: without one it tracks only.
   const bool hand_eye = !run.hand_eye.empty() || !FindBeside(path, "hand_eye.yaml").empty();
-  return serve && hand_eye && run.arm_poses.empty() && FindBeside(path, "arm_poses.txt").empty();
+  return serve && hand_eye && run.arm_poses.empty() && !source_arm &&
+         FindBeside(path, "arm_poses.txt").empty();
 }
 
 }  // namespace
@@ -325,8 +328,8 @@ MonoSlamRunOptions ButtonPipeline::MonoRun() const {
   return run;
 }
 
-Status ButtonPipeline::ChooseMetricSource(const std::string& path) {
-  const bool stream = UsesArmStream(config_.mono_run, config_.serve, path);
+Status ButtonPipeline::ChooseMetricSource(const std::string& path, bool source_arm) {
+  const bool stream = UsesArmStream(config_.mono_run, config_.serve, path, source_arm);
   if (stream != stream_) {
     stream_ = stream;
     SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, MonoRun()));
@@ -347,8 +350,9 @@ Status ButtonPipeline::ChooseMetricSource(const std::string& path) {
 }
 
 Status ButtonPipeline::Open(const PipelineSource& source) {
-  SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source.info.path));
-  scale_mode_ = ChooseButtonScaleMode(source.info.path, config_.mono_run, stream_);
+  const bool source_arm = source.arm_poses != nullptr;
+  SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source.info.path, source_arm));
+  scale_mode_ = ChooseButtonScaleMode(source.info.path, config_.mono_run, stream_, source_arm);
   if (!scale_mode_.metric) mono_.SetMetricSource("none");
   SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);

@@ -180,7 +180,7 @@ class ButtonPipeline : public Pipeline {
   MonoSlamRunOptions MonoRun() const;
   // Chooses the recorded poses or the stream for `path` (reconfiguring the SLAM when that
   // changed) and reads the hand-eye transform the stream needs.
-  Status ChooseMetricSource(const std::string& path);
+  Status ChooseMetricSource(const std::string& path, bool source_arm);
   // The arm's streamed pose at this frame's stamp, times end_effector_from_camera, into metric_.
   void FeedArmPose(double stamp_s);
   // Why nothing was sent, when the arm's stream gave no pose; "" otherwise.

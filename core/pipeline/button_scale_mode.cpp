@@ -11,14 +11,15 @@ Status CheckButtonMetricSource(const MonoSlamRunOptions& run) {
 }
 
 ButtonScaleMode ChooseButtonScaleMode(const std::string& path, const MonoSlamRunOptions& run,
-                                      bool streamed_arm) {
+                                      bool streamed_arm, bool source_arm) {
   ButtonScaleMode mode;
   if (run.metric_source == "none") {
     mode.metric = false;
     mode.how = "tracking only: mono.run.metric_source = none";
     return mode;
   }
-  const bool arm_file = !run.arm_poses.empty() || !FindBeside(path, "arm_poses.txt").empty();
+  const bool arm_file =
+      !run.arm_poses.empty() || !FindBeside(path, "arm_poses.txt").empty() || source_arm;
   if (run.metric_source == "arm" || run.metric_source == "arm_stream" || arm_file || streamed_arm) {
     mode.how = streamed_arm && !arm_file ? "metric scale from the streamed arm poses"
                                          : "metric scale from the arm's poses";

@@ -38,8 +38,9 @@ Status CheckButtonMetricSource(const MonoSlamRunOptions& run);
 
 // The mode for a source at `path` (arm_poses.txt is looked for beside it or in its parent, or
 // at mono.run.arm_poses). `streamed_arm`: an arm streams its poses live (counts as an arm).
+// `source_arm`: the source carries the arm's poses itself (a ROS bag's tf), as arm_poses.txt.
 ButtonScaleMode ChooseButtonScaleMode(const std::string& path, const MonoSlamRunOptions& run,
-                                      bool streamed_arm = false);
+                                      bool streamed_arm, bool source_arm = false);
 
 // The SLAM as the button picker sees it without a metric scale: the pose and map in map units
 // (a scale of 1), never converged. The map's points are copied once per map.

@@ -62,6 +62,11 @@ StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
     recording.odometry = *source.odometry;
     recording.log_lines.push_back("pose source: the recording's odometry (" +
                                   std::to_string(source.odometry->size()) + " poses)");
+  } else if (source.live_odometry) {
+    recording.live_odometry = source.live_odometry;
+    recording.log_lines.push_back(
+        "pose source: the live source's odometry at each frame (ros:// tf odom_frame -> "
+        "base_frame)");
   } else {
     recording.log_lines.push_back(
         "pose source: none (no odometry.txt, no odometry in the recording); heading from walls "
@@ -93,9 +98,10 @@ MappingInput MappingRecording::MakeInput(const RgbdFrame& frame, double toleranc
   input.stamp = frame.stamp;
   input.depth_m = frame.depth_m;
   input.color = frame.color;
-  if (odometry) {
-    if (auto i = odometry->Nearest(frame.stamp.sensor_time_s, tolerance_s)) {
-      Pose2d pose = Pose2d::FromIsometry(odometry->poses()[*i].world_from_sensor);
+  const Trajectory* poses = odometry ? &*odometry : live_odometry ? live_odometry() : nullptr;
+  if (poses != nullptr) {
+    if (auto i = poses->Nearest(frame.stamp.sensor_time_s, tolerance_s)) {
+      Pose2d pose = Pose2d::FromIsometry(poses->poses()[*i].world_from_sensor);
       pose.x += camera_forward_m * std::cos(pose.heading_rad);
       pose.y += camera_forward_m * std::sin(pose.heading_rad);
       input.odometry = pose;

@@ -2,6 +2,7 @@
 // odometry, person boxes, true walls and the camera's offset.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,9 +23,11 @@ struct MappingRunOptions;
 // A recording's extra files for mapping, found in its top folder (the parent of an rgbd/
 // sensor folder): odometry.txt, people.csv, walls.csv, scene.yaml.
 struct MappingRecording {
-  std::string root;                            // The folder the files were looked for in.
-  PinholeCamera camera;                        // The depth camera.
-  std::optional<Trajectory> odometry;          // world_from_base of the wheel odometry.
+  std::string root;                    // The folder the files were looked for in.
+  PinholeCamera camera;                // The depth camera.
+  std::optional<Trajectory> odometry;  // world_from_base of the wheel odometry.
+  // Without `odometry`: a live source's odometry so far (PipelineSource::live_odometry).
+  std::function<const Trajectory*()> live_odometry;
   std::optional<PersonBoxTable> people;        // Ground-truth person boxes.
   std::optional<std::vector<TrueWall>> walls;  // True wall faces, for accuracy.
   double camera_forward_m = 0;                 // Optical centre ahead of the odometry base [m].
@@ -39,7 +42,8 @@ struct MappingRecording {
 std::string MappingRecordingRoot(const std::string& dataset_path);
 
 // Loads the extras of the recording the source was opened from. The odometry is the folder's
-// odometry.txt, else the one the source carries (a ROS bag's Odometry topic). Errors name the
+// odometry.txt, else the one the source carries (a ROS bag's Odometry topic or tf), else for a
+// live source its odometry frame by frame (ros:// tf). Errors name the
 // bad file.
 StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
                                                 const MappingRunOptions& run);

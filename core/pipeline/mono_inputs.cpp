@@ -113,7 +113,7 @@ StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::stri
 
 StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
                                            const std::optional<Trajectory>& ground_truth,
-                                           std::string* source) {
+                                           std::string* source, const Trajectory* source_arm) {
   *source = "none";
   Trajectory metric;
   if (run.metric_source == "none") return metric;
@@ -124,23 +124,38 @@ StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSl
   }
   const std::string arm_path =
       run.arm_poses.empty() ? FindBeside(path, "arm_poses.txt") : run.arm_poses;
-  const bool use_arm =
-      run.metric_source == "arm" || (run.metric_source == "auto" && !arm_path.empty());
+  const bool from_source = arm_path.empty() && source_arm != nullptr && !source_arm->empty();
+  const bool use_arm = run.metric_source == "arm" ||
+                       (run.metric_source == "auto" && (!arm_path.empty() || from_source));
   if (use_arm) {
-    if (arm_path.empty())
+    if (arm_path.empty() && !from_source)
       return NotFound(path + ": no arm_poses.txt beside the images (mono.run.arm_poses)");
-    StatusOr<Trajectory> arm = ReadTumTrajectory(arm_path);
-    if (!arm.ok()) return arm.status();
+    Trajectory arm;
+    if (from_source) {
+      arm = *source_arm;
+    } else {
+      StatusOr<Trajectory> read = ReadTumTrajectory(arm_path);
+      if (!read.ok()) return read.status();
+      arm = std::move(*read);
+    }
     Eigen::Isometry3d ee_from_camera = Eigen::Isometry3d::Identity();
     if (run.hand_eye != "none") {
       std::string hand_eye = run.hand_eye;
+      if (hand_eye.empty() && from_source) {
+        hand_eye = FindBeside(path, "hand_eye.yaml");
+        if (hand_eye.empty()) {
+          return NotFound(path +
+                          ": no hand_eye.yaml beside the recording for its arm poses "
+                          "(mono.run.hand_eye; \"none\" = the camera is the end effector)");
+        }
+      }
       if (hand_eye.empty())
         hand_eye = (fs::path(arm_path).parent_path() / "hand_eye.yaml").string();
       StatusOr<HandEye> read = ReadHandEyeFile(hand_eye);
       if (!read.ok()) return read.status();
       ee_from_camera = read->end_effector_from_camera;
     }
-    for (const TimedPose& p : arm->poses())
+    for (const TimedPose& p : arm.poses())
       metric.Add(p.time_s, p.world_from_sensor * ee_from_camera);
     *source = "arm";
     return metric;

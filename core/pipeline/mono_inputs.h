@@ -57,9 +57,12 @@ std::string FindBeside(const std::string& path, const std::string& name);
 // so base_from_camera) or `ground_truth`. *source says which ("arm", "ground_truth", "none";
 // then empty). "arm_stream" is FailedPrecondition: only the serving button pipeline receives the
 // arm's pose stream (ButtonPipeline feeds MetricSlamView::AddMeasuredPose).
+// Without arm_poses.txt (and mono.run.arm_poses empty), `source_arm` (the source's own arm poses,
+// base_from_end_effector, e.g. a ROS bag's tf) stands in for it, hand_eye.yaml then beside `path`.
 StatusOr<Trajectory> LoadMetricCameraPoses(const std::string& path, const MonoSlamRunOptions& run,
                                            const std::optional<Trajectory>& ground_truth,
-                                           std::string* source);
+                                           std::string* source,
+                                           const Trajectory* source_arm = nullptr);
 
 // Scale pairs between consecutive keyframes of `map` and the metric poses at their times.
 std::vector<ScalePair> KeyFrameScalePairs(const MapSnapshot& map, const Trajectory& metric,

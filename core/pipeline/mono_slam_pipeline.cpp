@@ -133,8 +133,8 @@ Status MonoSlamPipeline::Open(const PipelineSource& source) {
     if (!gt.ok()) return gt.status();
     ground_truth_ = *gt;
   }
-  StatusOr<Trajectory> metric =
-      LoadMetricCameraPoses(info.path, run_, ground_truth_, &metric_source_);
+  StatusOr<Trajectory> metric = LoadMetricCameraPoses(info.path, run_, ground_truth_,
+                                                      &metric_source_, source.arm_poses.get());
   if (!metric.ok()) return metric.status();
   metric_ = std::move(*metric);
   source_ = source;

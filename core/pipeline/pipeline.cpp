@@ -25,6 +25,13 @@ PipelineSource PipelineSource::From(const Source& source) {
   if (const Trajectory* odometry = source.odometry(); odometry != nullptr && !odometry->empty()) {
     out.odometry = std::make_shared<const Trajectory>(*odometry);
   }
+  if (const Trajectory* arm = source.arm_poses(); arm != nullptr && !arm->empty()) {
+    out.arm_poses = std::make_shared<const Trajectory>(*arm);
+  }
+  if (out.info.live) {
+    out.live_odometry = [&source] { return source.odometry(); };
+    out.live_arm_poses = [&source] { return source.arm_poses(); };
+  }
   return out;
 }
 

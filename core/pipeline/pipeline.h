@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,8 +65,16 @@ struct PipelineSource {
   std::shared_ptr<const Trajectory> ground_truth;
   // The platform's odometry the source carries beside its frames (Source::odometry()), or null.
   std::shared_ptr<const Trajectory> odometry;
+  // The arm's poses (base_from_end_effector) the source carries (Source::arm_poses()), or null.
+  std::shared_ptr<const Trajectory> arm_poses;
+  // A live source's odometry and arm poses so far (Source::odometry() / arm_poses(), which a
+  // live source extends at each frame's stamp before handing the frame on), for pipelines that
+  // take them frame by frame; empty for recordings. They read the source: call them only while
+  // it is open, from the thread that drives it.
+  std::function<const Trajectory*()> live_odometry, live_arm_poses;
 
-  // The info and a copy of the ground truth of an opened source.
+  // The info and a copy of the ground truth of an opened source (and, for a live source, the
+  // live poses, which refer to `source`).
   static PipelineSource From(const Source& source);
 };
 

@@ -92,6 +92,11 @@ StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                                                          std::vector<std::string>* notes) {
   StatusOr<std::map<FramePair, Trajectory>> edges = ReadTransforms(bag, summary);
   if (!edges.ok()) return edges.status();
+  if (options.tf_parent_frame.empty()) {
+    // The platform's odometry and the arm's pose are not a camera's ground truth.
+    edges->erase({FrameName(options.odom_frame), FrameName(options.base_frame)});
+    edges->erase({FrameName(options.arm_base_frame), FrameName(options.end_effector_frame)});
+  }
   if (!options.tf_parent_frame.empty()) {
     const FramePair wanted{FrameName(options.tf_parent_frame), FrameName(options.tf_child_frame)};
     auto it = edges->find(wanted);
@@ -123,6 +128,52 @@ StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                      "io.rosbag.tf_child_frame=B");
   }
   return std::optional<Trajectory>();
+}
+
+Status ReadBagTfBuffer(const rosbag::Bag& bag, const BagSummary& summary, TfBuffer* buffer) {
+  for (const BagTopic* topic : summary.OfType(kRosTfType)) {
+    const bool is_static = topic->name.find("tf_static") != std::string::npos;
+    int64_t index = 0;
+    for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic->name))) {
+      auto msg = m.instantiate<tf2_msgs::TFMessage>();
+      if (!msg) {
+        return ParseError(summary.path + ": " + topic->name + " message " + std::to_string(index) +
+                          " is not a tf2_msgs/TFMessage");
+      }
+      for (const geometry_msgs::TransformStamped& t : msg->transforms) {
+        StatusOr<Eigen::Isometry3d> pose =
+            IsometryFromRos(t.transform.translation, t.transform.rotation);
+        if (!pose.ok()) return AtMessage(pose.status(), summary.path, topic->name, index);
+        const double stamp = t.header.stamp.isZero() ? m.getTime().toSec() : t.header.stamp.toSec();
+        buffer->Add(t.header.frame_id, t.child_frame_id, stamp, *pose, is_static);
+      }
+      ++index;
+    }
+  }
+  return Status::Ok();
+}
+
+StatusOr<Trajectory> TfPosesAtStamps(const TfBuffer& buffer, const std::string& path,
+                                     const std::string& parent, const std::string& parent_key,
+                                     const std::string& child, const std::string& child_key,
+                                     const std::vector<double>& stamps, std::string* first_gap) {
+  for (const auto& [frame, key] : {std::pair{parent, parent_key}, std::pair{child, child_key}}) {
+    if (buffer.HasFrame(frame)) continue;
+    std::string frames;
+    for (const std::string& f : buffer.Frames()) frames += (frames.empty() ? "" : ", ") + f;
+    return InvalidArgument(path + ": tf has no frame '" + FrameName(frame) + "' (" + key +
+                           "); its frames: " + (frames.empty() ? "none" : frames));
+  }
+  Trajectory poses;
+  for (double stamp : stamps) {
+    StatusOr<Eigen::Isometry3d> pose = buffer.Lookup(parent, child, stamp);
+    if (pose.ok()) {
+      poses.Add(stamp, *pose);
+    } else if (first_gap->empty()) {
+      *first_gap = pose.status().message();
+    }
+  }
+  return poses;
 }
 
 std::string FirstFrameId(const rosbag::Bag& bag, const std::string& topic) {

@@ -19,6 +19,7 @@
 #include "core/common/status.h"
 #include "core/common/trajectory.h"
 #include "core/ros/bag_topics.h"
+#include "core/ros/tf_buffer.h"
 
 namespace sightline {
 
@@ -98,14 +99,27 @@ StatusOr<Trajectory> ReadBagOdometry(const rosbag::Bag& bag, const std::string& 
 // The ground truth of a bag from its /tf (tf2_msgs/TFMessage) topics: the pose of
 // options.tf_child_frame in options.tf_parent_frame when they are given (InvalidArgument listing
 // the bag's transforms when there is no such transform), else the only parent -> child pair on
-// the dynamic tf topics, or among several the one whose child is `camera_frame` (the images'
-// header frame_id); nullopt when there is none or no rule picks one (a note then says which
-// options choose). Frame names compare without a leading '/'.
+// the dynamic tf topics (not counting the odometry's and the arm's: odom_frame -> base_frame,
+// arm_base_frame -> end_effector_frame), or among several the one whose child is `camera_frame`
+// (the images' header frame_id); nullopt when there is none or no rule picks one (a note then says
+// which options choose). Frame names compare without a leading '/'.
 StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
                                                          const BagSummary& summary,
                                                          const RosBagOptions& options,
                                                          const std::string& camera_frame,
                                                          std::vector<std::string>* notes);
+
+// Every transform of the bag's /tf and /tf_static (tf2_msgs/TFMessage) topics into `buffer`
+// (topics whose name says tf_static as static transforms). Errors name the bag, topic, message.
+Status ReadBagTfBuffer(const rosbag::Bag& bag, const BagSummary& summary, TfBuffer* buffer);
+
+// The pose of `child` in `parent` at each of `stamps` from `buffer`, skipping stamps tf does not
+// cover (the first such lookup's message in *first_gap). Without either frame in the buffer:
+// InvalidArgument "x.bag: tf has no frame 'base_link' (io.rosbag.base_frame); its frames: ...".
+StatusOr<Trajectory> TfPosesAtStamps(const TfBuffer& buffer, const std::string& path,
+                                     const std::string& parent, const std::string& parent_key,
+                                     const std::string& child, const std::string& child_key,
+                                     const std::vector<double>& stamps, std::string* first_gap);
 
 // The header frame_id of a topic's first message ("" when none).
 std::string FirstFrameId(const rosbag::Bag& bag, const std::string& topic);

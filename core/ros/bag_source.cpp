@@ -123,6 +123,7 @@ struct BagSource::Impl {
   TopicMessages secondary;                        // Depth or right images.
   std::vector<std::pair<size_t, size_t>> frames;  // Message indices of each frame.
   Trajectory odometry;
+  Trajectory arm_poses;
 };
 
 BagSource::BagSource(std::string path, RosBagOptions options)
@@ -134,6 +135,10 @@ const BagSummary& BagSource::summary() const { return impl_->summary; }
 const BagTopicChoice& BagSource::choice() const { return impl_->choice; }
 const Trajectory* BagSource::odometry() const {
   return impl_->odometry.empty() ? nullptr : &impl_->odometry;
+}
+
+const Trajectory* BagSource::arm_poses() const {
+  return impl_->arm_poses.empty() ? nullptr : &impl_->arm_poses;
 }
 
 void BagSource::Close() {
@@ -296,6 +301,7 @@ Status BagSource::ReadPoses(SourceInfo* info, std::optional<Trajectory>* ground_
     info->notes.push_back("odometry: " + c.odometry + " (" +
                           std::to_string(impl_->odometry.size()) + " poses)");
   }
+  SIGHTLINE_RETURN_IF_ERROR(ReadTfPoses(info));
   const std::string frame = FirstFrameId(*impl_->bag, impl_->primary.topic);
   StatusOr<std::optional<Trajectory>> tf =
       ReadBagTfGroundTruth(*impl_->bag, impl_->summary, options_, frame, &info->notes);
@@ -305,6 +311,46 @@ Status BagSource::ReadPoses(SourceInfo* info, std::optional<Trajectory>* ground_
       c.odometry.find("ground_truth") != std::string::npos && !impl_->odometry.empty()) {
     *ground_truth = impl_->odometry;
     info->notes.push_back("ground truth: " + c.odometry + " (its name says ground_truth)");
+  }
+  return Status::Ok();
+}
+
+Status BagSource::ReadTfPoses(SourceInfo* info) {
+  TfBuffer tf(options_.tf_max_gap_s);
+  SIGHTLINE_RETURN_IF_ERROR(ReadBagTfBuffer(*impl_->bag, impl_->summary, &tf));
+  std::vector<double> stamps;
+  for (const auto& [first, second] : impl_->frames) stamps.push_back(impl_->primary.stamps[first]);
+  struct Wanted {
+    const std::string& parent;
+    const char* parent_key;
+    const std::string& child;
+    const char* child_key;
+    Trajectory* out;
+    const char* what;
+  };
+  std::vector<Wanted> wanted;
+  // Odometry from tf when no Odometry topic gives it and tf knows the odometry's frame.
+  if (impl_->choice.odometry.empty() && tf.HasFrame(options_.odom_frame)) {
+    wanted.push_back({options_.odom_frame, "io.rosbag.odom_frame", options_.base_frame,
+                      "io.rosbag.base_frame", &impl_->odometry, "odometry"});
+  }
+  if (tf.HasFrame(options_.end_effector_frame)) {
+    wanted.push_back({options_.arm_base_frame, "io.rosbag.arm_base_frame",
+                      options_.end_effector_frame, "io.rosbag.end_effector_frame",
+                      &impl_->arm_poses, "arm poses"});
+  }
+  for (const Wanted& w : wanted) {
+    std::string first_gap;
+    StatusOr<Trajectory> poses = TfPosesAtStamps(tf, path_, w.parent, w.parent_key, w.child,
+                                                 w.child_key, stamps, &first_gap);
+    if (!poses.ok()) return poses.status();
+    if (poses->empty()) return OutOfRange(path_ + ": " + w.what + " at no frame: " + first_gap);
+    *w.out = std::move(*poses);
+    std::string note = std::string(w.what) + ": tf " + TfFrameName(w.parent) + " -> " +
+                       TfFrameName(w.child) + " at " + std::to_string(w.out->size()) + " of " +
+                       std::to_string(stamps.size()) + " frames";
+    if (!first_gap.empty()) note += " (first without: " + first_gap + ")";
+    info->notes.push_back(note);
   }
   return Status::Ok();
 }

@@ -44,7 +44,11 @@ class BagSource : public RecordedSource {
   const BagSummary& summary() const;
   const BagTopicChoice& choice() const;
   // The poses of choice().odometry (world_from_base in the odometry's frame); null when none.
+  // Without an odometry topic, the poses of io.rosbag.base_frame in odom_frame on tf.
   const Trajectory* odometry() const override;
+  // base_from_end_effector (io.rosbag.arm_base_frame -> end_effector_frame on tf) at the frames'
+  // stamps, when tf names the end effector; null otherwise.
+  const Trajectory* arm_poses() const override;
 
  protected:
   StatusOr<Frame> Load(int64_t index) override;
@@ -59,6 +63,7 @@ class BagSource : public RecordedSource {
   void PairFrames(SourceInfo* info);
   Status ReadCalibration(SourceInfo* info);
   Status ReadPoses(SourceInfo* info, std::optional<Trajectory>* ground_truth);
+  Status ReadTfPoses(SourceInfo* info);
   const std::string path_;
   const RosBagOptions options_;
   std::unique_ptr<Impl> impl_;

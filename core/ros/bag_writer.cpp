@@ -75,10 +75,11 @@ Status BagWriter::WriteOdometry(const std::string& topic, double time_s,
 }
 
 Status BagWriter::WriteTransform(double time_s, const std::string& parent_frame,
-                                 const std::string& child_frame, const Eigen::Isometry3d& pose) {
+                                 const std::string& child_frame, const Eigen::Isometry3d& pose,
+                                 bool is_static) {
   tf2_msgs::TFMessage msg;
   msg.transforms.push_back(TransformMessage(pose, time_s, parent_frame, child_frame));
-  return impl_->Write("/tf", time_s, msg);
+  return impl_->Write(is_static ? "/tf_static" : "/tf", time_s, msg);
 }
 
 Status BagWriter::WriteRgbdFrame(double time_s, const cv::Mat& color, const cv::Mat& depth_m,

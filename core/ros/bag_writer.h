@@ -32,9 +32,11 @@ class BagWriter {
   // nav_msgs/Odometry: the pose of `child_frame` in `frame`.
   Status WriteOdometry(const std::string& topic, double time_s, const Eigen::Isometry3d& pose,
                        const std::string& frame, const std::string& child_frame);
-  // One transform on /tf: the pose of `child_frame` in `parent_frame`.
+  // One transform on /tf (on /tf_static when `is_static`): the pose of `child_frame` in
+  // `parent_frame`.
   Status WriteTransform(double time_s, const std::string& parent_frame,
-                        const std::string& child_frame, const Eigen::Isometry3d& pose);
+                        const std::string& child_frame, const Eigen::Isometry3d& pose,
+                        bool is_static = false);
   // One frame in Sightline's bag layout (the simulator's and the recorder's bags, TUM's topic
   // names), images and camera_info stamped `time_s`, with the frame ids below:
   //   RGB-D   /camera/rgb/image_color (bgr8; skipped when empty), /camera/depth/image (32FC1

@@ -41,16 +41,29 @@ Status SetKey(const std::string& key, const std::string& value, RosLiveOptions* 
     o->left_info = value;
   else if (key == "right_info")
     o->right_info = value;
-  else if (key == "sync") {
+  else if (key == "odom_frame" || key == "base_frame" || key == "arm_base_frame" ||
+           key == "end_effector_frame") {
+    if (value.empty()) return InvalidArgument("ros:// key '" + key + "' must name a tf frame");
+    (key == "odom_frame"       ? o->odom_frame
+     : key == "base_frame"     ? o->base_frame
+     : key == "arm_base_frame" ? o->arm_base_frame
+                               : o->end_effector_frame) = value;
+  } else if (key == "sync") {
     if (value != "exact" && value != "approx") {
       return InvalidArgument("ros:// key 'sync' takes exact or approx, got '" + value + "'");
     }
     o->exact = value == "exact";
-  } else if (key == "slop" || key == "wait" || key == "queue") {
+  } else if (key == "slop" || key == "wait" || key == "queue" || key == "tf_wait" ||
+             key == "tf_gap") {
     StatusOr<double> n = Number(key, value);
     if (!n.ok()) return n.status();
     if (key == "slop") o->slop_s = *n;
     if (key == "wait") o->wait_s = *n;
+    if (key == "tf_wait") o->tf_wait_s = *n;
+    if (key == "tf_gap") {
+      if (!(*n > 0)) return InvalidArgument("ros:// key 'tf_gap' takes a number > 0");
+      o->tf_gap_s = *n;
+    }
     if (key == "queue") {
       if (*n < 1 || *n > 1000) return InvalidArgument("ros:// key 'queue' takes 1..1000");
       o->queue = static_cast<int>(*n);
@@ -58,7 +71,8 @@ Status SetKey(const std::string& key, const std::string& value, RosLiveOptions* 
   } else {
     return InvalidArgument("ros:// has no key '" + key +
                            "' (keys: image, depth, info, left, right, left_info, right_info, "
-                           "sync, slop, queue, wait)");
+                           "sync, slop, queue, wait, odom_frame, base_frame, arm_base_frame, "
+                           "end_effector_frame, tf_wait, tf_gap)");
   }
   return Status::Ok();
 }

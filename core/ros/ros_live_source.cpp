@@ -6,6 +6,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <condition_variable>
 #include <cstdio>
@@ -14,8 +15,10 @@
 #include <optional>
 
 #include "core/common/timing.h"
+#include "core/ros/bag_messages.h"
 #include "core/ros/checked_subscribe.h"
 #include "core/ros/ros_image.h"
+#include "core/ros/tf_buffer.h"
 #include "core/sensors/timestamp_pairer.h"
 
 namespace sightline {
@@ -29,7 +32,41 @@ struct RosLiveSource::Impl {
 
   explicit Impl(RosLiveOptions o)
       : options(std::move(o)),
-        pairer(options.exact ? 1e-9 : options.slop_s, 2 * static_cast<size_t>(options.queue)) {}
+        pairer(options.exact ? 1e-9 : options.slop_s, 2 * static_cast<size_t>(options.queue)),
+        tf(options.tf_gap_s) {}
+
+  void OnTf(const tf2_msgs::TFMessageConstPtr& msg, bool is_static) {
+    for (const geometry_msgs::TransformStamped& t : msg->transforms) {
+      StatusOr<Eigen::Isometry3d> pose =
+          IsometryFromRos(t.transform.translation, t.transform.rotation);
+      if (pose.ok())
+        tf.Add(t.header.frame_id, t.child_frame_id, RosSeconds(t.header.stamp), *pose, is_static);
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    ready_cv.notify_all();
+  }
+  // Appends parent_from_child at `stamp_s` to `out` once tf names `trigger`, waiting up to
+  // tf_wait for a transform that covers the stamp.
+  void PoseAt(const std::string& trigger, const std::string& parent, const std::string& child,
+              double stamp_s, Trajectory* out) {
+    if (!tf.HasFrame(trigger)) return;
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(options.tf_wait_s));
+    std::unique_lock<std::mutex> lock(mutex);
+    while (true) {
+      StatusOr<Eigen::Isometry3d> pose = tf.Lookup(parent, child, stamp_s);
+      if (pose.ok()) {
+        out->Add(stamp_s, *pose);
+        return;
+      }
+      if (!ros::ok() || ready_cv.wait_until(lock, deadline) == std::cv_status::timeout) {
+        if (tf.Lookup(parent, child, stamp_s).ok()) continue;
+        ++stats.tf_missing;
+        return;
+      }
+    }
+  }
 
   void OnImage(int stream, const ImagePtr& msg) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -69,6 +106,8 @@ struct RosLiveSource::Impl {
   std::optional<Item> current;
   sensor_msgs::CameraInfoConstPtr info_a, info_b;
   RosLiveStats stats;
+  TfBuffer tf;
+  Trajectory odometry, arm_poses;  // Driving thread only.
   int64_t position = 0;
   bool reported = false;
 };
@@ -101,6 +140,12 @@ void RosLiveSource::Impl::Subscribe() {
         [this](const sensor_msgs::CameraInfoConstPtr& m) { OnInfo(1, m); },
         refused(options.right_info)));
   }
+  subs.push_back(SubscribeChecked<tf2_msgs::TFMessage>(
+      *nh, "/tf", 100, [this](const tf2_msgs::TFMessageConstPtr& m) { OnTf(m, false); },
+      refused("/tf")));
+  subs.push_back(SubscribeChecked<tf2_msgs::TFMessage>(
+      *nh, "/tf_static", 100, [this](const tf2_msgs::TFMessageConstPtr& m) { OnTf(m, true); },
+      refused("/tf_static")));
 }
 
 Status RosLiveSource::Impl::FillInfo() {
@@ -206,6 +251,11 @@ StatusOr<Frame> RosLiveSource::Retrieve() {
   stamp.sensor_time_s = RosSeconds(item.a->header.stamp);
   stamp.host_time_s = item.host_s;
   const SourceKind kind = impl_->options.kind();
+  const RosLiveOptions& tf_frames = impl_->options;
+  impl_->PoseAt(tf_frames.odom_frame, tf_frames.odom_frame, tf_frames.base_frame,
+                stamp.sensor_time_s, &impl_->odometry);
+  impl_->PoseAt(tf_frames.end_effector_frame, tf_frames.arm_base_frame,
+                tf_frames.end_effector_frame, stamp.sensor_time_s, &impl_->arm_poses);
   StatusOr<cv::Mat> a = DecodeRosImage(*item.a, RosImageRole::kColor);
   StatusOr<cv::Mat> b =
       item.b ? DecodeRosImage(
@@ -241,6 +291,14 @@ void RosLiveSource::Close() {
                  static_cast<long long>(s.queue_overflows),
                  static_cast<long long>(s.decode_errors));
   }
+}
+
+const Trajectory* RosLiveSource::odometry() const {
+  return impl_->odometry.empty() ? nullptr : &impl_->odometry;
+}
+
+const Trajectory* RosLiveSource::arm_poses() const {
+  return impl_->arm_poses.empty() ? nullptr : &impl_->arm_poses;
 }
 
 RosLiveStats RosLiveSource::Stats() const {

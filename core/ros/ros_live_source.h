@@ -10,6 +10,11 @@
 // frames that wait for the pipeline (default 4; when full the oldest is dropped and counted);
 // wait = how long Open waits for the camera info [s] (default 10; a live-device guard by the
 // host clock).
+// tf: /tf and /tf_static go into a TfBuffer; keys odom_frame (default odom), base_frame
+// (base_link), arm_base_frame (base_link), end_effector_frame (end_effector); tf_wait = how long
+// Retrieve waits for a transform covering a frame's stamp [s] (default 0.2; only once tf has
+// named the frame); tf_gap = the largest time between two samples interpolated between [s]
+// (default 0.5). odometry() and arm_poses() then hold the poses at the frames' stamps so far.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +33,10 @@ struct RosLiveOptions {
   double slop_s = 0.02;
   int queue = 4;
   double wait_s = 10;
+  std::string odom_frame = "odom", base_frame = "base_link";
+  std::string arm_base_frame = "base_link", end_effector_frame = "end_effector";
+  double tf_wait_s = 0.2;
+  double tf_gap_s = 0.5;
 
   SourceKind kind() const;  // kRgbd with depth, kStereo with left/right, else kMono.
 };
@@ -46,6 +55,7 @@ struct RosLiveStats {
   int64_t decode_errors = 0;    // Messages whose encoding could not be decoded.
   int64_t refused = 0;          // Messages whose bytes do not hold what their type declares.
   std::string last_refused;     // "/camera/camera_info: sensor_msgs/CameraInfo: field D ...".
+  int64_t tf_missing = 0;       // Frames whose odometry or arm pose tf did not give in time.
 };
 
 // A source on live topics (not yet opened). Open fails with FailedPrecondition when ROS is not
@@ -62,6 +72,12 @@ class RosLiveSource : public Source {
   StatusOr<Frame> Retrieve() override;
   int64_t Position() const override;
   void Close() override;
+
+  // world_from_base (odom_frame -> base_frame) and base_from_end_effector (arm_base_frame ->
+  // end_effector_frame) at the stamps of the frames retrieved so far; null while empty.
+  // Read them from the thread that drives the source.
+  const Trajectory* odometry() const override;
+  const Trajectory* arm_poses() const override;
 
   RosLiveStats Stats() const;
 

@@ -67,8 +67,15 @@ Status WriteSimFrame(sim::Simulator& simulator, int i, const SimBagOptions& opti
   if (static_cast<size_t>(i) < odometry.size()) {
     const TimedPose& p = odometry.poses()[static_cast<size_t>(i)];
     const double odometry_t = kSimBagEpochS + p.time_s;
-    bag.write("/odom", RosTimeFromSeconds(odometry_t),
-              OdometryMessage(p.world_from_sensor, odometry_t, "odom", "base_link"));
+    if (options.odometry_on_tf) {
+      tf2_msgs::TFMessage msg;
+      msg.transforms.push_back(
+          TransformMessage(p.world_from_sensor, odometry_t, "odom", "base_link"));
+      bag.write("/tf", RosTimeFromSeconds(odometry_t), msg);
+    } else {
+      bag.write("/odom", RosTimeFromSeconds(odometry_t),
+                OdometryMessage(p.world_from_sensor, odometry_t, "odom", "base_link"));
+    }
     out->odometry.Add(odometry_t, p.world_from_sensor);
   }
   if (!options.stereo) return Status::Ok();

@@ -22,7 +22,7 @@ struct SimBag {
   PinholeCamera rgbd_camera;
   StereoRig stereo_rig;
   Trajectory camera_truth;  // world_from_camera of the RGB-D camera, on /tf world -> camera.
-  Trajectory odometry;      // The robot's wheel odometry, on /odom.
+  Trajectory odometry;      // The robot's wheel odometry, on /odom (or /tf odom -> base_link).
 };
 
 // How to write it.
@@ -31,6 +31,7 @@ struct SimBagOptions {
   bool depth_16u = false;            // Depth as 16UC1 millimetres instead of 32FC1 metres.
   std::string compression = "none";  // "none", "bz2", "lz4".
   bool stereo = true;                // Also /stereo/left|right/image_raw and camera_info.
+  bool odometry_on_tf = false;       // Odometry as /tf odom -> base_link instead of on /odom.
 };
 
 // Renders the simulator's corridor and writes /camera/rgb/image_color (bgr8),

@@ -2,10 +2,12 @@
 // decoded and stamped, with the images that find no partner dropped and counted.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <chrono>
 #include <thread>
 
+#include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 #include "core/ros/ros_live_source.h"
 #include "tests/ros/raw_message.h"
@@ -50,6 +52,26 @@ TEST(RosLiveUri, ErrorsNameTheKey) {
   EXPECT_NE(message("ros://?left=/a").find("right="), std::string::npos);
   EXPECT_NE(message("ros://?depth=/d").find("image="), std::string::npos);
   EXPECT_FALSE(ParseRosLiveUri("ros://?image=/a&queue=0").ok());
+}
+
+TEST(RosLiveUri, TfKeys) {
+  StatusOr<RosLiveOptions> o = ParseRosLiveUri(
+      "ros://?image=/a/image&odom_frame=map&base_frame=robot&arm_base_frame=arm&"
+      "end_effector_frame=tool&tf_wait=2&tf_gap=0.25");
+  ASSERT_TRUE(o.ok()) << o.status().ToString();
+  EXPECT_EQ(o->odom_frame, "map");
+  EXPECT_EQ(o->base_frame, "robot");
+  EXPECT_EQ(o->arm_base_frame, "arm");
+  EXPECT_EQ(o->end_effector_frame, "tool");
+  EXPECT_DOUBLE_EQ(o->tf_wait_s, 2);
+  EXPECT_DOUBLE_EQ(o->tf_gap_s, 0.25);
+  const StatusOr<RosLiveOptions> defaults = ParseRosLiveUri("ros://?image=/a/image");
+  EXPECT_EQ(defaults->odom_frame, "odom");
+  EXPECT_EQ(defaults->end_effector_frame, "end_effector");
+  EXPECT_NE(ParseRosLiveUri("ros://?image=/a&tf_gap=0").status().message().find("tf_gap"),
+            std::string::npos);
+  EXPECT_NE(ParseRosLiveUri("ros://?image=/a&base_frame=").status().message().find("base_frame"),
+            std::string::npos);
 }
 
 TEST(RosLiveSource, NeedsARosNode) {
@@ -242,6 +264,81 @@ TEST(FrameFromRosImages, PairsOfOneSizeWithColourAsBgrAndStereoOfOneType) {
   StatusOr<Frame> mono = FrameFromRosImages(SourceKind::kMono, stamp, bgr, cv::Mat(), "a", "b");
   ASSERT_TRUE(mono.ok());
   EXPECT_EQ(std::get<MonoFrame>(*mono).image.cols, 6);
+}
+
+// Mono frames between the samples of a published /tf (odom -> base_link moving, base_link ->
+// arm_mount on /tf_static, arm_mount -> end_effector moving): the source's odometry and arm poses
+// are the chains interpolated at the frames' stamps.
+TEST_F(RosLive, OdometryAndArmPosesFromTfAtTheFrameStamps) {
+  ros::NodeHandle nh;
+  ros::Publisher image = nh.advertise<sensor_msgs::Image>("/tfcam/image", 20);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/tfcam/camera_info", 1, true);
+  ros::Publisher tf = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  ros::Publisher tf_static = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
+  PinholeCamera camera;
+  camera.width = 64, camera.height = 48, camera.fx = camera.fy = 50, camera.cx = 32, camera.cy = 24;
+  info.publish(RosInfoFromCamera(camera, 0, "camera"));
+  Eigen::Isometry3d base_from_mount = Eigen::Isometry3d::Identity();
+  base_from_mount.translation() = Eigen::Vector3d(0.1, 0, 0.5);
+  base_from_mount.linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  tf2_msgs::TFMessage fixed;
+  fixed.transforms.push_back(TransformMessage(base_from_mount, 200, "base_link", "arm_mount"));
+  tf_static.publish(fixed);
+  auto odom_from_base = [](double t) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(2.0 * (t - 200), 1, 0);
+    return pose;
+  };
+  auto mount_from_ee = [](double t) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(0, 0.5 * (t - 200), 0.2);
+    return pose;
+  };
+  RosLiveSource source(
+      ParseRosLiveUri("ros://?image=/tfcam/image&arm_base_frame=base_link&queue=20&tf_wait=10")
+          .value());
+  ASSERT_TRUE(source.Open().ok());
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while ((image.getNumSubscribers() == 0 || tf.getNumSubscribers() == 0 ||
+          tf_static.getNumSubscribers() == 0) &&
+         std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_GT(tf.getNumSubscribers(), 0u);
+  // tf at 20 Hz over 200..200.6 s, then frames at 200.025 + 0.1 k (between two samples).
+  for (int i = 0; i <= 12; ++i) {
+    const double t = 200 + 0.05 * i;
+    tf2_msgs::TFMessage msg;
+    msg.transforms.push_back(TransformMessage(odom_from_base(t), t, "odom", "base_link"));
+    msg.transforms.push_back(TransformMessage(mount_from_ee(t), t, "arm_mount", "end_effector"));
+    tf.publish(msg);
+  }
+  for (int k = 0; k < 5; ++k) {
+    image.publish(
+        EncodeRosImage(cv::Mat(48, 64, CV_8UC1, cv::Scalar(k)), 200.025 + 0.1 * k, "camera")
+            .value());
+  }
+  std::vector<double> stamps;
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(source.Grab().ok());
+    StatusOr<Frame> frame = source.Retrieve();
+    ASSERT_TRUE(frame.ok()) << frame.status().ToString();
+    stamps.push_back(std::get<MonoFrame>(*frame).stamp.sensor_time_s);
+  }
+  ASSERT_NE(source.odometry(), nullptr);
+  ASSERT_NE(source.arm_poses(), nullptr);
+  ASSERT_EQ(source.odometry()->size(), 5u);
+  ASSERT_EQ(source.arm_poses()->size(), 5u);
+  for (size_t i = 0; i < 5; ++i) {
+    const TimedPose& odom = source.odometry()->poses()[i];
+    const TimedPose& arm = source.arm_poses()->poses()[i];
+    EXPECT_NEAR(odom.time_s, stamps[i], 1e-9);
+    EXPECT_NEAR(arm.time_s, stamps[i], 1e-9);
+    EXPECT_TRUE(odom.world_from_sensor.isApprox(odom_from_base(stamps[i]), 1e-6)) << i;
+    EXPECT_TRUE(arm.world_from_sensor.isApprox(base_from_mount * mount_from_ee(stamps[i]), 1e-6))
+        << i;
+  }
+  EXPECT_EQ(source.Stats().tf_missing, 0);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Empty.h>
+#include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include "core/io/dataset.h"
 #include "core/io/hand_eye_file.h"
 #include "core/pipeline/button_pipeline.h"
+#include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 #include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
@@ -345,6 +347,89 @@ TEST_F(RosNode, StereoOnLiveTopicsEqualsTheHeadlessRun) {
     EXPECT_NEAR(p.y, row->second[1], 1e-6);
     EXPECT_NEAR(p.z, row->second[2], 1e-6);
   }
+}
+
+// sightline-node mapping on live ros:// RGB-D topics with the wheel odometry only on /tf (odom ->
+// base_link): the node takes each frame's pose from tf and maps as the headless run does with
+// odometry.txt (the recording without its walls, people and scene files, which a live run lacks).
+TEST_F(RosNode, MappingOnLiveTopicsTakesTheOdometryFromTf) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  const std::string copy = testing::TempDir("ros_node_tf_rec") + "/rec";
+  std::filesystem::copy(rec, copy, std::filesystem::copy_options::recursive);
+  for (const char* name : {"walls.csv", "people.csv", "scene.yaml"}) {
+    std::filesystem::remove(copy + "/" + name);
+  }
+  const std::string headless = testing::TempDir("ros_node_tf_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mapping " + copy + " --out " +
+                                       headless + " --quiet");
+  ASSERT_TRUE(cli.exit_code == 0 || cli.exit_code == 3) << cli.out;
+  const auto expected = testing::ReadTumTrajectory(headless + "/trajectory.txt");
+  ASSERT_EQ(expected.size(), 30u);
+  StatusOr<Trajectory> odometry = ReadTumTrajectory(copy + "/odometry.txt");
+  ASSERT_TRUE(odometry.ok()) << odometry.status().ToString();
+  StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(copy, SourceKind::kRgbd);
+  ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+  ASSERT_TRUE((*dataset)->info().rgbd.has_value());
+
+  ros::NodeHandle nh;
+  ros::Publisher color = nh.advertise<sensor_msgs::Image>("/live/rgb/image", 50);
+  ros::Publisher depth = nh.advertise<sensor_msgs::Image>("/live/depth/image", 50);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/live/rgb/camera_info", 1, true);
+  ros::Publisher tf = nh.advertise<tf2_msgs::TFMessage>("/tf", 200);
+  info.publish(RosInfoFromCamera((*dataset)->info().rgbd->color, 0, "camera"));
+  Inbox<nav_msgs::OccupancyGrid> maps;
+  ros::Subscriber sub = nh.subscribe("/map", 5, &Inbox<nav_msgs::OccupancyGrid>::Take, &maps);
+  const std::string out = testing::TempDir("ros_node_tf");
+  const std::string log = testing::TempDir("ros_node_tf_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline mapping --out " + out +
+                            " --source 'ros://?image=/live/rgb/image&depth=/live/depth/image&"
+                            "sync=exact&queue=50&tf_wait=30'",
+                        log));
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        return color.getNumSubscribers() > 0 && depth.getNumSubscribers() > 0 &&
+               tf.getNumSubscribers() > 0 && sub.getNumPublishers() > 0;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (const TimedPose& p : odometry->poses()) {
+    tf2_msgs::TFMessage msg;
+    msg.transforms.push_back(TransformMessage(p.world_from_sensor, p.time_s, "odom", "base_link"));
+    tf.publish(msg);
+  }
+  for (int k = 0; k < 30; ++k) {
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const RgbdFrame frame = std::get<RgbdFrame>((*dataset)->Retrieve().value());
+    color.publish(EncodeRosImage(frame.color, frame.stamp.sensor_time_s, "camera").value());
+    depth.publish(EncodeRosImage(frame.depth_m, frame.stamp.sensor_time_s, "camera").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  // The map of the last frame arrives once the node has processed every frame.
+  const double last_time = expected.rbegin()->first;
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const auto m = maps.messages();
+        return !m.empty() && std::abs(m.back().header.stamp.toSec() - last_time) < 1e-3;
+      },
+      120))
+      << testing::ReadTextFile(log);
+  node.Interrupt();
+  EXPECT_EQ(node.Wait(60), 130) << testing::ReadTextFile(log);
+  EXPECT_NE(testing::ReadTextFile(out + "/mapping_log.txt").find("live source's odometry"),
+            std::string::npos)
+      << testing::ReadTextFile(out + "/mapping_log.txt");
+  const auto live = testing::ReadTumTrajectory(out + "/trajectory.txt");
+  ASSERT_EQ(live.size(), expected.size());
+  for (auto a = expected.begin(), b = live.begin(); a != expected.end(); ++a, ++b) {
+    EXPECT_NEAR(a->first, b->first, 1e-4);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(a->second[i], b->second[i], 1e-4) << a->first;
+  }
+  // The drive moved: a real comparison.
+  EXPECT_GT((expected.rbegin()->second.head<3>() - expected.begin()->second.head<3>()).norm(), 1.0);
 }
 
 // mobility's scored cloud and score grid reach a subscriber with the documented fields, scores
