@@ -8,12 +8,15 @@ class QLineEdit;
 
 namespace sightline {
 
+// Asks for the master and the namespace; MainWindow::ConnectRos checks and uses them.
 class RosConnectDialog : public QDialog {
   Q_OBJECT
 
  public:
   explicit RosConnectDialog(QWidget* parent = nullptr);
+  // The master's URI as typed (trimmed), e.g. http://robot:11311.
   QString master_uri() const;
+  // The node's namespace as typed ("/" by default).
   QString ros_namespace() const;
 
  private:

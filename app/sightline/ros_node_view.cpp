@@ -1,3 +1,5 @@
+// The ROS node dock: RosRemote's updates, queued to the GUI thread, become the map image and the
+// 3D view's ros_node/* layers.
 #include "app/sightline/ros_node_view.h"
 
 #include <QDockWidget>
