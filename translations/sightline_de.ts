@@ -757,13 +757,13 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="83"/>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Depth</source>
         <translation>Tiefe</translation>
     </message>
@@ -823,211 +823,211 @@
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <location filename="../app/sightline/main_window.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="139"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="141"/>
+        <location filename="../app/sightline/main_window.cpp" line="143"/>
         <source>&amp;Reset 3D view</source>
         <translation>3D-Ansicht &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
         <source>&amp;Follow the trajectory</source>
         <translation>Der Trajektorie &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <location filename="../app/sightline/main_window.cpp" line="148"/>
         <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
         <translation>Die 3D-Ansicht neu einpassen, sobald eine wachsende Trajektorie sie verlässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="155"/>
+        <location filename="../app/sightline/main_window.cpp" line="157"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensoren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <location filename="../app/sightline/main_window.cpp" line="164"/>
         <source> (unavailable)</source>
         <translation> (nicht verfügbar)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="169"/>
         <source>Connect to the first %1 device</source>
         <translation>Mit dem ersten %1-Gerät verbinden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
         <source>Replay recording</source>
         <translation>Aufnahme abspielen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="179"/>
+        <location filename="../app/sightline/main_window.cpp" line="181"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="181"/>
-        <location filename="../app/sightline/main_window.cpp" line="325"/>
+        <location filename="../app/sightline/main_window.cpp" line="183"/>
+        <location filename="../app/sightline/main_window.cpp" line="327"/>
         <source>None (show frames only)</source>
         <translation>Keine (nur Bilder zeigen)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <location filename="../app/sightline/main_window.cpp" line="190"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="189"/>
+        <location filename="../app/sightline/main_window.cpp" line="191"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>Trajektorie &amp;auswerten...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>Evaluate &amp;current run</source>
         <translation>&amp;Aktuellen Lauf auswerten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <location filename="../app/sightline/main_window.cpp" line="198"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Vergleicht die Trajektorie der laufenden Pipeline mit der Referenz des Datensatzes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="205"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="208"/>
         <source>&amp;About Sightline</source>
         <translation>Ü&amp;ber Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="209"/>
         <source>About Sightline</source>
         <translation>Über Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="208"/>
+        <location filename="../app/sightline/main_window.cpp" line="210"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: Roboterwahrnehmung für assistive und mobile Robotik.
 Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopflokalisierung auf Live-Sensoren oder aufgezeichneten Daten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="225"/>
+        <location filename="../app/sightline/main_window.cpp" line="227"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="226"/>
+        <location filename="../app/sightline/main_window.cpp" line="228"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="234"/>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
         <source>End of recording.</source>
         <translation>Ende der Aufnahme.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="263"/>
+        <location filename="../app/sightline/main_window.cpp" line="265"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="270"/>
+        <location filename="../app/sightline/main_window.cpp" line="272"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Die Demo-Aufnahmen werden erzeugt (nur beim ersten Mal)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="279"/>
+        <location filename="../app/sightline/main_window.cpp" line="281"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: Ein Roboter fährt durch einen simulierten Büroflur (RGB-D, Stereo, Radodometrie, exakte Ground Truth). Die Annäherung der Armkamera an das Tastenfeld liegt in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="286"/>
+        <location filename="../app/sightline/main_window.cpp" line="288"/>
         <source>The demo could not be made: %1</source>
         <translation>Die Demo konnte nicht erzeugt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="343"/>
+        <location filename="../app/sightline/main_window.cpp" line="345"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Keine Pipeline: nur die Bilder werden gezeigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="354"/>
+        <location filename="../app/sightline/main_window.cpp" line="356"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="358"/>
+        <location filename="../app/sightline/main_window.cpp" line="360"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 kann nicht auf %2-Bildern laufen; bitte einen anderen Datensatz öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="387"/>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="389"/>
+        <location filename="../app/sightline/main_window.cpp" line="390"/>
         <source>Opening %1 ...</source>
         <translation>Öffne %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Left</source>
         <translation>Links</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Right</source>
         <translation>Rechts</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="410"/>
+        <location filename="../app/sightline/main_window.cpp" line="412"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 Bilder, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="415"/>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
         <source>, ground truth</source>
         <translation>, Ground Truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="417"/>
+        <location filename="../app/sightline/main_window.cpp" line="419"/>
         <source>Opened %1</source>
         <translation>Geöffnet: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="422"/>
+        <location filename="../app/sightline/main_window.cpp" line="424"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="441"/>
+        <location filename="../app/sightline/main_window.cpp" line="443"/>
         <source>frame %1, read in %2 ms</source>
         <translation>Bild %1, gelesen in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="485"/>
+        <location filename="../app/sightline/main_window.cpp" line="487"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Kein Datensatz geöffnet. Datei &gt; Datensatz-Ordner öffnen wählen (TUM RGB-D, EuRoC, KITTI, ein Bildordner oder PCD-Dateien) oder einen Ordner auf dieses Fenster ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="487"/>
+        <location filename="../app/sightline/main_window.cpp" line="489"/>
         <source>No dataset open</source>
         <translation>Kein Datensatz geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="198"/>
+        <location filename="../app/sightline/main_window.cpp" line="200"/>
         <source>&amp;Calibrate camera...</source>
         <translation>Kamera &amp;kalibrieren...</translation>
     </message>
@@ -1130,6 +1130,26 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
         <source>Keep the map</source>
         <translation>Karte behalten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="21"/>
+        <source>Connect to &amp;ROS master...</source>
+        <translation>Mit &amp;ROS-Master verbinden...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="22"/>
+        <source>&amp;Disconnect from ROS master</source>
+        <translation>Vom ROS-Master &amp;trennen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="29"/>
+        <source>Connect to ROS master</source>
+        <translation>Mit ROS-Master verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="37"/>
+        <source>Disconnected from the ROS master</source>
+        <translation>Vom ROS-Master getrennt</translation>
     </message>
 </context>
 <context>
@@ -4138,6 +4158,68 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/recording_controller.cpp" line="122"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
         <translation>REC %1 geschrieben, %2 verworfen, %3 MB/s</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosConnectDialog</name>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="12"/>
+        <source>Connect to ROS master</source>
+        <translation>Mit ROS-Master verbinden</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="18"/>
+        <source>Master URI:</source>
+        <translation>Master-URI:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="19"/>
+        <source>Node namespace:</source>
+        <translation>Namensraum des Knotens:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="21"/>
+        <source>The robot&apos;s master, e.g. http://robot:11311. The robot must reach this computer too: set ROS_IP (or ROS_HOSTNAME) before starting Sightline.</source>
+        <translation>Der Master des Roboters, z. B. http://robot:11311. Der Roboter muss auch diesen Rechner erreichen: ROS_IP (oder ROS_HOSTNAME) vor dem Start von Sightline setzen.</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosNodeView</name>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <source>ROS node</source>
+        <translation>ROS-Knoten</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <source>Not connected: File &gt; Connect to ROS master...</source>
+        <translation>Nicht verbunden: Datei &gt; Mit ROS-Master verbinden...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <source>ROS: %1</source>
+        <translation>ROS: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <source>Waiting for the map from %1 ...</source>
+        <translation>Warte auf die Karte von %1 ...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <source>ROS: not available in this build</source>
+        <translation>ROS: in diesem Build nicht verfügbar</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <source>ROS: connected to %1</source>
+        <translation>ROS: verbunden mit %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <source>ROS: disconnected — reconnecting to %1</source>
+        <translation>ROS: getrennt — verbinde erneut mit %1</translation>
     </message>
 </context>
 <context>

@@ -757,13 +757,13 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Colour</source>
         <translation>Color</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="83"/>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Depth</source>
         <translation>Profundidad</translation>
     </message>
@@ -823,211 +823,211 @@
         <translation>Abrir &amp;recientes</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <location filename="../app/sightline/main_window.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="139"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;View</source>
         <translation>&amp;Ver</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="141"/>
+        <location filename="../app/sightline/main_window.cpp" line="143"/>
         <source>&amp;Reset 3D view</source>
         <translation>&amp;Restablecer la vista 3D</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
         <source>&amp;Follow the trajectory</source>
         <translation>&amp;Seguir la trayectoria</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <location filename="../app/sightline/main_window.cpp" line="148"/>
         <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
         <translation>Ajustar de nuevo la vista 3D cada vez que una trayectoria creciente sale de ella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="155"/>
+        <location filename="../app/sightline/main_window.cpp" line="157"/>
         <source>&amp;Sensors</source>
         <translation>Se&amp;nsores</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <location filename="../app/sightline/main_window.cpp" line="164"/>
         <source> (unavailable)</source>
         <translation> (no disponible)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="169"/>
         <source>Connect to the first %1 device</source>
         <translation>Conectar con el primer dispositivo %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
         <source>Replay recording</source>
         <translation>Reproducir una grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="179"/>
+        <location filename="../app/sightline/main_window.cpp" line="181"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="181"/>
-        <location filename="../app/sightline/main_window.cpp" line="325"/>
+        <location filename="../app/sightline/main_window.cpp" line="183"/>
+        <location filename="../app/sightline/main_window.cpp" line="327"/>
         <source>None (show frames only)</source>
         <translation>Ninguno (solo mostrar imágenes)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <location filename="../app/sightline/main_window.cpp" line="190"/>
         <source>&amp;Tools</source>
         <translation>&amp;Herramientas</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="189"/>
+        <location filename="../app/sightline/main_window.cpp" line="191"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>&amp;Evaluar una trayectoria...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>Evaluate &amp;current run</source>
         <translation>Evaluar la ejecución a&amp;ctual</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <location filename="../app/sightline/main_window.cpp" line="198"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Compara la trayectoria del pipeline en ejecución con la verdad de referencia del conjunto de datos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="205"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="208"/>
         <source>&amp;About Sightline</source>
         <translation>&amp;Acerca de Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="209"/>
         <source>About Sightline</source>
         <translation>Acerca de Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="208"/>
+        <location filename="../app/sightline/main_window.cpp" line="210"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: percepción robótica para la robótica asistencial y móvil.
 Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localización monocular de botones con sensores en vivo o datos grabados.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="225"/>
+        <location filename="../app/sightline/main_window.cpp" line="227"/>
         <source>Could not open %1: %2</source>
         <translation>No se pudo abrir %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="226"/>
+        <location filename="../app/sightline/main_window.cpp" line="228"/>
         <source>Could not open %1</source>
         <translation>No se pudo abrir %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="234"/>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
         <source>End of recording.</source>
         <translation>Fin de la grabación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="263"/>
+        <location filename="../app/sightline/main_window.cpp" line="265"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="270"/>
+        <location filename="../app/sightline/main_window.cpp" line="272"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Generando las grabaciones de la demo (solo la primera vez)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="279"/>
+        <location filename="../app/sightline/main_window.cpp" line="281"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: un robot recorre un pasillo de oficina simulado (RGB-D, estéreo, odometría de ruedas, verdad de referencia exacta). La aproximación de la cámara del brazo al panel está en %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="286"/>
+        <location filename="../app/sightline/main_window.cpp" line="288"/>
         <source>The demo could not be made: %1</source>
         <translation>No se pudo crear la demo: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="343"/>
+        <location filename="../app/sightline/main_window.cpp" line="345"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Sin pipeline: solo se muestran las imágenes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="354"/>
+        <location filename="../app/sightline/main_window.cpp" line="356"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="358"/>
+        <location filename="../app/sightline/main_window.cpp" line="360"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 no puede funcionar con imágenes %2; abra otro conjunto de datos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="387"/>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="389"/>
+        <location filename="../app/sightline/main_window.cpp" line="390"/>
         <source>Opening %1 ...</source>
         <translation>Abriendo %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Left</source>
         <translation>Izquierda</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Image</source>
         <translation>Imagen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Right</source>
         <translation>Derecha</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="410"/>
+        <location filename="../app/sightline/main_window.cpp" line="412"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 imágenes, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="415"/>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
         <source>, ground truth</source>
         <translation>, verdad de referencia</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="417"/>
+        <location filename="../app/sightline/main_window.cpp" line="419"/>
         <source>Opened %1</source>
         <translation>Abierto %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="422"/>
+        <location filename="../app/sightline/main_window.cpp" line="424"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="441"/>
+        <location filename="../app/sightline/main_window.cpp" line="443"/>
         <source>frame %1, read in %2 ms</source>
         <translation>imagen %1, leída en %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="485"/>
+        <location filename="../app/sightline/main_window.cpp" line="487"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Ningún conjunto de datos abierto. Use Archivo &gt; Abrir carpeta de datos (TUM RGB-D, EuRoC, KITTI, una carpeta de imágenes o archivos PCD), o arrastre una carpeta a esta ventana.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="487"/>
+        <location filename="../app/sightline/main_window.cpp" line="489"/>
         <source>No dataset open</source>
         <translation>Ningún conjunto de datos abierto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="198"/>
+        <location filename="../app/sightline/main_window.cpp" line="200"/>
         <source>&amp;Calibrate camera...</source>
         <translation>&amp;Calibrar la cámara...</translation>
     </message>
@@ -1130,6 +1130,26 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
         <source>Keep the map</source>
         <translation>Conservar el mapa</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="21"/>
+        <source>Connect to &amp;ROS master...</source>
+        <translation>Conectar al máster &amp;ROS...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="22"/>
+        <source>&amp;Disconnect from ROS master</source>
+        <translation>&amp;Desconectar del máster ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="29"/>
+        <source>Connect to ROS master</source>
+        <translation>Conectar al máster ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="37"/>
+        <source>Disconnected from the ROS master</source>
+        <translation>Desconectado del máster ROS</translation>
     </message>
 </context>
 <context>
@@ -4138,6 +4158,68 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/recording_controller.cpp" line="122"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
         <translation>REC %1 escritas, %2 descartadas, %3 MB/s</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosConnectDialog</name>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="12"/>
+        <source>Connect to ROS master</source>
+        <translation>Conectar al máster ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="18"/>
+        <source>Master URI:</source>
+        <translation>URI del máster:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="19"/>
+        <source>Node namespace:</source>
+        <translation>Espacio de nombres del nodo:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="21"/>
+        <source>The robot&apos;s master, e.g. http://robot:11311. The robot must reach this computer too: set ROS_IP (or ROS_HOSTNAME) before starting Sightline.</source>
+        <translation>El máster del robot, p. ej. http://robot:11311. El robot también debe alcanzar este ordenador: defina ROS_IP (o ROS_HOSTNAME) antes de iniciar Sightline.</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosNodeView</name>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <source>ROS node</source>
+        <translation>Nodo ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <source>Not connected: File &gt; Connect to ROS master...</source>
+        <translation>No conectado: Archivo &gt; Conectar al máster ROS...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <source>ROS: %1</source>
+        <translation>ROS: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <source>Waiting for the map from %1 ...</source>
+        <translation>Esperando el mapa de %1 ...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <source>ROS: not available in this build</source>
+        <translation>ROS: no disponible en esta compilación</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <source>ROS: connected to %1</source>
+        <translation>ROS: conectado a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <source>ROS: disconnected — reconnecting to %1</source>
+        <translation>ROS: desconectado — reconectando a %1</translation>
     </message>
 </context>
 <context>

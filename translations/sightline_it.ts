@@ -757,13 +757,13 @@
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="82"/>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Colour</source>
         <translation>Colore</translation>
     </message>
     <message>
         <location filename="../app/sightline/main_window.cpp" line="83"/>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Depth</source>
         <translation>Profondità</translation>
     </message>
@@ -823,211 +823,211 @@
         <translation>Apri &amp;recenti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="135"/>
+        <location filename="../app/sightline/main_window.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>&amp;Esci</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="139"/>
+        <location filename="../app/sightline/main_window.cpp" line="141"/>
         <source>&amp;View</source>
         <translation>&amp;Visualizza</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="141"/>
+        <location filename="../app/sightline/main_window.cpp" line="143"/>
         <source>&amp;Reset 3D view</source>
         <translation>&amp;Ripristina la vista 3D</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="144"/>
+        <location filename="../app/sightline/main_window.cpp" line="146"/>
         <source>&amp;Follow the trajectory</source>
         <translation>&amp;Segui la traiettoria</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="146"/>
+        <location filename="../app/sightline/main_window.cpp" line="148"/>
         <source>Fit the 3D view again whenever a growing trajectory leaves it.</source>
         <translation>Riadatta la vista 3D ogni volta che una traiettoria in crescita ne esce.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="155"/>
+        <location filename="../app/sightline/main_window.cpp" line="157"/>
         <source>&amp;Sensors</source>
         <translation>&amp;Sensori</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="162"/>
+        <location filename="../app/sightline/main_window.cpp" line="164"/>
         <source> (unavailable)</source>
         <translation> (non disponibile)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="167"/>
+        <location filename="../app/sightline/main_window.cpp" line="169"/>
         <source>Connect to the first %1 device</source>
         <translation>Collegati al primo dispositivo %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="173"/>
+        <location filename="../app/sightline/main_window.cpp" line="175"/>
         <source>Replay recording</source>
         <translation>Riproduci una registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="179"/>
+        <location filename="../app/sightline/main_window.cpp" line="181"/>
         <source>&amp;Pipeline</source>
         <translation>&amp;Pipeline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="181"/>
-        <location filename="../app/sightline/main_window.cpp" line="325"/>
+        <location filename="../app/sightline/main_window.cpp" line="183"/>
+        <location filename="../app/sightline/main_window.cpp" line="327"/>
         <source>None (show frames only)</source>
         <translation>Nessuna (mostra solo le immagini)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="188"/>
+        <location filename="../app/sightline/main_window.cpp" line="190"/>
         <source>&amp;Tools</source>
         <translation>S&amp;trumenti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="189"/>
+        <location filename="../app/sightline/main_window.cpp" line="191"/>
         <source>&amp;Evaluate trajectory...</source>
         <translation>&amp;Valuta una traiettoria...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="194"/>
+        <location filename="../app/sightline/main_window.cpp" line="196"/>
         <source>Evaluate &amp;current run</source>
         <translation>Valuta l&apos;esecuzione &amp;corrente</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="196"/>
+        <location filename="../app/sightline/main_window.cpp" line="198"/>
         <source>Compares the running pipeline&apos;s trajectory with the dataset&apos;s ground truth.</source>
         <translation>Confronta la traiettoria della pipeline in esecuzione con la ground truth del dataset.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="205"/>
+        <location filename="../app/sightline/main_window.cpp" line="207"/>
         <source>&amp;Help</source>
         <translation>&amp;Aiuto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="206"/>
+        <location filename="../app/sightline/main_window.cpp" line="208"/>
         <source>&amp;About Sightline</source>
         <translation>&amp;Informazioni su Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="207"/>
+        <location filename="../app/sightline/main_window.cpp" line="209"/>
         <source>About Sightline</source>
         <translation>Informazioni su Sightline</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="208"/>
+        <location filename="../app/sightline/main_window.cpp" line="210"/>
         <source>Sightline: robot perception for assistive and mobile robotics.
 Indoor mapping, mobility maps, stereo odometry and monocular button localisation on live sensors or recorded data.</source>
         <translation>Sightline: percezione robotica per la robotica assistiva e mobile.
 Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazione monoculare dei pulsanti da sensori dal vivo o dati registrati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="225"/>
+        <location filename="../app/sightline/main_window.cpp" line="227"/>
         <source>Could not open %1: %2</source>
         <translation>Impossibile aprire %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="226"/>
+        <location filename="../app/sightline/main_window.cpp" line="228"/>
         <source>Could not open %1</source>
         <translation>Impossibile aprire %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="234"/>
+        <location filename="../app/sightline/main_window.cpp" line="236"/>
         <source>End of recording.</source>
         <translation>Fine della registrazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="263"/>
+        <location filename="../app/sightline/main_window.cpp" line="265"/>
         <source>Demo %p%</source>
         <translation>Demo %p%</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="270"/>
+        <location filename="../app/sightline/main_window.cpp" line="272"/>
         <source>Generating the demo recordings (only the first time)...</source>
         <translation>Generazione delle registrazioni demo (solo la prima volta)...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="279"/>
+        <location filename="../app/sightline/main_window.cpp" line="281"/>
         <source>Demo: a robot drives a simulated office corridor (RGB-D, stereo, wheel odometry, exact ground truth). The arm-camera panel approach is in %1.</source>
         <translation>Demo: un robot percorre un corridoio d&apos;ufficio simulato (RGB-D, stereo, odometria delle ruote, ground truth esatta). L&apos;avvicinamento della telecamera del braccio al pannello è in %1.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="286"/>
+        <location filename="../app/sightline/main_window.cpp" line="288"/>
         <source>The demo could not be made: %1</source>
         <translation>Impossibile creare la demo: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="343"/>
+        <location filename="../app/sightline/main_window.cpp" line="345"/>
         <source>No pipeline: showing frames only.</source>
         <translation>Nessuna pipeline: mostro solo le immagini.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="354"/>
+        <location filename="../app/sightline/main_window.cpp" line="356"/>
         <source>Pipeline: %1</source>
         <translation>Pipeline: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="358"/>
+        <location filename="../app/sightline/main_window.cpp" line="360"/>
         <source>%1 cannot run on %2 frames; open another dataset.</source>
         <translation>%1 non può funzionare su immagini %2; apri un altro dataset.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="387"/>
-        <location filename="../app/sightline/main_window.cpp" line="388"/>
+        <location filename="../app/sightline/main_window.cpp" line="389"/>
+        <location filename="../app/sightline/main_window.cpp" line="390"/>
         <source>Opening %1 ...</source>
         <translation>Apertura di %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Left</source>
         <translation>Sinistra</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="403"/>
+        <location filename="../app/sightline/main_window.cpp" line="405"/>
         <source>Image</source>
         <translation>Immagine</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="404"/>
+        <location filename="../app/sightline/main_window.cpp" line="406"/>
         <source>Right</source>
         <translation>Destra</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="410"/>
+        <location filename="../app/sightline/main_window.cpp" line="412"/>
         <source>%1: %2, %3 frames, %4x%5%6</source>
         <translation>%1: %2, %3 immagini, %4x%5%6</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="415"/>
+        <location filename="../app/sightline/main_window.cpp" line="417"/>
         <source>, ground truth</source>
         <translation>, ground truth</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="417"/>
+        <location filename="../app/sightline/main_window.cpp" line="419"/>
         <source>Opened %1</source>
         <translation>Aperto %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="422"/>
+        <location filename="../app/sightline/main_window.cpp" line="424"/>
         <source>Sightline - %1</source>
         <translation>Sightline - %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="441"/>
+        <location filename="../app/sightline/main_window.cpp" line="443"/>
         <source>frame %1, read in %2 ms</source>
         <translation>immagine %1, letta in %2 ms</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="485"/>
+        <location filename="../app/sightline/main_window.cpp" line="487"/>
         <source>No dataset open. Use File &gt; Open dataset folder (TUM RGB-D, EuRoC, KITTI, an image folder or PCD files), or drop a folder on this window.</source>
         <translation>Nessun dataset aperto. Usa File &gt; Apri cartella del dataset (TUM RGB-D, EuRoC, KITTI, una cartella di immagini o file PCD), oppure trascina una cartella su questa finestra.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="487"/>
+        <location filename="../app/sightline/main_window.cpp" line="489"/>
         <source>No dataset open</source>
         <translation>Nessun dataset aperto</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window.cpp" line="198"/>
+        <location filename="../app/sightline/main_window.cpp" line="200"/>
         <source>&amp;Calibrate camera...</source>
         <translation>&amp;Calibra la telecamera...</translation>
     </message>
@@ -1130,6 +1130,26 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/main_window_playback.cpp" line="53"/>
         <source>Keep the map</source>
         <translation>Mantieni la mappa</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="21"/>
+        <source>Connect to &amp;ROS master...</source>
+        <translation>Connetti al master &amp;ROS...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="22"/>
+        <source>&amp;Disconnect from ROS master</source>
+        <translation>&amp;Disconnetti dal master ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="29"/>
+        <source>Connect to ROS master</source>
+        <translation>Connetti al master ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/main_window_ros.cpp" line="37"/>
+        <source>Disconnected from the ROS master</source>
+        <translation>Disconnesso dal master ROS</translation>
     </message>
 </context>
 <context>
@@ -4138,6 +4158,68 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/recording_controller.cpp" line="122"/>
         <source>REC %1 written, %2 dropped, %3 MB/s</source>
         <translation>REC %1 scritte, %2 scartate, %3 MB/s</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosConnectDialog</name>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="12"/>
+        <source>Connect to ROS master</source>
+        <translation>Connetti al master ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="18"/>
+        <source>Master URI:</source>
+        <translation>URI del master:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="19"/>
+        <source>Node namespace:</source>
+        <translation>Namespace del nodo:</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_connect_dialog.cpp" line="21"/>
+        <source>The robot&apos;s master, e.g. http://robot:11311. The robot must reach this computer too: set ROS_IP (or ROS_HOSTNAME) before starting Sightline.</source>
+        <translation>Il master del robot, ad es. http://robot:11311. Anche il robot deve raggiungere questo computer: impostare ROS_IP (o ROS_HOSTNAME) prima di avviare Sightline.</translation>
+    </message>
+</context>
+<context>
+    <name>sightline::RosNodeView</name>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <source>ROS node</source>
+        <translation>Nodo ROS</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <source>Not connected: File &gt; Connect to ROS master...</source>
+        <translation>Non connesso: File &gt; Connetti al master ROS...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <source>ROS: %1</source>
+        <translation>ROS: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <source>Waiting for the map from %1 ...</source>
+        <translation>In attesa della mappa da %1 ...</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <source>ROS: not available in this build</source>
+        <translation>ROS: non disponibile in questa build</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <source>ROS: connected to %1</source>
+        <translation>ROS: connesso a %1</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <source>ROS: disconnected — reconnecting to %1</source>
+        <translation>ROS: disconnesso — riconnessione a %1</translation>
     </message>
 </context>
 <context>

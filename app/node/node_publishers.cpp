@@ -47,6 +47,7 @@ class MappingPublisher : public BasePublisher {
     map_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, /*latch=*/true);
     scan_ = nh.advertise<sensor_msgs::LaserScan>("scan", 10);
     walls_ = nh.advertise<visualization_msgs::MarkerArray>("walls", 10);
+    odom_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   }
 
  protected:
@@ -57,10 +58,13 @@ class MappingPublisher : public BasePublisher {
     if (auto grid = MappingGridMessage(*result, frames())) map_.publish(*grid);
     if (auto scan = MappingScanMessage(*result, frames())) scan_.publish(*scan);
     walls_.publish(MappingWallMarkers(*result, frames()));
+    // The estimate as odometry too (base in odom), for subscribers without tf.
+    odom_.publish(OdometryMessage(result->mapping->pose.ToIsometry(), result->stamp.sensor_time_s,
+                                  frames().odom, frames().base));
   }
 
  private:
-  ros::Publisher map_, scan_, walls_;
+  ros::Publisher map_, scan_, walls_, odom_;
 };
 
 // stereo-vo: odometry + tf, the frame's triangulated inliers, and a keyframe arrow every

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "app/node/node_button.h"
+#include "app/node/node_master_watch.h"
 #include "app/node/node_params.h"
 #include "app/node/node_publishers.h"
 #include "core/common/timing.h"
@@ -199,6 +200,7 @@ int RunNode(const NodeArgs& args, std::atomic<bool>& cancel) {
     return kExitError;
   }
   std::unique_ptr<ResultPublisher> publisher = MakePublisher(*info, nh, commands);
+  MasterReregistration reregistration;  // A restarted master learns of the node again.
   FramePacer pacer(args.recorded_rate);
   MasterWatch watch;
   RunRequest request;

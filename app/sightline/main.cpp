@@ -1,8 +1,11 @@
 // sightline: the desktop application.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QIcon>
+#include <QLabel>
 #include <QLocale>
+#include <QPixmap>
 #include <QTimer>
 #include <cstdio>
 
@@ -13,6 +16,7 @@
 #include "app/sightline/main_window.h"
 #include "app/sightline/mapping_presenter.h"
 #include "app/sightline/playback_controller.h"
+#include "app/sightline/ros_node_view.h"
 #include "app/sightline/screenshot_driver.h"
 #include "sightline_version.h"
 #include "widgets/operator_panel.h"
@@ -28,6 +32,7 @@ struct Arguments {
   bool demo = false, operator_mode = false, open_given = false;
   QString frames, timeout;
   QString language;  // --lang CODE: this run only; "" = the saved choice or the system's.
+  QString ros_master, ros_namespace;  // --connect-ros URI, --ros-namespace NS.
 };
 
 // Applies --profile and --set to the active pipeline's options; false (reported) on an error.
@@ -88,6 +93,48 @@ int RunOperatorMode(QApplication* app, sightline::MainWindow* window,
   return app->exec();
 }
 
+// --connect-ros URI: watches the node on that master. With --screenshot the window is saved
+// once the node's map is shown (exit 0), or the run fails after --timeout (exit 1). A bad URI or
+// namespace is named on stderr and in the status bar; false then.
+bool StartRosConnection(sightline::MainWindow* window, const Arguments& args) {
+  const sightline::Status connected = window->ConnectRos(args.ros_master, args.ros_namespace);
+  if (!connected.ok()) {
+    std::fprintf(stderr, "sightline: --connect-ros: %s\n", connected.message().c_str());
+    return false;
+  }
+  if (args.screenshot.isEmpty()) return true;
+  const QString path = args.screenshot;
+  QObject::connect(
+      window->ros_node(), &sightline::RosNodeView::MapShown, window,
+      [window, path](int width, int height) {
+        // Let the views render before grabbing.
+        QTimer::singleShot(500, window, [window, path, width, height] {
+          if (!window->grab().save(path, "PNG")) {
+            std::fprintf(stderr, "sightline: could not write screenshot %s\n", qPrintable(path));
+            QApplication::exit(1);
+            return;
+          }
+          // Where the map is in the picture, for whoever checks it.
+          const QWidget* view = window->ros_node()->dock()->widget();
+          const QPoint at = view->mapTo(window, QPoint(0, 0));
+          std::printf(
+              "sightline: wrote %s (map %dx%d from the ROS node; map view at %d,%d %dx%d)\n",
+              qPrintable(path), width, height, at.x(), at.y(), view->width(), view->height());
+          std::fflush(stdout);
+          QApplication::exit(0);
+        });
+      },
+      Qt::SingleShotConnection);
+  const int timeout_s = args.timeout.toInt();
+  QTimer::singleShot(timeout_s * 1000, window, [window, timeout_s] {
+    std::fprintf(stderr,
+                 "sightline: screenshot failed: no map from the ROS node within %d s (%s)\n",
+                 timeout_s, qPrintable(window->ros_node()->status_label()->text()));
+    QApplication::exit(1);
+  });
+  return true;
+}
+
 // `sightline --demo`: generates the demo recordings once, then opens the corridor drive.
 void StartDemo(sightline::MainWindow* window, sightline::PipelinePresenter* mapping,
                bool autoplay) {
@@ -139,8 +186,17 @@ Arguments ParseArguments(const QApplication& app) {
       "The GUI's language for this run: it, es, de or en (default: the one chosen in Settings > "
       "Language, else the system's).",
       "CODE");
+  QCommandLineOption connect_ros_option(
+      "connect-ros",
+      "Watch the sightline-node on the ROS master at URI (e.g. http://robot:11311): its map in "
+      "the ROS node dock, its trajectory, walls and clouds in the 3D view. With --screenshot, "
+      "the window is saved once the map arrived.",
+      "URI");
+  QCommandLineOption ros_namespace_option(
+      "ros-namespace", "The node's ROS namespace for --connect-ros (default /).", "NS", "/");
   parser.addOptions({open_option, demo_option, pipeline_option, operator_option, profile_option,
-                     set_option, screenshot_option, frames_option, timeout_option, lang_option});
+                     set_option, screenshot_option, frames_option, timeout_option, lang_option,
+                     connect_ros_option, ros_namespace_option});
   parser.addPositionalArgument("SOURCE", "A dataset, recording or sensor URI to open (as --open).",
                                "[SOURCE]");
   parser.process(app);
@@ -157,6 +213,8 @@ Arguments ParseArguments(const QApplication& app) {
   args.demo = parser.isSet(demo_option);
   args.operator_mode = parser.isSet(operator_option);
   args.language = parser.value(lang_option);
+  args.ros_master = parser.value(connect_ros_option);
+  args.ros_namespace = parser.value(ros_namespace_option);
   return args;
 }
 
@@ -216,7 +274,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!ApplyOptionArguments(&window, args.profile, args.assignments)) return 2;
-  if (!args.screenshot.isEmpty() && !StartScreenshot(&window, args)) return 2;
+  if (!args.ros_master.isEmpty()) {
+    if (!StartRosConnection(&window, args)) return 2;
+  } else if (!args.screenshot.isEmpty() && !StartScreenshot(&window, args)) {
+    return 2;
+  }
   if (args.demo) {
     StartDemo(&window, mapping, /*autoplay=*/args.screenshot.isEmpty());
   } else if (!args.source.isEmpty()) {

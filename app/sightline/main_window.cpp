@@ -132,6 +132,8 @@ void MainWindow::BuildMenus() {
   file->addSeparator();
   BuildResults(file);
   file->addSeparator();
+  BuildRos(file);
+  file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"));
   quit->setShortcut(QKeySequence::Quit);
   connect(quit, &QAction::triggered, this, &QWidget::close);

@@ -29,6 +29,7 @@ class PlaybackBar;
 class PipelinePresenter;
 class PlaybackController;
 class RecordingController;
+class RosNodeView;
 class SceneView;
 
 // The window a lab engineer or presenter works in. It holds views and wiring only: reading and
@@ -65,6 +66,10 @@ class MainWindow : public QMainWindow {
   // Sensors > Record / Stop recording, and the status bar's live-sensor indicator.
   RecordingController* recording() const { return recording_; }
   LiveStatusWidget* live_status() const { return live_status_; }
+  // File > Connect to ROS master: watches a sightline-node's map, odometry, walls and clouds
+  // (main_window_ros.cpp). The error names a bad URI or namespace.
+  Status ConnectRos(const QString& master_uri, const QString& ros_namespace);
+  RosNodeView* ros_node() const { return ros_node_; }
   // File > Save results: writes the running pipeline's results into `folder` as `sightline-cli
   // run` does (background; ResultsSaved or ResultsSaveFailed follows).
   void SaveResultsTo(const QString& folder);
@@ -105,6 +110,8 @@ class MainWindow : public QMainWindow {
   void BuildRecording(QMenu* sensors);
   // File > Save results (main_window_results.cpp).
   void BuildResults(QMenu* file);
+  // File > Connect to ROS master / Disconnect and the "ROS node" dock (main_window_ros.cpp).
+  void BuildRos(QMenu* file);
   void BuildSettings();
   void BuildLayoutMemory();
   void EvaluateSavedRun(const QString& folder);
@@ -127,6 +134,7 @@ class MainWindow : public QMainWindow {
   PlaybackController* playback_ = nullptr;
   RecordingController* recording_ = nullptr;
   LiveStatusWidget* live_status_ = nullptr;
+  RosNodeView* ros_node_ = nullptr;
   ImageView* primary_view_ = nullptr;
   ImageView* secondary_view_ = nullptr;
   QDockWidget* primary_dock_ = nullptr;

@@ -80,8 +80,8 @@ void RoscoreFixture::ExportEnv() const {
   setenv("ROS_IP", "127.0.0.1", 1);
 }
 
-std::string RoscoreFixture::Start(double timeout_s) {
-  port_ = FreeLoopbackPort();
+std::string RoscoreFixture::Start(double timeout_s, int port) {
+  port_ = port != 0 ? port : FreeLoopbackPort();
   if (port_ == 0) return "no free loopback port";
   folder_ = TempDir("roscore_" + std::to_string(port_));
   std::filesystem::create_directories(folder_ + "/home");

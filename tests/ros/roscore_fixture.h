@@ -17,8 +17,9 @@ class RoscoreFixture {
   RoscoreFixture& operator=(const RoscoreFixture&) = delete;
 
   // Starts the master and waits (up to `timeout_s`) until it answers getPid. Returns "" or why
-  // it failed (with the end of roscore's log).
-  std::string Start(double timeout_s = 60);
+  // it failed (with the end of roscore's log). `port` 0 takes a free one; a given port restarts a
+  // master where a stopped one was (its clients see the same URI come back).
+  std::string Start(double timeout_s = 60, int port = 0);
   // Kills the master's process group and reaps it. Safe to call twice.
   void Stop();
 

@@ -1,0 +1,123 @@
+// Watching a sightline-node from another process (the GUI): connects to a given ROS master,
+// subscribes to the node's topics and hands immutable, timestamped copies of what arrives to a
+// callback; sends the operator's commands to the node's button topics. ROS-free header (pimpl):
+// the GUI includes it without ROS's headers and links ROS only through sightline_ros_remote.
+//
+//   RosRemote remote([](std::shared_ptr<const RemoteUpdate> u) { /* any thread: queue it */ });
+//   Status s = remote.Connect({"http://robot:11311", "/"});
+//   ...
+//   remote.SendStop("operator");
+//   remote.Disconnect();
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/common/status.h"
+
+namespace sightline {
+
+// Where the node runs.
+struct RosRemoteOptions {
+  // The master's XML-RPC URI, "http://HOST:PORT" (e.g. http://robot:11311).
+  std::string master_uri;
+  // The node's namespace ("/" or "" for the root, "/robot1"): its topics are NAMESPACE/map ...
+  std::string ros_namespace = "/";
+
+  // Empty when valid; otherwise a message naming the bad field and value.
+  bool IsValid(std::string* error) const;
+};
+
+// The node's latched map (nav_msgs/OccupancyGrid): row 0 is the lowest y, cells 0..100 or -1.
+struct RemoteMap {
+  int width = 0, height = 0;
+  double resolution_m = 0;                           // Cell edge, metres.
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  // World position of cell (0, 0).
+  std::vector<int8_t> cells;                         // width * height, row-major.
+  std::string frame_id;
+};
+
+// One odometry message (nav_msgs/Odometry): the child frame's pose in the parent frame.
+struct RemotePose {
+  Eigen::Isometry3d parent_from_child = Eigen::Isometry3d::Identity();
+  std::string parent_frame, child_frame;
+};
+
+// A PointCloud2 (its x y z float fields) from one topic.
+struct RemoteCloud {
+  std::string topic;
+  std::vector<Eigen::Vector3f> points;
+  std::string frame_id;
+};
+
+// The wall lines of the `walls` MarkerArray: pairs of end points in `frame_id`.
+struct RemoteWalls {
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+  std::string frame_id;
+};
+
+// The node's button target (geometry_msgs/PoseStamped).
+struct RemoteTarget {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  std::string frame_id;
+};
+
+// One thing that arrived, or a change of the connection. Immutable once handed out.
+struct RemoteUpdate {
+  enum class Kind { kConnection, kMap, kOdometry, kCloud, kWalls, kTarget };
+  Kind kind = Kind::kConnection;
+  double stamp_s = 0;    // The message's header stamp (sensor time), seconds.
+  double receive_s = 0;  // Host time when it arrived (steady clock), seconds.
+  // kConnection: whether the master answers now, and the URI.
+  bool connected = false;
+  std::string master_uri;
+  RemoteMap map;
+  RemotePose pose;
+  RemoteCloud cloud;
+  RemoteWalls walls;
+  RemoteTarget target;
+};
+
+// The connection to one master at a time. Thread-safe; the callback runs on ROS's spinner or the
+// watch thread, never while Connect/Disconnect hold their lock: it must not block (queue the
+// update for the GUI thread). Only one RosRemote may be connected per process (roscpp has one
+// master per process).
+class RosRemote {
+ public:
+  using Callback = std::function<void(std::shared_ptr<const RemoteUpdate>)>;
+  explicit RosRemote(Callback on_update);
+  ~RosRemote();
+  RosRemote(const RosRemote&) = delete;
+  RosRemote& operator=(const RosRemote&) = delete;
+
+  // Validates `options`, points roscpp at the master (ros::init once per process, then
+  // ros::master::init) and starts the watch (every 1 s): subscribes while the master answers,
+  // reports kConnection changes and subscribes anew when it comes back. Fails only on invalid
+  // options; an absent master is reported as disconnected and waited for.
+  Status Connect(const RosRemoteOptions& options);
+  // Drops the subscriptions and stops the watch. Safe to call twice.
+  void Disconnect();
+  // Whether the master answered at the last check.
+  bool connected() const;
+  // The options of the current connection.
+  RosRemoteOptions options() const;
+
+  // The operator's tap at pixel (x, y) of the image stamped `image_stamp_s` (button_tap).
+  Status SendTap(double x, double y, double image_stamp_s);
+  // The operator's Yes to the candidate (button_confirm).
+  Status SendConfirm();
+  // Forgets the candidate or target (button_cancel).
+  Status SendCancel();
+  // STOP with a reason (button_stop).
+  Status SendStop(const std::string& reason);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sightline

@@ -1,0 +1,272 @@
+// RosRemote against real masters (each test its own roscore on its own port) and a real
+// sightline-node on a simulator-written bag: the map and the odometry arrive, a master that goes
+// and comes back is noticed and the latched map arrives again, the operator's commands reach the
+// button topics with their stamps, and bad options are named.
+#include "core/ros/ros_remote.h"
+
+#include <geometry_msgs/PointStamped.h>
+#include <gtest/gtest.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <std_msgs/String.h>
+
+#include <chrono>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "tests/ros/ros_test_util.h"
+#include "tests/ros/roscore_fixture.h"
+
+namespace sightline {
+namespace {
+
+using testing::ChildProcess;
+using testing::RoscoreFixture;
+
+// Everything a RosRemote handed out, for the test thread.
+class Received {
+ public:
+  RosRemote::Callback callback() {
+    return [this](std::shared_ptr<const RemoteUpdate> u) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      updates_.push_back(std::move(u));
+    };
+  }
+  std::vector<std::shared_ptr<const RemoteUpdate>> Of(RemoteUpdate::Kind kind) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::shared_ptr<const RemoteUpdate>> out;
+    for (const auto& u : updates_) {
+      if (u->kind == kind) out.push_back(u);
+    }
+    return out;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::shared_ptr<const RemoteUpdate>> updates_;
+};
+
+template <typename Pred>
+bool WaitFor(Pred ready, double timeout_s) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < end) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return ready();
+}
+
+// A 30-frame corridor drive written by the simulator as a bag, made once per process.
+std::string CorridorBag() {
+  static const std::string bag = [] {
+    const std::string dir = testing::TempDir("ros_remote_corridor_bag");
+    const std::string path = dir + "/corridor.bag";
+    if (std::filesystem::exists(path)) return path;
+    const auto r = testing::RunProcess(
+        testing::CliPath() + " simulate corridor --format bag --out " + dir +
+        " --frames 30 --seed 3 --sensors rgbd --quiet --set sim.rgbd.resolution=320x240"
+        " --set sim.rate_hz=5 --set sim.motion.speed_mps=1");
+    return r.exit_code == 0 && std::filesystem::exists(path) ? path : std::string();
+  }();
+  return bag;
+}
+
+// A master, this process's environment pointed at it (ROS_IP for this process's own URI).
+std::string StartMaster(RoscoreFixture* master) {
+  const std::string error = master->Start();
+  if (error.empty()) master->ExportEnv();
+  return error;
+}
+
+TEST(RosRemoteOptions, BadUriAndNamespaceAreNamed) {
+  std::string error;
+  EXPECT_TRUE((RosRemoteOptions{"http://robot:11311", "/"}.IsValid(&error))) << error;
+  EXPECT_TRUE((RosRemoteOptions{"http://10.0.0.2:11311/", "/robot1"}.IsValid(&error))) << error;
+  EXPECT_FALSE((RosRemoteOptions{"robot:11311", "/"}.IsValid(&error)));
+  EXPECT_NE(error.find("'robot:11311'"), std::string::npos) << error;
+  EXPECT_FALSE((RosRemoteOptions{"http://robot:99999", "/"}.IsValid(&error)));
+  EXPECT_NE(error.find("'99999'"), std::string::npos) << error;
+  EXPECT_FALSE((RosRemoteOptions{"http://robot", "/"}.IsValid(&error)));
+  EXPECT_NE(error.find("'http://robot'"), std::string::npos) << error;
+  EXPECT_FALSE((RosRemoteOptions{"http://robot:11311", "/robot 1"}.IsValid(&error)));
+  EXPECT_NE(error.find("'/robot 1'"), std::string::npos) << error;
+  RosRemote remote(nullptr);
+  const Status s = remote.Connect({"http://ro bot:11311", "/"});
+  EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(s.message().find("'http://ro bot:11311'"), std::string::npos) << s.message();
+  EXPECT_FALSE(remote.connected());
+}
+
+TEST(RosRemote, ReceivesTheMapAndOdometryOfANodeOnASimulatedBag) {
+  const std::string bag = CorridorBag();
+  ASSERT_FALSE(bag.empty());
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  const std::string out = testing::TempDir("ros_remote_node");
+  const std::string log = testing::TempDir("ros_remote_node_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
+                             bag + " --out " + out + " --rate max --linger -1",
+                         log));
+  Received received;
+  RosRemote remote(received.callback());
+  ASSERT_TRUE(remote.Connect({master.uri(), "/"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  // The run ends and writes its map; the latched map then is the final one.
+  ASSERT_TRUE(WaitFor([&] { return std::filesystem::exists(out + "/map.pgm"); }, 180))
+      << testing::ReadTextFile(log);
+  const testing::MapServerMap truth = testing::ReadMapServerMap(out);
+  ASSERT_FALSE(truth.gray.empty());
+  auto final_map = [&] {
+    const auto maps = received.Of(RemoteUpdate::Kind::kMap);
+    return !maps.empty() && maps.back()->map.width == truth.gray.cols &&
+           maps.back()->map.height == truth.gray.rows;
+  };
+  ASSERT_TRUE(WaitFor(final_map, 20)) << testing::ReadTextFile(log);
+  const RemoteMap& map = received.Of(RemoteUpdate::Kind::kMap).back()->map;
+  EXPECT_NEAR(map.resolution_m, truth.resolution, 1e-6);
+  EXPECT_NEAR(map.origin.x(), truth.origin.x(), 1e-6);
+  int known = 0, occupied = 0;
+  for (int8_t c : map.cells) {
+    known += c >= 0;
+    occupied += c == 100;
+  }
+  EXPECT_GT(known, static_cast<int>(map.cells.size() / 20));
+  EXPECT_GT(occupied, 10);
+
+  // Odometry: base_link in odom, one per frame seen, moving forward at about 1 m/s.
+  const auto odom = received.Of(RemoteUpdate::Kind::kOdometry);
+  ASSERT_GE(odom.size(), 5u);
+  EXPECT_EQ(odom.back()->pose.parent_frame, "odom");
+  EXPECT_EQ(odom.back()->pose.child_frame, "base_link");
+  const double dt = odom.back()->stamp_s - odom.front()->stamp_s;
+  const double dist = (odom.back()->pose.parent_from_child.translation() -
+                       odom.front()->pose.parent_from_child.translation())
+                          .head<2>()
+                          .norm();
+  ASSERT_GT(dt, 0.5);
+  EXPECT_NEAR(dist / dt, 1.0, 0.25);
+  remote.Disconnect();
+  EXPECT_FALSE(remote.connected());
+}
+
+TEST(RosRemote, SeesTheMasterGoAndComeBackAndGetsTheLatchedMapAgain) {
+  const std::string bag = CorridorBag();
+  ASSERT_FALSE(bag.empty());
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  const std::string out = testing::TempDir("ros_remote_restart");
+  const std::string log = testing::TempDir("ros_remote_restart_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
+                             bag + " --out " + out + " --rate max --linger -1",
+                         log));
+  ASSERT_TRUE(WaitFor([&] { return std::filesystem::exists(out + "/map.pgm"); }, 180))
+      << testing::ReadTextFile(log);
+  Received received;
+  RosRemote remote(received.callback());
+  ASSERT_TRUE(remote.Connect({master.uri(), "/"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return !received.Of(RemoteUpdate::Kind::kMap).empty(); }, 20))
+      << testing::ReadTextFile(log);
+  const size_t maps_before = received.Of(RemoteUpdate::Kind::kMap).size();
+
+  const int port = master.port();
+  master.Stop();
+  ASSERT_TRUE(WaitFor([&] { return !remote.connected(); }, 10));
+  ASSERT_EQ(master.Start(60, port), "");
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  // The node registers anew, the remote subscribes anew: the latched map arrives again.
+  ASSERT_TRUE(
+      WaitFor([&] { return received.Of(RemoteUpdate::Kind::kMap).size() > maps_before; }, 20))
+      << testing::ReadTextFile(log);
+  const auto maps = received.Of(RemoteUpdate::Kind::kMap);
+  EXPECT_EQ(maps.back()->map.cells, maps.front()->map.cells);
+  EXPECT_NE(testing::ReadTextFile(log).find("registered anew"), std::string::npos);
+  // The connection changes in order: up, down, up.
+  const auto changes = received.Of(RemoteUpdate::Kind::kConnection);
+  ASSERT_EQ(changes.size(), 3u);
+  EXPECT_TRUE(changes[0]->connected);
+  EXPECT_FALSE(changes[1]->connected);
+  EXPECT_TRUE(changes[2]->connected);
+  EXPECT_EQ(changes[2]->master_uri, master.uri());
+  remote.Disconnect();
+}
+
+// What arrives on the node's button topics (subscribed here as sightline-node does).
+struct ButtonInbox {
+  std::mutex mutex;
+  std::vector<geometry_msgs::PointStamped> taps;
+  std::vector<std::string> stops;
+  int confirms = 0, cancels = 0;
+};
+
+TEST(RosRemote, TapConfirmCancelAndStopReachTheButtonTopicsWithTheirStamps) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  Received received;
+  RosRemote remote(received.callback());
+  // Without a master nothing is sent, and the reason says so.
+  EXPECT_EQ(remote.SendStop("x").code(), StatusCode::kUnavailable);
+  ASSERT_TRUE(remote.Connect({master.uri(), "/robot1"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  // No node yet: named.
+  const Status none = remote.SendTap(1, 2, 3);
+  EXPECT_EQ(none.code(), StatusCode::kUnavailable);
+  EXPECT_NE(none.message().find("/robot1/button_tap"), std::string::npos) << none.message();
+
+  ButtonInbox inbox;
+  ros::NodeHandle nh("/robot1");
+  ros::CallbackQueue queue;
+  nh.setCallbackQueue(&queue);
+  ros::AsyncSpinner spinner(1, &queue);
+  spinner.start();
+  std::vector<ros::Subscriber> subs;
+  subs.push_back(nh.subscribe<geometry_msgs::PointStamped>(
+      "button_tap", 10, [&](const geometry_msgs::PointStamped::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(inbox.mutex);
+        inbox.taps.push_back(*m);
+      }));
+  subs.push_back(
+      nh.subscribe<std_msgs::Empty>("button_confirm", 10, [&](const std_msgs::Empty::ConstPtr&) {
+        std::lock_guard<std::mutex> lock(inbox.mutex);
+        ++inbox.confirms;
+      }));
+  subs.push_back(
+      nh.subscribe<std_msgs::Empty>("button_cancel", 10, [&](const std_msgs::Empty::ConstPtr&) {
+        std::lock_guard<std::mutex> lock(inbox.mutex);
+        ++inbox.cancels;
+      }));
+  subs.push_back(
+      nh.subscribe<std_msgs::String>("button_stop", 10, [&](const std_msgs::String::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(inbox.mutex);
+        inbox.stops.push_back(m->data);
+      }));
+  ASSERT_TRUE(WaitFor([&] { return remote.SendTap(161.5, 120.25, 1700000012.345678).ok(); }, 10));
+  ASSERT_TRUE(WaitFor([&] { return remote.SendConfirm().ok(); }, 10));
+  ASSERT_TRUE(WaitFor([&] { return remote.SendCancel().ok(); }, 10));
+  ASSERT_TRUE(WaitFor([&] { return remote.SendStop("operator pressed STOP").ok(); }, 10));
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        std::lock_guard<std::mutex> lock(inbox.mutex);
+        return !inbox.taps.empty() && inbox.confirms > 0 && inbox.cancels > 0 &&
+               !inbox.stops.empty();
+      },
+      10));
+  std::lock_guard<std::mutex> lock(inbox.mutex);
+  EXPECT_DOUBLE_EQ(inbox.taps[0].point.x, 161.5);
+  EXPECT_DOUBLE_EQ(inbox.taps[0].point.y, 120.25);
+  EXPECT_EQ(inbox.taps[0].header.stamp.sec, 1700000012u);
+  EXPECT_NEAR(inbox.taps[0].header.stamp.nsec, 345678000u, 1000);
+  EXPECT_EQ(inbox.stops[0], "operator pressed STOP");
+  spinner.stop();
+  subs.clear();
+  remote.Disconnect();
+}
+
+}  // namespace
+}  // namespace sightline
