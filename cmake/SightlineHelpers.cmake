@@ -14,17 +14,24 @@ function(sightline_core_library name)
   set_property(GLOBAL APPEND PROPERTY SIGHTLINE_CORE_TARGETS ${name})
 endfunction()
 
-# sightline_add_gtest(MODULE NAME SOURCES ... DEPS ... [ARGS ...] [LABELS ...])
-# One gtest executable per source module; ctest names read "module/Suite.Test".
+# sightline_add_gtest(MODULE NAME SOURCES ... DEPS ... [ARGS ...] [LABELS ...] [RUN_SERIAL])
+# One gtest executable per source module; ctest names read "module/Suite.Test". RUN_SERIAL: its
+# tests run alone under ctest -j.
 function(sightline_add_gtest module name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS;ENVIRONMENT" ${ARGN})
+  cmake_parse_arguments(ARG "RUN_SERIAL" "" "SOURCES;DEPS;LABELS;ENVIRONMENT" ${ARGN})
   set(target test_${name})
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock
                         sightline_test_support)
   set(props)
+  if(ARG_ENVIRONMENT OR ARG_RUN_SERIAL)
+    set(props PROPERTIES)
+  endif()
   if(ARG_ENVIRONMENT)
-    set(props PROPERTIES ENVIRONMENT "${ARG_ENVIRONMENT}")
+    list(APPEND props ENVIRONMENT "${ARG_ENVIRONMENT}")
+  endif()
+  if(ARG_RUN_SERIAL)
+    list(APPEND props RUN_SERIAL TRUE)
   endif()
   gtest_discover_tests(${target} TEST_PREFIX "${module}/" DISCOVERY_TIMEOUT 60 ${props})
 endfunction()

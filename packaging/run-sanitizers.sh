@@ -76,8 +76,9 @@ if [ "$which" = all ] || [ "$which" = tsan ]; then
   words tsan "${SIGHTLINE_TSAN_TESTS:-$default_tsan_tests}"
   targets=()
   for entry in "${tsan[@]}"; do targets+=("${entry%%:*}"); done
-  configure_and_build build-tsan thread "${targets[@]}"
+  # Set before the build: gtest_discover_tests runs each test binary at build time.
   export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$here/packaging/sanitizer-suppressions/tsan.txt}"
+  configure_and_build build-tsan thread "${targets[@]}"
   # TSan needs the kernel's default address-space layout: run without ASLR when available.
   runner=()
   setarch "$(uname -m)" -R true 2>/dev/null && runner=(setarch "$(uname -m)" -R)

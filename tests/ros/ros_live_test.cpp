@@ -313,6 +313,9 @@ TEST_F(RosLive, OdometryAndArmPosesFromTfAtTheFrameStamps) {
     msg.transforms.push_back(TransformMessage(mount_from_ee(t), t, "arm_mount", "end_effector"));
     tf.publish(msg);
   }
+  // tf and images travel on separate connections: let tf name its frames first (the source only
+  // waits for frames tf has named, so that cameras without tf never stall).
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   for (int k = 0; k < 5; ++k) {
     image.publish(
         EncodeRosImage(cv::Mat(48, 64, CV_8UC1, cv::Scalar(k)), 200.025 + 0.1 * k, "camera")

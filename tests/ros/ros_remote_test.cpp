@@ -107,14 +107,16 @@ TEST(RosRemote, ReceivesTheMapAndOdometryOfANodeOnASimulatedBag) {
   ASSERT_TRUE(error.empty()) << error;
   const std::string out = testing::TempDir("ros_remote_node");
   const std::string log = testing::TempDir("ros_remote_node_log") + "/node.log";
-  ChildProcess node;
-  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
-                             bag + " --out " + out + " --rate max --linger -1",
-                         log));
+  // The remote connects first and the node plays the bag at its recorded rate: odometry is not
+  // latched, so frames published before the subscription reached the node would be missed.
   Received received;
   RosRemote remote(received.callback());
   ASSERT_TRUE(remote.Connect({master.uri(), "/"}).ok());
   ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  ChildProcess node;
+  ASSERT_TRUE(node.Start(master.Env() + testing::NodePath() + " --pipeline mapping --source " +
+                             bag + " --out " + out + " --rate recorded --linger -1",
+                         log));
   // The run ends and writes its map; the latched map then is the final one.
   ASSERT_TRUE(WaitFor([&] { return std::filesystem::exists(out + "/map.pgm"); }, 180))
       << testing::ReadTextFile(log);

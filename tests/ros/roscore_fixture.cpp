@@ -9,10 +9,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <thread>
 
@@ -39,20 +41,27 @@ bool Reaped(pid_t pid, int* status) { return waitpid(pid, status, WNOHANG) == pi
 
 }  // namespace
 
+// A free port below the kernel's ephemeral range: every ROS node binds its XML-RPC and TCPROS
+// servers to port 0, and the kernel hands out ephemeral ports, so a master port in that range,
+// freed while a test restarts its master, could be taken by another test's node meanwhile.
 int FreeLoopbackPort() {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  addr.sin_port = 0;
-  int port = 0;
-  socklen_t len = sizeof(addr);
-  if (bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0 &&
-      getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0) {
-    port = ntohs(addr.sin_port);
+  int ephemeral_low = 32768;
+  std::ifstream("/proc/sys/net/ipv4/ip_local_port_range") >> ephemeral_low;
+  const int low = 10000, high = std::max(low + 1000, ephemeral_low);
+  std::mt19937 random(std::random_device{}());
+  std::uniform_int_distribution<int> pick(low, high - 1);
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const int port = pick(random);
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    addr.sin_port = htons(static_cast<uint16_t>(port));
+    const bool free = bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0;
+    close(fd);
+    if (free) return port;
   }
-  close(fd);
-  return port;
+  return 0;
 }
 
 bool MasterAnswers(int port) {
@@ -83,6 +92,9 @@ void RoscoreFixture::ExportEnv() const {
 std::string RoscoreFixture::Start(double timeout_s, int port) {
   port_ = port != 0 ? port : FreeLoopbackPort();
   if (port_ == 0) return "no free loopback port";
+  if (MasterAnswers(port_)) {
+    return "a master already answers on port " + std::to_string(port_) + " (not this test's)";
+  }
   folder_ = TempDir("roscore_" + std::to_string(port_));
   std::filesystem::create_directories(folder_ + "/home");
   std::filesystem::create_directories(folder_ + "/log");
