@@ -22,12 +22,15 @@ Status AtMessage(const Status& status, const std::string& path, const std::strin
   return status.WithContext(path + ": " + topic + " message " + std::to_string(index));
 }
 
-// Every transform on the bag's dynamic tf topics (not /tf_static), by frame pair.
-StatusOr<std::map<FramePair, Trajectory>> ReadTransforms(const rosbag::Bag& bag,
-                                                         const BagSummary& summary) {
-  std::map<FramePair, Trajectory> edges;
+// Calls `take(parent, child, stamp, pose, is_static)` for every transform of the bag's tf topics
+// (/tf_static too unless `dynamic_only`), in bag order; a transform without a stamp takes its
+// message's record time. Errors name the bag, the topic and the message.
+template <typename Take>
+Status ForEachBagTransform(const rosbag::Bag& bag, const BagSummary& summary, bool dynamic_only,
+                           Take take) {
   for (const BagTopic* topic : summary.OfType(kRosTfType)) {
-    if (topic->name.find("tf_static") != std::string::npos) continue;
+    const bool is_static = topic->name.find("tf_static") != std::string::npos;
+    if (is_static && dynamic_only) continue;
     int64_t index = 0;
     for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic->name))) {
       auto msg = InstantiateChecked<tf2_msgs::TFMessage>(m);
@@ -40,11 +43,24 @@ StatusOr<std::map<FramePair, Trajectory>> ReadTransforms(const rosbag::Bag& bag,
             IsometryFromRos(t.transform.translation, t.transform.rotation);
         if (!pose.ok()) return AtMessage(pose.status(), summary.path, topic->name, index);
         const double stamp = t.header.stamp.isZero() ? m.getTime().toSec() : t.header.stamp.toSec();
-        edges[{FrameName(t.header.frame_id), FrameName(t.child_frame_id)}].Add(stamp, *pose);
+        take(t.header.frame_id, t.child_frame_id, stamp, *pose, is_static);
       }
       ++index;
     }
   }
+  return Status::Ok();
+}
+
+// Every transform on the bag's dynamic tf topics (not /tf_static), by frame pair.
+StatusOr<std::map<FramePair, Trajectory>> ReadTransforms(const rosbag::Bag& bag,
+                                                         const BagSummary& summary) {
+  std::map<FramePair, Trajectory> edges;
+  SIGHTLINE_RETURN_IF_ERROR(
+      ForEachBagTransform(bag, summary, /*dynamic_only=*/true,
+                          [&](const std::string& parent, const std::string& child, double stamp,
+                              const Eigen::Isometry3d& pose, bool) {
+                            edges[{FrameName(parent), FrameName(child)}].Add(stamp, pose);
+                          }));
   for (auto& [pair, trajectory] : edges) {
     std::stable_sort(trajectory.mutable_poses().begin(), trajectory.mutable_poses().end(),
                      [](const TimedPose& a, const TimedPose& b) { return a.time_s < b.time_s; });
@@ -131,26 +147,11 @@ StatusOr<std::optional<Trajectory>> ReadBagTfGroundTruth(const rosbag::Bag& bag,
 }
 
 Status ReadBagTfBuffer(const rosbag::Bag& bag, const BagSummary& summary, TfBuffer* buffer) {
-  for (const BagTopic* topic : summary.OfType(kRosTfType)) {
-    const bool is_static = topic->name.find("tf_static") != std::string::npos;
-    int64_t index = 0;
-    for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(topic->name))) {
-      auto msg = m.instantiate<tf2_msgs::TFMessage>();
-      if (!msg) {
-        return ParseError(summary.path + ": " + topic->name + " message " + std::to_string(index) +
-                          " is not a tf2_msgs/TFMessage");
-      }
-      for (const geometry_msgs::TransformStamped& t : msg->transforms) {
-        StatusOr<Eigen::Isometry3d> pose =
-            IsometryFromRos(t.transform.translation, t.transform.rotation);
-        if (!pose.ok()) return AtMessage(pose.status(), summary.path, topic->name, index);
-        const double stamp = t.header.stamp.isZero() ? m.getTime().toSec() : t.header.stamp.toSec();
-        buffer->Add(t.header.frame_id, t.child_frame_id, stamp, *pose, is_static);
-      }
-      ++index;
-    }
-  }
-  return Status::Ok();
+  return ForEachBagTransform(bag, summary, /*dynamic_only=*/false,
+                             [&](const std::string& parent, const std::string& child, double stamp,
+                                 const Eigen::Isometry3d& pose, bool is_static) {
+                               buffer->Add(parent, child, stamp, pose, is_static);
+                             });
 }
 
 StatusOr<Trajectory> TfPosesAtStamps(const TfBuffer& buffer, const std::string& path,
