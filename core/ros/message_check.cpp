@@ -1,6 +1,8 @@
 #include "core/ros/message_check.h"
 
 #include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
 
 namespace sightline {
@@ -179,8 +181,23 @@ class Walker {
 
 Status CheckSerializedMessage(const std::string& type, const std::string& definition,
                               const uint8_t* data, size_t size) {
-  StatusOr<Schema> schema = ParseDefinition(type, definition);
-  if (!schema.ok()) return schema.status();
+  // Every message of a type has the same definition: parse it once, not for every message the
+  // readers check (every image of a bag or a live topic). Bounded: callers use a few types.
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const Schema>> parsed;
+  const std::string key = type + '\n' + definition;
+  std::shared_ptr<const Schema> schema;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = parsed.find(key); it != parsed.end()) schema = it->second;
+  }
+  if (!schema) {
+    StatusOr<Schema> fresh = ParseDefinition(type, definition);
+    if (!fresh.ok()) return fresh.status();
+    schema = std::make_shared<const Schema>(std::move(*fresh));
+    std::lock_guard<std::mutex> lock(mutex);
+    if (parsed.size() < 64) parsed.emplace(key, schema);
+  }
   Status ok = Walker(*schema, data, size).Message(type, "", 0);
   if (!ok.ok()) return ok.WithContext(type);
   return ok;
