@@ -25,6 +25,7 @@
 #include <thread>
 
 #include "core/common/timing.h"
+#include "core/ros/checked_subscribe.h"
 #include "core/ros/ros_image.h"
 
 // roscpp 1.15 exports ros::master::init (libroscpp.so; init.cpp calls it with the remappings)
@@ -136,6 +137,9 @@ struct RosRemote::Impl {
   explicit Impl(Callback cb) : on_update(std::move(cb)) {}
 
   Callback on_update;
+  mutable std::mutex refused_mutex;  // Guards `refused` and `last_refused` (spinner thread).
+  int64_t refused = 0;
+  std::string last_refused;
   mutable std::mutex mutex;  // Guards everything below but `connected`.
   std::condition_variable wake;
   RosRemoteOptions options;
@@ -209,17 +213,38 @@ struct RosRemote::Impl {
     nh = std::make_unique<ros::NodeHandle>(options.ros_namespace.empty() ? "/"
                                                                          : options.ros_namespace);
     nh->setCallbackQueue(&queue);
-    subs.push_back(nh->subscribe("map", 2, &Impl::OnMap, this));
-    subs.push_back(nh->subscribe("odom", 50, &Impl::OnOdometry, this));
+    // Every topic through the message check: a node (or anyone on the network) that sends a map
+    // claiming billions of cells is refused and counted, not decoded.
+    const auto refused_on = [this](const std::string& topic) {
+      return [this, topic = nh->resolveName(topic)](const std::string& why) {
+        std::lock_guard<std::mutex> lock(refused_mutex);
+        ++refused;
+        last_refused = topic + ": " + why;
+      };
+    };
+    subs.push_back(SubscribeChecked<nav_msgs::OccupancyGrid>(
+        *nh, "map", 2, [this](const nav_msgs::OccupancyGrid::ConstPtr& m) { OnMap(m); },
+        refused_on("map")));
+    subs.push_back(SubscribeChecked<nav_msgs::Odometry>(
+        *nh, "odom", 50, [this](const nav_msgs::Odometry::ConstPtr& m) { OnOdometry(m); },
+        refused_on("odom")));
     for (const std::string topic : {"map_points", "mobility_cloud"}) {
       const std::string resolved = nh->resolveName(topic);
-      subs.push_back(nh->subscribe<sensor_msgs::PointCloud2>(
-          topic, 2, [this, resolved](const sensor_msgs::PointCloud2::ConstPtr& msg) {
+      subs.push_back(SubscribeChecked<sensor_msgs::PointCloud2>(
+          *nh, topic, 2,
+          [this, resolved](const sensor_msgs::PointCloud2::ConstPtr& msg) {
             OnCloud(resolved, msg);
-          }));
+          },
+          refused_on(topic)));
     }
-    subs.push_back(nh->subscribe("walls", 10, &Impl::OnWalls, this));
-    subs.push_back(nh->subscribe("button_target", 10, &Impl::OnTarget, this));
+    subs.push_back(SubscribeChecked<visualization_msgs::MarkerArray>(
+        *nh, "walls", 10,
+        [this](const visualization_msgs::MarkerArray::ConstPtr& m) { OnWalls(m); },
+        refused_on("walls")));
+    subs.push_back(SubscribeChecked<geometry_msgs::PoseStamped>(
+        *nh, "button_target", 10,
+        [this](const geometry_msgs::PoseStamped::ConstPtr& m) { OnTarget(m); },
+        refused_on("button_target")));
     tap = nh->advertise<geometry_msgs::PointStamped>("button_tap", 10);
     confirm = nh->advertise<std_msgs::Empty>("button_confirm", 10);
     cancel = nh->advertise<std_msgs::Empty>("button_cancel", 10);
@@ -311,6 +336,16 @@ void RosRemote::Disconnect() {
 }
 
 bool RosRemote::connected() const { return impl_->connected.load(); }
+
+int64_t RosRemote::refused_messages() const {
+  std::lock_guard<std::mutex> lock(impl_->refused_mutex);
+  return impl_->refused;
+}
+
+std::string RosRemote::last_refused() const {
+  std::lock_guard<std::mutex> lock(impl_->refused_mutex);
+  return impl_->last_refused;
+}
 
 RosRemoteOptions RosRemote::options() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);

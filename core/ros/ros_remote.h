@@ -105,6 +105,10 @@ class RosRemote {
   bool connected() const;
   // The options of the current connection.
   RosRemoteOptions options() const;
+  // Messages refused because their bytes do not hold what their type declares (never handed to
+  // the callback), and the last one's topic and reason.
+  int64_t refused_messages() const;
+  std::string last_refused() const;
 
   // The operator's tap at pixel (x, y) of the image stamped `image_stamp_s` (button_tap).
   Status SendTap(double x, double y, double image_stamp_s);

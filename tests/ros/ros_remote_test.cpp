@@ -6,6 +6,7 @@
 
 #include <geometry_msgs/PointStamped.h>
 #include <gtest/gtest.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
@@ -16,6 +17,7 @@
 #include <mutex>
 #include <thread>
 
+#include "tests/ros/raw_message.h"
 #include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
 
@@ -267,6 +269,45 @@ TEST(RosRemote, TapConfirmCancelAndStopReachTheButtonTopicsWithTheirStamps) {
   EXPECT_EQ(inbox.stops[0], "operator pressed STOP");
   spinner.stop();
   subs.clear();
+  remote.Disconnect();
+}
+
+// A map that claims more cells than its bytes hold is refused and counted, not decoded; the next
+// good map from the same publisher arrives.
+TEST(RosRemote, AMessageThatLiesAboutItsLengthIsRefusedAndCounted) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  Received received;
+  RosRemote remote(received.callback());
+  ASSERT_TRUE(remote.Connect({master.uri(), "/robot2"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  ros::NodeHandle nh("/robot2");
+  ros::Publisher map =
+      nh.advertise<testing::RawMessage<nav_msgs::OccupancyGrid>>("map", 1, /*latch=*/true);
+  nav_msgs::OccupancyGrid grid;
+  grid.header.frame_id = "map";
+  grid.info.width = 4;
+  grid.info.height = 2;
+  grid.info.resolution = 0.05f;
+  grid.data.assign(8, 0);
+  testing::RawMessage<nav_msgs::OccupancyGrid> lie;
+  lie.bytes = testing::SerializedBytes(grid);
+  // header (seq, stamp, frame_id "map"), info (load time, resolution, width, height, origin: 7
+  // float64), then the count of `data`.
+  testing::PutUint32(&lie.bytes, 4 + 8 + 4 + 3 + 8 + 4 + 4 + 4 + 56, 0xfffffff0u);
+  map.publish(lie);
+  ASSERT_TRUE(WaitFor([&] { return remote.refused_messages() >= 1; }, 20));
+  EXPECT_NE(remote.last_refused().find(
+                "/robot2/map: nav_msgs/OccupancyGrid: field data declares 4294967280 int8 values"),
+            std::string::npos)
+      << remote.last_refused();
+  EXPECT_TRUE(received.Of(RemoteUpdate::Kind::kMap).empty());
+  testing::RawMessage<nav_msgs::OccupancyGrid> good;
+  good.bytes = testing::SerializedBytes(grid);
+  map.publish(good);
+  ASSERT_TRUE(WaitFor([&] { return !received.Of(RemoteUpdate::Kind::kMap).empty(); }, 20));
+  EXPECT_EQ(received.Of(RemoteUpdate::Kind::kMap).back()->map.width, 4);
   remote.Disconnect();
 }
 
