@@ -8,21 +8,11 @@
 #include "core/io/tum_rgbd_source.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "core/ros/bag_source.h"
+#include "tests/support/run_figures.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
 namespace {
-
-// Figures of a run that do not depend on the host's speed.
-std::map<std::string, double> Figures(const RunReport& report) {
-  std::map<std::string, double> figures;
-  for (const auto& [key, value] : report.result.accuracy) figures["accuracy/" + key] = value;
-  for (const auto& [key, value] : report.result.counts) {
-    if (key != "wall_time_s" && key != "frames_per_second") figures["counts/" + key] = value;
-  }
-  figures["frames"] = double(report.result.frames);
-  return figures;
-}
 
 StatusOr<RunReport> RunOn(const std::string& pipeline, const std::string& path,
                           const std::vector<std::string>& overrides = {}) {
@@ -70,7 +60,8 @@ TEST_P(BagPipelines, GiveTheFiguresOfTheTumFolder) {
   ASSERT_TRUE(from_folder.ok()) << from_folder.status().ToString();
   ASSERT_TRUE(from_bag.ok()) << from_bag.status().ToString();
   EXPECT_EQ(from_bag->result.dataset_format, "ROS bag");
-  const std::map<std::string, double> a = Figures(*from_folder), b = Figures(*from_bag);
+  const std::map<std::string, double> a = testing::RunFigures(*from_folder),
+                                      b = testing::RunFigures(*from_bag);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_GT(a.size(), 3u);
   // Heading errors are measured against the ground truth, which differs by up to this much.

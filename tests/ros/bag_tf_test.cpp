@@ -19,6 +19,7 @@
 #include "core/sim/simulate.h"
 #include "core/sim/simulator.h"
 #include "tests/ros/bag_test_writer.h"
+#include "tests/support/run_figures.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
@@ -38,16 +39,6 @@ StatusOr<RunReport> RunOn(const std::string& pipeline, const std::string& path,
   request.out_dir = out;
   request.overrides = overrides;
   return RunPipeline(BuiltinPipelines(), request);
-}
-
-std::map<std::string, double> Figures(const RunReport& report) {
-  std::map<std::string, double> figures;
-  for (const auto& [key, value] : report.result.accuracy) figures["accuracy/" + key] = value;
-  for (const auto& [key, value] : report.result.counts) {
-    if (key != "wall_time_s" && key != "frames_per_second") figures["counts/" + key] = value;
-  }
-  figures["frames"] = double(report.result.frames);
-  return figures;
 }
 
 std::string ReadText(const std::string& path) {
@@ -105,7 +96,8 @@ TEST(BagTf, OdometryOnlyOnTfMapsAsTheOdometryTopic) {
     const std::string log = ReadText(dir + out + "/mapping_log.txt");
     EXPECT_TRUE(Contains(log, "pose source: the recording's odometry (12 poses)")) << out << log;
   }
-  const std::map<std::string, double> x = Figures(*from_topic), y = Figures(*from_tf);
+  const std::map<std::string, double> x = testing::RunFigures(*from_topic),
+                                      y = testing::RunFigures(*from_tf);
   ASSERT_EQ(x.size(), y.size());
   for (const auto& [key, value] : x) {
     ASSERT_EQ(y.count(key), 1u) << key;
@@ -259,7 +251,8 @@ TEST(BagTf, ButtonWithTheArmOnTfMatchesArmPosesTxt) {
   ASSERT_TRUE(folder.ok()) << folder.status().ToString();
   StatusOr<RunReport> bag = RunOn("button", dir + "/bag/panel.bag", dir + "/out_bag", {tap});
   ASSERT_TRUE(bag.ok()) << bag.status().ToString();
-  const std::map<std::string, double> x = Figures(*folder), y = Figures(*bag);
+  const std::map<std::string, double> x = testing::RunFigures(*folder),
+                                      y = testing::RunFigures(*bag);
   for (const char* key : {"accuracy/final_error_mm", "accuracy/scale_ml", "accuracy/scale_true",
                           "accuracy/targets_sent"}) {
     ASSERT_EQ(x.count(key), 1u) << key;
