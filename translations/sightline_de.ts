@@ -1766,11 +1766,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Eine Ground-Truth-Pose gehört zu einem Bild, wenn sie zeitlich so nah liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
-        <source>A line needs at least this many points (2 = seed; more rejects clutter).</source>
-        <translation>Eine Linie braucht mindestens so viele Punkte (2 = Startpaar; mehr verwirft Störobjekte).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Eine Linie, die so nah an einer Manhattan-Achse liegt, gilt als parallel (0) oder senkrecht (1) zur Referenz.</translation>
@@ -1779,11 +1774,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Eine Pose gehört zu einem Bild, wenn sie zeitlich so nah liegt.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
-        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (seed method).</source>
-        <translation>Eine Region, deren Schwerpunkt weiter von der Tippstelle entfernt ist und die sie nicht enthält, ist nicht der angetippte Knopf (Methode seed).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="49"/>
@@ -1899,11 +1889,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Analoge Verstärkung; negativ behält die der Kamera. Werte außerhalb des Bereichs sind Fehler.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
-        <source>Angle between scan rays (seed res_scan = 0.2 deg).</source>
-        <translation>Winkel zwischen Scanstrahlen (Vorlage res_scan = 0.2 deg).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="73"/>
@@ -2031,14 +2016,29 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Tiefe jenseits dieses Werts bleibt aus der 3D-Wolke heraus.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
+        <translation>Eine Linie braucht mindestens so viele Punkte (2 = wie veröffentlicht; mehr verwirft Störobjekte).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
+        <translation>Eine Region, deren Schwerpunkt weiter von der Tippstelle entfernt ist und die sie nicht enthält, ist nicht der angetippte Knopf (veröffentlichte Methode).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
+        <translation>Winkel zwischen Scanstrahlen (veröffentlicht: res_scan = 0.2 deg).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="98"/>
-        <source>Depth images are sampled to about this many columns (seed: 320 x 240).</source>
-        <translation>Tiefenbilder werden auf etwa so viele Spalten abgetastet (Vorlage: 320 x 240).</translation>
+        <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
+        <translation>Tiefenbilder werden auf etwa so viele Spalten abgetastet (veröffentlicht: 320 x 240).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="99"/>
-        <source>Depth points a cell needs to count as occupied (1 = seed: any non-floor point).</source>
-        <translation>Tiefenpunkte, die eine Zelle braucht, um als belegt zu gelten (1 = Vorlage: jeder Nicht-Bodenpunkt).</translation>
+        <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
+        <translation>Tiefenpunkte, die eine Zelle braucht, um als belegt zu gelten (1 = wie veröffentlicht: jeder Nicht-Bodenpunkt).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="100"/>
@@ -2412,8 +2412,73 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="174"/>
-        <source>Height of the occupancy image (seed: 400), i.e. the forward range in cells.</source>
-        <translation>Höhe des Belegungsbilds (Vorlage: 400), d. h. die Reichweite nach vorn in Zellen.</translation>
+        <source>Height of the occupancy image (published: 400), i.e. the forward range in cells.</source>
+        <translation>Höhe des Belegungsbilds (veröffentlicht: 400), d. h. die Reichweite nach vorn in Zellen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the published rule (the centroid nearest the tap within max_tap_distance_px).</source>
+        <translation>Region ab der Tippstelle: Umrisse in zwei Skalen plus Hough-Kreise, diejenige, die die Tippstelle am nächsten an ihrer Mitte enthält (multiscale), oder die Regel der Veröffentlichung (der Schwerpunkt, der der Tippstelle innerhalb max_tap_distance_px am nächsten liegt).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
+        <translation>In den Karten gezeichnete Bewertung: die Regel aus Tabelle I der Veröffentlichung oder der Gaußprozess.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
+        <translation>Eine neue Karte beginnen, wenn die Reset-Regel greift (wie veröffentlicht); aus setzt das Zusammenfügen fort.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
+        <translation>Schritt B6: die Konsensmenge an Lücken entlang der Linie, die breiter als dies sind, schneiden und das längste Stück behalten, damit Linien zusammenhängende Wände sind (0 = wie veröffentlicht: kein Schnitt).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
+        <translation>Schritt B7: die Hypothese mit dem kleinsten summierten Fehler (wie veröffentlicht) oder mittleren Fehler behalten.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
+        <translation>Schritt C: die dominante Fläche der gewählten Linie neu finden, indem ihre Richtung so weit in beide Richtungen geschwenkt wird, dann darauf neu anpassen (0 = wie veröffentlicht: die Linie aus Schritt B6 unverändert).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
+        <translation>Wandlinien-Extraktor: das Mehrlinien-RANSAC der Veröffentlichung oder Split-and-Merge.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
+        <translation>Breite des Belegungsbilds (veröffentlicht: 400); der Roboter sitzt unten in der Mitte.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
+        <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (veröffentlichter Wert 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
+        <translation>err_max: Inlier-Abstand in Belegungszellen (veröffentlicht: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
+        <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Veröffentlichung mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
+        <translation>j_max: Hypothesen pro Linie (veröffentlicht: 250); begrenzt auch die adaptive Anzahl.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
+        <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Veröffentlichung); custom: range_cut_m und max_step_m.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="175"/>
@@ -2721,11 +2786,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>So viele jüngste Schlüsselbilder, deren Posen die lokale Bündelausgleichung optimiert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
-        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the seed&apos;s rule).</source>
-        <translation>Neue Mitte: die Modellmitte über eine RANSAC-Ähnlichkeitstransformation der Übereinstimmungen oder der Schwerpunkt der übereinstimmenden Keypoints (die Regel der Vorlage).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Nice-Wert des Mapping-Threads (Thread-Modus, Linux); 10 lässt das Tracking einen mit dem Mapping geteilten Kern gewinnen, lässt das Mapping aber auf einem ausgelasteten Rechner verhungern.</translation>
@@ -2774,11 +2834,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Belegte Zellen, die näher als dies am Roboter liegen, werden ignoriert (Roboterkörper, Rauschen).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
-        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as the seed; depth noise behind walls stays).</source>
-        <translation>Belegt-Evidenz: die Treffer des Polarscans (sichtbare Flächen, dünne Wände) oder jede belegte Zelle des Belegungsbilds (wie die Vorlage; Tiefenrauschen hinter Wänden bleibt).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="249"/>
@@ -2936,11 +2991,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Wahrscheinlichkeit, unter der eine Zelle frei ist (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
-        <source>Process every k-th frame (the seed&apos;s subsampling sweep); --subsample K.</source>
-        <translation>Jedes k-te Bild verarbeiten (der Unterabtastungsdurchlauf der Vorlage); --subsample K.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Jedes stride-te gelesene Bild verarbeiten, ab dem ersten (1 = alle): eine Sequenz in Schlüsselbildrate aus einer Aufnahme mit voller Rate.</translation>
@@ -2952,303 +3002,293 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along x.</source>
+        <translation>Veröffentlichung Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang x.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along y.</source>
+        <translation>Veröffentlichung Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang y.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <source>Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
+        <translation>Veröffentlichung Gl. 6: erwartete Inlier-Quote w; Iterationen = log(1-p) / log(1-w^3).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <source>Published eq. 6: wanted probability p of drawing one all-inlier sample.</source>
+        <translation>Veröffentlichung Gl. 6: gewünschte Wahrscheinlichkeit p, eine Stichprobe nur aus Inliern zu ziehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Pyramidenstufe, auf der Shi-Tomasi-Ecken erkannt werden (0 = volle Auflösung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Pyramidenstufe der Zeilensuche für Merkmale ohne Disparitätsschätzung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Pyramidenstufen des zweiten Tracking-Versuchs (reicht etwa 2^levels weiter).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>Pyramid levels.</source>
         <translation>Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>RANSAC-Inlier-Abstand der essenziellen Matrix und der Homographie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>RANSAC-Ebenenhypothesen (die Hälfte davon innerhalb eines Voxels gezogen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: largest time between the two tf samples a pose at a frame&apos;s stamp is interpolated between; frames in a longer gap get no pose.</source>
         <translation>ROS-Bag: größter Zeitabstand der beiden tf-Samples, zwischen denen eine Pose zum Zeitstempel eines Frames interpoliert wird; Frames in einer längeren Lücke erhalten keine Pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the arm&apos;s base tf frame; the pose of end_effector_frame in it is the arm&apos;s pose when there is no arm_poses.txt.</source>
         <translation>ROS-Bag: der tf-Frame der Armbasis; die Pose von end_effector_frame darin ist die Pose des Arms, wenn es keine arm_poses.txt gibt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>ROS bag: the arm&apos;s end-effector tf frame.</source>
         <translation>ROS-Bag: der tf-Frame des Endeffektors des Arms.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>ROS bag: the platform&apos;s tf frame whose pose in odom_frame is the odometry.</source>
         <translation>ROS-Bag: der tf-Frame der Plattform, dessen Pose in odom_frame die Odometrie ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>ROS bag: the tf frame of the odometry; without an odometry topic, the pose of base_frame in it on /tf is the platform&apos;s odometry.</source>
         <translation>ROS-Bag: der tf-Frame der Odometrie; ohne Odometrie-Topic ist die Pose von base_frame darin auf /tf die Odometrie der Plattform.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Random generator seed.</source>
         <translation>Startwert des Zufallsgenerators.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Startwert des Zufallsgenerators; jeder Scan beginnt damit, sodass Ergebnisse reproduzierbar sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Zufalls-Startwert des Ebenen-RANSAC.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Rate, mit der eine wiedergegebene Aufzeichnung Bilder liefert; 0 folgt ihren Zeitstempeln.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Strahlwinkel, den ein erster Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Strahlwinkel, den ein neuer Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>Strahlen enden bei dieser Reichweite; 0 = am Rand des Belegungsbilds.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>Das Wiederfinden wird abgelehnt, wenn die übrigen Übereinstimmungen eine zweite Ähnlichkeitstransformation mit diesem Anteil der Inlier stützen (ein anderer Knopf eines Panels mit Wiederholungen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Jüngste Schlüsselbilder, mit denen ein neues Schlüsselbild neue Punkte trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Auch rektifizieren, wenn das Rig angibt, seine Bilder seien rektifiziert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Jede verfolgte Position gegen den Anker des Tracks verfeinern (wo er zuerst gesehen wurde), dessen Patch mit der Bewegung seither verzerrt, damit Tracks nicht von Bild zu Bild driften.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Die 3D-Punkte mit der Bewegung verfeinern (Zwei-Bild-Bündelausgleichung); entfernt die Tiefenverzerrung der Triangulation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Die Posen der letzten Bilder und die Punkte ihrer Tracks gemeinsam auf dem Stereo-Reprojektionsfehler verfeinern (Bündelausgleichung im gleitenden Fenster), damit sich Fehler einzelner Bilder nicht aufaddieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Ein verfeinerter RMS-Reprojektionsfehler über diesem Wert wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Verfeinerungsrunden: verfeinern, Inlier anhand der Reprojektionsschwelle neu wählen, verfeinern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
-        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the seed&apos;s rule (the centroid nearest the tap within max_tap_distance_px).</source>
-        <translation>Region ab der Tippstelle: Umrisse in zwei Skalen plus Hough-Kreise, diejenige, die die Tippstelle am nächsten an ihrer Mitte enthält (multiscale), oder die Regel der Vorlage (der Schwerpunkt, der der Tippstelle innerhalb max_tap_distance_px am nächsten liegt).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Regionenwachstum: größter RGB-N-Farbabstand zwischen Nachbarn (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Höhe des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Breite des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Tiefe im Gerät auf die Farbkamera registrieren, wenn es das unterstützt, damit sich Tiefen- und Farbpixel entsprechen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Reprojektionsfehler, den ein erster Kartenpunkt in jeder Ansicht haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Reprojektionsfehler, den ein neuer Kartenpunkt in jedem Schlüsselbild haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildrate; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildhöhe; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Gewünschte Bildbreite; 0 behält die der Kamera. V4L2 wählt den nächstliegenden Modus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Bewegung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Drehung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Reset-Regel: So viele aufeinanderfolgende Bilder, deren Wände um mehr als max_correction_deg abweichen, setzen die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuum, ab dem eine Übereinstimmung ein Ausreißer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Neu gewichtete Gauß-Newton-Iterationen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Mindestens so viele versuchte starre Stichproben, bevor der adaptive Abbruch greifen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangulation für die Rauheit in Ebenenkoordinaten: das Zellraster oder 2D-Delaunay.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>Die Rauheit verwendet die Punkte des Segments innerhalb dieser Reichweite (alle, wenn keiner darin liegt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rauheit: Punkte werden in Ebenenzellen dieser Größe gemittelt und dann trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Zeilensuche: Eine mittlere absolute Differenz über diesem Wert bedeutet keine Übereinstimmung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Mapping in einem eigenen Thread ausführen (live); aus = direkt nach jedem Schlüsselbild, deterministisch.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Seitenlänge des SAD-Fensters der Zeilensuche, auf ihrer Stufe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>SIFT contrast threshold.</source>
         <translation>SIFT-Kontrastschwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>SIFT-Kontrastschwelle; niedriger findet mehr Keypoints auf schlichten Knöpfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>SIFT-Keypoints bis zu so weit außerhalb der Region gehören zum Knopfmodell.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>SVM score a HOG window needs to count as a person.</source>
         <translation>SVM-Wert, den ein HOG-Fenster braucht, um als Person zu gelten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Scale between pyramid levels.</source>
         <translation>Skalierung zwischen Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
-        <source>Score drawn in the maps: the seed&apos;s Table I rule or the Gaussian process.</source>
-        <translation>In den Karten gezeichnete Bewertung: die Regel aus Tabelle I der Vorlage oder der Gaußprozess.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Scored cloud written per frame.</source>
         <translation>Pro Bild geschriebene bewertete Punktwolke.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Suchfenster um die vorhergesagte Position eines Kartenpunkts.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along x.</source>
-        <translation>Vorlage Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang x.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along y.</source>
-        <translation>Vorlage Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang y.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
-        <source>Seed eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
-        <translation>Vorlage Gl. 6: erwartete Inlier-Quote w; Iterationen = log(1-p) / log(1-w^3).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
-        <source>Seed eq. 6: wanted probability p of drawing one all-inlier sample.</source>
-        <translation>Vorlage Gl. 6: gewünschte Wahrscheinlichkeit p, eine Stichprobe nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="353"/>
@@ -3326,11 +3366,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Ein Stück teilen, solange ein Punkt weiter als dies von seiner Sehne entfernt liegt; Stücke zusammenführen, die innerhalb dieses Werts auf eine Linie passen (Zellen, wie err_max von RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
-        <source>Start a new map when the reset rule fires (seed); off keeps stitching.</source>
-        <translation>Eine neue Karte beginnen, wenn die Reset-Regel greift (Vorlage); aus setzt das Zusammenfügen fort.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Am Ende von vorn beginnen (die Zeitstempel steigen weiter), statt den Stream zu beenden.</translation>
@@ -3344,21 +3379,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Schritt B2: Die beiden gezogenen Punkte müssen mindestens so weit auseinanderliegen (keine kurzen Linien).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
-        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = seed: no cut).</source>
-        <translation>Schritt B6: die Konsensmenge an Lücken entlang der Linie, die breiter als dies sind, schneiden und das längste Stück behalten, damit Linien zusammenhängende Wände sind (0 = Vorlage: kein Schnitt).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
-        <source>Step B7: keep the hypothesis with the lowest summed error (seed) or mean error.</source>
-        <translation>Schritt B7: die Hypothese mit dem kleinsten summierten Fehler (Vorlage) oder mittleren Fehler behalten.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
-        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = seed: the line of step B6 as is).</source>
-        <translation>Schritt C: die dominante Fläche der gewählten Linie neu finden, indem ihre Richtung so weit in beide Richtungen geschwenkt wird, dann darauf neu anpassen (0 = Vorlage: die Linie aus Schritt B6 unverändert).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="375"/>
@@ -3666,11 +3686,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Wandlinien mit weniger Scanpunkten stimmen nicht ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
-        <source>Wall-line extractor: the seed&apos;s multi-line RANSAC or split-and-merge.</source>
-        <translation>Wandlinien-Extraktor: das Mehrlinien-RANSAC der Vorlage oder Split-and-Merge.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Geringere Tracking-Sicherheit: kein Ziel.</translation>
@@ -3714,11 +3729,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, OpenCV&apos;s HOG detector, auto (ground truth when present, else HOG) or none.</source>
         <translation>Woher Personenrahmen stammen: Ground Truth des Datensatzes, der HOG-Detektor von OpenCV, auto (Ground Truth, wenn vorhanden, sonst HOG) oder none.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
-        <source>Width of the occupancy image (seed: 400); the robot sits at its bottom centre.</source>
-        <translation>Breite des Belegungsbilds (Vorlage: 400); der Roboter sitzt unten in der Mitte.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="447"/>
@@ -3841,16 +3851,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>device: Paare nach Kamerazeitstempeln bilden (Kameras mit gemeinsamer Uhr, z. B. PTP oder gemeinsamer Trigger); host: Paare nach Ankunftszeit am Host bilden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
-        <source>epsilon_floor: a point within this height of the floor plane is floor (seed 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
-        <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (Vorlage 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
-        <source>err_max: inlier distance in occupancy cells (seed: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
-        <translation>err_max: Inlier-Abstand in Belegungszellen (Vorlage: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: Die Kamera läuft mit eigenem Takt; software: Der Host triggert jedes Bild (beide Kameras eines Paars gemeinsam); hardware: ein externer Impuls auf trigger_line.</translation>
@@ -3871,11 +3871,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>grid: halbe Breite des Normalenfensters im Integralbild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
-        <source>grid: organized pixel-grid path (fast); pcl: the seed&apos;s voxel grid, outlier removal and k-d tree path.</source>
-        <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Vorlage mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); leer = neben arm_poses (für arm_stream: neben den Bildern); none = Identität.</translation>
@@ -3884,11 +3879,6 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (Schritt E): höchstens so viele Linien.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
-        <source>j_max: hypotheses per line (seed: 250); also caps the adaptive count.</source>
-        <translation>j_max: Hypothesen pro Linie (Vorlage: 250); begrenzt auch die adaptive Anzahl.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="481"/>
@@ -3966,62 +3956,72 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>ratio_scan_max (Schritt E): aufhören, sobald dieser Anteil der Punkte auf Linien liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
-        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
-        <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Vorlage); custom: range_cut_m und max_step_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="198"/>
         <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
         <translation>Art der aus einer ROS-Bag gelesenen Bilder; auto wählt RGB-D, dann Stereo, dann Mono, dann Punktwolken, je nachdem, was die Topics der Bag erlauben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the published rule).</source>
+        <translation>Neue Mitte: die Modellmitte über eine RANSAC-Ähnlichkeitstransformation der Übereinstimmungen oder der Schwerpunkt der übereinstimmenden Keypoints (die Regel der Veröffentlichung).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as published; depth noise behind walls stays).</source>
+        <translation>Belegt-Evidenz: die Treffer des Polarscans (sichtbare Flächen, dünne Wände) oder jede belegte Zelle des Belegungsbilds (wie veröffentlicht; Tiefenrauschen hinter Wänden bleibt).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <source>Process every k-th frame (the published subsampling sweep); --subsample K.</source>
+        <translation>Jedes k-te Bild verarbeiten (der Unterabtastungsdurchlauf der Veröffentlichung); --subsample K.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>ROS-Bag: Die Referenz ist die Pose von tf_child_frame in diesem tf-Frame; leer nimmt die einzige Transformationskette der Bag auf /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>ROS-Bag: größter Zeitstempelabstand eines Farb-/Tiefen- oder Links-/Rechts-Paars; Bilder ohne Partner werden übersprungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>ROS-Bag: das CameraInfo-Topic des Bild-Topics; leer sucht neben dem Bild-Topic und nimmt dann das einzige CameraInfo-Topic der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>ROS-Bag: das PointCloud2-Topic, das als Punktwolken gelesen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>ROS-Bag: der tf-Frame der Kamera, dessen Pose in tf_parent_frame die Referenz ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Farb-, linke oder Mono-Bild-Topic (Image oder CompressedImage); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Tiefenbild-Topic (16UC1 Millimeter oder 32FC1 Meter); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>ROS-Bag: das nav_msgs/Odometry-Topic; leer nimmt das einzige der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>ROS-Bag: das CameraInfo-Topic der rechten Kamera; seine Projektionsmatrix P ergibt die Stereobasis.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>ROS-Bag: das rechte Bild-Topic eines Stereopaars; leer wählt das Topic, dessen Name right sagt, neben einem, dessen Name left sagt.</translation>
     </message>
@@ -4186,38 +4186,38 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::RosNodeView</name>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="58"/>
         <source>ROS node</source>
         <translation>ROS-Knoten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
-        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="62"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="142"/>
         <source>Not connected: File &gt; Connect to ROS master...</source>
         <translation>Nicht verbunden: Datei &gt; Mit ROS-Master verbinden...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="93"/>
         <source>ROS: %1</source>
         <translation>ROS: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="117"/>
         <source>Waiting for the map from %1 ...</source>
         <translation>Warte auf die Karte von %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="122"/>
         <source>ROS: not available in this build</source>
         <translation>ROS: in diesem Build nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="147"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="148"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: getrennt — verbinde erneut mit %1</translation>
     </message>

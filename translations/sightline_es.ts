@@ -1766,11 +1766,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Una pose de ground truth pertenece a un fotograma cuando está así de cerca en el tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
-        <source>A line needs at least this many points (2 = seed; more rejects clutter).</source>
-        <translation>Una línea necesita al menos esta cantidad de puntos (2 = par inicial; más descarta el desorden).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Una línea así de cerca de un eje Manhattan se clasifica como paralela (0) o perpendicular (1) a la referencia.</translation>
@@ -1779,11 +1774,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Una pose pertenece a un fotograma cuando está así de cerca en el tiempo.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
-        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (seed method).</source>
-        <translation>Una región cuyo centroide está más lejos del toque y que no lo contiene no es el botón tocado (método seed).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="49"/>
@@ -1899,11 +1889,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Ganancia analógica; un valor negativo conserva la de la cámara. Los valores fuera de rango son errores.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
-        <source>Angle between scan rays (seed res_scan = 0.2 deg).</source>
-        <translation>Ángulo entre los rayos del barrido (original res_scan = 0.2 deg).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="73"/>
@@ -2031,14 +2016,29 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>La profundidad más allá de este valor queda fuera de la nube 3D.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
+        <translation>Una línea necesita al menos esta cantidad de puntos (2 = como se publicó; más descarta el desorden).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
+        <translation>Una región cuyo centroide está más lejos del toque y que no lo contiene no es el botón tocado (método publicado).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
+        <translation>Ángulo entre los rayos del barrido (publicado: res_scan = 0.2 deg).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="98"/>
-        <source>Depth images are sampled to about this many columns (seed: 320 x 240).</source>
-        <translation>Las imágenes de profundidad se muestrean a unas tantas columnas (original: 320 x 240).</translation>
+        <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
+        <translation>Las imágenes de profundidad se muestrean a unas tantas columnas (publicado: 320 x 240).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="99"/>
-        <source>Depth points a cell needs to count as occupied (1 = seed: any non-floor point).</source>
-        <translation>Puntos de profundidad que necesita una celda para contar como ocupada (1 = original: cualquier punto que no sea del suelo).</translation>
+        <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
+        <translation>Puntos de profundidad que necesita una celda para contar como ocupada (1 = como se publicó: cualquier punto que no sea del suelo).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="100"/>
@@ -2412,8 +2412,73 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="174"/>
-        <source>Height of the occupancy image (seed: 400), i.e. the forward range in cells.</source>
-        <translation>Altura de la imagen de ocupación (original: 400), es decir, el alcance hacia delante en celdas.</translation>
+        <source>Height of the occupancy image (published: 400), i.e. the forward range in cells.</source>
+        <translation>Altura de la imagen de ocupación (publicado: 400), es decir, el alcance hacia delante en celdas.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the published rule (the centroid nearest the tap within max_tap_distance_px).</source>
+        <translation>Región desde el toque: contornos a dos escalas más círculos de Hough, la que contiene el toque más cerca de su centro (multiscale), o la regla de la publicación (el centroide más cercano al toque dentro de max_tap_distance_px).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
+        <translation>Puntuación dibujada en los mapas: la regla de la Tabla I de la publicación o el proceso gaussiano.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
+        <translation>Empezar un mapa nuevo cuando se dispara la regla de reinicio (como se publicó); desactivado sigue uniendo.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
+        <translation>Paso B6: cortar el conjunto de consenso en los huecos a lo largo de la línea más anchos que esto y conservar el tramo más largo, para que las líneas sean paredes continuas (0 = como se publicó: sin corte).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
+        <translation>Paso B7: conservar la hipótesis con el menor error sumado (como se publicó) o con el menor error medio.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
+        <translation>Paso C: volver a encontrar la superficie dominante de la línea elegida girando su dirección esto hacia cada lado, y luego reajustar sobre ella (0 = como se publicó: la línea del paso B6 tal cual).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
+        <translation>Extractor de líneas de pared: el RANSAC multilínea de la publicación o split-and-merge.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
+        <translation>Anchura de la imagen de ocupación (publicado: 400); el robot está en el centro del borde inferior.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
+        <translation>epsilon_floor: un punto dentro de esta altura respecto al plano del suelo es suelo (valor publicado 3.5, leído como 3.5 cm: generoso para que ningún píxel del suelo se marque como ocupado).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
+        <translation>err_max: distancia de inliers en celdas de ocupación (publicado: 5 píxeles); metros = celdas x mapping.occupancy.cell_size_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
+        <translation>grid: camino por la rejilla de píxeles organizada (rápido); pcl: el camino de la publicación con rejilla de vóxeles, eliminación de outliers y árbol k-d.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
+        <translation>j_max: hipótesis por línea (publicado: 250); también limita el recuento adaptativo.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
+        <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide de la publicación); custom: range_cut_m y max_step_m.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="175"/>
@@ -2721,11 +2786,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Fotogramas clave más recientes cuyas poses optimiza el ajuste de haces local.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
-        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the seed&apos;s rule).</source>
-        <translation>Nuevo centro: el centro del modelo mediante una similitud RANSAC de las coincidencias, o el centroide de los puntos clave emparejados (la regla del original).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Valor nice del hilo de mapeo (modo con hilos, Linux); 10 hace que el seguimiento gane un núcleo que comparte con el mapeo, pero deja sin recursos al mapeo en una máquina cargada.</translation>
@@ -2774,11 +2834,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Se ignoran las celdas ocupadas más cerca del robot que esto (cuerpo del robot, ruido).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
-        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as the seed; depth noise behind walls stays).</source>
-        <translation>Evidencia de ocupación: los impactos del barrido polar (superficies visibles, paredes finas) o cada celda ocupada de la imagen de ocupación (como el original; el ruido de profundidad detrás de las paredes permanece).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="249"/>
@@ -2936,11 +2991,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Probabilidad por debajo de la cual una celda está libre (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
-        <source>Process every k-th frame (the seed&apos;s subsampling sweep); --subsample K.</source>
-        <translation>Procesar uno de cada k fotogramas (el barrido de submuestreo del original); --subsample K.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Procesa uno de cada stride fotogramas leídos, desde el primero (1 = todos): una secuencia a ritmo de fotogramas clave a partir de una grabación a frecuencia completa.</translation>
@@ -2952,303 +3002,293 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along x.</source>
+        <translation>Publicación ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de x.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along y.</source>
+        <translation>Publicación ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de y.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <source>Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
+        <translation>Publicación ec. 6: proporción de inliers esperada w; iteraciones = log(1-p) / log(1-w^3).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <source>Published eq. 6: wanted probability p of drawing one all-inlier sample.</source>
+        <translation>Publicación ec. 6: probabilidad p deseada de extraer una muestra solo de inliers.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Nivel de la pirámide en el que se detectan las esquinas de Shi-Tomasi (0 = resolución completa).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Nivel de la pirámide de la búsqueda por filas para características sin estimación de disparidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Niveles de la pirámide del segundo intento de seguimiento (llega unas 2^levels veces más lejos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>Pyramid levels.</source>
         <translation>Niveles de la pirámide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>Distancia de inliers de RANSAC de la matriz esencial y de la homografía.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>Hipótesis RANSAC de plano (la mitad muestreadas dentro de un vóxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: largest time between the two tf samples a pose at a frame&apos;s stamp is interpolated between; frames in a longer gap get no pose.</source>
         <translation>Bag de ROS: tiempo máximo entre las dos muestras tf entre las que se interpola una pose en la marca de tiempo de un frame; los frames en un hueco más largo no tienen pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the arm&apos;s base tf frame; the pose of end_effector_frame in it is the arm&apos;s pose when there is no arm_poses.txt.</source>
         <translation>Bag de ROS: el frame tf de la base del brazo; la pose de end_effector_frame en él es la pose del brazo cuando no hay arm_poses.txt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>ROS bag: the arm&apos;s end-effector tf frame.</source>
         <translation>Bag de ROS: el frame tf del efector final del brazo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>ROS bag: the platform&apos;s tf frame whose pose in odom_frame is the odometry.</source>
         <translation>Bag de ROS: el frame tf de la plataforma cuya pose en odom_frame es la odometría.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>ROS bag: the tf frame of the odometry; without an odometry topic, the pose of base_frame in it on /tf is the platform&apos;s odometry.</source>
         <translation>Bag de ROS: el frame tf de la odometría; sin topic de odometría, la pose de base_frame en él en /tf es la odometría de la plataforma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Random generator seed.</source>
         <translation>Semilla del generador aleatorio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Semilla del generador aleatorio; cada barrido parte de ella, de modo que los resultados son reproducibles.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Semilla aleatoria del RANSAC de plano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Frecuencia con la que una grabación reproducida entrega fotogramas; 0 sigue sus marcas de tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Ángulo entre rayos que necesita un primer punto del mapa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Ángulo entre rayos que necesita un punto nuevo del mapa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>Los rayos se detienen a este alcance; 0 = en el borde de la imagen de ocupación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>Se rechaza la readquisición cuando las demás coincidencias respaldan una segunda similitud con esta fracción de los inliers (otro botón de un panel con elementos repetidos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Fotogramas clave recientes con los que un fotograma clave nuevo triangula puntos nuevos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Rectificar incluso cuando el rig indica que sus imágenes ya están rectificadas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Refinar cada posición seguida frente al anclaje de la pista (donde se vio por primera vez), con su parche deformado por el movimiento desde entonces, para que las pistas no deriven fotograma a fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Refinar los puntos 3D con el movimiento (ajuste de haces de dos fotogramas); elimina el sesgo de profundidad de la triangulación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Refinar juntas las poses de los últimos fotogramas y los puntos de sus pistas sobre el error de reproyección estéreo (ajuste de haces en ventana deslizante), para que los errores de cada fotograma no se sumen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Se rechaza un error de reproyección RMS refinado por encima de este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Rondas de refinamiento: refinar, volver a seleccionar los inliers con el umbral de reproyección, refinar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
-        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the seed&apos;s rule (the centroid nearest the tap within max_tap_distance_px).</source>
-        <translation>Región desde el toque: contornos a dos escalas más círculos de Hough, la que contiene el toque más cerca de su centro (multiscale), o la regla del original (el centroide más cercano al toque dentro de max_tap_distance_px).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Crecimiento de regiones: mayor distancia de color RGB-N entre vecinos (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Altura de la región de interés; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Anchura de la región de interés; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Registrar la profundidad en la cámara de color dentro del dispositivo cuando lo admite, para que los píxeles de profundidad y de color se correspondan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Error de reproyección que puede tener un primer punto del mapa en cada vista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Error de reproyección que puede tener un punto nuevo del mapa en cada fotograma clave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Frecuencia de fotogramas solicitada; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Altura de imagen solicitada; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Anchura de imagen solicitada; 0 conserva la de la cámara. V4L2 elige el modo más cercano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Regla de reinicio: un movimiento de la fuente de poses mayor que esto entre dos fotogramas reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Regla de reinicio: un giro de la fuente de poses mayor que esto entre dos fotogramas reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Regla de reinicio: este número de fotogramas consecutivos cuyas paredes discrepan más de max_correction_deg reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuo a partir del cual una coincidencia es un outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Iteraciones de Gauss-Newton reponderadas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Muestras rígidas que se prueban como mínimo antes de que la terminación adaptativa pueda parar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangulación de la rugosidad en coordenadas del plano: la rejilla de celdas o Delaunay 2D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>La rugosidad usa los puntos del segmento dentro de este alcance (todos si no hay ninguno).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rugosidad: los puntos se promedian en celdas del plano de este tamaño y luego se triangulan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Búsqueda por filas: una diferencia absoluta media por encima de este valor significa que no hay coincidencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Ejecutar el mapeo en su propio hilo (en vivo); desactivado = en línea tras cada fotograma clave, determinista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Lado de la ventana SAD de la búsqueda por filas, en su nivel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>SIFT contrast threshold.</source>
         <translation>Umbral de contraste de SIFT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>Umbral de contraste de SIFT; más bajo encuentra más puntos clave en botones lisos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>Los puntos clave SIFT hasta esta distancia fuera de la región pertenecen al modelo del botón.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>SVM score a HOG window needs to count as a person.</source>
         <translation>Puntuación SVM que necesita una ventana HOG para contar como persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Scale between pyramid levels.</source>
         <translation>Escala entre niveles de la pirámide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
-        <source>Score drawn in the maps: the seed&apos;s Table I rule or the Gaussian process.</source>
-        <translation>Puntuación dibujada en los mapas: la regla de la Tabla I del original o el proceso gaussiano.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Scored cloud written per frame.</source>
         <translation>Nube puntuada escrita por fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Ventana de búsqueda alrededor de la posición predicha de un punto del mapa.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along x.</source>
-        <translation>Original ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de x.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along y.</source>
-        <translation>Original ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de y.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
-        <source>Seed eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
-        <translation>Original ec. 6: proporción de inliers esperada w; iteraciones = log(1-p) / log(1-w^3).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
-        <source>Seed eq. 6: wanted probability p of drawing one all-inlier sample.</source>
-        <translation>Original ec. 6: probabilidad p deseada de extraer una muestra solo de inliers.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="353"/>
@@ -3326,11 +3366,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Dividir un tramo mientras un punto esté más lejos que esto de su cuerda; fusionar los tramos que encajan en una línea dentro de este valor (celdas, como err_max de RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
-        <source>Start a new map when the reset rule fires (seed); off keeps stitching.</source>
-        <translation>Empezar un mapa nuevo cuando se dispara la regla de reinicio (original); desactivado sigue uniendo.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Volver a empezar al final (las marcas de tiempo siguen creciendo) en lugar de terminar el stream.</translation>
@@ -3344,21 +3379,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Paso B2: los dos puntos muestreados deben estar al menos así de separados (sin líneas cortas).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
-        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = seed: no cut).</source>
-        <translation>Paso B6: cortar el conjunto de consenso en los huecos a lo largo de la línea más anchos que esto y conservar el tramo más largo, para que las líneas sean paredes continuas (0 = original: sin corte).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
-        <source>Step B7: keep the hypothesis with the lowest summed error (seed) or mean error.</source>
-        <translation>Paso B7: conservar la hipótesis con el menor error sumado (original) o con el menor error medio.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
-        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = seed: the line of step B6 as is).</source>
-        <translation>Paso C: volver a encontrar la superficie dominante de la línea elegida girando su dirección esto hacia cada lado, y luego reajustar sobre ella (0 = original: la línea del paso B6 tal cual).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="375"/>
@@ -3666,11 +3686,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Las líneas de pared con menos puntos de barrido no votan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
-        <source>Wall-line extractor: the seed&apos;s multi-line RANSAC or split-and-merge.</source>
-        <translation>Extractor de líneas de pared: el RANSAC multilínea del original o split-and-merge.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confianza de seguimiento más débil: ningún objetivo.</translation>
@@ -3714,11 +3729,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, OpenCV&apos;s HOG detector, auto (ground truth when present, else HOG) or none.</source>
         <translation>De dónde vienen los recuadros de personas: el ground truth del conjunto de datos, el detector HOG de OpenCV, auto (ground truth si existe, si no HOG) o none.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
-        <source>Width of the occupancy image (seed: 400); the robot sits at its bottom centre.</source>
-        <translation>Anchura de la imagen de ocupación (original: 400); el robot está en el centro del borde inferior.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="447"/>
@@ -3841,16 +3851,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>device: emparejar por marcas de tiempo de las cámaras (cámaras con un reloj común, p. ej. PTP o un disparo compartido); host: emparejar por hora de llegada al host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
-        <source>epsilon_floor: a point within this height of the floor plane is floor (seed 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
-        <translation>epsilon_floor: un punto dentro de esta altura respecto al plano del suelo es suelo (original 3.5, leído como 3.5 cm: generoso para que ningún píxel del suelo se marque como ocupado).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
-        <source>err_max: inlier distance in occupancy cells (seed: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
-        <translation>err_max: distancia de inliers en celdas de ocupación (original: 5 píxeles); metros = celdas x mapping.occupancy.cell_size_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la cámara funciona con su propio reloj; software: el host dispara cada fotograma (las dos cámaras de un par a la vez); hardware: un pulso externo en trigger_line.</translation>
@@ -3871,11 +3871,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>grid: semianchura de la ventana de normales sobre la imagen integral.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
-        <source>grid: organized pixel-grid path (fast); pcl: the seed&apos;s voxel grid, outlier removal and k-d tree path.</source>
-        <translation>grid: camino por la rejilla de píxeles organizada (rápido); pcl: el camino del original con rejilla de vóxeles, eliminación de outliers y árbol k-d.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vacío = junto a arm_poses (para arm_stream: junto a las imágenes); none = identidad.</translation>
@@ -3884,11 +3879,6 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (paso E): como máximo este número de líneas.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
-        <source>j_max: hypotheses per line (seed: 250); also caps the adaptive count.</source>
-        <translation>j_max: hipótesis por línea (original: 250); también limita el recuento adaptativo.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="481"/>
@@ -3966,62 +3956,72 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>ratio_scan_max (paso E): parar en cuanto esta fracción de los puntos está sobre líneas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
-        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
-        <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide del original); custom: range_cut_m y max_step_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="198"/>
         <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
         <translation>Tipo de fotogramas leídos de una bag de ROS; auto elige RGB-D, luego estéreo, luego mono y luego nubes de puntos, según lo que permitan los topics de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the published rule).</source>
+        <translation>Nuevo centro: el centro del modelo mediante una similitud RANSAC de las coincidencias, o el centroide de los puntos clave emparejados (la regla de la publicación).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as published; depth noise behind walls stays).</source>
+        <translation>Evidencia de ocupación: los impactos del barrido polar (superficies visibles, paredes finas) o cada celda ocupada de la imagen de ocupación (como se publicó; el ruido de profundidad detrás de las paredes permanece).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <source>Process every k-th frame (the published subsampling sweep); --subsample K.</source>
+        <translation>Procesar uno de cada k fotogramas (el barrido de submuestreo de la publicación); --subsample K.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>Bag de ROS: la referencia es la pose de tf_child_frame en este frame tf; vacío usa la única cadena de transformaciones de la bag en /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>Bag de ROS: mayor diferencia de marcas de tiempo de un par color/profundidad o izquierda/derecha; las imágenes sin pareja se omiten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>Bag de ROS: el topic CameraInfo del topic de imagen; vacío busca junto al topic de imagen y luego toma el único topic CameraInfo de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>Bag de ROS: el topic PointCloud2 que se lee como nubes de puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>Bag de ROS: el frame tf de la cámara cuya pose en tf_parent_frame es la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag de ROS: el topic de la imagen en color, izquierda o mono (Image o CompressedImage); vacío lo elige cuando la bag no deja dudas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag de ROS: el topic de la imagen de profundidad (16UC1 milímetros o 32FC1 metros); vacío lo elige cuando la bag no deja dudas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>Bag de ROS: el topic nav_msgs/Odometry; vacío toma el único de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>Bag de ROS: el topic CameraInfo de la cámara derecha; su matriz de proyección P da la línea base estéreo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>Bag de ROS: el topic de la imagen derecha de un par estéreo; vacío elige el topic cuyo nombre dice right junto a uno que dice left.</translation>
     </message>
@@ -4186,38 +4186,38 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::RosNodeView</name>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="58"/>
         <source>ROS node</source>
         <translation>Nodo ROS</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
-        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="62"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="142"/>
         <source>Not connected: File &gt; Connect to ROS master...</source>
         <translation>No conectado: Archivo &gt; Conectar al máster ROS...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="93"/>
         <source>ROS: %1</source>
         <translation>ROS: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="117"/>
         <source>Waiting for the map from %1 ...</source>
         <translation>Esperando el mapa de %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="122"/>
         <source>ROS: not available in this build</source>
         <translation>ROS: no disponible en esta compilación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="147"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: conectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="148"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: desconectado — reconectando a %1</translation>
     </message>

@@ -1766,11 +1766,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Una posa di ground truth appartiene a un fotogramma quando è così vicina nel tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
-        <source>A line needs at least this many points (2 = seed; more rejects clutter).</source>
-        <translation>Una linea richiede almeno questo numero di punti (2 = coppia iniziale; di più scarta il disordine).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Una linea così vicina a un asse Manhattan è classificata come parallela (0) o perpendicolare (1) al riferimento.</translation>
@@ -1779,11 +1774,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Una posa appartiene a un fotogramma quando è così vicina nel tempo.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
-        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (seed method).</source>
-        <translation>Una regione il cui baricentro è più lontano dal tocco e che non lo contiene non è il pulsante toccato (metodo seed).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="49"/>
@@ -1899,11 +1889,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Guadagno analogico; un valore negativo mantiene quello della telecamera. I valori fuori intervallo sono errori.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
-        <source>Angle between scan rays (seed res_scan = 0.2 deg).</source>
-        <translation>Angolo tra i raggi della scansione (originale res_scan = 0.2 deg).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="73"/>
@@ -2031,14 +2016,29 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>La profondità oltre questo valore resta fuori dalla nuvola 3D.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
+        <translation>Una linea richiede almeno questo numero di punti (2 = come pubblicato; di più scarta il disordine).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
+        <translation>Una regione il cui baricentro è più lontano dal tocco e che non lo contiene non è il pulsante toccato (metodo pubblicato).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
+        <translation>Angolo tra i raggi della scansione (pubblicato: res_scan = 0.2 deg).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="98"/>
-        <source>Depth images are sampled to about this many columns (seed: 320 x 240).</source>
-        <translation>Le immagini di profondità vengono campionate a circa questo numero di colonne (originale: 320 x 240).</translation>
+        <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
+        <translation>Le immagini di profondità vengono campionate a circa questo numero di colonne (pubblicato: 320 x 240).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="99"/>
-        <source>Depth points a cell needs to count as occupied (1 = seed: any non-floor point).</source>
-        <translation>Punti di profondità necessari perché una cella conti come occupata (1 = originale: qualsiasi punto non del pavimento).</translation>
+        <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
+        <translation>Punti di profondità necessari perché una cella conti come occupata (1 = come pubblicato: qualsiasi punto non del pavimento).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="100"/>
@@ -2412,8 +2412,73 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="174"/>
-        <source>Height of the occupancy image (seed: 400), i.e. the forward range in cells.</source>
-        <translation>Altezza dell&apos;immagine di occupazione (originale: 400), cioè la portata in avanti in celle.</translation>
+        <source>Height of the occupancy image (published: 400), i.e. the forward range in cells.</source>
+        <translation>Altezza dell&apos;immagine di occupazione (pubblicato: 400), cioè la portata in avanti in celle.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the published rule (the centroid nearest the tap within max_tap_distance_px).</source>
+        <translation>Regione dal tocco: contorni a due scale più cerchi di Hough, quella che contiene il tocco più vicino al suo centro (multiscale), oppure la regola della pubblicazione (il baricentro più vicino al tocco entro max_tap_distance_px).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
+        <translation>Punteggio disegnato nelle mappe: la regola della Tabella I della pubblicazione o il processo gaussiano.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
+        <translation>Iniziare una nuova mappa quando scatta la regola di reset (come pubblicato); disattivato continua a unire.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
+        <translation>Passo B6: tagliare l&apos;insieme di consenso in corrispondenza di interruzioni lungo la linea più larghe di così e mantenere il tratto più lungo, così le linee sono muri continui (0 = come pubblicato: nessun taglio).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
+        <translation>Passo B7: mantenere l&apos;ipotesi con l&apos;errore sommato più basso (come pubblicato) o con l&apos;errore medio più basso.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
+        <translation>Passo C: ritrovare la superficie dominante della linea scelta ruotandone la direzione di tanto da entrambi i lati, poi rifare il fit su di essa (0 = come pubblicato: la linea del passo B6 così com&apos;è).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
+        <translation>Estrattore delle linee di muro: il RANSAC multi-linea della pubblicazione o split-and-merge.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
+        <translation>Larghezza dell&apos;immagine di occupazione (pubblicato: 400); il robot si trova al centro del bordo inferiore.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
+        <translation>epsilon_floor: un punto entro questa altezza dal piano del pavimento è pavimento (valore pubblicato 3.5, letto come 3.5 cm: generoso, affinché nessun pixel del pavimento sia marcato come occupato).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
+        <translation>err_max: distanza degli inlier in celle di occupazione (pubblicato: 5 pixel); metri = celle x mapping.occupancy.cell_size_m.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
+        <translation>grid: percorso sulla griglia di pixel organizzata (veloce); pcl: il percorso della pubblicazione con griglia di voxel, rimozione degli outlier e albero k-d.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
+        <translation>j_max: ipotesi per linea (pubblicato: 250); limita anche il conteggio adattivo.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
+        <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide della pubblicazione); custom: range_cut_m e max_step_m.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="175"/>
@@ -2721,11 +2786,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Keyframe più recenti le cui pose vengono ottimizzate dal bundle adjustment locale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
-        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the seed&apos;s rule).</source>
-        <translation>Nuovo centro: il centro del modello tramite una similitudine RANSAC delle corrispondenze, oppure il baricentro dei keypoint corrispondenti (la regola dell&apos;originale).</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Valore nice del thread di mappatura (modalità a thread, Linux); 10 fa prevalere il tracking su un core condiviso con la mappatura, ma affama la mappatura su una macchina carica.</translation>
@@ -2774,11 +2834,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Le celle occupate più vicine di così al robot vengono ignorate (corpo del robot, rumore).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
-        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as the seed; depth noise behind walls stays).</source>
-        <translation>Evidenza di occupazione: i colpi della scansione polare (superfici visibili, muri sottili) oppure ogni cella occupata dell&apos;immagine di occupazione (come l&apos;originale; il rumore di profondità dietro i muri resta).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="249"/>
@@ -2936,11 +2991,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Probabilità sotto la quale una cella è libera (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
-        <source>Process every k-th frame (the seed&apos;s subsampling sweep); --subsample K.</source>
-        <translation>Elaborare un fotogramma ogni k (la serie di sottocampionamenti dell&apos;originale); --subsample K.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Elabora un fotogramma letto ogni stride, dal primo (1 = tutti): una sequenza a fotogrammi chiave da una registrazione a piena frequenza.</translation>
@@ -2952,303 +3002,293 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along x.</source>
+        <translation>Pubblicazione eq. 13: offset tra sensore di profondità e di colore lungo x.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <source>Published eq. 13: depth-to-colour sensor offset along y.</source>
+        <translation>Pubblicazione eq. 13: offset tra sensore di profondità e di colore lungo y.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <source>Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
+        <translation>Pubblicazione eq. 6: rapporto di inlier atteso w; iterazioni = log(1-p) / log(1-w^3).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <source>Published eq. 6: wanted probability p of drawing one all-inlier sample.</source>
+        <translation>Pubblicazione eq. 6: probabilità p desiderata di estrarre un campione di soli inlier.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Livello della piramide su cui vengono rilevati i corner di Shi-Tomasi (0 = piena risoluzione).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Livello della piramide della ricerca per righe per le feature senza stima della disparità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Livelli della piramide del secondo tentativo di tracking (arriva circa 2^levels più lontano).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>Pyramid levels.</source>
         <translation>Livelli della piramide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>Distanza degli inlier RANSAC della matrice essenziale e dell&apos;omografia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>Ipotesi RANSAC del piano (metà campionate entro un voxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: largest time between the two tf samples a pose at a frame&apos;s stamp is interpolated between; frames in a longer gap get no pose.</source>
         <translation>Bag ROS: tempo massimo tra i due campioni tf tra cui si interpola una posa all&apos;istante di un frame; i frame in un intervallo più lungo non hanno posa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the arm&apos;s base tf frame; the pose of end_effector_frame in it is the arm&apos;s pose when there is no arm_poses.txt.</source>
         <translation>Bag ROS: il frame tf della base del braccio; la posa di end_effector_frame in esso è la posa del braccio quando manca arm_poses.txt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>ROS bag: the arm&apos;s end-effector tf frame.</source>
         <translation>Bag ROS: il frame tf dell&apos;end effector del braccio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>ROS bag: the platform&apos;s tf frame whose pose in odom_frame is the odometry.</source>
         <translation>Bag ROS: il frame tf della piattaforma la cui posa in odom_frame è l&apos;odometria.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>ROS bag: the tf frame of the odometry; without an odometry topic, the pose of base_frame in it on /tf is the platform&apos;s odometry.</source>
         <translation>Bag ROS: il frame tf dell&apos;odometria; senza un topic di odometria, la posa di base_frame in esso su /tf è l&apos;odometria della piattaforma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Random generator seed.</source>
         <translation>Seme del generatore casuale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Seme del generatore casuale; ogni scansione parte da esso, così i risultati sono riproducibili.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Seme casuale del RANSAC del piano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Frequenza con cui una registrazione riprodotta fornisce i fotogrammi; 0 segue i suoi timestamp.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Angolo tra i raggi necessario a un primo punto della mappa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Angolo tra i raggi necessario a un nuovo punto della mappa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>I raggi si fermano a questa portata; 0 = al bordo dell&apos;immagine di occupazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>La riacquisizione viene rifiutata quando le altre corrispondenze sostengono una seconda similitudine con questa frazione degli inlier (un altro pulsante di un pannello con elementi ripetuti).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Keyframe recenti con cui un nuovo keyframe triangola nuovi punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Rettificare anche quando il rig dichiara che le sue immagini sono già rettificate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Raffinare ogni posizione tracciata rispetto all&apos;ancoraggio della traccia (dove è stata vista per la prima volta), con la sua patch deformata dal moto da allora, così le tracce non derivano fotogramma dopo fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Raffinare i punti 3D con il moto (bundle adjustment a due fotogrammi); elimina il bias di profondità della triangolazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Raffinare insieme le pose degli ultimi fotogrammi e i punti delle loro tracce sull&apos;errore di riproiezione stereo (bundle adjustment a finestra scorrevole), così gli errori dei singoli fotogrammi non si sommano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Un errore di riproiezione RMS raffinato superiore a questo valore viene rifiutato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Cicli di raffinamento: raffinare, riselezionare gli inlier con la soglia di riproiezione, raffinare.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
-        <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the seed&apos;s rule (the centroid nearest the tap within max_tap_distance_px).</source>
-        <translation>Regione dal tocco: contorni a due scale più cerchi di Hough, quella che contiene il tocco più vicino al suo centro (multiscale), oppure la regola dell&apos;originale (il baricentro più vicino al tocco entro max_tap_distance_px).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Crescita per regioni: massima distanza di colore RGB-N tra vicini (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Altezza della regione di interesse; 0 mantiene quella della telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Larghezza della regione di interesse; 0 mantiene quella della telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Registrare la profondità sulla telecamera a colori nel dispositivo, se lo supporta, così i pixel di profondità e di colore si corrispondono.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Errore di riproiezione ammesso per un primo punto della mappa in ciascuna vista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Errore di riproiezione ammesso per un nuovo punto della mappa in ciascun keyframe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Frequenza dei fotogrammi richiesta; 0 mantiene quella della telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Altezza dell&apos;immagine richiesta; 0 mantiene quella della telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Larghezza dell&apos;immagine richiesta; 0 mantiene quella della telecamera. V4L2 sceglie la modalità più vicina.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Regola di reset: uno spostamento della sorgente di pose maggiore di così tra due fotogrammi azzera il riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Regola di reset: una rotazione della sorgente di pose maggiore di così tra due fotogrammi azzera il riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Regola di reset: questo numero di fotogrammi consecutivi i cui muri discordano di più di max_correction_deg azzera il riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuo oltre il quale una corrispondenza è un outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Iterazioni di Gauss-Newton ripesate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Campioni rigidi provati almeno prima che la terminazione adattiva possa fermarsi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangolazione della rugosità in coordinate del piano: la griglia delle celle o Delaunay 2D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>La rugosità usa i punti del segmento entro questa portata (tutti se non ce n&apos;è nessuno).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rugosità: i punti vengono mediati in celle del piano di questa dimensione, poi triangolati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Ricerca per righe: una differenza assoluta media superiore a questo valore significa nessuna corrispondenza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Eseguire la mappatura in un thread proprio (dal vivo); disattivato = in linea dopo ogni keyframe, deterministico.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Lato della finestra SAD della ricerca per righe, al suo livello.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>SIFT contrast threshold.</source>
         <translation>Soglia di contrasto SIFT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>Soglia di contrasto SIFT; più bassa trova più keypoint su pulsanti uniformi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>I keypoint SIFT fino a questa distanza fuori dalla regione appartengono al modello del pulsante.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>SVM score a HOG window needs to count as a person.</source>
         <translation>Punteggio SVM che una finestra HOG deve avere per contare come persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Scale between pyramid levels.</source>
         <translation>Fattore di scala tra i livelli della piramide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
-        <source>Score drawn in the maps: the seed&apos;s Table I rule or the Gaussian process.</source>
-        <translation>Punteggio disegnato nelle mappe: la regola della Tabella I dell&apos;originale o il processo gaussiano.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Scored cloud written per frame.</source>
         <translation>Nuvola valutata scritta per fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Finestra di ricerca attorno alla posizione prevista di un punto della mappa.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along x.</source>
-        <translation>Originale eq. 13: offset tra sensore di profondità e di colore lungo x.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
-        <source>Seed eq. 13: depth-to-colour sensor offset along y.</source>
-        <translation>Originale eq. 13: offset tra sensore di profondità e di colore lungo y.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
-        <source>Seed eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
-        <translation>Originale eq. 6: rapporto di inlier atteso w; iterazioni = log(1-p) / log(1-w^3).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
-        <source>Seed eq. 6: wanted probability p of drawing one all-inlier sample.</source>
-        <translation>Originale eq. 6: probabilità p desiderata di estrarre un campione di soli inlier.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="353"/>
@@ -3326,11 +3366,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Dividere un tratto finché un punto si trova più lontano di così dalla sua corda; unire i tratti che stanno su una linea entro questo valore (celle, come err_max di RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
-        <source>Start a new map when the reset rule fires (seed); off keeps stitching.</source>
-        <translation>Iniziare una nuova mappa quando scatta la regola di reset (originale); disattivato continua a unire.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Ricominciare alla fine (i timestamp continuano a crescere) invece di terminare lo stream.</translation>
@@ -3344,21 +3379,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Passo B2: i due punti campionati devono distare almeno tanto (nessuna linea corta).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
-        <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = seed: no cut).</source>
-        <translation>Passo B6: tagliare l&apos;insieme di consenso in corrispondenza di interruzioni lungo la linea più larghe di così e mantenere il tratto più lungo, così le linee sono muri continui (0 = originale: nessun taglio).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
-        <source>Step B7: keep the hypothesis with the lowest summed error (seed) or mean error.</source>
-        <translation>Passo B7: mantenere l&apos;ipotesi con l&apos;errore sommato più basso (originale) o con l&apos;errore medio più basso.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
-        <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = seed: the line of step B6 as is).</source>
-        <translation>Passo C: ritrovare la superficie dominante della linea scelta ruotandone la direzione di tanto da entrambi i lati, poi rifare il fit su di essa (0 = originale: la linea del passo B6 così com&apos;è).</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="375"/>
@@ -3666,11 +3686,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Le linee di muro con meno punti di scansione non votano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
-        <source>Wall-line extractor: the seed&apos;s multi-line RANSAC or split-and-merge.</source>
-        <translation>Estrattore delle linee di muro: il RANSAC multi-linea dell&apos;originale o split-and-merge.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confidenza di tracking più debole: nessun target.</translation>
@@ -3714,11 +3729,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, OpenCV&apos;s HOG detector, auto (ground truth when present, else HOG) or none.</source>
         <translation>Da dove provengono i riquadri delle persone: la ground truth del dataset, il rilevatore HOG di OpenCV, auto (ground truth se presente, altrimenti HOG) o none.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
-        <source>Width of the occupancy image (seed: 400); the robot sits at its bottom centre.</source>
-        <translation>Larghezza dell&apos;immagine di occupazione (originale: 400); il robot si trova al centro del bordo inferiore.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="447"/>
@@ -3841,16 +3851,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>device: accoppiare per timestamp delle telecamere (telecamere con un orologio comune, ad es. PTP o un trigger condiviso); host: accoppiare per ora di arrivo all&apos;host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
-        <source>epsilon_floor: a point within this height of the floor plane is floor (seed 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
-        <translation>epsilon_floor: un punto entro questa altezza dal piano del pavimento è pavimento (originale 3.5, letto come 3.5 cm: generoso, affinché nessun pixel del pavimento sia marcato come occupato).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
-        <source>err_max: inlier distance in occupancy cells (seed: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
-        <translation>err_max: distanza degli inlier in celle di occupazione (originale: 5 pixel); metri = celle x mapping.occupancy.cell_size_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la telecamera funziona con il proprio orologio; software: l&apos;host attiva ogni fotogramma (entrambe le telecamere di una coppia insieme); hardware: un impulso esterno su trigger_line.</translation>
@@ -3871,11 +3871,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>grid: semi-larghezza della finestra delle normali sull&apos;immagine integrale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
-        <source>grid: organized pixel-grid path (fast); pcl: the seed&apos;s voxel grid, outlier removal and k-d tree path.</source>
-        <translation>grid: percorso sulla griglia di pixel organizzata (veloce); pcl: il percorso dell&apos;originale con griglia di voxel, rimozione degli outlier e albero k-d.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vuoto = accanto a arm_poses (per arm_stream: accanto alle immagini); none = identità.</translation>
@@ -3884,11 +3879,6 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (passo E): al massimo questo numero di linee.</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
-        <source>j_max: hypotheses per line (seed: 250); also caps the adaptive count.</source>
-        <translation>j_max: ipotesi per linea (originale: 250); limita anche il conteggio adattivo.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="481"/>
@@ -3966,62 +3956,72 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>ratio_scan_max (passo E): fermarsi quando questa frazione dei punti si trova su linee.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
-        <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed&apos;s humanoid); custom: range_cut_m and max_step_m.</source>
-        <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide dell&apos;originale); custom: range_cut_m e max_step_m.</translation>
-    </message>
-    <message>
         <location filename="../app/sightline/option_texts.cpp" line="198"/>
         <source>Kind of frames read from a ROS bag; auto picks RGB-D, then stereo, then mono, then point clouds, as the bag&apos;s topics allow.</source>
         <translation>Tipo di fotogrammi letti da una bag ROS; auto sceglie RGB-D, poi stereo, poi mono, poi nuvole di punti, secondo quanto permettono i topic della bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the published rule).</source>
+        <translation>Nuovo centro: il centro del modello tramite una similitudine RANSAC delle corrispondenze, oppure il baricentro dei keypoint corrispondenti (la regola della pubblicazione).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as published; depth noise behind walls stays).</source>
+        <translation>Evidenza di occupazione: i colpi della scansione polare (superfici visibili, muri sottili) oppure ogni cella occupata dell&apos;immagine di occupazione (come pubblicato; il rumore di profondità dietro i muri resta).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <source>Process every k-th frame (the published subsampling sweep); --subsample K.</source>
+        <translation>Elaborare un fotogramma ogni k (la serie di sottocampionamenti della pubblicazione); --subsample K.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>Bag ROS: il riferimento è la posa di tf_child_frame in questo frame tf; vuoto usa l&apos;unica catena di trasformazioni della bag su /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>Bag ROS: massima differenza di timestamp di una coppia colore/profondità o sinistra/destra; le immagini senza partner vengono saltate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>Bag ROS: il topic CameraInfo del topic dell&apos;immagine; vuoto cerca accanto al topic dell&apos;immagine, poi prende l&apos;unico topic CameraInfo della bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>Bag ROS: il topic PointCloud2 letto come nuvole di punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>Bag ROS: il frame tf della telecamera la cui posa in tf_parent_frame è il riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag ROS: il topic dell&apos;immagine a colori, sinistra o mono (Image o CompressedImage); vuoto lo sceglie quando la bag non lascia dubbi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag ROS: il topic dell&apos;immagine di profondità (16UC1 millimetri o 32FC1 metri); vuoto lo sceglie quando la bag non lascia dubbi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>Bag ROS: il topic nav_msgs/Odometry; vuoto prende l&apos;unico della bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>Bag ROS: il topic CameraInfo della telecamera destra; la sua matrice di proiezione P dà la base stereo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>Bag ROS: il topic dell&apos;immagine destra di una coppia stereo; vuoto sceglie il topic il cui nome dice right accanto a uno che dice left.</translation>
     </message>
@@ -4186,38 +4186,38 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::RosNodeView</name>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="56"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="58"/>
         <source>ROS node</source>
         <translation>Nodo ROS</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="60"/>
-        <location filename="../app/sightline/ros_node_view.cpp" line="140"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="62"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="142"/>
         <source>Not connected: File &gt; Connect to ROS master...</source>
         <translation>Non connesso: File &gt; Connetti al master ROS...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="91"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="93"/>
         <source>ROS: %1</source>
         <translation>ROS: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="115"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="117"/>
         <source>Waiting for the map from %1 ...</source>
         <translation>In attesa della mappa da %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="120"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="122"/>
         <source>ROS: not available in this build</source>
         <translation>ROS: non disponibile in questa build</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="145"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="147"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: connesso a %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="146"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="148"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: disconnesso — riconnessione a %1</translation>
     </message>

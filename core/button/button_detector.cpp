@@ -77,7 +77,7 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
   return OptionTable<O>("button.detect")
       .Choice("method", &O::method, {"multiscale", "seed"},
               "Region from the tap: outlines at two scales plus Hough circles, the one holding "
-              "the tap nearest its centre (multiscale), or the seed's rule (the centroid "
+              "the tap nearest its centre (multiscale), or the published rule (the centroid "
               "nearest the tap within max_tap_distance_px).")
       .Int("working_size_px", &O::working_size_px, "px", 160, 8192, 32,
            "Longer image side at which contours are searched; larger frames are scaled down.")
@@ -97,7 +97,7 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
               "Longest over shortest side of the region's rotated box.")
       .Double("max_tap_distance_px", &O::max_tap_distance_px, "px", 1, 1000, 1,
               "A region whose centroid is farther from the tap and that does not contain it is "
-              "not the tapped button (seed method).")
+              "not the tapped button (published method).")
       .Double("search_radius_px", &O::search_radius_px, "px", 16, 4096, 8,
               "multiscale: half size of the window around the tap that is searched.")
       .Double("second_blur", &O::second_blur, "", 1, 10, 0.1,

@@ -83,7 +83,7 @@ OptionTable<ButtonTrackerOptions> ButtonTrackerOptions::Describe() {
            "Fewer consistent matches: the button is lost.")
       .Choice("centre", &O::centre, {"similarity", "centroid"},
               "New centre: the model centre through a RANSAC similarity of the matches, or the "
-              "matched keypoints' centroid (the seed's rule).")
+              "matched keypoints' centroid (the published rule).")
       .Double("ransac_px", &O::ransac_px, "px", 0.1, 50, 0.1, "Similarity RANSAC inlier distance.")
       .Double("sift_contrast", &O::sift_contrast, "", 0.001, 0.5, 0.005, "SIFT contrast threshold.")
       .Int("flann_trees", &O::flann_trees, "", 1, 64, 1, "FLANN randomised kd-trees.")

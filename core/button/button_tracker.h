@@ -30,7 +30,7 @@ struct ButtonTrackerOptions {
   double window_radius = 4.0;           // ... or this many predicted button radii, if larger.
   int min_matches = 4;                  // Fewer consistent matches: the button is lost.
   std::string centre = "similarity";    // similarity (model centre through a RANSAC similarity
-                                        // of the matches) or centroid (the seed's rule).
+                                        // of the matches) or centroid (the published rule).
   double ransac_px = 3.0;               // Inlier distance of the similarity RANSAC [px].
   double sift_contrast = 0.01;          // SIFT contrast threshold.
   int flann_trees = 4;                  // FLANN randomised kd-trees.

@@ -45,7 +45,8 @@ OptionTable<FloorPlaneOptions> FloorPlaneOptions::Describe() {
   using O = FloorPlaneOptions;
   return OptionTable<O>("mapping.floor")
       .Double("epsilon_m", &O::epsilon_m, "m", 0.001, 0.5, 0.005,
-              "epsilon_floor: a point within this height of the floor plane is floor (seed 3.5, "
+              "epsilon_floor: a point within this height of the floor plane is floor (published "
+              "value 3.5, "
               "read as 3.5 cm: generous so that no floor pixel is labelled occupied).")
       .Double("fit_threshold_m", &O::fit_threshold_m, "m", 0.001, 0.5, 0.005,
               "Point-to-plane distance of an inlier while fitting the floor.")

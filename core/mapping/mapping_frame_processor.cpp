@@ -22,7 +22,7 @@ OptionTable<MappingOptions> MappingOptions::Describe() {
   using O = MappingOptions;
   return OptionTable<O>("")
       .Choice("mapping.extractor", &O::extractor, {"multi_line_ransac", "split_and_merge"},
-              "Wall-line extractor: the seed's multi-line RANSAC or split-and-merge.")
+              "Wall-line extractor: the published multi-line RANSAC or split-and-merge.")
       .Nested(&O::floor, FloorPlaneOptions::Describe())
       .Nested(&O::occupancy, OccupancyImageOptions::Describe())
       .Nested(&O::scan, PolarScanOptions::Describe())

@@ -57,7 +57,7 @@ OptionTable<MultiLineRansacOptions> MultiLineRansacOptions::Describe() {
   using O = MultiLineRansacOptions;
   return OptionTable<O>("mapping.ransac")
       .Double("error_threshold_cells", &O::error_threshold_cells, "cells", 0.1, 100, 0.5,
-              "err_max: inlier distance in occupancy cells (seed: 5 pixels); metres = cells x "
+              "err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x "
               "mapping.occupancy.cell_size_m.")
       .Double("min_pair_distance_m", &O::min_pair_distance_m, "m", 0, 50, 0.05,
               "Step B2: the two sampled points must be at least this far apart (no short lines).")
@@ -73,22 +73,23 @@ OptionTable<MultiLineRansacOptions> MultiLineRansacOptions::Describe() {
               "Hypotheses per line: fixed (max_iterations, seed) or adaptive "
               "log(1-p)/log(1-w^2) with w the best inlier ratio so far.")
       .Int("max_iterations", &O::max_iterations, "", 1, 100000, 10,
-           "j_max: hypotheses per line (seed: 250); also caps the adaptive count.")
+           "j_max: hypotheses per line (published: 250); also caps the adaptive count.")
       .Double("confidence", &O::confidence, "", 0.5, 0.999999, 0.001,
               "p of the adaptive count: probability of drawing one all-inlier pair.")
-      .Choice("best_by", &O::best_by, {"total_error", "mean_error"},
-              "Step B7: keep the hypothesis with the lowest summed error (seed) or mean error.")
+      .Choice(
+          "best_by", &O::best_by, {"total_error", "mean_error"},
+          "Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.")
       .Double("stop_assigned_ratio", &O::stop_assigned_ratio, "", 0.01, 1, 0.01,
               "ratio_scan_max (step E): stop once this fraction of the points lies on lines.")
       .Int("max_lines", &O::max_lines, "", 1, 10000, 1, "i_max (step E): at most this many lines.")
       .Int("min_line_points", &O::min_line_points, "points", 2, 10000, 1,
-           "A line needs at least this many points (2 = seed; more rejects clutter).")
+           "A line needs at least this many points (2 = as published; more rejects clutter).")
       .Double("max_gap_m", &O::max_gap_m, "m", 0, 100, 0.05,
               "Step B6: cut the consensus set at gaps wider than this along the line and keep "
-              "the longest piece, so that lines are contiguous walls (0 = seed: no cut).")
+              "the longest piece, so that lines are contiguous walls (0 = as published: no cut).")
       .Double("refine_sweep_deg", &O::refine_sweep_deg, "deg", 0, 45, 0.5,
               "Step C: re-find the chosen line's dominant surface by sweeping its direction this "
-              "far either way, then refit on it (0 = seed: the line of step B6 as is).")
+              "far either way, then refit on it (0 = as published: the line of step B6 as is).")
       .Double("refine_threshold_cells", &O::refine_threshold_cells, "cells", 0.1, 100, 0.5,
               "Band of the refinement (offset histogram bin and refit band): narrower than "
               "err_max, so that a door recessed behind the wall face does not tilt the line.")

@@ -58,7 +58,7 @@ struct MultiLineRansacOptions {
   int min_line_points = 8;              // A line needs this many points (2 = seed).
   double max_gap_m = 0.5;               // Step B6: the re-tested consensus set is cut at gaps wider
                                         // than this along the line and its longest piece kept
-                                        // (0 = seed: no cut) [m].
+                                        // (0 = as published: no cut) [m].
   double refine_sweep_deg = 6;          // Step C: the chosen line's dominant surface is re-found
                                         // by sweeping its direction this far either way, then
                                         // refitted (0 = seed: no refinement) [deg].

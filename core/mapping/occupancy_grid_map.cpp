@@ -52,10 +52,11 @@ OptionTable<OccupancyGridMapOptions> OccupancyGridMapOptions::Describe() {
       .Double("free_threshold", &O::free_threshold, "", 0.01, 0.49, 0.01,
               "Probability below which a cell is free (map.yaml free_thresh).")
       .Bool("clear_on_reset", &O::clear_on_reset,
-            "Start a new map when the reset rule fires (seed); off keeps stitching.")
-      .Choice("occupied_from", &O::occupied_from, {"scan", "image"},
-              "Occupied evidence: the polar scan's hits (visible surfaces, thin walls) or every "
-              "occupied cell of the occupancy image (as the seed; depth noise behind walls stays).")
+            "Start a new map when the reset rule fires (as published); off keeps stitching.")
+      .Choice(
+          "occupied_from", &O::occupied_from, {"scan", "image"},
+          "Occupied evidence: the polar scan's hits (visible surfaces, thin walls) or every "
+          "occupied cell of the occupancy image (as published; depth noise behind walls stays).")
       .Double("grow_margin_m", &O::grow_margin_m, "m", 0, 100, 0.5,
               "The map grows by at least this much each time it must.")
       .Int("render_every_n", &O::render_every_n, "frames", 0, 100000, 1,

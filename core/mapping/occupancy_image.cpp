@@ -29,17 +29,18 @@ OptionTable<OccupancyImageOptions> OccupancyImageOptions::Describe() {
   using O = OccupancyImageOptions;
   return OptionTable<O>("mapping.occupancy")
       .Int("width_cells", &O::width_cells, "cells", 8, 8192, 10,
-           "Width of the occupancy image (seed: 400); the robot sits at its bottom centre.")
+           "Width of the occupancy image (published: 400); the robot sits at its bottom centre.")
       .Int("height_cells", &O::height_cells, "cells", 8, 8192, 10,
-           "Height of the occupancy image (seed: 400), i.e. the forward range in cells.")
+           "Height of the occupancy image (published: 400), i.e. the forward range in cells.")
       .Double("cell_size_m", &O::cell_size_m, "m", 0.001, 1, 0.005,
               "Edge of one occupancy cell; RANSAC's 5-cell error scales with it.")
       .Double("max_height_m", &O::max_height_m, "m", 0.05, 10, 0.1,
               "Points higher than this above the floor (ceiling, lamps) are ignored.")
-      .Int("min_occupied_points", &O::min_occupied_points, "points", 1, 255, 1,
-           "Depth points a cell needs to count as occupied (1 = seed: any non-floor point).")
+      .Int(
+          "min_occupied_points", &O::min_occupied_points, "points", 1, 255, 1,
+          "Depth points a cell needs to count as occupied (1 = as published: any non-floor point).")
       .Int("target_columns", &O::target_columns, "px", 16, 4096, 16,
-           "Depth images are sampled to about this many columns (seed: 320 x 240).")
+           "Depth images are sampled to about this many columns (published: 320 x 240).")
       .Double("person_depth_margin_m", &O::person_depth_margin_m, "m", 0.05, 3, 0.05,
               "Pixels in a person box within this depth of the box's median depth are the "
               "person.");

@@ -29,7 +29,7 @@ OptionTable<PolarScanOptions> PolarScanOptions::Describe() {
   using O = PolarScanOptions;
   return OptionTable<O>("mapping.scan")
       .Double("resolution_deg", &O::resolution_deg, "deg", 0.01, 10, 0.05,
-              "Angle between scan rays (seed res_scan = 0.2 deg).")
+              "Angle between scan rays (published res_scan = 0.2 deg).")
       .Double("fov_deg", &O::fov_deg, "deg", 0, 360, 1,
               "Field of view to scan, centred on forward; 0 = the camera's own (rays outside it "
               "can never hit anything).")

@@ -11,7 +11,7 @@
 
 namespace sightline {
 
-// Seed eq. 6: iterations k = log(1 - p) / log(1 - w^s) for success probability p, inlier ratio
+// Published eq. 6: iterations k = log(1 - p) / log(1 - w^s) for success probability p, inlier ratio
 // w and sample size s.
 int RansacIterations(double success, double inlier_ratio, int sample_size = 3);
 

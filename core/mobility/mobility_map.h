@@ -30,7 +30,7 @@ TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
 // The top view as a BGR image (camera at the bottom centre, forward up), one pixel per cell.
 cv::Mat RenderTopView(const TopViewMap& map);
 
-// Seed eq. 13: u = fx (x + tx) / z + cx, v = fy (y + ty) / z + cy. Draws each scored point's
+// Published eq. 13: u = fx (x + tx) / z + cx, v = fy (y + ty) / z + cy. Draws each scored point's
 // colour as a dot of dot_px pixels half-blended into a copy of `color_bgr` (a grey canvas of
 // the camera's size when empty).
 cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& scores,

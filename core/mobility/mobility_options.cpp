@@ -81,10 +81,10 @@ OptionTable<MobilityOptions> MobilityOptions::Describe() {
   using O = MobilityOptions;
   return OptionTable<O>("mobility")
       .Choice("mode", &O::mode, {"grid", "pcl"},
-              "grid: organized pixel-grid path (fast); pcl: the seed's voxel grid, outlier "
+              "grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier "
               "removal and k-d tree path.")
       .Choice("platform", &O::platform, {"wheelchair", "icub", "custom"},
-              "wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the seed's humanoid); "
+              "wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); "
               "custom: range_cut_m and max_step_m.")
       .Double("range_cut_m", &O::range_cut_m, "m", 0.1, 20, 0.1,
               "custom platform: points farther from the sensor are dropped.")
@@ -118,9 +118,9 @@ OptionTable<MobilityOptions> MobilityOptions::Describe() {
       .Double("ground_normal_deg", &O::ground_normal_deg, "deg", 1, 90, 1,
               "A ground point's own normal lies at most this far from the plane's.")
       .Double("ransac_success", &O::ransac_success, "", 0.5, 0.99999, 0.001,
-              "Seed eq. 6: wanted probability p of drawing one all-inlier sample.")
+              "Published eq. 6: wanted probability p of drawing one all-inlier sample.")
       .Double("ransac_inlier_ratio", &O::ransac_inlier_ratio, "", 0.01, 0.99, 0.01,
-              "Seed eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).")
+              "Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).")
       .Int("ground_candidates", &O::ground_candidates, "planes", 1, 10, 1,
            "Up-facing planes searched; the lowest large one is the ground.")
       .Double("min_ground_ratio", &O::min_ground_ratio, "", 0.001, 0.9, 0.005,
@@ -151,12 +151,12 @@ OptionTable<MobilityOptions> MobilityOptions::Describe() {
               "A sloped segment whose plane meets the ground within this distance of its lowest "
               "points is connected to the ground (a ramp), not raised.")
       .Choice("score", &O::score, {"rule", "gpr"},
-              "Score drawn in the maps: the seed's Table I rule or the Gaussian process.")
+              "Score drawn in the maps: the published Table I rule or the Gaussian process.")
       .Double("map_cell_m", &O::map_cell_m, "m", 0.005, 0.5, 0.005, "Top-view grid cell.")
       .Double("rgb_offset_x_m", &O::rgb_offset_x_m, "m", -0.2, 0.2, 0.001,
-              "Seed eq. 13: depth-to-colour sensor offset along x.")
+              "Published eq. 13: depth-to-colour sensor offset along x.")
       .Double("rgb_offset_y_m", &O::rgb_offset_y_m, "m", -0.2, 0.2, 0.001,
-              "Seed eq. 13: depth-to-colour sensor offset along y.");
+              "Published eq. 13: depth-to-colour sensor offset along y.");
 }
 
 }  // namespace sightline

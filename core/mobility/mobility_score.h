@@ -1,4 +1,4 @@
-// Mobility scores from slope and roughness: the seed's Table I rule and a Gaussian process
+// Mobility scores from slope and roughness: the published Table I rule and a Gaussian process
 // regression (squared-exponential kernel) trained on the table.
 #pragma once
 

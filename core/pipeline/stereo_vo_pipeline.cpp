@@ -31,7 +31,7 @@ OptionTable<StereoVoRunOptions> StereoVoRunOptions::Describe() {
   using O = StereoVoRunOptions;
   return OptionTable<O>("stereo")
       .Int("subsample", &O::subsample, "frames", 1, 1000, 1,
-           "Process every k-th frame (the seed's subsampling sweep); --subsample K.")
+           "Process every k-th frame (the published subsampling sweep); --subsample K.")
       .Choice("output_format", &O::output_format, {"tum", "kitti"},
               "Format of trajectory.txt; --format kitti.")
       .Int("max_frames", &O::max_frames, "frames", 0, 1e9, 1,

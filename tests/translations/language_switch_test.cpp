@@ -27,7 +27,9 @@
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <algorithm>
+#include <cctype>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "app/sightline/builtin_presenters.h"
@@ -177,6 +179,32 @@ TEST(OptionTexts, EveryOptionDescriptionTheGuiShowsIsMarkedForTranslation) {
   }
   std::printf("%zu option descriptions, %zu marked for translation\n", declared.size(),
               known.size());
+}
+
+// The tuning panel speaks of what an option does and of the published method it follows, never
+// of "the seed" (the document a pipeline was specified from): "seed" is only a random
+// generator's seed or a simulated scene's seed.
+TEST(OptionTexts, NoDescriptionSpeaksOfTheSpecificationDocument) {
+  const std::map<std::string, std::string> declared = DeclaredOptionDescriptions();
+  ASSERT_GT(declared.size(), 300u) << "too few options found to judge the list";
+  int checked = 0;
+  for (const auto& [description, key] : declared) {
+    std::string lower = description;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (size_t at = lower.find("seed"); at != std::string::npos; at = lower.find("seed", at + 1)) {
+      const std::string before = lower.substr(at >= 20 ? at - 20 : 0, at >= 20 ? 20 : at);
+      const std::string after = lower.substr(at, 12);
+      const bool generator = before.find("random") != std::string::npos ||
+                             before.find("generator") != std::string::npos ||
+                             before.find("max_iterations, ") != std::string::npos;
+      const bool simulated_scenes = after.rfind("seeds 1", 0) == 0;  // "seeds 1-5", "seeds 1 and 4"
+      EXPECT_TRUE(generator || simulated_scenes)
+          << "option " << key << " says \"seed\" where the user cannot know what it is: \""
+          << description << "\"";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0) << "the random generators' seeds should have been seen";
 }
 
 // Every text a user can read in `root` and below: labels, buttons, group and dock titles, tabs,
