@@ -1155,110 +1155,137 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::MappingPresenter</name>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="91"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="112"/>
         <source>Indoor mapping (Manhattan walls)</source>
         <translation>Innenraumkartierung (Manhattan-Wände)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="98"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="119"/>
         <source>Occupancy, scan and walls</source>
         <translation>Belegung, Scan und Wände</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="104"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="125"/>
         <source>Calibrate floor</source>
         <translation>Boden kalibrieren</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="106"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="127"/>
         <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
         <translation>Die Bodenebene aus den nächsten Bildern neu schätzen (der Roboter sollte freien Boden sehen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="130"/>
         <source>Save floor...</source>
         <translation>Boden speichern...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="111"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="132"/>
         <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
         <translation>Die verwendete Bodenkalibrierung speichern, für mapping.run.floor_file oder `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="114"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="135"/>
         <source>Save floor calibration</source>
         <translation>Bodenkalibrierung speichern</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="115"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="136"/>
         <source>YAML (*.yaml)</source>
         <translation>YAML (*.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="148"/>
         <source>Stitched map</source>
         <translation>Zusammengesetzte Karte</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="212"/>
         <source>free</source>
         <translation>frei</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="214"/>
         <source>occupied</source>
         <translation>belegt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="182"/>
         <source>person</source>
         <translation>Person</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="183"/>
         <source>scan rays</source>
         <translation>Scanstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="184"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
         <source>walls, first direction</source>
         <translation>Wände, erste Richtung</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="185"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="224"/>
         <source>walls, perpendicular</source>
         <translation>Wände, senkrecht dazu</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="225"/>
         <source>other lines</source>
         <translation>andere Linien</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="187"/>
         <source>robot</source>
         <translation>Roboter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="213"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <source>path and robot</source>
+        <translation>Pfad und Roboter</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="226"/>
         <source>floor</source>
         <translation>Boden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
+        <source>map: free</source>
+        <translation>Karte: frei</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="229"/>
+        <source>map: occupied</source>
+        <translation>Karte: belegt</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="230"/>
+        <source>path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="235"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Manhattan-Referenz zurückgesetzt: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="276"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Der Boden wird aus den nächsten Bildern neu kalibriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="289"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Bodenkalibrierung in %1 gespeichert</translation>
     </message>

@@ -1155,110 +1155,137 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::MappingPresenter</name>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="91"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="112"/>
         <source>Indoor mapping (Manhattan walls)</source>
         <translation>Mappatura di interni (pareti di Manhattan)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="98"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="119"/>
         <source>Occupancy, scan and walls</source>
         <translation>Occupazione, scansione e pareti</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="104"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="125"/>
         <source>Calibrate floor</source>
         <translation>Calibra il pavimento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="106"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="127"/>
         <source>Fit the floor plane again from the next frames (the robot should see open floor).</source>
         <translation>Stima di nuovo il piano del pavimento dalle prossime immagini (il robot deve vedere pavimento libero).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="130"/>
         <source>Save floor...</source>
         <translation>Salva il pavimento...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="111"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="132"/>
         <source>Save the floor calibration in use, for mapping.run.floor_file or `sightline-cli run mapping --set mapping.run.floor_file=...`.</source>
         <translation>Salva la calibrazione del pavimento in uso, per mapping.run.floor_file o `sightline-cli run mapping --set mapping.run.floor_file=...`.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="114"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="135"/>
         <source>Save floor calibration</source>
         <translation>Salva la calibrazione del pavimento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="115"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="136"/>
         <source>YAML (*.yaml)</source>
         <translation>YAML (*.yaml)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="148"/>
         <source>Stitched map</source>
         <translation>Mappa unita</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="157"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="180"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="212"/>
         <source>free</source>
         <translation>libero</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="158"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="181"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="214"/>
         <source>occupied</source>
         <translation>occupato</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="159"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="182"/>
         <source>person</source>
         <translation>persona</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="160"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="183"/>
         <source>scan rays</source>
         <translation>raggi di scansione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="161"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="193"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="184"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="223"/>
         <source>walls, first direction</source>
         <translation>pareti, prima direzione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="162"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="185"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="224"/>
         <source>walls, perpendicular</source>
         <translation>pareti, perpendicolari</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="163"/>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="195"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="225"/>
         <source>other lines</source>
         <translation>altre linee</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="164"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="187"/>
         <source>robot</source>
         <translation>robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="196"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="213"/>
+        <source>unknown</source>
+        <translation>sconosciuto</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <source>path and robot</source>
+        <translation>percorso e robot</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="226"/>
         <source>floor</source>
         <translation>pavimento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
+        <source>map: free</source>
+        <translation>mappa: libero</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="229"/>
+        <source>map: occupied</source>
+        <translation>mappa: occupato</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="230"/>
+        <source>path</source>
+        <translation>percorso</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="235"/>
         <source>Manhattan reference reset: %1</source>
         <translation>Riferimento di Manhattan azzerato: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="215"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="276"/>
         <source>Calibrating the floor again from the next frames.</source>
         <translation>Nuova calibrazione del pavimento dalle prossime immagini.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/mapping_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/mapping_presenter.cpp" line="289"/>
         <source>Saved the floor calibration to %1</source>
         <translation>Calibrazione del pavimento salvata in %1</translation>
     </message>

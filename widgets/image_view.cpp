@@ -309,6 +309,8 @@ void ImageView::DrawKeys(QPainter& painter) const {
   for (size_t i = 0; i < keys_.size(); ++i) {
     const QRect swatch = KeySwatchRect(i);
     painter.fillRect(swatch, keys_[i].color);
+    painter.setPen(QColor(160, 160, 160));  // An outline: a black swatch shows on the dark box.
+    painter.drawRect(swatch.adjusted(0, 0, -1, -1));
     painter.setPen(Qt::white);
     painter.drawText(
         QRect(swatch.right() + kMargin + 2, swatch.top() - 2, text_width + kMargin, line),

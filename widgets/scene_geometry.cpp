@@ -3,6 +3,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -184,6 +185,57 @@ void AppendGrid(const Eigen::Vector3d& center, const Eigen::Vector3d& u, const E
     segments->push_back(
         {center + offset * v - extent * u, center + offset * v + extent * u, color});
   }
+}
+
+vtkSmartPointer<vtkImageData> MakeTextureImage(const cv::Mat& image) {
+  const bool usable =
+      !image.empty() && image.dims == 2 && (image.type() == CV_8UC3 || image.type() == CV_8UC1);
+  const int width = usable ? image.cols : 1;
+  const int height = usable ? image.rows : 1;
+  auto texels = vtkSmartPointer<vtkImageData>::New();
+  texels->SetDimensions(width, height, 1);
+  texels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<uint8_t*>(texels->GetScalarPointer());
+  if (!usable) {
+    out[0] = out[1] = out[2] = 128;
+    return texels;
+  }
+  for (int r = 0; r < height; ++r) {
+    const uint8_t* in = image.ptr<uint8_t>(height - 1 - r);
+    uint8_t* row = out + static_cast<size_t>(r) * width * 3;
+    for (int c = 0; c < width; ++c) {
+      if (image.channels() == 3) {
+        row[3 * c + 0] = in[3 * c + 2];
+        row[3 * c + 1] = in[3 * c + 1];
+        row[3 * c + 2] = in[3 * c + 0];
+      } else {
+        row[3 * c + 0] = row[3 * c + 1] = row[3 * c + 2] = in[c];
+      }
+    }
+  }
+  return texels;
+}
+
+vtkSmartPointer<vtkPolyData> MakeTexturedQuad(const Eigen::Vector3d& origin,
+                                              const Eigen::Vector3d& right,
+                                              const Eigen::Vector3d& up) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const Eigen::Vector3d corners[4] = {origin, origin + right, origin + right + up, origin + up};
+  for (const Eigen::Vector3d& p : corners) points->InsertNextPoint(p.data());
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetName("texture");
+  const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const auto& t : uv) tcoords->InsertNextTuple(t);
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType ids[4] = {0, 1, 2, 3};
+  quads->InsertNextCell(4, ids);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(quads);
+  poly->GetPointData()->SetTCoords(tcoords);
+  return poly;
 }
 
 }  // namespace sightline

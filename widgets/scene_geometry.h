@@ -5,10 +5,12 @@
 #include <vtkSmartPointer.h>
 
 #include <Eigen/Geometry>
+#include <opencv2/core/mat.hpp>
 #include <vector>
 
 #include "widgets/color_map.h"
 
+class vtkImageData;
 class vtkPolyData;
 
 namespace sightline {
@@ -50,5 +52,16 @@ void AppendAxes(const Eigen::Isometry3d& world_from_frame, double length_m,
 void AppendGrid(const Eigen::Vector3d& center, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
                 double spacing_m, int half_cells, Rgb8 color,
                 std::vector<ColoredSegment>* segments);
+
+// A texture's texels from a BGR (CV_8UC3) or grey (CV_8UC1) image as RGB, flipped so that the
+// image's bottom row is the texture's first (VTK's origin is bottom-left). Other types give a
+// 1 x 1 grey texel.
+vtkSmartPointer<vtkImageData> MakeTextureImage(const cv::Mat& image);
+
+// One quad with corners origin, origin + right, origin + right + up, origin + up and texture
+// coordinates (0, 0), (1, 0), (1, 1), (0, 1).
+vtkSmartPointer<vtkPolyData> MakeTexturedQuad(const Eigen::Vector3d& origin,
+                                              const Eigen::Vector3d& right,
+                                              const Eigen::Vector3d& up);
 
 }  // namespace sightline

@@ -2,6 +2,7 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -9,6 +10,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTexture.h>
 
 #include <QLabel>
 #include <algorithm>
@@ -216,6 +218,35 @@ void SceneView::SetFrusta(const std::string& layer, const std::vector<Eigen::Iso
   colored.reserve(10 * poses.size());
   for (const Eigen::Isometry3d& pose : poses) AppendFrustum(pose, size, ToRgb8(color), &colored);
   impl_->Replace(layer, MakeSegmentsActor(colored, 1.5));
+}
+
+void SceneView::SetImagePlane(const std::string& layer, const cv::Mat& image,
+                              const Eigen::Vector3d& origin, const Eigen::Vector3d& right,
+                              const Eigen::Vector3d& up, double opacity) {
+  vtkSmartPointer<vtkImageData> texels = MakeTextureImage(image);
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedQuad(origin, right, up);
+  const auto it = impl_->layers.find(layer);
+  vtkActor* existing = it != impl_->layers.end() ? it->second.actor.Get() : nullptr;
+  if (existing != nullptr && existing->GetTexture() != nullptr) {
+    // The same actor, new texels and corners: no renderer change, one scheduled render.
+    existing->GetTexture()->SetInputData(texels);
+    vtkPolyDataMapper::SafeDownCast(existing->GetMapper())->SetInputData(plane);
+    existing->GetProperty()->SetOpacity(std::clamp(opacity, 0.0, 1.0));
+    impl_->Changed();
+    return;
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(plane);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(texels);
+  texture->InterpolateOff();  // Map cells stay sharp squares.
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->SetTexture(texture);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetOpacity(std::clamp(opacity, 0.0, 1.0));
+  impl_->Replace(layer, actor);
 }
 
 void SceneView::RemoveLayer(const std::string& layer) {

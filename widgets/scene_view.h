@@ -6,6 +6,7 @@
 #include <QColor>
 #include <QString>
 #include <memory>
+#include <opencv2/core/mat.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,6 +71,13 @@ class SceneView : public VtkGlWidget {
   // image plane at `size` metres along z, and a small triangle over the image's top edge.
   void SetFrusta(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
                  QColor color, double size);
+  // Shows an image on a flat rectangle, e.g. an occupancy map on the floor: `origin` is where the
+  // image's bottom-left corner lies (layer frame, metres), `right` the rectangle's edge along the
+  // image's bottom row and `up` its edge along the left column (bottom to top). `image` is BGR
+  // (CV_8UC3) or grey (CV_8UC1) and is copied; `opacity` in [0, 1]. Setting the layer again
+  // updates the texture and the corners of the same actor (a growing map is not rebuilt).
+  void SetImagePlane(const std::string& layer, const cv::Mat& image, const Eigen::Vector3d& origin,
+                     const Eigen::Vector3d& right, const Eigen::Vector3d& up, double opacity = 1.0);
   // Removes a layer; unknown names are ignored.
   void RemoveLayer(const std::string& layer);
   // Removes every layer (the ground grid stays).

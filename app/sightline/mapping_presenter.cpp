@@ -20,7 +20,7 @@ namespace sightline {
 
 namespace {
 
-// Free cells green, occupied red, people white, unknown dark grey (the seed's Fig. 4.19).
+// Free cells green, occupied red, people white, unknown dark grey (as in the published Fig. 4.19).
 cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
   cv::Mat bgr(occupancy.cells.size(), CV_8UC3, cv::Scalar(40, 40, 40));
   for (int r = 0; r < occupancy.height(); ++r) {
@@ -40,6 +40,21 @@ cv::Mat OccupancyToBgr(const OccupancyImage& occupancy) {
         case OccupancyCell::kUnknown:
           break;
       }
+    }
+  }
+  return bgr;
+}
+
+// The stitched map for the 3D view's floor, in the occupancy view's colours: free green,
+// occupied red, unknown nearly the background (map_server grey levels: 254 free, 0 occupied).
+cv::Mat StitchedMapForScene(const cv::Mat& gray) {
+  cv::Mat bgr(gray.size(), CV_8UC3, cv::Scalar(48, 44, 44));
+  for (int r = 0; r < gray.rows; ++r) {
+    const uint8_t* in = gray.ptr<uint8_t>(r);
+    cv::Vec3b* out = bgr.ptr<cv::Vec3b>(r);
+    for (int c = 0; c < gray.cols; ++c) {
+      if (in[c] == 254) out[c] = {60, 160, 60};
+      if (in[c] == 0) out[c] = {40, 40, 220};
     }
   }
   return bgr;
@@ -78,6 +93,12 @@ SceneLines WallsAndFloorInCamera(const MappingFrameResult& mapping,
 constexpr const char* kWallLayers[3] = {"mapping/walls_0", "mapping/walls_1",
                                         "mapping/walls_other"};
 constexpr const char* kFloorLayer = "mapping/floor";
+// The stitched map as a textured plane on the floor, and the estimated path above it, both in
+// the map frame and placed in the camera's frame (the 3D view's) by the frame's pose.
+constexpr const char* kMapLayer = "mapping/stitched_map";
+constexpr const char* kPathLayer = "mapping/path";
+constexpr double kMapBelowFloorM = 0.01;  // Under the floor grid's lines, not through them.
+constexpr double kPathAboveFloorM = 0.03;
 
 }  // namespace
 
@@ -139,6 +160,8 @@ void MappingPresenter::Detach() {
   if (scene_ != nullptr) {
     for (const char* layer : kWallLayers) scene_->RemoveLayer(layer);
     scene_->RemoveLayer(kFloorLayer);
+    scene_->RemoveLayer(kMapLayer);
+    scene_->RemoveLayer(kPathLayer);
     scene_->SetKeys({});
   }
   if (occupancy_dock_ != nullptr) occupancy_dock_->hide();
@@ -184,16 +207,29 @@ void MappingPresenter::Show(const PlaybackResult& result) {
     painter.setPen(Qt::NoPen);
     painter.drawRect(QRectF(origin - QPointF(5, 5), QSizeF(10, 10)));
   });
-  if (mapping->map_image) map_view_->SetImage(*mapping->map_image);
+  if (mapping->map_image) {
+    map_view_->SetImage(*mapping->map_image);
+    map_view_->SetKeys({{QColor(254, 254, 254), tr("free")},
+                        {QColor(205, 205, 205), tr("unknown")},
+                        {QColor(0, 0, 0), tr("occupied")},
+                        {QColor(220, 0, 0), tr("path and robot")}});
+  }
   if (scene_ != nullptr) {
     const SceneLines lines = WallsAndFloorInCamera(*mapping, view->base_from_camera);
     const QColor colors[3] = {QColor(0, 200, 255), QColor(255, 0, 255), QColor(255, 255, 0)};
     for (int k = 0; k < 3; ++k) scene_->SetLines(kWallLayers[k], lines.walls[k], colors[k], 3.0);
     scene_->SetLines(kFloorLayer, lines.floor, QColor(60, 200, 60), 1.0);
-    scene_->SetKeys({{colors[0], tr("walls, first direction")},
-                     {colors[1], tr("walls, perpendicular")},
-                     {colors[2], tr("other lines")},
-                     {QColor(60, 200, 60), tr("floor")}});
+    ShowStitchedMap(*mapping);
+    std::vector<SceneView::Key> keys = {{colors[0], tr("walls, first direction")},
+                                        {colors[1], tr("walls, perpendicular")},
+                                        {colors[2], tr("other lines")},
+                                        {QColor(60, 200, 60), tr("floor")}};
+    if (scene_->HasLayer(kMapLayer)) {
+      keys.push_back({QColor(60, 160, 60), tr("map: free")});
+      keys.push_back({QColor(220, 40, 40), tr("map: occupied")});
+      keys.push_back({QColor(255, 150, 0), tr("path")});
+    }
+    scene_->SetKeys(keys);
   }
   if (mapping->reset) {
     emit Message(1, tr("Manhattan reference reset: %1")
@@ -206,8 +242,33 @@ void MappingPresenter::Show(const PlaybackResult& result) {
   }
 }
 
+void MappingPresenter::ShowStitchedMap(const MappingFrameResult& mapping) {
+  if (mapping.map_gray && !mapping.map_gray->empty() && mapping.map_resolution_m > 0) {
+    const cv::Mat& gray = *mapping.map_gray;
+    const double width_m = gray.cols * mapping.map_resolution_m;
+    const double height_m = gray.rows * mapping.map_resolution_m;
+    // Row 0 of the map image is the largest world y; map_origin is its bottom-left corner.
+    scene_->SetImagePlane(kMapLayer, StitchedMapForScene(gray),
+                          {mapping.map_origin.x(), mapping.map_origin.y(), -kMapBelowFloorM},
+                          {width_m, 0, 0}, {0, height_m, 0}, 0.9);
+    if (mapping.trajectory && mapping.trajectory->size() >= 2) {
+      std::vector<SceneView::Segment> path;
+      const std::vector<Pose2d>& poses = *mapping.trajectory;
+      for (size_t i = 1; i < poses.size(); ++i) {
+        path.push_back({{poses[i - 1].x, poses[i - 1].y, kPathAboveFloorM},
+                        {poses[i].x, poses[i].y, kPathAboveFloorM}});
+      }
+      scene_->SetLines(kPathLayer, path, QColor(255, 150, 0), 2.0);
+    }
+  }
+  // Every frame: the map frame seen from the camera that took this frame.
+  const Eigen::Isometry3d camera_from_world = mapping.world_from_camera.inverse();
+  scene_->SetLayerPose(kMapLayer, camera_from_world);
+  scene_->SetLayerPose(kPathLayer, camera_from_world);
+}
+
 std::vector<std::string> MappingPresenter::SceneLayers() {
-  return {kWallLayers[0], kWallLayers[1], kWallLayers[2], kFloorLayer};
+  return {kWallLayers[0], kWallLayers[1], kWallLayers[2], kFloorLayer, kMapLayer, kPathLayer};
 }
 
 void MappingPresenter::RecalibrateFloor() {

@@ -41,11 +41,15 @@ class MappingPresenter : public PipelinePresenter {
   // The views, for tests.
   const ImageView* occupancy_view() const { return occupancy_view_; }
   const ImageView* map_view() const { return map_view_; }
-  // Names of the 3D layers it draws (walls by Manhattan class, the floor grid).
+  // Names of the 3D layers it draws (walls by Manhattan class, the floor grid, the stitched map
+  // as a textured plane on the floor and the path over it).
   static std::vector<std::string> SceneLayers();
 
  private:
   MappingPresenter(std::shared_ptr<MappingRequests> requests, QObject* parent);
+  // The stitched map and path in the 3D view when the frame carries a new map; every frame, their
+  // place seen from the frame's camera.
+  void ShowStitchedMap(const MappingFrameResult& mapping);
 
   QDockWidget* occupancy_dock_ = nullptr;
   QDockWidget* map_dock_ = nullptr;

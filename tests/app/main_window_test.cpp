@@ -11,6 +11,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -302,13 +303,47 @@ TEST(MappingPresenter, DrawsOccupancyAndMapWhilePlayingAndRedrawsOnAThresholdCha
   EXPECT_FALSE(mapping->occupancy_view()->image().isNull());
   // Both views say what their colours mean: cells, scan rays, wall classes, the floor.
   EXPECT_EQ(mapping->occupancy_view()->keys().size(), 8u);
-  ASSERT_EQ(window.scene_view()->keys().size(), 4u);
+  ASSERT_EQ(window.scene_view()->keys().size(), 7u);
   EXPECT_EQ(window.scene_view()->keys()[3].label, "floor");
+  EXPECT_EQ(window.scene_view()->keys()[5].label, "map: occupied");
   EXPECT_FALSE(mapping->map_view()->image().isNull());
-  // The 3D view shows the floor grid and the walls found beside the cloud.
+  // The stitched map's own key: free, unknown, occupied, the path.
+  EXPECT_EQ(mapping->map_view()->keys().size(), 4u);
+  // The 3D view shows the floor grid, the walls found beside the cloud, and the stitched map on
+  // the floor with the path over it.
   for (const std::string& layer : MappingPresenter::SceneLayers()) {
     EXPECT_TRUE(window.scene_view()->HasLayer(layer)) << layer;
   }
+  // The map plane renders: seen alone (the depth cloud's floor points lie over it), its free
+  // cells' green and occupied cells' red show, and hiding the layer takes them away.
+  const std::string map_layer = MappingPresenter::SceneLayers()[4];
+  ASSERT_EQ(map_layer, "mapping/stitched_map");
+  SceneView* scene = window.scene_view();
+  for (const std::string& layer : scene->LayerNames()) scene->SetLayerVisible(layer, false);
+  scene->SetLayerVisible(map_layer, true);
+  const auto count = [](const QImage& image, QColor want) {
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y) {
+      for (int x = 0; x < image.width(); ++x) {
+        const QColor c = image.pixelColor(x, y);
+        n += std::abs(c.red() - want.red()) + std::abs(c.green() - want.green()) +
+                 std::abs(c.blue() - want.blue()) <
+             30;
+      }
+    }
+    return n;
+  };
+  const QColor free_green(60, 160, 60), occupied_red(220, 40, 40);
+  scene->ResetView();
+  const QImage with_map = scene->grabFramebuffer();
+  const QByteArray shots = qgetenv("SIGHTLINE_TEST_SCREENSHOT_DIR");
+  if (!shots.isEmpty()) with_map.save(QString::fromUtf8(shots) + "/mapping_scene_map.png");
+  EXPECT_GT(count(with_map, free_green), 300);
+  EXPECT_GT(count(with_map, occupied_red), 20);
+  scene->SetLayerVisible(map_layer, false);
+  const QImage without_map = scene->grabFramebuffer();
+  EXPECT_EQ(count(without_map, free_green) + count(without_map, occupied_red), 0);
+  for (const std::string& layer : scene->LayerNames()) scene->SetLayerVisible(layer, true);
 
   // A threshold change while paused re-runs the current frame at once.
   const int before = shown.count();

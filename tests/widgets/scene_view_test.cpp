@@ -14,6 +14,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <opencv2/core.hpp>
 
 #include "core/common/frame.h"
 #include "core/common/trajectory.h"
@@ -166,6 +167,33 @@ TEST_F(SceneViewTest, TrajectoryPosesAndFrustaRender) {
   SaveScreenshot(image, "scene_view_trajectory.png");
   EXPECT_GT(CountPixels(image, [](QColor c) { return !IsBackground(c); }), 500);
   EXPECT_EQ(view_->LayerNames(), (std::vector<std::string>{"axes", "cameras", "path"}));
+}
+
+// An image on a plane keeps its orientation (its top rows at the `up` end) and updates in place.
+TEST_F(SceneViewTest, ImagePlaneShowsItsImageUprightAndUpdatesInPlace) {
+  // Top half red, bottom half blue (BGR), on a 2 m x 2 m plane facing the default camera
+  // (optical frame: y down, so the image's up is -y).
+  cv::Mat image(40, 60, CV_8UC3, cv::Scalar(255, 0, 0));
+  image.rowRange(0, 20).setTo(cv::Scalar(0, 0, 255));
+  view_->SetImagePlane("map", image, {-1, 1, 3}, {2, 0, 0}, {0, -2, 0});
+  view_->ResetView();
+  QImage shot = view_->grabFramebuffer();
+  SaveScreenshot(shot, "scene_view_image_plane.png");
+  const auto red = [](QColor c) { return c.red() > 200 && c.green() < 50 && c.blue() < 50; };
+  const auto blue = [](QColor c) { return c.blue() > 200 && c.red() < 50 && c.green() < 50; };
+  const int w = shot.width(), h = shot.height();
+  const QImage top = shot.copy(0, 0, w, h / 2), bottom = shot.copy(0, h / 2, w, h - h / 2);
+  EXPECT_GT(CountPixels(top, red), w * h / 10) << "the image's top rows belong at the top";
+  EXPECT_GT(CountPixels(bottom, blue), w * h / 10);
+  EXPECT_LT(CountPixels(top, blue), w * h / 100);
+  EXPECT_LT(CountPixels(bottom, red), w * h / 100);
+
+  // A new image (grey, larger) replaces the texels of the same layer.
+  view_->SetImagePlane("map", cv::Mat(80, 120, CV_8UC1, cv::Scalar(0)), {-1, 1, 3}, {2, 0, 0},
+                       {0, -2, 0});
+  shot = view_->grabFramebuffer();
+  EXPECT_EQ(CountPixels(shot, red) + CountPixels(shot, blue), 0);
+  EXPECT_EQ(view_->LayerNames(), std::vector<std::string>{"map"});
 }
 
 TEST_F(SceneViewTest, UpdatesCoalesceIntoOneRender) {
