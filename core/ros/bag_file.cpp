@@ -1,5 +1,8 @@
 #include "core/ros/bag_file.h"
 
+#include <bzlib.h>
+#include <roslz4/lz4s.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -13,10 +16,12 @@ namespace {
 
 constexpr char kMagic[] = "#ROSBAG V2.0\n";
 constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
+constexpr uint8_t kOpMessageData = 0x02;
 constexpr uint8_t kOpBagHeader = 0x03;
 constexpr uint8_t kOpIndexData = 0x04;
 constexpr uint8_t kOpChunk = 0x05;
 constexpr uint8_t kOpChunkInfo = 0x06;
+constexpr uint8_t kOpConnection = 0x07;
 
 uint32_t ReadU32(const char* bytes) {
   uint32_t value = 0;
@@ -53,6 +58,93 @@ Status Truncated(const std::string& path, int64_t at, int64_t needed, int64_t si
   return ParseError(path + " is truncated: the record at byte " + std::to_string(at) + " needs " +
                     std::to_string(needed) + " bytes but the file ends after " +
                     std::to_string(size) + " (copied or recorded only in part?)");
+}
+
+// The op code of a record's fields (0 when there is none).
+uint8_t OpOf(const std::map<std::string, std::string>& fields) {
+  const auto op = fields.find("op");
+  return op == fields.end() || op->second.empty() ? 0 : static_cast<uint8_t>(op->second[0]);
+}
+
+// A connection record's data is itself a header (topic, type, md5sum, message_definition), which
+// rosbag parses as it parses record headers.
+bool ConnectionHeaderFits(const char* data, size_t size) {
+  std::map<std::string, std::string> fields;
+  return size <= kMaxBagRecordHeaderBytes && HeaderFields(std::string(data, size), &fields);
+}
+
+// The records inside one chunk's uncompressed bytes must tile them exactly, each header's fields
+// must fit it, and a connection record's data must be a header too: rosbag reads a record at an
+// index's offset in the chunk with no bound but the lengths it finds there. The offsets where a
+// message data record starts go to `message_starts`. `at` names the chunk.
+Status CheckChunkRecords(const std::string& bytes, const std::string& at,
+                         std::set<int64_t>* message_starts) {
+  const auto damaged = [&](size_t pos, const std::string& what) {
+    return ParseError(at + " holds, at its byte " + std::to_string(pos) + ", " + what +
+                      " (damaged bag?)");
+  };
+  size_t pos = 0;
+  while (pos < bytes.size()) {
+    if (bytes.size() - pos < 4) return damaged(pos, "a record cut short");
+    const uint32_t header_len = ReadU32(bytes.data() + pos);
+    if (header_len > kMaxBagRecordHeaderBytes || bytes.size() - pos - 4 < header_len + 4ull) {
+      return damaged(pos, "a record header of " + std::to_string(header_len) +
+                              " bytes that does not fit in the chunk");
+    }
+    std::map<std::string, std::string> fields;
+    if (!HeaderFields(bytes.substr(pos + 4, header_len), &fields)) {
+      return damaged(pos, "a record header whose fields do not fit in its " +
+                              std::to_string(header_len) + " bytes");
+    }
+    const size_t data_at = pos + 8 + header_len;
+    const uint32_t data_len = ReadU32(bytes.data() + data_at - 4);
+    if (bytes.size() - data_at < data_len) {
+      return damaged(pos, "a record of " + std::to_string(data_len) +
+                              " data bytes that run past the chunk's end");
+    }
+    const uint8_t op = OpOf(fields);
+    if (op == kOpConnection && !ConnectionHeaderFits(bytes.data() + data_at, data_len)) {
+      return damaged(pos, "a connection header whose fields do not fit in its " +
+                              std::to_string(data_len) + " bytes");
+    }
+    if (op == kOpMessageData) message_starts->insert(static_cast<int64_t>(pos));
+    pos = data_at + data_len;
+  }
+  return Status::Ok();
+}
+
+// A chunk's records as rosbag will see them: the stored bytes, or their bz2 or lz4 expansion,
+// which must give exactly the chunk's declared size.
+StatusOr<std::string> ChunkContent(const std::string& stored, const std::string& compression,
+                                   int64_t size, const std::string& at) {
+  if (compression == "none") {
+    if (static_cast<int64_t>(stored.size()) != size) {
+      return ParseError(at + " is an uncompressed chunk of " + std::to_string(stored.size()) +
+                        " bytes that says it holds " + std::to_string(size) + " (damaged bag?)");
+    }
+    return stored;
+  }
+  std::string content(static_cast<size_t>(size), '\0');
+  unsigned int produced = static_cast<unsigned int>(size);
+  int result = -1;
+  if (compression == "bz2") {
+    result = BZ2_bzBuffToBuffDecompress(content.data(), &produced, const_cast<char*>(stored.data()),
+                                        static_cast<unsigned int>(stored.size()), 0, 0);
+    result = result == BZ_OK ? 0 : -1;
+  } else if (compression == "lz4") {
+    result = roslz4_buffToBuffDecompress(const_cast<char*>(stored.data()),
+                                         static_cast<unsigned int>(stored.size()), content.data(),
+                                         &produced);
+    result = result == ROSLZ4_OK ? 0 : -1;
+  } else {
+    return ParseError(at + " is compressed with '" + compression +
+                      "'; the reader knows none, bz2 and lz4");
+  }
+  if (result != 0 || static_cast<int64_t>(produced) != size) {
+    return ParseError(at + " does not expand (" + compression + ") to the " + std::to_string(size) +
+                      " bytes it says it holds (damaged bag?)");
+  }
+  return content;
 }
 
 // Checks the format line; ParseError naming what the file starts with otherwise.
@@ -101,7 +193,8 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
   // without checking them: each must be where a record starts, or it reads a length from the
   // middle of one (a 1 GB allocation, a read past the chunk).
   std::set<int64_t> record_starts, chunk_starts, chunk_positions_named;
-  int64_t chunk_size = -1;  // Uncompressed size of the last chunk (its "size" field).
+  int64_t chunk_size = -1;           // Uncompressed size of the last chunk (its "size" field).
+  std::set<int64_t> chunk_messages;  // Offsets of the last chunk's message data records.
   int64_t pos = static_cast<int64_t>(kMagicBytes);
   while (pos < layout.file_bytes) {
     char len_bytes[4];
@@ -128,8 +221,7 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
                         " has a header whose fields do not fit in its " +
                         std::to_string(header_len) + " bytes (damaged bag?)");
     }
-    const auto op = fields.find("op");
-    const uint8_t code = op == fields.end() || op->second.empty() ? 0 : op->second[0];
+    const uint8_t code = OpOf(fields);
     const auto field_u32 = [&](const char* name) -> int64_t {
       const auto f = fields.find(name);
       return f != fields.end() && f->second.size() == 4 ? ReadU32(f->second.data()) : -1;
@@ -149,6 +241,25 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
       chunk_starts.insert(pos);
       chunk_size = field_u32("size");
       if (chunk_size < 0) return ParseError(at + " is a chunk without its size (damaged bag?)");
+      if (chunk_size > static_cast<int64_t>(kMaxBagChunkBytes)) {
+        return ParseError(at + " is a chunk of " + std::to_string(chunk_size) +
+                          " bytes, more than the reader's limit of " +
+                          std::to_string(kMaxBagChunkBytes) + " (damaged bag?)");
+      }
+      std::string stored(static_cast<size_t>(data_len), '\0');
+      in.read(stored.data(), data_len);
+      const StatusOr<std::string> content = ChunkContent(
+          stored, compression == fields.end() ? "none" : compression->second, chunk_size, at);
+      if (!content.ok()) return content.status();
+      chunk_messages.clear();
+      SIGHTLINE_RETURN_IF_ERROR(CheckChunkRecords(*content, at, &chunk_messages));
+    } else if (code == kOpConnection) {
+      std::string data(static_cast<size_t>(data_len), '\0');
+      in.read(data.data(), data_len);
+      if (!ConnectionHeaderFits(data.data(), data.size())) {
+        return ParseError(at + " is a connection whose header does not fit in its " +
+                          std::to_string(data_len) + " bytes (damaged bag?)");
+      }
     } else if (code == kOpIndexData) {
       // Version 1: `count` entries of (time: 8 bytes, offset in the chunk: 4 bytes).
       const int64_t count = field_u32("count");
@@ -160,10 +271,10 @@ StatusOr<BagFileLayout> ReadBagFileLayout(const std::string& path) {
       in.read(entries.data(), data_len);
       for (int64_t i = 0; i < count; ++i) {
         const int64_t offset = ReadU32(entries.data() + 12 * i + 8);
-        if (chunk_size < 0 || offset + 8 > chunk_size) {
+        if (chunk_size < 0 || chunk_messages.count(offset) == 0) {
           return ParseError(at + " indexes a message at offset " + std::to_string(offset) +
                             " of a chunk of " + std::to_string(std::max<int64_t>(chunk_size, 0)) +
-                            " bytes (damaged bag?)");
+                            " bytes, where no message record starts (damaged bag?)");
         }
       }
     } else if (code == kOpChunkInfo) {

@@ -15,6 +15,9 @@ namespace sightline {
 // The largest record header the reader accepts: a header is a few named fields; anything far
 // larger is a damaged length (rosbag would allocate it before reading).
 inline constexpr uint32_t kMaxBagRecordHeaderBytes = 1u << 20;
+// The largest chunk (uncompressed) the reader accepts: rosbag allocates a chunk's declared size
+// before it decompresses it. Recorders write chunks of about 768 KiB plus one message.
+inline constexpr uint32_t kMaxBagChunkBytes = 256u << 20;
 
 struct BagFileLayout {
   int64_t file_bytes = 0;
@@ -29,7 +32,9 @@ struct BagFileLayout {
 // True for paths ending in ".bag", any case.
 bool IsBagPath(const std::string& path);
 
-// Reads the record headers of the bag at `path` (skipping every record's data). Errors name the
+// Reads the record headers of the bag at `path`, and the records inside every chunk (expanding
+// bz2 and lz4 chunks): everything rosbag will follow by a length or an offset must lie where
+// the bag says, before rosbag reads it. Errors name the
 // path: NotFound "x.bag: no such file"; ParseError "x.bag is not a ROS bag (it does not start
 // with '#ROSBAG V2.0')", "x.bag is a version 1.2 bag; only format 2.0 is read", "x.bag is
 // truncated: the record at byte N needs M bytes but the file ends after K", "x.bag has no index

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 
@@ -471,6 +472,101 @@ TEST(BagSource, AHeaderFieldLongerThanItsHeaderIsRefused) {
   const Status opened = BagSource(path).Open();
   ASSERT_FALSE(opened.ok());
   EXPECT_TRUE(Contains(opened.message(), "has a header whose fields do not fit in its"))
+      << opened.ToString();
+}
+
+// Rewrites a bag's bytes with `edit` and returns the path.
+std::string EditedBag(const std::string& name, const std::function<void(std::string*)>& edit) {
+  const std::string path = TempDir(name) + "/edited.bag";
+  EXPECT_TRUE(testing::WriteDefectiveBag(path, "zero_info").ok());
+  std::string bytes = testing::ReadAll(path);
+  edit(&bytes);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return path;
+}
+
+void AddToU32At(std::string* bytes, size_t at, uint32_t add) {
+  uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<uint8_t>((*bytes)[at + i]);
+  value += add;
+  for (int i = 0; i < 4; ++i) (*bytes)[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
+}
+
+// A connection's header (its record's data: topic, type, md5sum, definition) with a field that
+// runs past it, in the index after the chunks and inside a chunk: rosbag's header parser read
+// past its buffer (a heap overflow found by fuzz_rosbag). Both are refused, naming the record.
+TEST(BagSource, AConnectionHeaderFieldLongerThanItsRecordIsRefused) {
+  const std::string index = EditedBag("connection_index", [](std::string* bytes) {
+    const size_t field = bytes->rfind("md5sum=");  // The last connection record: the index's.
+    ASSERT_NE(field, std::string::npos);
+    AddToU32At(bytes, field - 4, 5000);
+  });
+  Status opened = BagSource(index).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), index + ": the record at byte")) << opened.ToString();
+  EXPECT_TRUE(Contains(opened.message(), "is a connection whose header does not fit"))
+      << opened.ToString();
+
+  const std::string chunk = EditedBag("connection_chunk", [](std::string* bytes) {
+    const size_t field = bytes->find("md5sum=");  // The first: inside the (uncompressed) chunk.
+    ASSERT_NE(field, std::string::npos);
+    AddToU32At(bytes, field - 4, 5000);
+  });
+  opened = BagSource(chunk).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), "a connection header whose fields do not fit"))
+      << opened.ToString();
+}
+
+// The records inside a chunk must tile it, and an index must point at a message in it.
+TEST(BagSource, AChunksRecordsAndItsIndexMustAgree) {
+  const std::string header = EditedBag("chunk_record_header", [](std::string* bytes) {
+    const size_t field = bytes->find("op=\x02");  // The first message data record's header.
+    ASSERT_NE(field, std::string::npos);
+    AddToU32At(bytes, field - 4, 3);  // Its op field now swallows the next field's length.
+  });
+  Status opened = BagSource(header).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), "a record header whose fields do not fit"))
+      << opened.ToString();
+
+  // Every index entry's offset moved by one byte: into the middle of its message record.
+  const std::string offset = EditedBag("index_offset", [](std::string* bytes) {
+    size_t pos = 13;
+    int edited = 0;
+    while (pos + 8 <= bytes->size()) {
+      uint32_t header_len = 0, data_len = 0;
+      for (int i = 3; i >= 0; --i) header_len = (header_len << 8) | uint8_t((*bytes)[pos + i]);
+      const size_t data_at = pos + 8 + header_len;
+      for (int i = 3; i >= 0; --i) data_len = (data_len << 8) | uint8_t((*bytes)[data_at - 4 + i]);
+      if (bytes->substr(pos + 4, header_len).find("op=\x04") != std::string::npos) {
+        for (size_t e = data_at; e + 12 <= data_at + data_len; e += 12, ++edited) {
+          AddToU32At(bytes, e + 8, 1);
+        }
+      }
+      pos = data_at + data_len;
+    }
+    ASSERT_GT(edited, 0);
+  });
+  opened = BagSource(offset).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(), "where no message record starts")) << opened.ToString();
+}
+
+// A chunk that says it expands to kMaxBagChunkBytes + 1 is refused by that size before anything
+// is allocated for it.
+TEST(BagSource, AChunkBeyondTheCapIsRefusedByItsSize) {
+  const std::string path = EditedBag("chunk_cap", [](std::string* bytes) {
+    const size_t field = bytes->find("size=");
+    ASSERT_NE(field, std::string::npos);
+    const uint32_t cap_plus_one = kMaxBagChunkBytes + 1;
+    for (int i = 0; i < 4; ++i) (*bytes)[field + 5 + i] = char((cap_plus_one >> (8 * i)) & 0xff);
+  });
+  const Status opened = BagSource(path).Open();
+  ASSERT_FALSE(opened.ok());
+  EXPECT_TRUE(Contains(opened.message(),
+                       "is a chunk of 268435457 bytes, more than the reader's "
+                       "limit of 268435456"))
       << opened.ToString();
 }
 
