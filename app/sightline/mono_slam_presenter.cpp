@@ -187,7 +187,7 @@ void MonoSlamPresenter::Show(const PlaybackResult& result) {
   const auto* view = dynamic_cast<const MonoSlamFrameResult*>(result.pipeline.get());
   if (view == nullptr || image_view_ == nullptr || !view->slam) return;
   const std::shared_ptr<const MonoSlamResult> slam = view->slam;
-  if (slam->stamp.sequence_id <= last_id_) trajectory_ = Trajectory();
+  if (result.pipeline_restarted || slam->stamp.sequence_id <= last_id_) trajectory_ = Trajectory();
   last_id_ = slam->stamp.sequence_id;
 
   image_view_->SetImage(slam->image);

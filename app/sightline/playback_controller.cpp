@@ -237,7 +237,8 @@ void PlaybackController::SetPipelineOptions(const OptionSet& options) {
 }
 
 std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(const Frame& frame,
-                                                                            bool replay) {
+                                                                            bool replay,
+                                                                            bool* restarted) {
   std::lock_guard<std::mutex> lock(processor_mutex_);
   if (!processor_) return nullptr;
   if (processor_options_dirty_) {
@@ -267,6 +268,9 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
       const bool broken =
           processor_source_.info.live ? id <= last_processed_id_ : id != last_processed_id_ + 1;
       if (broken) processor_->Reset();
+      if (restarted != nullptr) *restarted = broken;
+    } else if (restarted != nullptr) {
+      *restarted = true;
     }
     last_processed_id_ = id;
     const double start = HostTimeS();
@@ -395,7 +399,7 @@ void PlaybackController::WorkerLoop() {
     }
     if (tap) tap(*shared);
     auto result = std::const_pointer_cast<PlaybackResult>(Prepare(*shared, options));
-    result->pipeline = RunProcessor(*shared, /*replay=*/false);
+    result->pipeline = RunProcessor(*shared, /*replay=*/false, &result->pipeline_restarted);
     result->prepare_ms = (HostTimeS() - start) * 1000;
     Publish(std::move(result));
   }

@@ -119,7 +119,10 @@ class PlaybackController : public QObject {
   void AbortProcessor(const std::string& reason);
   void SetPlayState(bool playing, bool ended);
   // Runs the processor on a frame (any thread; serialised by processor_mutex_).
-  std::shared_ptr<const PipelineFrameResult> RunProcessor(const Frame& frame, bool replay);
+  // `restarted` (optional): set when the pipeline started over at this frame (its first frame,
+  // or a seek or loop that broke the recording's sequence).
+  std::shared_ptr<const PipelineFrameResult> RunProcessor(const Frame& frame, bool replay,
+                                                          bool* restarted = nullptr);
   // A result that says why a frame gave none.
   static std::shared_ptr<const PipelineFrameResult> FailedResult(const Frame& frame, Status status);
   // Keeps a background task's future so the destructor can wait for it.

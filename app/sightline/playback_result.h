@@ -20,6 +20,9 @@ struct PlaybackResult {
   std::shared_ptr<const PointCloud> cloud;  // In the sensor frame; may be null.
   double prepare_ms = 0;                    // Worker time to read and prepare the frame.
   std::shared_ptr<const PipelineFrameResult> pipeline;  // The active pipeline's result, if any.
+  // The pipeline started over at this frame (its first, or after a seek or loop either way):
+  // views that accumulate (trajectories, plots) start over too.
+  bool pipeline_restarted = false;
 };
 
 }  // namespace sightline

@@ -152,8 +152,8 @@ void StereoVoPresenter::Show(const PlaybackResult& result) {
   const auto* view = dynamic_cast<const StereoVoResult*>(result.pipeline.get());
   if (view == nullptr || tracks_view_ == nullptr || !view->odometry) return;
   const std::shared_ptr<const StereoOdometryResult>& odometry = view->odometry;
-  // A jump back (seek, loop) starts the drawn trajectories over, as the pipeline does.
-  if (odometry->stamp.sequence_id <= last_id_) {
+  // A seek either way or a loop starts the drawn trajectories over, as the pipeline does.
+  if (result.pipeline_restarted || odometry->stamp.sequence_id <= last_id_) {
     estimate_ = Trajectory();
     ground_truth_drawn_ = Trajectory();
     for (TimeSeriesPlot* plot : {counts_plot_, timing_plot_, residual_plot_}) plot->Clear();

@@ -225,6 +225,15 @@ TEST(PlaybackHabits, SeekingAnOdometryRunAsksBeforeItResetsTheMap) {
   ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == 5; }, 20000));
   EXPECT_EQ(shown.last().at(0).value<int64_t>(), 30);
   EXPECT_EQ(window.pipeline_frames(), 1) << "the pipeline starts over at the frame sought";
+  // ... and so does what the views drew: the trajectory holds the new run's poses alone, from
+  // the origin, and the plots hold its frames alone.
+  ASSERT_EQ(vo->estimate().size(), 1u) << "the forward seek kept the previous run's trajectory";
+  EXPECT_LT(vo->estimate().poses()[0].world_from_sensor.translation().norm(), 1e-9);
+  window.playback()->Step();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return shown.count() == 6; }, 20000));
+  EXPECT_EQ(vo->estimate().size(), 2u);
+  EXPECT_LT(vo->estimate().poses()[1].world_from_sensor.translation().norm(), 3.0)
+      << "one KITTI frame moves the car about a metre";
 }
 
 TEST(PlaybackHabits, OpeningAnotherDatasetClearsThePreviousRunsViewsAndPlots) {
