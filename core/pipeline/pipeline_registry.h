@@ -82,7 +82,7 @@ class PipelineRegistry {
   std::vector<PipelineInfo> pipelines_;
 };
 
-// Every pipeline Sightline has.
+// Every pipeline Sightline has (builtin_pipelines.cpp, in sightline_pipeline).
 PipelineRegistry BuiltinPipelines();
 
 // A request to run one pipeline headless.
