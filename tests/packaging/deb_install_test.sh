@@ -117,7 +117,7 @@ grep -q '^format: TUM RGB-D' info.out && grep -Eq '^frames: [1-9][0-9]* RGB-D fr
 if [ -d "$data_dir/kitti_clip1" ]; then
   "$cli" run stereo-vo "$data_dir/kitti_clip1" --out "$work/vo" --quiet >vo.out 2>&1 ||
     { cat vo.out; fail "installed sightline-cli run stereo-vo failed"; }
-  [ "$(wc -l <"$work/vo/trajectory.txt" 2>/dev/null)" = 51 ] ||
+  [ "$(grep -vc "^#" "$work/vo/trajectory.txt" 2>/dev/null)" = 51 ] ||
     fail "installed sightline-cli run stereo-vo wrote no 51-pose trajectory.txt"
 fi
 

@@ -8,7 +8,6 @@
 
 #include "core/io/pcd_source.h"
 #include "core/pipeline/pipeline_registry.h"
-#include "core/pipeline/stereo_vo_pipeline.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
@@ -19,8 +18,9 @@ std::unique_ptr<Source> MakePcdSource(const std::string&) { return nullptr; }
 namespace {
 
 PipelineRegistry StereoOnly() {
-  PipelineRegistry registry;
-  EXPECT_TRUE(registry.Register(StereoVoPipelineInfo()).ok());
+  PipelineRegistry registry = StereoPipelines();
+  EXPECT_EQ(registry.pipelines().size(), 1u);
+  EXPECT_NE(registry.Find("stereo-vo"), nullptr);
   return registry;
 }
 
