@@ -15,9 +15,11 @@ if(TARGET sightline-node)
   list(APPEND _programs sightline-node)
 endif()
 install(TARGETS ${_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# sightline-cli hands every command but --help, --version and `info` of a dataset to the full
-# program, which it finds at ../libexec/sightline/ from its own folder (app/cli/CMakeLists.txt).
-install(TARGETS sightline-cli-full RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/sightline)
+# sightline-cli hands `run stereo-vo` on a recorded stereo dataset to sightline-cli-stereo and
+# every other command but --help, --version and `info` of a dataset to the full program; it
+# finds both at ../libexec/sightline/ from its own folder (app/cli/CMakeLists.txt).
+install(TARGETS sightline-cli-full sightline-cli-stereo
+        RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/sightline)
 
 # Man pages from each program's --help, so they never drift from it (sightline-cli-full prints
 # the same as sightline-cli and has no page of its own).

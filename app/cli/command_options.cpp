@@ -2,6 +2,7 @@
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "app/cli/program_pipelines.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline::cli {
@@ -18,7 +19,7 @@ int OptionsCommand(const std::vector<std::string>& args) {
     std::fputs(kHelp, stdout);
     return 0;
   }
-  const PipelineRegistry registry = BuiltinPipelines();
+  const PipelineRegistry registry = ProgramPipelines();
   if (parsed->positionals().empty()) {
     for (const PipelineInfo& p : registry.pipelines()) {
       std::printf("%-14s %s\n", p.name.c_str(), p.summary.c_str());

@@ -6,8 +6,10 @@
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "app/cli/program_pipelines.h"
 #include "app/cli/progress.h"
 #include "app/cli/run_outputs.h"
+#include "app/cli/stereo_program.h"
 #include "core/pipeline/pipeline_registry.h"
 
 namespace sightline::cli {
@@ -33,7 +35,7 @@ void InstallInterruptHandlers() {
 }  // namespace
 
 int RunCommand(const std::vector<std::string>& args) {
-  const PipelineRegistry registry = BuiltinPipelines();
+  const PipelineRegistry registry = ProgramPipelines();
   std::string help =
       "usage: sightline-cli run PIPELINE PATH --out DIR [--profile F] [--set key=value]...\n"
       "\n"
@@ -58,9 +60,7 @@ int RunCommand(const std::vector<std::string>& args) {
   for (const PipelineInfo& p : registry.pipelines())
     help += "  " + p.name + "  " + p.summary + "\n";
 
-  StatusOr<CliArgs> parsed = CliArgs::Parse(
-      args, {"--out", "--profile", "--set", "--subsample", "--format", "--tap", "--serve"},
-      {"--help", "--quiet"});
+  StatusOr<CliArgs> parsed = CliArgs::Parse(args, RunValueFlags(), RunSwitches());
   if (!parsed.ok()) return Fail("run: " + parsed.status().message());
   if (parsed->Has("--help")) {
     std::fputs(help.c_str(), stdout);

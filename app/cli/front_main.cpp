@@ -1,7 +1,9 @@
 // sightline-cli: the front binary. It answers --help, --version and `info` of recorded datasets
 // (TUM RGB-D, EuRoC, KITTI, image folders, recordings of them) with only core/io's readers
-// linked, so these start in a few milliseconds; every other command line is handed with execv
-// to sightline-cli-full (main.cpp), which links every module (PCL, ROS, the sensor drivers).
+// linked, so these start in a few milliseconds. `run stereo-vo` on a recorded stereo dataset is
+// handed with execv to sightline-cli-stereo (stereo_main.cpp: the stereo pipeline and the
+// readers), every other command line to sightline-cli-full (main.cpp), which links every module
+// (PCL, ROS, the sensor drivers).
 #include <cctype>
 #include <cstring>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/full_program.h"
 #include "app/cli/info_output.h"
+#include "app/cli/stereo_program.h"
 #include "app/cli/top_level.h"
 #include "core/io/dataset.h"
 #include "core/io/pcd_source.h"
@@ -95,6 +98,10 @@ int main(int argc, char** argv) {
       if (!source.ok()) return Fail(source.status().ToString());
       return PrintSourceInfo(**source, parsed->Has("--json"));
     }
+  }
+  if (std::strcmp(argv[1], "run") == 0 &&
+      RunsInStereoProgram(std::vector<std::string>(argv + 2, argv + argc))) {
+    return HandOverToStereoProgram(argv);
   }
   return HandOverToFullProgram(argv);
 }

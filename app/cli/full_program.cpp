@@ -24,11 +24,22 @@ std::string OwnFolder() {
 
 }  // namespace
 
-std::vector<std::string> FullProgramCandidates() {
+std::vector<std::string> ProgramCandidates(const std::string& name) {
   const std::string folder = OwnFolder();
   if (folder.empty()) return {};
-  return {folder + "/" + kFullProgram,
-          folder + "/" + SIGHTLINE_FULL_CLI_FROM_BIN + "/" + kFullProgram};
+  return {folder + "/" + name, folder + "/" + SIGHTLINE_FULL_CLI_FROM_BIN + "/" + name};
+}
+
+std::vector<std::string> FullProgramCandidates() { return ProgramCandidates(kFullProgram); }
+
+bool HandOverToProgram(const std::string& name, char** argv) {
+  for (const std::string& path : ProgramCandidates(name)) {
+    if (access(path.c_str(), X_OK) == 0) {
+      execv(path.c_str(), argv);
+      return false;
+    }
+  }
+  return false;
 }
 
 int HandOverToFullProgram(char** argv) {

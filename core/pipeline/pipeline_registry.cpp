@@ -3,14 +3,8 @@
 #include <filesystem>
 #include <optional>
 
-#include "core/pipeline/button_pipeline.h"
-#include "core/pipeline/inspect_pipeline.h"
-#include "core/pipeline/mapping_pipeline.h"
-#include "core/pipeline/mobility_pipeline.h"
-#include "core/pipeline/mono_slam_pipeline.h"
-#include "core/pipeline/sim_panel_source.h"
-#include "core/pipeline/stereo_vo_pipeline.h"
-#include "core/sensors/driver_registry.h"
+#include "core/io/dataset.h"
+#include "core/pipeline/run_sources.h"
 
 namespace sightline {
 
@@ -36,8 +30,8 @@ std::string TimingStage(const std::string& key) {
 // Opens `path` as the first kind `info` accepts that the recording has.
 StatusOr<std::unique_ptr<Source>> OpenForPipeline(const PipelineInfo& info, const std::string& path,
                                                   const OptionSet& options) {
-  if (IsLiveUri(path)) return OpenRunSource(path, options);
-  if (info.accepts.empty()) return OpenSource(path, options);
+  if (IsRunSourceLive(path)) return OpenLiveRunSource(path, options);
+  if (info.accepts.empty()) return OpenAnyRunSource(path, options);
   std::optional<Status> first_error;
   for (SourceKind kind : info.accepts) {
     StatusOr<std::unique_ptr<Source>> opened = OpenDataset(path, kind);
@@ -232,18 +226,6 @@ const PipelineInfo* PipelineRegistry::Find(const std::string& name) const {
   return nullptr;
 }
 
-PipelineRegistry BuiltinPipelines() {
-  PipelineRegistry registry;
-  Status s = registry.Register(InspectPipelineInfo());
-  s = registry.Register(MappingPipelineInfo());
-  s = registry.Register(StereoVoPipelineInfo());
-  s = registry.Register(MobilityPipelineInfo());
-  s = registry.Register(MonoSlamPipelineInfo());
-  s = registry.Register(ButtonPipelineInfo());
-  (void)s;  // Built-in names are distinct; a clash is a programming error caught by tests.
-  return registry;
-}
-
 StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunRequest& request) {
   const PipelineInfo* pipeline = registry.Find(request.pipeline);
   if (pipeline == nullptr) {
@@ -257,7 +239,7 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
   if (pipeline->declare_options)
     SIGHTLINE_RETURN_IF_ERROR(pipeline->declare_options(&context.options));
   // A file a driver reads (a .bag) takes that driver's options too (io.rosbag.*).
-  SIGHTLINE_RETURN_IF_ERROR(DeclareSourceOptions(request.dataset_path, &context.options));
+  SIGHTLINE_RETURN_IF_ERROR(DeclareRunSourceOptions(request.dataset_path, &context.options));
   if (!request.profile_path.empty()) {
     SIGHTLINE_RETURN_IF_ERROR(context.options.LoadYaml(request.profile_path));
   }
@@ -265,7 +247,8 @@ StatusOr<RunReport> RunPipeline(const PipelineRegistry& registry, const RunReque
     SIGHTLINE_RETURN_IF_ERROR(context.options.ApplyOverride(assignment));
   }
   SIGHTLINE_RETURN_IF_ERROR(CreateOutputFolder(request.out_dir));
-  SIGHTLINE_RETURN_IF_ERROR(PrepareSimRun(request.dataset_path, request.out_dir, &context.options));
+  SIGHTLINE_RETURN_IF_ERROR(
+      PrepareRunSource(request.dataset_path, request.out_dir, &context.options));
   TimingStats timing;
   context.timing = &timing;
   context.progress = request.progress;

@@ -82,8 +82,12 @@ class PipelineRegistry {
   std::vector<PipelineInfo> pipelines_;
 };
 
-// Every pipeline Sightline has.
+// Every pipeline Sightline has (builtin_pipelines.cpp, in sightline_pipeline).
 PipelineRegistry BuiltinPipelines();
+
+// The stereo-vo pipeline alone, as BuiltinPipelines() registers it (stereo_pipelines.cpp, in
+// both libraries): what sightline_pipeline_stereo's programs run.
+PipelineRegistry StereoPipelines();
 
 // A request to run one pipeline headless.
 struct RunRequest {

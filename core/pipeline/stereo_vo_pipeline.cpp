@@ -3,7 +3,7 @@
 #include <variant>
 
 #include "core/io/stereo_calibration_file.h"
-#include "core/sensors/driver_registry.h"
+#include "core/sensors/sensor_options.h"
 
 namespace sightline {
 

@@ -9,6 +9,7 @@
 #include "core/sensors/aravis_options.h"
 #include "core/sensors/openni2_options.h"
 #include "core/sensors/replay_source.h"
+#include "core/sensors/sensor_options.h"
 #include "core/sensors/v4l2_source.h"
 
 #ifdef SIGHTLINE_HAVE_OPENNI2
@@ -82,7 +83,7 @@ DriverInfo OpenNi2Driver() {
   d.name = "openni2";
   d.description = "OpenNI2 RGB-D cameras (Kinect, Xtion, Carmine) and .oni recordings";
   d.scheme = kOpenNi2Scheme;
-  d.declare_options = [](OptionSet* set) { return set->Declare(OpenNi2Options::Describe()); };
+  d.declare_options = DeclareOpenNi2Options;
 #ifdef SIGHTLINE_HAVE_OPENNI2
   d.available = [] { return OpenNi2Source::Available(); };
   d.enumerate = [](const OptionSet&) { return OpenNi2Source::Enumerate(); };
@@ -105,10 +106,7 @@ DriverInfo AravisDriver() {
       "GigE Vision / USB3 Vision cameras through Aravis: one camera, or a stereo pair as "
       "aravis://LEFT_ID,RIGHT_ID";
   d.scheme = kAravisScheme;
-  d.declare_options = [](OptionSet* set) {
-    SIGHTLINE_RETURN_IF_ERROR(set->Declare(AravisOptions::Describe()));
-    return set->Declare(AravisStereoOptions::Describe());
-  };
+  d.declare_options = DeclareAravisOptions;
 #ifdef SIGHTLINE_HAVE_ARAVIS
   d.available = [] { return AravisSource::Available(); };
   d.enumerate = [](const OptionSet& set) {
@@ -162,7 +160,7 @@ DriverInfo V4l2Driver() {
   d.name = "v4l2";
   d.description = "USB webcams through OpenCV's V4L2 backend";
   d.scheme = kV4l2Scheme;
-  d.declare_options = [](OptionSet* set) { return set->Declare(V4l2Options::Describe()); };
+  d.declare_options = DeclareV4l2Options;
   d.available = [] { return V4l2Source::Available(); };
   d.enumerate = [](const OptionSet&) { return V4l2Source::Enumerate(); };
   d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
@@ -181,7 +179,7 @@ DriverInfo ReplayDriver() {
   d.name = "replay";
   d.description = "A recording played as a live camera (replay://PATH?fps=30&loop=1)";
   d.scheme = kReplayScheme;
-  d.declare_options = [](OptionSet* set) { return set->Declare(ReplayOptions::Describe()); };
+  d.declare_options = DeclareReplayOptions;
   d.available = [] { return ReplaySource::Available(); };
   d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
   d.create = [](const std::string& uri, const OptionSet& set) -> StatusOr<std::unique_ptr<Source>> {
@@ -200,7 +198,7 @@ DriverInfo RosBagDriver() {
   d.description =
       "ROS 1 bag files (.bag): images, RGB-D, stereo and point clouds, with tf ground truth";
   d.scheme = kRosBagScheme;
-  d.declare_options = [](OptionSet* set) { return set->Declare(RosBagOptions::Describe()); };
+  d.declare_options = DeclareRosBagOptions;
 #ifdef SIGHTLINE_HAVE_ROS
   d.available = [] { return BagSource::Available(); };
   d.enumerate = [](const OptionSet&) { return std::vector<DeviceInfo>(); };
@@ -238,12 +236,6 @@ const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::
     if (d.name == name) return &d;
   }
   return nullptr;
-}
-
-Status DeclareSensorOptions(OptionSet* options) {
-  for (const DriverInfo& d : BuiltinDrivers())
-    SIGHTLINE_RETURN_IF_ERROR(d.declare_options(options));
-  return Status::Ok();
 }
 
 bool IsSensorUri(const std::string& uri) {

@@ -11,6 +11,7 @@
 #include "core/io/source.h"
 #include "core/options/option_set.h"
 #include "core/sensors/device_info.h"
+#include "core/sensors/sensor_options.h"  // DeclareSensorOptions
 
 namespace sightline {
 
@@ -41,9 +42,6 @@ std::vector<DriverInfo> BuiltinDrivers();
 
 // The driver called `name` in `drivers`, or nullptr.
 const DriverInfo* FindDriver(const std::vector<DriverInfo>& drivers, const std::string& name);
-
-// Declares the options of every built-in driver.
-Status DeclareSensorOptions(OptionSet* options);
 
 // True for "openni2://...", "aravis://...", "v4l2://...", "replay://...", "rosbag://..." and
 // paths ending in .oni or .bag (files a driver reads rather than dataset folders).

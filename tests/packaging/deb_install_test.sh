@@ -53,6 +53,7 @@ grep -q '^ Installed-Size: ' info.txt || fail "no Installed-Size in the control 
 # Its files: the programs, man pages, desktop entry, icons, metainfo, translations; no tests.
 dpkg-deb -c "$deb" | awk '{print $NF}' | sed 's|^\./|/|' >files.txt
 for file in /usr/bin/sightline /usr/bin/sightline-cli /usr/libexec/sightline/sightline-cli-full \
+            /usr/libexec/sightline/sightline-cli-stereo \
             /usr/share/man/man1/sightline.1.gz \
             /usr/share/man/man1/sightline-cli.1.gz /usr/share/applications/sightline.desktop \
             /usr/share/icons/hicolor/scalable/apps/sightline.svg \
@@ -111,6 +112,14 @@ fi
 cat info.out
 grep -q '^format: TUM RGB-D' info.out && grep -Eq '^frames: [1-9][0-9]* RGB-D frames' info.out &&
   grep -q '^ground truth: yes' info.out || fail "sightline-cli info did not describe tum_fr1_desk"
+
+# `run stereo-vo` on a recorded stereo dataset runs in /usr/libexec/sightline/sightline-cli-stereo.
+if [ -d "$data_dir/kitti_clip1" ]; then
+  "$cli" run stereo-vo "$data_dir/kitti_clip1" --out "$work/vo" --quiet >vo.out 2>&1 ||
+    { cat vo.out; fail "installed sightline-cli run stereo-vo failed"; }
+  [ "$(grep -vc "^#" "$work/vo/trajectory.txt" 2>/dev/null)" = 51 ] ||
+    fail "installed sightline-cli run stereo-vo wrote no 51-pose trajectory.txt"
+fi
 
 run_gui() {
   if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x800x24" "$@"; fi

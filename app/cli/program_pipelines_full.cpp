@@ -1,0 +1,7 @@
+#include "app/cli/program_pipelines.h"
+
+namespace sightline::cli {
+
+PipelineRegistry ProgramPipelines() { return BuiltinPipelines(); }
+
+}  // namespace sightline::cli
