@@ -35,6 +35,11 @@ struct SourceInfo {
   std::optional<PinholeCamera> camera;  // Mono sources and the left/colour camera.
   std::optional<StereoRig> stereo;      // Stereo sources.
   std::optional<RgbdCalibration> rgbd;  // RGB-D sources.
+  // A live source that reads the arm's pose (base_from_end_effector) at each frame's stamp, so
+  // that arm_poses() grows frame by frame: where from, as a user reads it ("tf base_link ->
+  // end_effector (ros:// arm_base_frame, end_effector_frame)"); "" for none. Recordings carry
+  // their arm poses whole (arm_poses()) and leave it empty.
+  std::string arm_pose_channel;
 };
 
 // A source of frames, in the OpenCV driver manner: Grab() acquires the next frame cheaply,

@@ -307,37 +307,34 @@ int64_t FrameId(const FrameStamp& stamp, int64_t index) {
   return stamp.sequence_id >= 0 ? stamp.sequence_id : index;
 }
 
-// The arm's pose stream, not arm_poses.txt: explicitly, or by auto while serving when the
-// recording has no arm_poses.txt (and mono.run.arm_poses names none, and the source carries no
-// arm poses of its own) but a hand-eye
-// (mono.run.hand_eye, or hand_eye.yaml beside the images).
-bool UsesArmStream(const MonoSlamRunOptions& run, bool serve, const std::string& path,
-                   bool source_arm) {
-  if (run.metric_source != "auto") return run.metric_source == "arm_stream";
-  // auto also needs the camera's mount on the arm: without one it tracks only.
-  const bool hand_eye = !run.hand_eye.empty() || !FindBeside(path, "hand_eye.yaml").empty();
-  return serve && hand_eye && run.arm_poses.empty() && !source_arm &&
-         FindBeside(path, "arm_poses.txt").empty();
-}
-
 }  // namespace
 
 MonoSlamRunOptions ButtonPipeline::MonoRun() const {
   MonoSlamRunOptions run = config_.mono_run;
-  run.metric_source = stream_ || run.metric_source == "arm_stream" ? "none" : "arm";
+  run.metric_source =
+      feed_ != ArmPoseInput::kRecorded || run.metric_source == "arm_stream" ? "none" : "arm";
   return run;
 }
 
-Status ButtonPipeline::ChooseMetricSource(const std::string& path, bool source_arm) {
-  const bool stream = UsesArmStream(config_.mono_run, config_.serve, path, source_arm);
-  if (stream != stream_) {
-    stream_ = stream;
+Status ButtonPipeline::ChooseMetricSource(const PipelineSource& source) {
+  const std::string& path = source.info.path;
+  const ArmPoseInput feed =
+      ChooseArmPoseInput(source.info, config_.mono_run, config_.serve, source.arm_poses != nullptr);
+  if (feed != feed_) {
+    feed_ = feed;
     SIGHTLINE_RETURN_IF_ERROR(mono_.Configure(config_.slam, MonoRun()));
   }
   end_effector_from_camera_ = Eigen::Isometry3d::Identity();
-  if (!stream_ || config_.mono_run.hand_eye == "none") return Status::Ok();
+  if (feed_ == ArmPoseInput::kRecorded || config_.mono_run.hand_eye == "none") return Status::Ok();
   std::string hand_eye = config_.mono_run.hand_eye;
   if (hand_eye.empty()) hand_eye = FindBeside(path, "hand_eye.yaml");
+  if (hand_eye.empty() && feed_ == ArmPoseInput::kLiveSource) {
+    return NotFound(path + ": the arm's poses come from the live source (" +
+                    source.info.arm_pose_channel +
+                    ") but the camera's mount on the end effector is not given: set "
+                    "mono.run.hand_eye to a hand_eye.yaml (\"none\" = the camera is the end "
+                    "effector)");
+  }
   if (hand_eye.empty()) {
     return NotFound(path +
                     ": no hand_eye.yaml beside the images for the arm's pose stream "
@@ -350,9 +347,9 @@ Status ButtonPipeline::ChooseMetricSource(const std::string& path, bool source_a
 }
 
 Status ButtonPipeline::Open(const PipelineSource& source) {
-  const bool source_arm = source.arm_poses != nullptr;
-  SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source.info.path, source_arm));
-  scale_mode_ = ChooseButtonScaleMode(source.info.path, config_.mono_run, stream_, source_arm);
+  SIGHTLINE_RETURN_IF_ERROR(ChooseMetricSource(source));
+  scale_mode_ =
+      ChooseButtonScaleMode(source.info, config_.mono_run, feed_, source.arm_poses != nullptr);
   if (!scale_mode_.metric) mono_.SetMetricSource("none");
   SIGHTLINE_RETURN_IF_ERROR(mono_.Open(source));
   StatusOr<std::optional<ButtonTruth>> truth = LoadTruth(source.info.path, config_.mono_run);
@@ -460,16 +457,19 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Process(const Fr
   if (!mono.ok()) return mono.status();
   auto out = std::make_shared<ButtonFrameResult>();
   static_cast<MonoSlamFrameResult&>(*out) = **mono;
-  if (stream_) out->metric_source = "arm_stream";                     // The SLAM itself has none.
+  // The SLAM itself has none.
+  if (feed_ != ArmPoseInput::kRecorded)
+    out->metric_source = feed_ == ArmPoseInput::kStream ? "arm_stream" : "arm";
   if (!out->slam) return std::shared_ptr<const PipelineResult>(out);  // Status says why.
   const double slam_ms = (HostTimeS() - start) * 1000.0;
   if (host_delay_s_ > 0) std::this_thread::sleep_for(std::chrono::duration<double>(host_delay_s_));
   const MonoSlamResult& r = *out->slam;
-  if (stream_) FeedArmPose(r.stamp.sensor_time_s);
-  // Tracking only without a metric source, and while serving for an arm that has not yet
-  // streamed a pose (auto): nothing can be sent before the arm's poses give the scale.
-  const bool metric = scale_mode_.metric && (!stream_ || arm_stream_.with_pose > 0 ||
-                                             config_.mono_run.metric_source == "arm_stream");
+  if (feed_ != ArmPoseInput::kRecorded) FeedArmPose(r.stamp.sensor_time_s, out.get());
+  // Tracking only without a metric source, and under auto for an arm that has not yet given a
+  // pose (streamed or on the live source): nothing can be sent before its poses give the scale.
+  const bool metric =
+      scale_mode_.metric && (feed_ == ArmPoseInput::kRecorded || arm_stream_.with_pose > 0 ||
+                             config_.mono_run.metric_source != "auto");
   const SlamView view =
       metric ? metric_->Update(r, mono_.camera()) : map_units_.Update(r, mono_.camera());
   out->tracking_only = !metric;
@@ -502,17 +502,52 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Reprocess(const 
   return std::shared_ptr<const PipelineResult>(again);
 }
 
-void ButtonPipeline::FeedArmPose(double stamp_s) {
+void ButtonPipeline::FeedArmPose(double stamp_s, ButtonFrameResult* out) {
   bool waited = false;
-  const std::optional<Eigen::Isometry3d> base_from_end_effector =
-      output_ ? output_->poses().At(stamp_s, &waited) : std::nullopt;
+  std::optional<Eigen::Isometry3d> base_from_end_effector;
+  if (feed_ == ArmPoseInput::kLiveSource) {
+    base_from_end_effector = LiveArmPose(stamp_s);
+  } else if (output_) {
+    base_from_end_effector = output_->poses().At(stamp_s, &waited);
+  }
   arm_stream_.waited += waited ? 1 : 0;
   if (!base_from_end_effector) {
     ++arm_stream_.without_pose;  // No base frame and no scale pair for this frame.
+    if (feed_ == ArmPoseInput::kLiveSource) NoteMissingLivePose(stamp_s, out);
     return;
   }
+  if (arm_stream_.last_missing) {
+    std::fprintf(stderr, "sightline: button: the arm's pose is back at %.6f s (%s)\n", stamp_s,
+                 source_->info.arm_pose_channel.c_str());
+  }
+  arm_stream_.last_missing = false;
   ++arm_stream_.with_pose;
   metric_->AddMeasuredPose(stamp_s, *base_from_end_effector * end_effector_from_camera_);
+}
+
+std::optional<Eigen::Isometry3d> ButtonPipeline::LiveArmPose(double stamp_s) const {
+  const Trajectory* poses =
+      source_ && source_->live_arm_poses ? source_->live_arm_poses() : nullptr;
+  if (poses == nullptr || poses->empty()) return std::nullopt;
+  // The source adds a pose for a frame at that frame's own stamp, or none: a neighbour's pose
+  // is never taken for it (tf's own gap limit, the source's tf_gap, already applied).
+  const std::optional<size_t> i = poses->Nearest(stamp_s, kStampResolutionS);
+  if (!i) return std::nullopt;
+  return poses->poses()[*i].world_from_sensor;
+}
+
+void ButtonPipeline::NoteMissingLivePose(double stamp_s, ButtonFrameResult* out) {
+  char stamp[64];
+  std::snprintf(stamp, sizeof(stamp), "%.6f", stamp_s);
+  out->arm_pose_missing = "no arm pose at " + std::string(stamp) +
+                          " s: " + source_->info.arm_pose_channel +
+                          " has no transform at that stamp; the frame has no base frame and no "
+                          "scale pair";
+  if (arm_stream_.first_missing.empty()) arm_stream_.first_missing = out->arm_pose_missing;
+  // Said when the poses stop coming, not for every frame after (the counts are in the figures).
+  if (!arm_stream_.last_missing)
+    std::fprintf(stderr, "sightline: button: %s\n", out->arm_pose_missing.c_str());
+  arm_stream_.last_missing = true;
 }
 
 void ButtonPipeline::AddLinkState(ButtonFrameResult* out) const {
@@ -621,10 +656,14 @@ double ButtonPipeline::SendTimeS(const FrameStamp& stamp) const {
 
 void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t index,
                                ButtonFrameResult* out) {
-  // Tracking only: the map frame in map units stands for the base frame; nothing goes out.
-  const std::optional<Eigen::Isometry3d> base =
-      !out->tracking_only ? metric_->BaseFromCamera(r.stamp.sensor_time_s)
-                          : std::optional<Eigen::Isometry3d>(r.map_from_camera);
+  // Tracking only: the map frame in map units stands for the base frame; nothing goes out. A
+  // frame the live source gave no arm pose has none: a neighbour's within the association
+  // tolerance does not stand in.
+  std::optional<Eigen::Isometry3d> base(r.map_from_camera);
+  if (!out->tracking_only) {
+    base = out->arm_pose_missing.empty() ? metric_->BaseFromCamera(r.stamp.sensor_time_s)
+                                         : std::nullopt;
+  }
   if (!base) view.tracking = false;  // No arm pose: no base frame for this image.
   out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
                                  base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
@@ -760,12 +799,21 @@ std::string NoTargetSent(const ButtonRunLog& log, int64_t frames) {
 
 bool ButtonPipeline::TrackedOnly() const {
   if (!scale_mode_.metric) return true;
-  // auto, serving without arm_poses.txt, and no arm ever streamed its pose: a plain recording.
-  return stream_ && arm_stream_.with_pose == 0 && config_.mono_run.metric_source == "auto";
+  // auto, serving without arm_poses.txt, and no arm ever streamed its pose (a plain recording),
+  // or a live source whose channel never gave one.
+  return feed_ != ArmPoseInput::kRecorded && arm_stream_.with_pose == 0 &&
+         config_.mono_run.metric_source == "auto";
 }
 
 std::string ButtonPipeline::NoArmPoses() const {
-  if (!stream_ || !log_.sent.empty() || arm_stream_.with_pose > 0) return "";
+  if (feed_ == ArmPoseInput::kRecorded || !log_.sent.empty() || arm_stream_.with_pose > 0)
+    return "";
+  if (feed_ == ArmPoseInput::kLiveSource) {
+    return "no target sent: none of the " + std::to_string(frames_) +
+           " frame(s) had an arm pose from the live source (" + source_->info.arm_pose_channel +
+           "; the first: " + arm_stream_.first_missing +
+           "): without the arm's poses there is neither a metric scale nor the arm's base frame";
+  }
   const int64_t received = output_ ? output_->Stats().poses_received : 0;
   return "no target sent: none of the " + std::to_string(frames_) +
          " frame(s) had an arm pose (mono.run.metric_source = arm_stream, " +
@@ -775,9 +823,11 @@ std::string ButtonPipeline::NoArmPoses() const {
 }
 
 void ButtonPipeline::AddArmStreamFigures(RunResult* result, std::vector<std::string>* notes) const {
-  result->counts.emplace_back("metric_from_arm_stream", stream_ ? 1 : 0);
-  if (!stream_) return;
-  if (output_) {
+  const bool stream = feed_ == ArmPoseInput::kStream, live = feed_ == ArmPoseInput::kLiveSource;
+  result->counts.emplace_back("metric_from_arm_stream", stream ? 1 : 0);
+  result->counts.emplace_back("metric_from_live_arm_poses", live ? 1 : 0);
+  if (!stream && !live) return;
+  if (stream && output_) {
     const ArmServerStats stats = output_->Stats();
     result->counts.emplace_back("arm_poses_received", static_cast<double>(stats.poses_received));
     result->counts.emplace_back("arm_poses_over_rate", static_cast<double>(stats.poses_over_rate));
@@ -788,11 +838,19 @@ void ButtonPipeline::AddArmStreamFigures(RunResult* result, std::vector<std::str
   result->counts.emplace_back("frames_with_arm_pose", static_cast<double>(arm_stream_.with_pose));
   result->counts.emplace_back("frames_without_arm_pose",
                               static_cast<double>(arm_stream_.without_pose));
-  result->counts.emplace_back("frames_waited_for_arm_pose",
-                              static_cast<double>(arm_stream_.waited));
-  notes->push_back("metric scale source: the arm's pose stream (" +
-                   std::to_string(arm_stream_.with_pose) + " of " + std::to_string(frames_) +
+  if (stream) {
+    result->counts.emplace_back("frames_waited_for_arm_pose",
+                                static_cast<double>(arm_stream_.waited));
+  }
+  notes->push_back("metric scale source: " +
+                   (stream ? std::string("the arm's pose stream")
+                           : "the live source's arm poses, " + source_->info.arm_pose_channel) +
+                   " (" + std::to_string(arm_stream_.with_pose) + " of " + std::to_string(frames_) +
                    " frame(s) with an arm pose)");
+  if (live && !arm_stream_.first_missing.empty()) {
+    notes->push_back(std::to_string(arm_stream_.without_pose) +
+                     " frame(s) without an arm pose; the first: " + arm_stream_.first_missing);
+  }
 }
 
 StatusOr<RunResult> ButtonPipeline::Finish(const std::string& out_dir) {

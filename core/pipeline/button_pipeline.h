@@ -1,7 +1,8 @@
 // The `button` pipeline: the operator's button picker, the same object in the CLI and the GUI.
 // Monocular SLAM (the mono-slam pipeline), the metric scale from the arm's poses (recorded in
-// arm_poses.txt, or streamed live by the arm client to the arm-target server: metric_source
-// arm_stream, chosen by auto when serving without arm_poses.txt), the
+// arm_poses.txt or a bag's tf, read by a live source from tf at each frame's stamp, or
+// streamed live by the arm client to the arm-target server: metric_source arm_stream, chosen
+// by auto when serving without arm_poses.txt), the
 // operator's tap and answer (ButtonCommands: the GUI's operator panel, or --tap X,Y[@FRAME]
 // confirmed at once), tracking, 3D location and the safety gate per frame, in data time (the
 // frames' sensor timestamps); targets optionally published through the arm-target server
@@ -171,18 +172,28 @@ class ButtonPipeline : public Pipeline {
     double stamp_s = 0;
     cv::Mat image;
   };
-  // How many frames of the run got a pose from the arm's stream.
+  // How many frames of the run got a pose from the arm's stream or the live source.
   struct ArmStreamCounts {
     int64_t with_pose = 0, without_pose = 0, waited = 0;
+    std::string first_missing;  // Live source: why the first frame without a pose had none.
+    bool last_missing = false;  // Live source: the last frame had no pose.
   };
   static StatusOr<Config> Parse(const OptionSet& options);
-  // The SLAM's run options: no metric source of its own when the arm streams its poses.
+  // The SLAM's run options: no metric source of its own when the arm's poses come frame by frame.
   MonoSlamRunOptions MonoRun() const;
-  // Chooses the recorded poses or the stream for `path` (reconfiguring the SLAM when that
-  // changed) and reads the hand-eye transform the stream needs.
-  Status ChooseMetricSource(const std::string& path, bool source_arm);
-  // The arm's streamed pose at this frame's stamp, times end_effector_from_camera, into metric_.
-  void FeedArmPose(double stamp_s);
+  // Chooses the recorded poses, the live source's or the stream for `source` (reconfiguring the
+  // SLAM when that changed) and reads the hand-eye transform a frame-by-frame feed needs.
+  Status ChooseMetricSource(const PipelineSource& source);
+  // The arm's pose at this frame's stamp (streamed, or the live source's), times
+  // end_effector_from_camera, into metric_. A frame without one: `out`->arm_pose_missing says
+  // why (live source).
+  void FeedArmPose(double stamp_s, ButtonFrameResult* out);
+  // The live source's arm pose at exactly this frame's stamp (it looks each frame's up before
+  // handing the frame on), or nullopt: never another frame's.
+  std::optional<Eigen::Isometry3d> LiveArmPose(double stamp_s) const;
+  // A frame without the live source's arm pose: `out` says why (the channel's frames, the
+  // stamp); stderr says it when the poses stop coming.
+  void NoteMissingLivePose(double stamp_s, ButtonFrameResult* out);
   // Why nothing was sent, when the arm's stream gave no pose; "" otherwise.
   std::string NoArmPoses() const;
   // The run had no metric scale: tracking only (no metric source, or auto while serving and no
@@ -233,8 +244,11 @@ class ButtonPipeline : public Pipeline {
   MapUnitsView map_units_;      // The SLAM's view without a metric scale.
   std::unique_ptr<ButtonOverlayWriter> overlay_;
   std::shared_ptr<ButtonTargetOutput> output_;
-  bool stream_ = false;  // The scale and base frame come from the arm's pose stream.
-  Eigen::Isometry3d end_effector_from_camera_ = Eigen::Isometry3d::Identity();  // For stream_.
+  // Where the scale and base frame come from: recorded poses (through the SLAM's metric
+  // poses), or frame by frame from the arm's pose stream or the live source.
+  ArmPoseInput feed_ = ArmPoseInput::kRecorded;
+  // For a frame-by-frame feed.
+  Eigen::Isometry3d end_effector_from_camera_ = Eigen::Isometry3d::Identity();
   ArmStreamCounts arm_stream_;
   std::optional<ButtonTruth> truth_;
   const TrueButton* true_button_ = nullptr;  // The tapped one, in truth_.

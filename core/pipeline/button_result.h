@@ -39,6 +39,10 @@ struct ButtonFrameResult : MonoSlamFrameResult {
   // button is tracked and located in map units only and no target is ever sent.
   bool tracking_only = false;
   double scale_ml = 0;  // Map units per metre of the metric view, 0 = unknown.
+  // The live source gave no arm pose at this frame's stamp (tf lacks the end effector there):
+  // why, naming the frames and the stamp; the frame has no base frame and no scale pair. "" when
+  // it had one, or the arm's poses do not come from the live source.
+  std::string arm_pose_missing;
   // The target went to the arm-target server and the server took it (not stopped, not closed).
   bool target_published = false;
   bool held = false;     // Targets were held (the picture is paused): nothing was published.

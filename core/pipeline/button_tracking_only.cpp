@@ -23,9 +23,14 @@ void ButtonPipeline::AddTrackingOnlyFigures(RunResult* result,
       {std::string(kNoMetricScaleNote) +
            " (tracking only: the button is tracked and located in map units, "
            "button.csv's metre columns are empty, no target is ever sent)",
-       scale_mode_.metric ? "tracking only: mono.run.metric_source = auto while serving, no "
-                            "arm_poses.txt beside the images and no arm streamed its pose"
-                          : scale_mode_.how});
+       !scale_mode_.metric ? scale_mode_.how
+       : feed_ == ArmPoseInput::kLiveSource
+           ? "tracking only: mono.run.metric_source = auto and the live source gave no arm pose "
+             "in " +
+                 std::to_string(frames_) + " frame(s) (the first: " + arm_stream_.first_missing +
+                 ")"
+           : "tracking only: mono.run.metric_source = auto while serving, no "
+             "arm_poses.txt beside the images and no arm streamed its pose"});
   if (log_.tap_index < 0) {
     result->nothing_achieved =
         "nothing tracked: no button was tapped in " + std::to_string(frames_) + " frame(s)";

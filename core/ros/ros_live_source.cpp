@@ -154,6 +154,10 @@ Status RosLiveSource::Impl::FillInfo() {
   info.live = true;
   info.frame_count = -1;
   info.format = "ROS topics";
+  // Each frame's arm pose is looked up on tf at its stamp (Retrieve): a channel for pipelines
+  // that take the arm's poses frame by frame.
+  info.arm_pose_channel = "tf " + options.arm_base_frame + " -> " + options.end_effector_frame +
+                          " (ros:// arm_base_frame, end_effector_frame)";
   StatusOr<PinholeCamera> a = CameraFromRosInfo(*info_a);
   if (!a.ok())
     return a.status().WithContext(kind == SourceKind::kStereo ? options.left_info : options.info);

@@ -38,13 +38,18 @@ diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& resu
   const bool sent = result.picker.target.has_value();
   out.level =
       sent ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
-  out.message = sent ? "target sent" : verdict.message;
+  // A frame without the arm's pose (tf lacks the end effector at its stamp) says that first.
+  out.message = sent                               ? "target sent"
+                : !result.arm_pose_missing.empty() ? result.arm_pose_missing
+                                                   : verdict.message;
   out.values = {Pair("reason", GateReasonKey(verdict.reason)),
                 Pair("state", PickerStateKey(result.picker.state)),
                 Pair("stopped", result.stopped ? "true" : "false"),
                 Pair("held", result.held ? "true" : "false"),
                 Pair("tracking_only", result.tracking_only ? "true" : "false"),
                 Pair("target_published", result.target_published ? "true" : "false")};
+  if (!result.arm_pose_missing.empty())
+    out.values.push_back(Pair("arm_pose_missing", result.arm_pose_missing));
   return out;
 }
 

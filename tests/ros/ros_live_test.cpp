@@ -298,6 +298,9 @@ TEST_F(RosLive, OdometryAndArmPosesFromTfAtTheFrameStamps) {
       ParseRosLiveUri("ros://?image=/tfcam/image&arm_base_frame=base_link&queue=20&tf_wait=10")
           .value());
   ASSERT_TRUE(source.Open().ok());
+  // The button pipeline takes the arm's poses frame by frame from this channel.
+  EXPECT_EQ(source.info().arm_pose_channel,
+            "tf base_link -> end_effector (ros:// arm_base_frame, end_effector_frame)");
   const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while ((image.getNumSubscribers() == 0 || tf.getNumSubscribers() == 0 ||
           tf_static.getNumSubscribers() == 0) &&

@@ -12,11 +12,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <thread>
+#include <variant>
 
 #include "core/button/arm_client.h"
 #include "core/common/pose_board.h"
 #include "core/common/trajectory.h"
+#include "core/io/dataset.h"
 #include "core/pipeline/arm_pose_feed.h"
 #include "core/pipeline/button_pipeline.h"
 #include "core/pipeline/pipeline_registry.h"
@@ -260,6 +263,138 @@ TEST_F(ArmPoseStreamPipeline, WithoutTheStreamTheRunSaysWhyNoTargetWasSent) {
   EXPECT_EQ(Figures(*no_file)["targets_sent"], 0);
   ASSERT_FALSE(no_file->result.notes.empty());
   EXPECT_NE(no_file->result.notes[0].find("no metric scale"), std::string::npos);
+}
+
+// A live camera whose frames carry the arm's pose at their stamps, as the ros:// source does
+// from tf: the recording's frames, marked live with an arm-pose channel, and before each frame
+// is handed on its arm pose from `arm` added to arm_poses() (none for the frames in `gaps`).
+class LiveArmSource : public Source {
+ public:
+  LiveArmSource(std::unique_ptr<Source> frames, Trajectory arm, std::set<int64_t> gaps)
+      : frames_(std::move(frames)), arm_(std::move(arm)), gaps_(std::move(gaps)) {
+    info_ = frames_->info();
+    info_.live = true;
+    info_.frame_count = -1;
+    info_.arm_pose_channel = "tf arm_base -> tool (test)";
+  }
+  Status Open() override { return Status::Ok(); }
+  const SourceInfo& info() const override { return info_; }
+  Status Grab() override { return frames_->Grab(); }
+  StatusOr<Frame> Retrieve() override {
+    StatusOr<Frame> frame = frames_->Retrieve();
+    if (!frame.ok()) return frame;
+    // Played in data time: no host-clock age at send time (a real camera's frames have one).
+    std::visit([](auto& f) { f.stamp.host_time_s = 0; }, *frame);
+    const double t = StampOf(*frame).sensor_time_s;
+    const std::optional<size_t> i = arm_.Nearest(t, 1e-6);
+    if (i && gaps_.count(index_) == 0) seen_.Add(t, arm_.poses()[*i].world_from_sensor);
+    ++index_;
+    return frame;
+  }
+  int64_t Position() const override { return index_; }
+  const Trajectory* arm_poses() const override { return seen_.empty() ? nullptr : &seen_; }
+
+ private:
+  std::unique_ptr<Source> frames_;
+  Trajectory arm_, seen_;
+  std::set<int64_t> gaps_;
+  SourceInfo info_;
+  int64_t index_ = 0;
+};
+
+TEST(ArmPoseInput, ALiveSourcesArmChannelIsTakenWhenTheMountIsKnown) {
+  SourceInfo info;
+  info.path = "ros://?image=/cam/image";
+  info.live = true;
+  info.arm_pose_channel =
+      "tf base_link -> end_effector (ros:// arm_base_frame, end_effector_frame)";
+  MonoSlamRunOptions run;  // auto.
+  run.hand_eye = "none";
+  EXPECT_EQ(ChooseArmPoseInput(info, run, false, false), ArmPoseInput::kLiveSource);
+  EXPECT_TRUE(ChooseButtonScaleMode(info, run, ArmPoseInput::kLiveSource).metric);
+  // Serving does not take it away: the channel comes first.
+  EXPECT_EQ(ChooseArmPoseInput(info, run, true, false), ArmPoseInput::kLiveSource);
+  // Without the camera's mount auto tracks only, and says what to set.
+  run.hand_eye.clear();
+  EXPECT_EQ(ChooseArmPoseInput(info, run, false, false), ArmPoseInput::kRecorded);
+  const ButtonScaleMode no_mount = ChooseButtonScaleMode(info, run, ArmPoseInput::kRecorded);
+  EXPECT_FALSE(no_mount.metric);
+  EXPECT_NE(no_mount.how.find("mono.run.hand_eye"), std::string::npos) << no_mount.how;
+  EXPECT_NE(no_mount.how.find("end_effector"), std::string::npos) << no_mount.how;
+  // arm requires it (the pipeline then needs the hand-eye); arm_stream and none keep theirs.
+  run.metric_source = "arm";
+  EXPECT_EQ(ChooseArmPoseInput(info, run, false, false), ArmPoseInput::kLiveSource);
+  run.metric_source = "arm_stream";
+  EXPECT_EQ(ChooseArmPoseInput(info, run, true, false), ArmPoseInput::kStream);
+  run.metric_source = "none";
+  EXPECT_FALSE(
+      ChooseButtonScaleMode(info, run, ChooseArmPoseInput(info, run, false, false)).metric);
+  // A recording, or a live source without the channel, never takes it.
+  run.metric_source = "auto";
+  run.hand_eye = "none";
+  info.live = false;
+  EXPECT_EQ(ChooseArmPoseInput(info, run, false, false), ArmPoseInput::kRecorded);
+  info.live = true;
+  info.arm_pose_channel.clear();
+  EXPECT_EQ(ChooseArmPoseInput(info, run, false, false), ArmPoseInput::kRecorded);
+}
+
+// The button pipeline on a live source with the arm's poses at its frames' stamps: metric as on
+// the recording (arm_poses.txt), the same scale and target; frames whose pose the source lacks
+// are counted and named, and never take a neighbour's pose.
+TEST_F(ArmPoseStreamPipeline, ALiveSourcesArmPosesGiveTheRecordedRunsScaleAndTarget) {
+  StatusOr<RunReport> recorded =
+      Run(*recorded_, testing::TempDir("arm_live_out_file"), {TapOnTarget()});
+  ASSERT_TRUE(recorded.ok()) << recorded.status().ToString();
+  std::map<std::string, double> a = Figures(*recorded);
+  StatusOr<Trajectory> poses = ReadTumTrajectory(*recorded_ + "/arm_poses.txt");
+  ASSERT_TRUE(poses.ok()) << poses.status().ToString();
+  const auto run_live = [&](const std::string& out, std::set<int64_t> gaps) {
+    RunRequest request;
+    request.pipeline = "button";
+    request.dataset_path = *streamed_;  // No arm_poses.txt: the poses come from the source only.
+    request.out_dir = out;
+    request.overrides = {TapOnTarget()};
+    request.open_source = [&, gaps](const std::string& path) -> StatusOr<std::unique_ptr<Source>> {
+      StatusOr<std::unique_ptr<Source>> frames = OpenDataset(path, SourceKind::kMono);
+      if (!frames.ok()) return frames.status();
+      return std::unique_ptr<Source>(
+          std::make_unique<LiveArmSource>(std::move(*frames), *poses, gaps));
+    };
+    return RunPipeline(BuiltinPipelines(), request);
+  };
+  StatusOr<RunReport> live = run_live(testing::TempDir("arm_live_out"), {});
+  ASSERT_TRUE(live.ok()) << live.status().ToString();
+  std::map<std::string, double> b = Figures(*live);
+  std::printf("  live source: scale_ml %g, final_error_mm %g (file: %g, %g)\n", b["scale_ml"],
+              b["final_error_mm"], a["scale_ml"], a["final_error_mm"]);
+  EXPECT_EQ(b["counts.metric_from_live_arm_poses"], 1);
+  EXPECT_EQ(b["counts.metric_scale"], 1);
+  EXPECT_EQ(b["counts.frames_with_arm_pose"], double(live->result.frames));
+  EXPECT_EQ(b["counts.frames_without_arm_pose"], 0);
+  ASSERT_TRUE(b.count("scale_ml") && b.count("final_error_mm"));
+  EXPECT_NEAR(b["scale_ml"], a["scale_ml"], 0.01 * a["scale_ml"]);
+  EXPECT_NEAR(b["final_error_mm"], a["final_error_mm"], 1.0);
+  EXPECT_LT(b["final_error_mm"], 3.0);
+  EXPECT_GT(b["targets_sent"], 0);
+
+  // Frames 40..44 without a pose: counted, the first named with its stamp, the rest as before.
+  StatusOr<RunReport> gaps = run_live(testing::TempDir("arm_live_out_gaps"), {40, 41, 42, 43, 44});
+  ASSERT_TRUE(gaps.ok()) << gaps.status().ToString();
+  std::map<std::string, double> c = Figures(*gaps);
+  EXPECT_EQ(c["counts.frames_without_arm_pose"], 5);
+  EXPECT_EQ(c["counts.frames_with_arm_pose"], double(gaps->result.frames - 5));
+  char stamp[32];
+  std::snprintf(stamp, sizeof(stamp), "%.6f s", poses->poses()[40].time_s);
+  bool named = false;
+  for (const std::string& note : gaps->result.notes) {
+    named = named || (note.find("5 frame(s) without an arm pose") != std::string::npos &&
+                      note.find(stamp) != std::string::npos &&
+                      note.find("tf arm_base -> tool") != std::string::npos);
+  }
+  EXPECT_TRUE(named) << "no note names the first frame without a pose at " << stamp;
+  EXPECT_LT(c["final_error_mm"], 3.0);
+  EXPECT_GT(c["targets_sent"], 0);
 }
 
 }  // namespace
