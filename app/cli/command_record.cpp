@@ -7,6 +7,7 @@
 
 #include "app/cli/cli_args.h"
 #include "app/cli/commands.h"
+#include "app/cli/program_pipelines.h"
 #include "core/options/option_set.h"
 #include "core/record/record_session.h"
 #include "core/sensors/driver_registry.h"
@@ -139,7 +140,8 @@ int RecordCommand(const std::vector<std::string>& args) {
   if (!recorder_options.IsValid(&error)) return Fail("record: " + error);
 
   const std::string uri = parsed->positionals()[0];
-  StatusOr<std::unique_ptr<Source>> source = OpenSource(uri, *options);
+  const SourceOpener live = ProgramSourceOpener(uri, &g_stop);
+  StatusOr<std::unique_ptr<Source>> source = live ? live(uri) : OpenSource(uri, *options);
   if (!source.ok()) return Fail("record: " + source.status().ToString());
 
   std::signal(SIGINT, OnSignal);

@@ -101,6 +101,7 @@ int RunCommand(const std::vector<std::string>& args) {
   ProgressLine progress(request.pipeline);
   request.progress = [&progress](int64_t done, int64_t total) { progress.Update(done, total); };
   request.cancel = &g_interrupted;
+  request.open_source = ProgramSourceOpener(request.dataset_path, &g_interrupted);
   InstallInterruptHandlers();
 
   StatusOr<RunReport> report = RunPipeline(registry, request);

@@ -4,13 +4,18 @@
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <atomic>
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
 #include <thread>
 
+#include "core/io/dataset.h"
 #include "core/ros/ros_geometry.h"
 #include "core/ros/ros_image.h"
 #include "core/ros/ros_live_source.h"
 #include "tests/ros/raw_message.h"
+#include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
 
 namespace sightline {
@@ -345,6 +350,73 @@ TEST_F(RosLive, OdometryAndArmPosesFromTfAtTheFrameStamps) {
         << i;
   }
   EXPECT_EQ(source.Stats().tf_missing, 0);
+}
+
+}  // namespace
+}  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// sightline-cli is not a ROS node, yet `record` (and `run`) take ros:// sources: it joins the
+// master as a client. Five synced RGB-D frames published here are recorded and read back with
+// their pixels; without a master it says where it looked.
+TEST_F(RosLive, TheCliRecordsLiveTopicsAsAClient) {
+  ros::NodeHandle nh;
+  ros::Publisher image = nh.advertise<sensor_msgs::Image>("/cli/rgb/image", 20);
+  ros::Publisher depth = nh.advertise<sensor_msgs::Image>("/cli/depth/image", 20);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/cli/rgb/camera_info", 1, true);
+  PinholeCamera camera;
+  camera.width = 64;
+  camera.height = 48;
+  camera.fx = camera.fy = 50;
+  camera.cx = 32;
+  camera.cy = 24;
+  info.publish(RosInfoFromCamera(camera, 0, "camera"));
+  const std::string out = ::testing::TempDir() + "/cli_ros_record";
+  std::filesystem::remove_all(out);
+  std::atomic<bool> done{false};
+  testing::ProcessResult recorded;
+  std::thread cli([&] {
+    recorded = testing::RunProcess(
+        testing::CliPath() +
+        " record 'ros://?image=/cli/rgb/image&depth=/cli/depth/image&queue=50' --out " + out +
+        " --frames 5");
+    done = true;
+  });
+  // Publish frames at 10 Hz until the recorder has its five (it subscribes when it starts).
+  for (int k = 1; !done && k < 600; ++k) {
+    const double t = 200 + 0.1 * k;
+    image.publish(EncodeRosImage(Colour(k % 40), t, "camera").value());
+    depth.publish(EncodeRosImage(Depth(k % 40), t, "camera").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  cli.join();
+  ASSERT_EQ(recorded.exit_code, 0) << recorded.out;
+  StatusOr<std::unique_ptr<Source>> back = OpenDataset(out);
+  ASSERT_TRUE(back.ok()) << back.status().ToString() << "\n" << recorded.out;
+  EXPECT_EQ((*back)->info().kind, SourceKind::kRgbd);
+  int frames = 0;
+  while ((*back)->Grab().ok()) {
+    StatusOr<Frame> frame = (*back)->Retrieve();
+    ASSERT_TRUE(frame.ok()) << frame.status().ToString();
+    const auto& rgbd = std::get<RgbdFrame>(*frame);
+    // Colour(k) has blue k, green 2k, red 3k; depth k/10 + 1 m: the pair belongs together.
+    const cv::Vec3b bgr = rgbd.color.at<cv::Vec3b>(10, 10);
+    const int k = bgr[0];
+    EXPECT_EQ(bgr[1], 2 * k);
+    EXPECT_NEAR(rgbd.depth_m.at<float>(10, 10), 1 + 0.1 * k, 0.002);
+    ++frames;
+  }
+  EXPECT_EQ(frames, 5) << recorded.out;
+
+  // Without a master: the error names the master it asked.
+  const testing::ProcessResult no_master = testing::RunProcess(
+      "ROS_MASTER_URI=http://127.0.0.1:9 " + testing::CliPath() +
+      " record 'ros://?image=/cli/rgb/image' --out " + out + "_none --frames 1");
+  EXPECT_EQ(no_master.exit_code, 1) << no_master.out;
+  EXPECT_NE(no_master.out.find("no ROS master answers at http://127.0.0.1:9"), std::string::npos)
+      << no_master.out;
 }
 
 }  // namespace
