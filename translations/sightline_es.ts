@@ -78,7 +78,7 @@
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
         <source>Paused</source>
         <translation>En pausa</translation>
     </message>
@@ -94,7 +94,7 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
         <source>Waiting</source>
         <translation>Esperando</translation>
     </message>
@@ -143,7 +143,7 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Sin escala métrica (sin movimiento del brazo)</translation>
     </message>
@@ -1491,119 +1491,119 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="324"/>
+        <location filename="../widgets/operator_panel.cpp" line="333"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="329"/>
-        <location filename="../widgets/operator_panel.cpp" line="371"/>
+        <location filename="../widgets/operator_panel.cpp" line="338"/>
+        <location filename="../widgets/operator_panel.cpp" line="380"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="284"/>
+        <location filename="../widgets/operator_panel.cpp" line="292"/>
         <source>Locating</source>
         <translation>Localizando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="288"/>
+        <location filename="../widgets/operator_panel.cpp" line="296"/>
         <source>Lost - hold still</source>
         <translation>Perdido - quieto</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="278"/>
+        <location filename="../widgets/operator_panel.cpp" line="286"/>
         <source>No button here - tap again</source>
         <translation>Aquí no hay botón - toque otra vez</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="203"/>
+        <location filename="../widgets/operator_panel.cpp" line="211"/>
         <source>Robot: live</source>
         <translation>Robot: en directo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="206"/>
+        <location filename="../widgets/operator_panel.cpp" line="214"/>
         <source>Waiting for the robot&apos;s picture</source>
         <translation>Esperando la imagen del robot</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="209"/>
+        <location filename="../widgets/operator_panel.cpp" line="217"/>
         <source>Picture stale: no taps</source>
         <translation>Imagen antigua: sin toques</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="212"/>
+        <location filename="../widgets/operator_panel.cpp" line="220"/>
         <source>Disconnected: reconnecting</source>
         <translation>Desconectado: reconectando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="284"/>
         <source>Press this button?</source>
         <translation>¿Pulsar este botón?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="292"/>
+        <location filename="../widgets/operator_panel.cpp" line="300"/>
         <source>Holding: nothing sent</source>
         <translation>En espera: nada enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="294"/>
+        <location filename="../widgets/operator_panel.cpp" line="302"/>
         <source>Tap not taken</source>
         <translation>Toque no aceptado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="296"/>
+        <location filename="../widgets/operator_panel.cpp" line="304"/>
         <source>Tracking only</source>
         <translation>Solo seguimiento</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="330"/>
+        <location filename="../widgets/operator_panel.cpp" line="339"/>
         <source>STOP</source>
         <translation>PARAR</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="366"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave</source>
         <translation>Salir</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="366"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave the operator panel?</source>
         <translation>¿Salir del panel del operador?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="280"/>
+        <location filename="../widgets/operator_panel.cpp" line="288"/>
         <source>Searching</source>
         <translation>Buscando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="331"/>
+        <location filename="../widgets/operator_panel.cpp" line="340"/>
         <source>Start again</source>
         <translation>Empezar de nuevo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="290"/>
+        <location filename="../widgets/operator_panel.cpp" line="298"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="274"/>
+        <location filename="../widgets/operator_panel.cpp" line="282"/>
         <source>Tap a button</source>
         <translation>Toque un botón</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="286"/>
+        <location filename="../widgets/operator_panel.cpp" line="294"/>
         <source>Target sent</source>
         <translation>Objetivo enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="282"/>
+        <location filename="../widgets/operator_panel.cpp" line="290"/>
         <source>Tracking</source>
         <translation>Botón a la vista</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="328"/>
-        <location filename="../widgets/operator_panel.cpp" line="370"/>
+        <location filename="../widgets/operator_panel.cpp" line="337"/>
+        <location filename="../widgets/operator_panel.cpp" line="379"/>
         <source>Yes</source>
         <translation>Sí</translation>
     </message>
@@ -4191,27 +4191,37 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Panel del operador (nodo ROS)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="103"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <source>Start did not reach the robot: still stopped</source>
+        <translation>El arranque no llegó al robot: sigue parado</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
         <source>STOP sent: waiting for the robot</source>
         <translation>PARAR enviado: esperando al robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="104"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
         <source>STOP kept: sent as soon as the robot is reachable</source>
         <translation>PARAR retenido: se envía en cuanto el robot esté accesible</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="136"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
         <source>The robot confirmed STOP</source>
         <translation>El robot confirmó PARAR</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="144"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
         <source>Target %1, %2, %3 m (%4)</source>
         <translation>Objetivo %1, %2, %3 m (%4)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <source>The robot&apos;s node is gone</source>
+        <translation>El nodo del robot ya no está</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
         <source>No picture for %1 s</source>
         <translation>Sin imagen desde hace %1 s</translation>
     </message>
@@ -4268,12 +4278,12 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>ROS: no disponible en esta compilación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="214"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="221"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: conectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="215"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="222"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: desconectado — reconectando a %1</translation>
     </message>

@@ -78,7 +78,7 @@
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="194"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
         <source>Paused</source>
         <translation>In pausa</translation>
     </message>
@@ -94,7 +94,7 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
         <source>Waiting</source>
         <translation>In attesa</translation>
     </message>
@@ -143,7 +143,7 @@
     </message>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Nessuna scala metrica (nessun movimento del braccio)</translation>
     </message>
@@ -1491,119 +1491,119 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="324"/>
+        <location filename="../widgets/operator_panel.cpp" line="333"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="329"/>
-        <location filename="../widgets/operator_panel.cpp" line="371"/>
+        <location filename="../widgets/operator_panel.cpp" line="338"/>
+        <location filename="../widgets/operator_panel.cpp" line="380"/>
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="284"/>
+        <location filename="../widgets/operator_panel.cpp" line="292"/>
         <source>Locating</source>
         <translation>Localizzazione</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="288"/>
+        <location filename="../widgets/operator_panel.cpp" line="296"/>
         <source>Lost - hold still</source>
         <translation>Perso - resta fermo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="278"/>
+        <location filename="../widgets/operator_panel.cpp" line="286"/>
         <source>No button here - tap again</source>
         <translation>Nessun pulsante qui - tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="203"/>
+        <location filename="../widgets/operator_panel.cpp" line="211"/>
         <source>Robot: live</source>
         <translation>Robot: in diretta</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="206"/>
+        <location filename="../widgets/operator_panel.cpp" line="214"/>
         <source>Waiting for the robot&apos;s picture</source>
         <translation>In attesa dell&apos;immagine del robot</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="209"/>
+        <location filename="../widgets/operator_panel.cpp" line="217"/>
         <source>Picture stale: no taps</source>
         <translation>Immagine vecchia: nessun tocco</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="212"/>
+        <location filename="../widgets/operator_panel.cpp" line="220"/>
         <source>Disconnected: reconnecting</source>
         <translation>Disconnesso: riconnessione</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
+        <location filename="../widgets/operator_panel.cpp" line="284"/>
         <source>Press this button?</source>
         <translation>Premere questo pulsante?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="292"/>
+        <location filename="../widgets/operator_panel.cpp" line="300"/>
         <source>Holding: nothing sent</source>
         <translation>In attesa: niente inviato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="294"/>
+        <location filename="../widgets/operator_panel.cpp" line="302"/>
         <source>Tap not taken</source>
         <translation>Tocco non accettato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="296"/>
+        <location filename="../widgets/operator_panel.cpp" line="304"/>
         <source>Tracking only</source>
         <translation>Solo inseguimento</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="330"/>
+        <location filename="../widgets/operator_panel.cpp" line="339"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="366"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave</source>
         <translation>Esci</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="366"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave the operator panel?</source>
         <translation>Uscire dal pannello operatore?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="280"/>
+        <location filename="../widgets/operator_panel.cpp" line="288"/>
         <source>Searching</source>
         <translation>Ricerca</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="331"/>
+        <location filename="../widgets/operator_panel.cpp" line="340"/>
         <source>Start again</source>
         <translation>Riparti</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="290"/>
+        <location filename="../widgets/operator_panel.cpp" line="298"/>
         <source>Stopped</source>
         <translation>Fermato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="274"/>
+        <location filename="../widgets/operator_panel.cpp" line="282"/>
         <source>Tap a button</source>
         <translation>Tocca un pulsante</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="286"/>
+        <location filename="../widgets/operator_panel.cpp" line="294"/>
         <source>Target sent</source>
         <translation>Bersaglio inviato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="282"/>
+        <location filename="../widgets/operator_panel.cpp" line="290"/>
         <source>Tracking</source>
         <translation>Pulsante agganciato</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="328"/>
-        <location filename="../widgets/operator_panel.cpp" line="370"/>
+        <location filename="../widgets/operator_panel.cpp" line="337"/>
+        <location filename="../widgets/operator_panel.cpp" line="379"/>
         <source>Yes</source>
         <translation>Sì</translation>
     </message>
@@ -4191,27 +4191,37 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Pannello operatore (nodo ROS)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="103"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <source>Start did not reach the robot: still stopped</source>
+        <translation>Il riavvio non ha raggiunto il robot: resta fermo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
         <source>STOP sent: waiting for the robot</source>
         <translation>STOP inviato: in attesa del robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="104"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
         <source>STOP kept: sent as soon as the robot is reachable</source>
         <translation>STOP trattenuto: inviato appena il robot è raggiungibile</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="136"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
         <source>The robot confirmed STOP</source>
         <translation>Il robot ha confermato lo STOP</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="144"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
         <source>Target %1, %2, %3 m (%4)</source>
         <translation>Obiettivo %1, %2, %3 m (%4)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="206"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <source>The robot&apos;s node is gone</source>
+        <translation>Il nodo del robot non c&apos;è più</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
         <source>No picture for %1 s</source>
         <translation>Nessuna immagine da %1 s</translation>
     </message>
@@ -4268,12 +4278,12 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>ROS: non disponibile in questa build</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="214"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="221"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: connesso a %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="215"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="222"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: disconnesso — riconnessione a %1</translation>
     </message>

@@ -173,6 +173,14 @@ void OperatorPanel::SetDetailText(const QString& detail) {
   UpdateControls();
 }
 
+void OperatorPanel::ReturnToStop(const QString& detail) {
+  state_ = OperatorState::kStopped;
+  detail_text_ = detail;
+  view_->SetOutline({});
+  view_->SetRing(std::nullopt);
+  UpdateControls();
+}
+
 void OperatorPanel::Refuse(const QString& why) {
   if (state_ == OperatorState::kConfirm) return;  // The question stays open.
   SetState(OperatorState::kRefused, why);
@@ -310,6 +318,7 @@ void OperatorPanel::UpdateControls() {
   // Without a link Yes and Cancel would go nowhere; STOP is kept and sent (never disabled).
   yes_->setEnabled(link_ != OperatorLink::kDisconnected);
   cancel_->setEnabled(link_ != OperatorLink::kDisconnected);
+  start_->setEnabled(link_ != OperatorLink::kDisconnected);
   // Hidden texts keep their regions (retainSizeWhenHidden): the layout never moves.
   detail_->setText(detail_text_);
   detail_->setVisible(!detail_text_.isEmpty());

@@ -78,6 +78,9 @@ class OperatorPanel : public QWidget {
   // switch (the state stays).
   const QString& detail_text() const { return detail_text_; }
   void SetDetailText(const QString& detail);
+  // Back to STOP without emitting StopPressed, saying why (e.g. "Start again" did not reach the
+  // robot, which therefore stays stopped).
+  void ReturnToStop(const QString& detail);
   // The operator's tap was not taken: says why, and the operator may tap again.
   void Refuse(const QString& why);
   // The tracked button's centre and radius in image pixels; nullopt hides the ring.

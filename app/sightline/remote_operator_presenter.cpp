@@ -76,9 +76,14 @@ void RemoteOperatorPresenter::ConnectPanel() {
     (void)node_->SendCancel();  // Nothing goes to the arm without Yes anyway.
   });
   connect(panel_, &OperatorPanel::StartRequested, this, [this] {
-    stop_acknowledged_ = false;
     const Status sent = node_->SendStart();
-    if (!sent.ok()) panel_->Refuse(QString::fromStdString(sent.message()));
+    if (sent.ok()) {
+      stop_acknowledged_ = false;
+      return;
+    }
+    // The robot did not hear START: it stays stopped, and so does the panel.
+    panel_->ReturnToStop(tr("Start did not reach the robot: still stopped"));
+    panel_->detail_label()->setToolTip(QString::fromStdString(sent.message()));
   });
 }
 
@@ -201,6 +206,15 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
 
 void RemoteOperatorPresenter::CheckStale() {
   if (!connected_ || images_shown_ == 0) return;
+  // The master answers but the node that sent the pictures is gone (ended, crashed).
+  if (!node_->node_listening()) {
+    node_gone_ = true;
+    return panel_->SetLink(OperatorLink::kDisconnected, tr("The robot's node is gone"));
+  }
+  if (node_gone_) {  // A node is back: live again with its first picture.
+    node_gone_ = false;
+    panel_->SetLink(OperatorLink::kWaiting);
+  }
   const double age_s = HostTimeS() - shown_receive_s_;
   if (age_s > stale_after_s_) {
     panel_->SetLink(OperatorLink::kStale, tr("No picture for %1 s").arg(std::floor(age_s)));

@@ -74,6 +74,7 @@ class RemoteOperatorPresenter : public QObject {
   double stale_after_s_ = 2.0;
   bool connected_ = false;
   bool dock_shown_ = false;
+  bool node_gone_ = false;  // The master answers, no node listens to taps.
   int images_shown_ = 0;
   double shown_stamp_s_ = 0;
   double shown_receive_s_ = 0;  // Host time the picture on screen arrived.

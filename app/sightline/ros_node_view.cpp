@@ -110,8 +110,8 @@ Status RosNodeView::Connect(const QString& master_uri, const QString& ros_namesp
         if (self.isNull()) return;
         if (update->kind == RemoteUpdate::Kind::kButtonImage) {
           std::lock_guard<std::mutex> lock(latest->mutex);
-          const bool posted =
-              latest->update != nullptr;  // A call is on its way: it takes this one.
+          // A call on its way to the GUI thread takes this one instead of the older one.
+          const bool posted = latest->update != nullptr;
           latest->update = std::move(update);
           if (posted) return;
           QMetaObject::invokeMethod(
@@ -196,11 +196,18 @@ Status RosNodeView::SendStop(const std::string& reason) {
   return remote_->remote ? remote_->remote->SendStop(reason) : kNotConnected;
 }
 Status RosNodeView::SendStart() {
-  stop_kept_ = false;
-  stop_reason_.clear();
-  return remote_->remote ? remote_->remote->SendStart() : kNotConnected;
+  const Status sent = remote_->remote ? remote_->remote->SendStart() : kNotConnected;
+  if (sent.ok()) {  // Otherwise the STOP stays kept: no node heard START.
+    stop_kept_ = false;
+    stop_reason_.clear();
+  }
+  return sent;
+}
+bool RosNodeView::node_listening() const {
+  return remote_->remote != nullptr && remote_->remote->node_listening();
 }
 #else
+bool RosNodeView::node_listening() const { return false; }
 Status RosNodeView::SendTap(double, double, double) {
   return Status(StatusCode::kUnavailable, "this build has no ROS");
 }

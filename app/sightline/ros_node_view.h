@@ -54,10 +54,12 @@ class RosNodeView : public QObject {
   Status SendTap(double x, double y, double image_stamp_s);
   Status SendConfirm();
   Status SendCancel();
-  // STOP, latched: kept for the node across reconnections (and a new Connect) until SendStart.
-  // kUnavailable when no node has it yet (it is still kept and sent).
+  // STOP, latched: kept for the node across reconnections (and a new Connect) until a START
+  // reaches a node (SendStart Ok). kUnavailable when no node has it yet (it is still kept).
   Status SendStop(const std::string& reason);
   Status SendStart();
+  // Whether the node's button pipeline subscribes to the operator's taps now.
+  bool node_listening() const;
 
  signals:
   // The master answers (true) or stopped answering (false).

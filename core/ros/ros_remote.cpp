@@ -470,23 +470,27 @@ Status RosRemote::SendStop(const std::string& reason) {
 
 Status RosRemote::SendStart() {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  impl_->stop_latched = false;
-  impl_->stop_reason.clear();
-  // A fresh publisher holds no STOP for nodes that subscribe from now on. Without a master the
-  // old one stays (advertising would wait for it); the next connection advertises afresh.
-  if (impl_->nh && impl_->connected.load()) {
-    impl_->stop.shutdown();
-    impl_->AdvertiseStop();
-  }
+  // STOP stays until a node really hears START: a START that reaches nobody lifts nothing.
   if (!impl_->connected.load() || !impl_->start) {
-    return Status(StatusCode::kUnavailable, "not connected to a ROS master: button_start not sent");
+    return Status(StatusCode::kUnavailable,
+                  "not connected to a ROS master: button_start not sent, STOP kept");
   }
   if (impl_->start.getNumSubscribers() == 0) {
-    return Status(StatusCode::kUnavailable,
-                  "no node subscribes to " + impl_->start.getTopic() + ": button_start not sent");
+    return Status(StatusCode::kUnavailable, "no node subscribes to " + impl_->start.getTopic() +
+                                                ": button_start not sent, STOP kept");
   }
   impl_->start.publish(std_msgs::Empty());
+  impl_->stop_latched = false;
+  impl_->stop_reason.clear();
+  // A fresh publisher holds no STOP for nodes that subscribe from now on.
+  impl_->stop.shutdown();
+  impl_->AdvertiseStop();
   return Status::Ok();
+}
+
+bool RosRemote::node_listening() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->tap && impl_->tap.getNumSubscribers() > 0;
 }
 
 bool RosRemote::stop_latched() const {

@@ -149,8 +149,12 @@ class RosRemote {
   // node that subscribes later (reconnecting, restarted) receives it, until SendStart. Ok when a
   // node subscribes now; kUnavailable (saying it is kept) otherwise, the STOP still pending.
   Status SendStop(const std::string& reason);
-  // Lifts STOP (button_start) and forgets the latched STOP.
+  // Lifts STOP (button_start) and forgets the latched STOP; kUnavailable, the STOP kept, when no
+  // node subscribes to button_start (or no master answers).
   Status SendStart();
+  // Whether a node (sightline-node's button pipeline) subscribes to button_tap now: false when
+  // the node is gone even though the master answers.
+  bool node_listening() const;
   // Whether a STOP is kept for nodes (since SendStop, until SendStart).
   bool stop_latched() const;
 

@@ -160,9 +160,8 @@ TEST_F(RosOperatorGui, TapAndYesOnTheNodesPictureGiveATargetAtTheTrueButton) {
       },
       300));
   EXPECT_EQ(code, 0) << testing::ReadTextFile(log_);
-  // What the node sent in its last moments reaches the panel before its picture goes stale.
-  remote_->SetStaleAfter(1.0);
-  ASSERT_TRUE(PumpUntil([&] { return panel_->link() == OperatorLink::kStale; }, 30));
+  // What the node sent in its last moments reaches the panel before it says the node is gone.
+  ASSERT_TRUE(PumpUntil([&] { return panel_->link() == OperatorLink::kDisconnected; }, 30));
   // The banner said "Target sent" while the node's gate let targets out.
   EXPECT_GT(remote_->target_sent_reports(), 0);
   ASSERT_TRUE(remote_->last_target_m().has_value()) << testing::ReadTextFile(log_);
@@ -195,6 +194,13 @@ TEST_F(RosOperatorGui, StopReachesTheNodeWhileThePictureIsStale) {
   EXPECT_EQ(panel_->detail_label()->text().toStdString(), "The robot confirmed STOP");
   EXPECT_NE(testing::ReadTextFile(log_).find("STOP on button_stop (operator)"), std::string::npos)
       << testing::ReadTextFile(log_);
+  // The node goes away while the master stays: the panel says so.
+  node_.Kill();
+  ASSERT_TRUE(PumpUntil([&] { return panel_->link() == OperatorLink::kDisconnected; }, 30));
+  EXPECT_NE(panel_->link_label()->text().indexOf("node is gone"), -1)
+      << panel_->link_label()->text().toStdString();
+  EXPECT_TRUE(window_->ros_node()->connected());
+  EXPECT_FALSE(panel_->yes_button()->isEnabled());
 }
 
 TEST_F(RosOperatorGui, MasterGoneSaysDisconnectedRefusesTapsAndStopStillReachesTheNode) {
@@ -222,6 +228,7 @@ TEST_F(RosOperatorGui, MasterGoneSaysDisconnectedRefusesTapsAndStopStillReachesT
   QTest::mousePress(panel_->stop_button(), Qt::LeftButton);
   QTest::mouseRelease(panel_->stop_button(), Qt::LeftButton);
   EXPECT_EQ(panel_->state(), OperatorState::kStopped);
+  EXPECT_FALSE(panel_->start_button()->isEnabled());  // A START could reach no one.
   ASSERT_TRUE(PumpUntil([&] { return remote_->stop_acknowledged(); }, 30))
       << testing::ReadTextFile(log_);
   EXPECT_NE(testing::ReadTextFile(log_).find("STOP on button_stop (operator)"), std::string::npos)

@@ -12,6 +12,7 @@
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <mutex>
@@ -283,22 +284,27 @@ class StopListener {
                                              std::lock_guard<std::mutex> lock(mutex_);
                                              stops_.push_back(m->data);
                                            });
+    start_sub_ = nh_.subscribe<std_msgs::Empty>(
+        "button_start", 10, [this](const std_msgs::Empty::ConstPtr&) { ++starts_; });
   }
   ~StopListener() {
     spinner_.stop();
     sub_.shutdown();
+    start_sub_.shutdown();
   }
   std::vector<std::string> stops() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return stops_;
   }
   int publishers() const { return static_cast<int>(sub_.getNumPublishers()); }
+  int starts() const { return starts_.load(); }
 
  private:
   ros::NodeHandle nh_;
   ros::CallbackQueue queue_;
   ros::AsyncSpinner spinner_{1, &queue_};
-  ros::Subscriber sub_;
+  ros::Subscriber sub_, start_sub_;
+  std::atomic<int> starts_{0};
   mutable std::mutex mutex_;
   std::vector<std::string> stops_;
 };
@@ -333,7 +339,16 @@ TEST(RosRemote, StopIsKeptForANodeThatSubscribesLaterUntilStart) {
     ASSERT_TRUE(WaitFor([&] { return node.stops().size() >= 2; }, 10));
     EXPECT_EQ(node.stops().back(), "again");
   }
-  (void)remote.SendStart();  // No node subscribes to button_start here: STOP is forgotten anyway.
+  // A START that reaches no node lifts nothing.
+  const Status unheard = remote.SendStart();
+  EXPECT_EQ(unheard.code(), StatusCode::kUnavailable);
+  EXPECT_NE(unheard.message().find("STOP kept"), std::string::npos) << unheard.message();
+  EXPECT_TRUE(remote.stop_latched());
+  {
+    StopListener node("/robot2");
+    ASSERT_TRUE(WaitFor([&] { return remote.SendStart().ok(); }, 10));
+    ASSERT_TRUE(WaitFor([&] { return node.starts() > 0; }, 10));
+  }
   EXPECT_FALSE(remote.stop_latched());
   {
     StopListener node("/robot2");
@@ -342,7 +357,7 @@ TEST(RosRemote, StopIsKeptForANodeThatSubscribesLaterUntilStart) {
     ASSERT_TRUE(WaitFor([&] { return remote.SendStop("marker").ok(); }, 10));
     ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
     EXPECT_EQ(node.stops().front(), "marker");
-    (void)remote.SendStart();
+    EXPECT_TRUE(remote.SendStart().ok());
   }
   remote.Disconnect();
 }
