@@ -4,148 +4,151 @@
 <context>
     <name>sightline::ButtonPickerPresenter</name>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="40"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="83"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="91"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="44"/>
         <source>Waiting for Yes</source>
         <translation>Esperando el Sí</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="44"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="46"/>
         <source>Button lost</source>
         <translation>Botón perdido</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="46"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="48"/>
         <source>Button unclear</source>
         <translation>Botón poco claro</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="48"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="50"/>
         <source>Measuring the button</source>
         <translation>Midiendo el botón</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="50"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="52"/>
         <source>Measuring again</source>
         <translation>Midiendo de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="52"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="54"/>
         <source>Measuring the distance</source>
         <translation>Midiendo la distancia</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="54"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="56"/>
         <source>Panel unclear</source>
         <translation>Panel poco claro</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="56"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
         <source>Position not sure yet</source>
         <translation>Posición aún no segura</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="58"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="60"/>
         <source>Panel direction not sure yet</source>
         <translation>Dirección del panel aún no segura</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="60"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="62"/>
         <source>Button out of reach</source>
         <translation>Botón fuera de alcance</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="71"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
         <source>The picture changed: tap again</source>
         <translation>La imagen ha cambiado: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="73"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="77"/>
         <source>The picture was too old: tap again</source>
         <translation>La imagen era demasiado antigua: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="79"/>
         <source>Stopped: press Start again first</source>
         <translation>Detenido: pulse primero «Empezar de nuevo»</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="82"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
         <source>Paused</source>
         <translation>En pausa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
         <source>Arm link off</source>
         <translation>Enlace con el brazo apagado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>No arm connected</source>
         <translation>Ningún brazo conectado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
         <source>Waiting</source>
         <translation>Esperando</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="111"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="115"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Selector de botones (SLAM monocular)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="119"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="143"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="182"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="147"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="186"/>
         <source>Operator panel</source>
         <translation>Panel del operador</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
         <source>Operator panel full screen</source>
         <translation>Panel del operador a pantalla completa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="224"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
         <source>End of the recording</source>
         <translation>Fin de la grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="242"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="250"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="246"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>La imagen está en pausa: pulse Reproducir y luego toque</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="249"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>La grabación ha terminado: nada que tocar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="251"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="255"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Todavía no hay imagen: abra una cámara o una grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="288"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="292"/>
         <source>No button at the tap: %1</source>
         <translation>No hay ningún botón donde tocó: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="303"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Sin escala métrica (sin movimiento del brazo)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="305"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="309"/>
         <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
         <translation>Sin las poses del brazo el botón solo se sigue y se localiza en unidades del mapa; no se envía ningún objetivo.</translation>
     </message>
@@ -1132,22 +1135,22 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Conservar el mapa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window_ros.cpp" line="21"/>
+        <location filename="../app/sightline/main_window_ros.cpp" line="24"/>
         <source>Connect to &amp;ROS master...</source>
         <translation>Conectar al máster &amp;ROS...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window_ros.cpp" line="22"/>
+        <location filename="../app/sightline/main_window_ros.cpp" line="25"/>
         <source>&amp;Disconnect from ROS master</source>
         <translation>&amp;Desconectar del máster ROS</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window_ros.cpp" line="29"/>
+        <location filename="../app/sightline/main_window_ros.cpp" line="32"/>
         <source>Connect to ROS master</source>
         <translation>Conectar al máster ROS</translation>
     </message>
     <message>
-        <location filename="../app/sightline/main_window_ros.cpp" line="37"/>
+        <location filename="../app/sightline/main_window_ros.cpp" line="40"/>
         <source>Disconnected from the ROS master</source>
         <translation>Desconectado del máster ROS</translation>
     </message>
@@ -1515,99 +1518,119 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::OperatorPanel</name>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="272"/>
+        <location filename="../widgets/operator_panel.cpp" line="333"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="277"/>
-        <location filename="../widgets/operator_panel.cpp" line="319"/>
+        <location filename="../widgets/operator_panel.cpp" line="338"/>
+        <location filename="../widgets/operator_panel.cpp" line="380"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="242"/>
+        <location filename="../widgets/operator_panel.cpp" line="292"/>
         <source>Locating</source>
         <translation>Localizando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="246"/>
+        <location filename="../widgets/operator_panel.cpp" line="296"/>
         <source>Lost - hold still</source>
         <translation>Perdido - quieto</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="236"/>
+        <location filename="../widgets/operator_panel.cpp" line="286"/>
         <source>No button here - tap again</source>
         <translation>Aquí no hay botón - toque otra vez</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="234"/>
+        <location filename="../widgets/operator_panel.cpp" line="211"/>
+        <source>Robot: live</source>
+        <translation>Robot: en directo</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="214"/>
+        <source>Waiting for the robot&apos;s picture</source>
+        <translation>Esperando la imagen del robot</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="217"/>
+        <source>Picture stale: no taps</source>
+        <translation>Imagen antigua: sin toques</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="220"/>
+        <source>Disconnected: reconnecting</source>
+        <translation>Desconectado: reconectando</translation>
+    </message>
+    <message>
+        <location filename="../widgets/operator_panel.cpp" line="284"/>
         <source>Press this button?</source>
         <translation>¿Pulsar este botón?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="250"/>
+        <location filename="../widgets/operator_panel.cpp" line="300"/>
         <source>Holding: nothing sent</source>
         <translation>En espera: nada enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="252"/>
+        <location filename="../widgets/operator_panel.cpp" line="302"/>
         <source>Tap not taken</source>
         <translation>Toque no aceptado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="254"/>
+        <location filename="../widgets/operator_panel.cpp" line="304"/>
         <source>Tracking only</source>
         <translation>Solo seguimiento</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="278"/>
+        <location filename="../widgets/operator_panel.cpp" line="339"/>
         <source>STOP</source>
         <translation>PARAR</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="314"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave</source>
         <translation>Salir</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="314"/>
+        <location filename="../widgets/operator_panel.cpp" line="375"/>
         <source>Leave the operator panel?</source>
         <translation>¿Salir del panel del operador?</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="238"/>
+        <location filename="../widgets/operator_panel.cpp" line="288"/>
         <source>Searching</source>
         <translation>Buscando</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="279"/>
+        <location filename="../widgets/operator_panel.cpp" line="340"/>
         <source>Start again</source>
         <translation>Empezar de nuevo</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="248"/>
+        <location filename="../widgets/operator_panel.cpp" line="298"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="232"/>
+        <location filename="../widgets/operator_panel.cpp" line="282"/>
         <source>Tap a button</source>
         <translation>Toque un botón</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="244"/>
+        <location filename="../widgets/operator_panel.cpp" line="294"/>
         <source>Target sent</source>
         <translation>Objetivo enviado</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="240"/>
+        <location filename="../widgets/operator_panel.cpp" line="290"/>
         <source>Tracking</source>
         <translation>Botón a la vista</translation>
     </message>
     <message>
-        <location filename="../widgets/operator_panel.cpp" line="276"/>
-        <location filename="../widgets/operator_panel.cpp" line="318"/>
+        <location filename="../widgets/operator_panel.cpp" line="337"/>
+        <location filename="../widgets/operator_panel.cpp" line="379"/>
         <source>Yes</source>
         <translation>Sí</translation>
     </message>
@@ -4188,6 +4211,49 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
 </context>
 <context>
+    <name>sightline::RemoteOperatorPresenter</name>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="49"/>
+        <source>Operator panel (ROS node)</source>
+        <translation>Panel del operador (nodo ROS)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <source>Start did not reach the robot: still stopped</source>
+        <translation>El arranque no llegó al robot: sigue parado</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
+        <source>STOP sent: waiting for the robot</source>
+        <translation>PARAR enviado: esperando al robot</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
+        <source>STOP kept: sent as soon as the robot is reachable</source>
+        <translation>PARAR retenido: se envía en cuanto el robot esté accesible</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
+        <source>The robot confirmed STOP</source>
+        <translation>El robot confirmó PARAR</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
+        <source>Target %1, %2, %3 m (%4)</source>
+        <translation>Objetivo %1, %2, %3 m (%4)</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <source>The robot&apos;s node is gone</source>
+        <translation>El nodo del robot ya no está</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
+        <source>No picture for %1 s</source>
+        <translation>Sin imagen desde hace %1 s</translation>
+    </message>
+</context>
+<context>
     <name>sightline::RosConnectDialog</name>
     <message>
         <location filename="../app/sightline/ros_connect_dialog.cpp" line="12"/>
@@ -4213,38 +4279,38 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::RosNodeView</name>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="58"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="65"/>
         <source>ROS node</source>
         <translation>Nodo ROS</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="62"/>
-        <location filename="../app/sightline/ros_node_view.cpp" line="142"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="69"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="174"/>
         <source>Not connected: File &gt; Connect to ROS master...</source>
         <translation>No conectado: Archivo &gt; Conectar al máster ROS...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="93"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="100"/>
         <source>ROS: %1</source>
         <translation>ROS: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="117"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="147"/>
         <source>Waiting for the map from %1 ...</source>
         <translation>Esperando el mapa de %1 ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="122"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="152"/>
         <source>ROS: not available in this build</source>
         <translation>ROS: no disponible en esta compilación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="147"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="221"/>
         <source>ROS: connected to %1</source>
         <translation>ROS: conectado a %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/ros_node_view.cpp" line="148"/>
+        <location filename="../app/sightline/ros_node_view.cpp" line="222"/>
         <source>ROS: disconnected — reconnecting to %1</source>
         <translation>ROS: desconectado — reconectando a %1</translation>
     </message>

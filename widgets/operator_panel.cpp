@@ -9,6 +9,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QStackedWidget>
+#include <QStyle>
 #include <QVBoxLayout>
 #include <cmath>
 #include <limits>
@@ -26,6 +27,8 @@ const char kStyle[] =
     "QLabel#banner { color: black; background: #ffdd00; font-weight: bold; padding: 6px; }"
     "QLabel#distance { color: #ffdd00; font-weight: bold; }"
     "QLabel#detail { color: white; }"
+    "QLabel#link { color: white; background: #b00020; font-weight: bold; padding: 4px; }"
+    "QLabel#link[live=\"true\"] { color: black; background: #00c853; }"
     "QMessageBox { background: black; }"
     "QPushButton { color: black; background: white; font-weight: bold; border: 3px solid white;"
     "  border-radius: 8px; padding: 6px; }"
@@ -55,6 +58,11 @@ void OperatorPanel::BuildLayout() {
   banner_->setObjectName("banner");
   banner_->setAlignment(Qt::AlignCenter);
   banner_->setWordWrap(true);
+  link_label_ = new QLabel(side_);
+  link_label_->setObjectName("link");
+  link_label_->setAlignment(Qt::AlignCenter);
+  link_label_->setWordWrap(true);
+  link_label_->hide();
   detail_ = new QLabel(side_);
   detail_->setObjectName("detail");
   detail_->setAlignment(Qt::AlignHCenter | Qt::AlignTop);
@@ -92,6 +100,7 @@ void OperatorPanel::BuildLayout() {
   auto* side = new QVBoxLayout(side_);
   side->setContentsMargins(0, 0, 0, 0);
   side->addWidget(stop_);
+  side->addWidget(link_label_);
   side->addWidget(banner_);
   side->addWidget(detail_);
   side->addWidget(distance_);
@@ -105,7 +114,10 @@ void OperatorPanel::BuildLayout() {
 
 void OperatorPanel::ConnectButtons() {
   connect(view_, &TapImageView::Tapped, this, [this](QPointF p) {
-    if (state_ != OperatorState::kStopped && state_ != OperatorState::kConfirm) emit Tapped(p);
+    if (state_ == OperatorState::kStopped || state_ == OperatorState::kConfirm) return;
+    // A tap on a picture that is not the robot's current view would pick the wrong place.
+    if (link_ != OperatorLink::kLocal && link_ != OperatorLink::kLive) return Refuse(LinkText());
+    emit Tapped(p);
   });
   connect(yes_, &QPushButton::clicked, this, [this] {
     view_->SetOutline({});  // From now on the ring follows the tracked button.
@@ -161,6 +173,14 @@ void OperatorPanel::SetDetailText(const QString& detail) {
   UpdateControls();
 }
 
+void OperatorPanel::ReturnToStop(const QString& detail) {
+  state_ = OperatorState::kStopped;
+  detail_text_ = detail;
+  view_->SetOutline({});
+  view_->SetRing(std::nullopt);
+  UpdateControls();
+}
+
 void OperatorPanel::Refuse(const QString& why) {
   if (state_ == OperatorState::kConfirm) return;  // The question stays open.
   SetState(OperatorState::kRefused, why);
@@ -173,6 +193,34 @@ void OperatorPanel::SetRing(std::optional<QPointF> centre, double radius_px) {
 void OperatorPanel::SetDistance(double metres) {
   distance_m_ = metres;
   UpdateControls();
+}
+
+void OperatorPanel::SetLink(OperatorLink link, const QString& detail) {
+  if (link == link_ && detail == link_detail_) return;
+  link_ = link;
+  link_detail_ = detail;
+  UpdateControls();
+}
+
+QString OperatorPanel::LinkText() const {
+  QString text;
+  switch (link_) {
+    case OperatorLink::kLocal:
+      return {};
+    case OperatorLink::kLive:
+      text = tr("Robot: live");
+      break;
+    case OperatorLink::kWaiting:
+      text = tr("Waiting for the robot's picture");
+      break;
+    case OperatorLink::kStale:
+      text = tr("Picture stale: no taps");
+      break;
+    case OperatorLink::kDisconnected:
+      text = tr("Disconnected: reconnecting");
+      break;
+  }
+  return link_detail_.isEmpty() ? text : text + "\n" + link_detail_;
 }
 
 void OperatorPanel::SetFullScreenMode(bool on) {
@@ -217,7 +265,9 @@ void OperatorPanel::ApplyTouchSizes() {
   banner_->setFont(big);
   banner_->setFixedSize(width, 3 * big.pixelSize() + 16);  // Two lines and the padding.
   detail_->setFont(big);
-  detail_->setFixedSize(width, 4 * big.pixelSize() + 8);  // Three lines.
+  link_label_->setFont(big);
+  link_label_->setFixedSize(width, 2 * big.pixelSize() + 12);  // Two lines and the padding.
+  detail_->setFixedSize(width, 4 * big.pixelSize() + 8);       // Three lines.
   distance_->setFont(huge);
   distance_->setFixedSize(width, side);
   const int spacing = std::max(6, side / 6);
@@ -258,6 +308,17 @@ QString OperatorPanel::BannerText(OperatorState state) const {
 
 void OperatorPanel::UpdateControls() {
   banner_->setText(BannerText(state_));
+  link_label_->setVisible(link_ != OperatorLink::kLocal);
+  link_label_->setText(LinkText());
+  if (link_label_->property("live").toBool() != (link_ == OperatorLink::kLive)) {
+    link_label_->setProperty("live", link_ == OperatorLink::kLive);
+    link_label_->style()->unpolish(link_label_);  // The style sheet's colour follows.
+    link_label_->style()->polish(link_label_);
+  }
+  // Without a link Yes and Cancel would go nowhere; STOP is kept and sent (never disabled).
+  yes_->setEnabled(link_ != OperatorLink::kDisconnected);
+  cancel_->setEnabled(link_ != OperatorLink::kDisconnected);
+  start_->setEnabled(link_ != OperatorLink::kDisconnected);
   // Hidden texts keep their regions (retainSizeWhenHidden): the layout never moves.
   detail_->setText(detail_text_);
   detail_->setVisible(!detail_text_.isEmpty());

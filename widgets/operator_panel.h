@@ -41,6 +41,16 @@ enum class OperatorState {
   kTrackingOnly,  // "Tracking only": no metric scale (no arm motion), nothing is ever sent.
 };
 
+// Where the panel's picture comes from and whether it is current: the GUI's own pipeline, or a
+// sightline-node on another machine whose link can stall or break.
+enum class OperatorLink {
+  kLocal,         // The GUI's own pipeline (no link line shown).
+  kLive,          // A remote node's picture arrives.
+  kWaiting,       // Connected; no picture from the node yet. Taps refused.
+  kStale,         // No picture for a while: the view is old, taps refused.
+  kDisconnected,  // The master or the node is gone: taps, Yes and Cancel off; STOP still works.
+};
+
 // A view of the button pipeline: it emits what the operator asks for and shows what the
 // pipeline reports; it never decides about the arm itself.
 //
@@ -68,12 +78,19 @@ class OperatorPanel : public QWidget {
   // switch (the state stays).
   const QString& detail_text() const { return detail_text_; }
   void SetDetailText(const QString& detail);
+  // Back to STOP without emitting StopPressed, saying why (e.g. "Start again" did not reach the
+  // robot, which therefore stays stopped).
+  void ReturnToStop(const QString& detail);
   // The operator's tap was not taken: says why, and the operator may tap again.
   void Refuse(const QString& why);
   // The tracked button's centre and radius in image pixels; nullopt hides the ring.
   void SetRing(std::optional<QPointF> centre, double radius_px = 0);
   // Distance to the target in metres; NaN hides it.
   void SetDistance(double metres);
+  // The link's state in a line above the banner (hidden for kLocal); `detail` after it (e.g. the
+  // picture's age). Taps on a picture that is not live are refused with words.
+  void SetLink(OperatorLink link, const QString& detail = {});
+  OperatorLink link() const { return link_; }
   // Full screen for the tablet (true) or a normal window (false).
   void SetFullScreenMode(bool on);
 
@@ -92,6 +109,7 @@ class OperatorPanel : public QWidget {
   QLabel* banner() const { return banner_; }
   QLabel* detail_label() const { return detail_; }
   QLabel* distance_label() const { return distance_; }
+  QLabel* link_label() const { return link_label_; }
   // The open "Leave the operator panel?" question, or null.
   QMessageBox* leave_question() const { return leave_question_; }
 
@@ -125,10 +143,12 @@ class OperatorPanel : public QWidget {
   void UpdateControls();
   void AskToLeave();
   QString BannerText(OperatorState state) const;
+  QString LinkText() const;
 
   TapImageView* view_ = nullptr;
   QWidget* side_ = nullptr;
   QLabel* banner_ = nullptr;
+  QLabel* link_label_ = nullptr;
   QLabel* detail_ = nullptr;
   QLabel* distance_ = nullptr;
   QStackedWidget* answers_ = nullptr;  // Empty, Yes / Cancel, or Start again: one fixed region.
@@ -142,6 +162,8 @@ class OperatorPanel : public QWidget {
   QMessageBox* leave_question_ = nullptr;
   OperatorState state_ = OperatorState::kIdle;
   QString detail_text_;
+  OperatorLink link_ = OperatorLink::kLocal;
+  QString link_detail_;
   double distance_m_;
 };
 

@@ -67,13 +67,7 @@ class ButtonPublisher : public ResultPublisher {
     gate.header.stamp = RosTimeFromSeconds(result->stamp.sensor_time_s);
     gate.status.push_back(ButtonGateStatus(*result));
     gate_.publish(gate);
-    if (!stop_sent_ || result->stopped != last_stopped_) {
-      std_msgs::Bool stop;
-      stop.data = result->stopped;
-      stop_.publish(stop);
-      stop_sent_ = true;
-      last_stopped_ = result->stopped;
-    }
+    PublishStopped(result->stopped, /*from_frame=*/true);
     // Only what the gate let out (confirmed, not stopped, fresh, certain, inside the workspace).
     if (result->picker.target) target_.publish(ButtonTargetMessage(*result->picker.target));
     if (result->tap_answered) {
@@ -112,8 +106,31 @@ class ButtonPublisher : public ResultPublisher {
   void OnCancel(const std_msgs::Empty::ConstPtr&) { commands_->Cancel(); }
   void OnStop(const std_msgs::String::ConstPtr& msg) {
     commands_->Stop(msg->data.empty() ? "operator" : msg->data);
+    std::fprintf(stderr, "sightline-node: STOP on button_stop (%s)\n",
+                 msg->data.empty() ? "operator" : msg->data.c_str());
+    // Acknowledged at once on `stop`, not at the next frame (there may be none: a stalled
+    // camera, a recording that ended).
+    PublishStopped(true, /*from_frame=*/false);
   }
-  void OnStart(const std_msgs::Empty::ConstPtr&) { commands_->Restart(); }
+  void OnStart(const std_msgs::Empty::ConstPtr&) {
+    commands_->Restart();
+    std::lock_guard<std::mutex> lock(stop_mutex_);
+    stop_taken_ = false;
+  }
+  // The latched `stop` when it changes. A STOP taken on the topic stands until a frame reports
+  // it (a frame already in the pipeline when STOP came must not say "not stopped") or START.
+  void PublishStopped(bool stopped, bool from_frame) {
+    std::lock_guard<std::mutex> lock(stop_mutex_);
+    if (!from_frame) stop_taken_ = true;
+    if (from_frame && stopped) stop_taken_ = false;
+    const bool now = stopped || stop_taken_;
+    if (stop_sent_ && now == last_stopped_) return;
+    std_msgs::Bool msg;
+    msg.data = now;
+    stop_.publish(msg);
+    stop_sent_ = true;
+    last_stopped_ = now;
+  }
   static double RosSecondsOf(const ros::Time& t) { return t.sec + 1e-9 * t.nsec; }
 
   std::unique_ptr<ResultPublisher> slam_;
@@ -122,7 +139,8 @@ class ButtonPublisher : public ResultPublisher {
   ros::Publisher target_, stop_, gate_, image_, jpeg_;
   std::string camera_frame_;
   std::vector<ros::Subscriber> subs_;
-  bool stop_sent_ = false, last_stopped_ = false;
+  std::mutex stop_mutex_;  // The loop and the topic callbacks publish `stop`.
+  bool stop_sent_ = false, last_stopped_ = false, stop_taken_ = false;
 };
 
 }  // namespace

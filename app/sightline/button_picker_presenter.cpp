@@ -30,6 +30,8 @@ PipelineInfo WithDefaults(PipelineInfo info, const std::vector<std::string>& def
   return info;
 }
 
+}  // namespace
+
 // Why no target went out, in plain words for the operator panel. The gate's own message, with its
 // figures and in English, is the line's tooltip for the engineer beside the chair.
 QString OperatorReasonText(GateReason reason) {
@@ -61,6 +63,8 @@ QString OperatorReasonText(GateReason reason) {
   }
   return {};
 }
+
+namespace {
 
 // Why the operator's tap was not taken.
 QString TapRefusalText(TapRefusal refusal) {

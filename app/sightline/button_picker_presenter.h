@@ -24,6 +24,9 @@ namespace sightline {
 
 class OperatorPanel;
 
+// Why the gate let no target out, in the operator's words ("Button lost"); empty for kSend.
+QString OperatorReasonText(GateReason reason);
+
 class ButtonPickerPresenter : public MonoSlamPresenter {
   Q_OBJECT
 

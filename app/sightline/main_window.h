@@ -30,6 +30,7 @@ class PipelinePresenter;
 class PlaybackController;
 class RecordingController;
 class RosNodeView;
+class RemoteOperatorPresenter;
 class SceneView;
 
 // The window a lab engineer or presenter works in. It holds views and wiring only: reading and
@@ -70,6 +71,8 @@ class MainWindow : public QMainWindow {
   // (main_window_ros.cpp). The error names a bad URI or namespace.
   Status ConnectRos(const QString& master_uri, const QString& ros_namespace);
   RosNodeView* ros_node() const { return ros_node_; }
+  // The operator panel of a connected sightline-node that runs the button pipeline.
+  RemoteOperatorPresenter* remote_operator() const { return remote_operator_; }
   // File > Save results: writes the running pipeline's results into `folder` as `sightline-cli
   // run` does (background; ResultsSaved or ResultsSaveFailed follows).
   void SaveResultsTo(const QString& folder);
@@ -135,6 +138,7 @@ class MainWindow : public QMainWindow {
   RecordingController* recording_ = nullptr;
   LiveStatusWidget* live_status_ = nullptr;
   RosNodeView* ros_node_ = nullptr;
+  RemoteOperatorPresenter* remote_operator_ = nullptr;
   ImageView* primary_view_ = nullptr;
   ImageView* secondary_view_ = nullptr;
   QDockWidget* primary_dock_ = nullptr;

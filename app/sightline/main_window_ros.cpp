@@ -1,4 +1,5 @@
-// File > Connect to ROS master... / Disconnect and the "ROS node" dock (ros_node_view.h).
+// File > Connect to ROS master... / Disconnect, the "ROS node" dock (ros_node_view.h) and the
+// node's operator panel (remote_operator_presenter.h).
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
@@ -7,6 +8,7 @@
 #include <QStatusBar>
 
 #include "app/sightline/main_window.h"
+#include "app/sightline/remote_operator_presenter.h"
 #include "app/sightline/ros_connect_dialog.h"
 #include "app/sightline/ros_node_view.h"
 
@@ -18,6 +20,7 @@ void MainWindow::BuildRos(QMenu* file) {
   tabifyDockWidget(secondary_dock_, ros_node_->dock());
   secondary_dock_->raise();
   statusBar()->addPermanentWidget(ros_node_->status_label());
+  remote_operator_ = new RemoteOperatorPresenter(ros_node_, this);
   QAction* connect_action = file->addAction(tr("Connect to &ROS master..."));
   QAction* disconnect_action = file->addAction(tr("&Disconnect from ROS master"));
   disconnect_action->setEnabled(false);

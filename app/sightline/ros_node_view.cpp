@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QMetaObject>
 #include <QPointer>
+#include <mutex>
 #include <opencv2/core.hpp>
 
 #include "core/common/frame.h"
@@ -42,6 +43,12 @@ static cv::Mat MapImage(const RemoteMap& map) {
   }
   return gray;
 }
+
+// The newest picture not yet shown: a slow GUI skips pictures instead of queueing them.
+struct LatestImage {
+  std::mutex mutex;
+  std::shared_ptr<const RemoteUpdate> update;
+};
 
 struct RosNodeView::Remote {
   std::unique_ptr<RosRemote> remote;
@@ -96,18 +103,41 @@ Status RosNodeView::Connect(const QString& master_uri, const QString& ros_namesp
   }
   Disconnect();
   QPointer<RosNodeView> self(this);
+  auto latest = std::make_shared<LatestImage>();
   // Any thread: the update is handed to the GUI thread as a queued call.
-  auto remote = std::make_unique<RosRemote>([self](std::shared_ptr<const RemoteUpdate> update) {
-    if (self.isNull()) return;
-    QMetaObject::invokeMethod(
-        self.data(),
-        [self, update] {
-          if (!self.isNull()) self->Apply(update);
-        },
-        Qt::QueuedConnection);
-  });
+  auto remote =
+      std::make_unique<RosRemote>([self, latest](std::shared_ptr<const RemoteUpdate> update) {
+        if (self.isNull()) return;
+        if (update->kind == RemoteUpdate::Kind::kButtonImage) {
+          std::lock_guard<std::mutex> lock(latest->mutex);
+          // A call on its way to the GUI thread takes this one instead of the older one.
+          const bool posted = latest->update != nullptr;
+          latest->update = std::move(update);
+          if (posted) return;
+          QMetaObject::invokeMethod(
+              self.data(),
+              [self, latest] {
+                std::shared_ptr<const RemoteUpdate> newest;
+                {
+                  std::lock_guard<std::mutex> lock(latest->mutex);
+                  newest = std::move(latest->update);
+                  latest->update = nullptr;
+                }
+                if (!self.isNull() && newest != nullptr) self->Apply(newest);
+              },
+              Qt::QueuedConnection);
+          return;
+        }
+        QMetaObject::invokeMethod(
+            self.data(),
+            [self, update] {
+              if (!self.isNull()) self->Apply(update);
+            },
+            Qt::QueuedConnection);
+      });
   const Status connected = remote->Connect(options);
   if (!connected.ok()) return connected;
+  if (stop_kept_) (void)remote->SendStop(stop_reason_);  // Kept for the node at the new master.
   remote_->remote = std::move(remote);
   uri_ = QString::fromStdString(options.master_uri);
   connected_ = false;
@@ -131,7 +161,9 @@ void RosNodeView::Disconnect() {
   remote_->remote->Disconnect();
   remote_->remote.reset();
 #endif
+  const bool was_connected = connected_;
   connected_ = false;
+  if (was_connected) emit ConnectionChanged(false, uri_);
   if (scene_ != nullptr) {
     scene_->RemoveLayer(kTrajectoryLayer);
     scene_->RemoveLayer(kWallsLayer);
@@ -142,6 +174,48 @@ void RosNodeView::Disconnect() {
   map_view_->SetMessage(tr("Not connected: File > Connect to ROS master..."));
   status_label_->hide();
 }
+
+#ifdef SIGHTLINE_HAVE_ROS
+namespace {
+const Status kNotConnected(StatusCode::kUnavailable,
+                           "not connected to a ROS master (File > Connect to ROS master...)");
+}  // namespace
+
+Status RosNodeView::SendTap(double x, double y, double image_stamp_s) {
+  return remote_->remote ? remote_->remote->SendTap(x, y, image_stamp_s) : kNotConnected;
+}
+Status RosNodeView::SendConfirm() {
+  return remote_->remote ? remote_->remote->SendConfirm() : kNotConnected;
+}
+Status RosNodeView::SendCancel() {
+  return remote_->remote ? remote_->remote->SendCancel() : kNotConnected;
+}
+Status RosNodeView::SendStop(const std::string& reason) {
+  stop_kept_ = true;
+  stop_reason_ = reason;
+  return remote_->remote ? remote_->remote->SendStop(reason) : kNotConnected;
+}
+Status RosNodeView::SendStart() {
+  const Status sent = remote_->remote ? remote_->remote->SendStart() : kNotConnected;
+  if (sent.ok()) {  // Otherwise the STOP stays kept: no node heard START.
+    stop_kept_ = false;
+    stop_reason_.clear();
+  }
+  return sent;
+}
+bool RosNodeView::node_listening() const {
+  return remote_->remote != nullptr && remote_->remote->node_listening();
+}
+#else
+bool RosNodeView::node_listening() const { return false; }
+Status RosNodeView::SendTap(double, double, double) {
+  return Status(StatusCode::kUnavailable, "this build has no ROS");
+}
+Status RosNodeView::SendConfirm() { return SendTap(0, 0, 0); }
+Status RosNodeView::SendCancel() { return SendTap(0, 0, 0); }
+Status RosNodeView::SendStop(const std::string&) { return SendTap(0, 0, 0); }
+Status RosNodeView::SendStart() { return SendTap(0, 0, 0); }
+#endif
 
 void RosNodeView::ShowStatus() {
   status_label_->setText(connected_ ? tr("ROS: connected to %1").arg(uri_)
@@ -191,6 +265,12 @@ void RosNodeView::Apply(const std::shared_ptr<const RemoteUpdate>& update) {
     }
     case RemoteUpdate::Kind::kTarget:
       if (scene_ != nullptr) scene_->SetPoses(kTargetLayer, {update->target.pose}, QColor(), 0.1);
+      emit ButtonUpdate(update);
+      break;
+    case RemoteUpdate::Kind::kButtonImage:
+    case RemoteUpdate::Kind::kGate:
+    case RemoteUpdate::Kind::kStopState:
+      emit ButtonUpdate(update);
       break;
   }
 #endif

@@ -1,8 +1,10 @@
 // RosRemote: one process-wide roscpp (initialised once, pointed at a master with
 // ros::master::init), per connection a NodeHandle with its own callback queue and spinner, and a
-// watch thread that checks the master every second and subscribes anew when it comes back.
+// watch thread that checks the master every second and subscribes anew when it comes back. STOP
+// goes out on a latched publisher and is kept here, so every (re)advertised publisher carries it.
 #include "core/ros/ros_remote.h"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -13,7 +15,10 @@
 #include <ros/names.h>
 #include <ros/node_handle.h>
 #include <ros/spinner.h>
+#include <sensor_msgs/CompressedImage.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/Bool.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -150,7 +155,11 @@ struct RosRemote::Impl {
   std::unique_ptr<ros::NodeHandle> nh;
   std::unique_ptr<ros::AsyncSpinner> spinner;
   std::vector<ros::Subscriber> subs;
-  ros::Publisher tap, confirm, cancel, stop;
+  ros::Publisher tap, confirm, cancel, stop, start;
+  // The STOP kept for nodes (latched on `stop`, published anew on every advertise) until
+  // SendStart; empty reason with `stop_latched` false: none.
+  bool stop_latched = false;
+  std::string stop_reason;
 
   void Emit(std::shared_ptr<RemoteUpdate> update) {
     if (on_update) on_update(std::move(update));
@@ -206,6 +215,47 @@ struct RosRemote::Impl {
     Emit(std::move(u));
   }
 
+  void OnImage(const cv::Mat& image, const ros::Time& stamp) {
+    if (image.empty()) return;
+    auto u = NewUpdate(RemoteUpdate::Kind::kButtonImage, stamp);
+    u->image = image;
+    Emit(std::move(u));
+  }
+  void OnDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
+    for (const auto& status : msg->status) {
+      if (status.name != "sightline/button/gate") continue;
+      auto u = NewUpdate(RemoteUpdate::Kind::kGate, msg->header.stamp);
+      u->gate.message = status.message;
+      for (const auto& kv : status.values) {
+        const bool yes = kv.value == "true";
+        if (kv.key == "state") u->gate.state = kv.value;
+        if (kv.key == "reason") u->gate.reason = kv.value;
+        if (kv.key == "stopped") u->gate.stopped = yes;
+        if (kv.key == "held") u->gate.held = yes;
+        if (kv.key == "tracking_only") u->gate.tracking_only = yes;
+        if (kv.key == "target_published") u->gate.target_published = yes;
+      }
+      Emit(std::move(u));
+    }
+  }
+  void OnStopState(const std_msgs::Bool::ConstPtr& msg) {
+    auto u = NewUpdate(RemoteUpdate::Kind::kStopState, ros::Time());
+    u->stopped = msg->data;
+    Emit(std::move(u));
+  }
+
+  // The latched STOP publisher (mutex held); a kept STOP goes out on it at once, so that the
+  // node, subscribing now or later, receives it.
+  void AdvertiseStop() {
+    stop = nh->advertise<std_msgs::String>("button_stop", 10, /*latch=*/true);
+    if (stop_latched) PublishStop();
+  }
+  void PublishStop() {
+    std_msgs::String msg;
+    msg.data = stop_reason;
+    stop.publish(msg);
+  }
+
   // (Re)subscribes and advertises on the master that answers now (mutex held). roscpp registers
   // with the master blocking until it answers: only called right after a successful check.
   void Subscribe() {
@@ -245,10 +295,38 @@ struct RosRemote::Impl {
         *nh, "button_target", 10,
         [this](const geometry_msgs::PoseStamped::ConstPtr& m) { OnTarget(m); },
         refused_on("button_target")));
+    // The operator's picture: latest wins (queue 1), decoded on the spinner thread.
+    if (options.compressed_image) {
+      subs.push_back(SubscribeChecked<sensor_msgs::CompressedImage>(
+          *nh, "button_image/compressed", 1,
+          [this](const sensor_msgs::CompressedImage::ConstPtr& m) {
+            if (auto image = DecodeRosCompressedImage(*m); image.ok()) {
+              OnImage(*image, m->header.stamp);
+            }
+          },
+          refused_on("button_image/compressed")));
+    } else {
+      subs.push_back(SubscribeChecked<sensor_msgs::Image>(
+          *nh, "button_image", 1,
+          [this](const sensor_msgs::Image::ConstPtr& m) {
+            if (auto image = DecodeRosImage(*m, RosImageRole::kColor); image.ok()) {
+              OnImage(*image, m->header.stamp);
+            }
+          },
+          refused_on("button_image")));
+    }
+    subs.push_back(SubscribeChecked<diagnostic_msgs::DiagnosticArray>(
+        *nh, "diagnostics", 20,
+        [this](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) { OnDiagnostics(m); },
+        refused_on("diagnostics")));
+    subs.push_back(SubscribeChecked<std_msgs::Bool>(
+        *nh, "stop", 5, [this](const std_msgs::Bool::ConstPtr& m) { OnStopState(m); },
+        refused_on("stop")));
     tap = nh->advertise<geometry_msgs::PointStamped>("button_tap", 10);
     confirm = nh->advertise<std_msgs::Empty>("button_confirm", 10);
     cancel = nh->advertise<std_msgs::Empty>("button_cancel", 10);
-    stop = nh->advertise<std_msgs::String>("button_stop", 10);
+    start = nh->advertise<std_msgs::Empty>("button_start", 10);
+    AdvertiseStop();
     if (!spinner) {
       spinner = std::make_unique<ros::AsyncSpinner>(1, &queue);
       spinner->start();
@@ -256,7 +334,7 @@ struct RosRemote::Impl {
   }
   void Unsubscribe() {
     subs.clear();
-    tap = confirm = cancel = stop = ros::Publisher();
+    tap = confirm = cancel = stop = start = ros::Publisher();
     nh.reset();
   }
 
@@ -373,11 +451,51 @@ Status RosRemote::SendCancel() {
 }
 
 Status RosRemote::SendStop(const std::string& reason) {
-  return impl_->Send(impl_->stop, "button_stop", [&](const ros::Publisher& pub) {
-    std_msgs::String msg;
-    msg.data = reason;
-    pub.publish(msg);
-  });
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->stop_latched = true;
+  impl_->stop_reason = reason;
+  // Whatever the master says: a publisher that exists still reaches the nodes it is connected
+  // to, and keeps the STOP for those that subscribe later.
+  if (!impl_->stop) {
+    return Status(StatusCode::kUnavailable,
+                  "not connected to a ROS master: STOP kept, sent on button_stop when it answers");
+  }
+  impl_->PublishStop();
+  if (impl_->stop.getNumSubscribers() == 0) {
+    return Status(StatusCode::kUnavailable, "no node subscribes to " + impl_->stop.getTopic() +
+                                                " yet: STOP kept (latched) for it");
+  }
+  return Status::Ok();
+}
+
+Status RosRemote::SendStart() {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  // STOP stays until a node really hears START: a START that reaches nobody lifts nothing.
+  if (!impl_->connected.load() || !impl_->start) {
+    return Status(StatusCode::kUnavailable,
+                  "not connected to a ROS master: button_start not sent, STOP kept");
+  }
+  if (impl_->start.getNumSubscribers() == 0) {
+    return Status(StatusCode::kUnavailable, "no node subscribes to " + impl_->start.getTopic() +
+                                                ": button_start not sent, STOP kept");
+  }
+  impl_->start.publish(std_msgs::Empty());
+  impl_->stop_latched = false;
+  impl_->stop_reason.clear();
+  // A fresh publisher holds no STOP for nodes that subscribe from now on.
+  impl_->stop.shutdown();
+  impl_->AdvertiseStop();
+  return Status::Ok();
+}
+
+bool RosRemote::node_listening() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->tap && impl_->tap.getNumSubscribers() > 0;
+}
+
+bool RosRemote::stop_latched() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->stop_latched;
 }
 
 }  // namespace sightline

@@ -1,6 +1,8 @@
 // Watching a sightline-node from another process (the GUI): connects to a given ROS master,
 // subscribes to the node's topics and hands immutable, timestamped copies of what arrives to a
-// callback; sends the operator's commands to the node's button topics. ROS-free header (pimpl):
+// callback; sends the operator's commands to the node's button topics. STOP is latched: kept
+// and delivered to every node that subscribes to button_stop (also one that starts or comes
+// back after a master restart) until SendStart lifts it. ROS-free header (pimpl):
 // the GUI includes it without ROS's headers and links ROS only through sightline_ros_remote.
 //
 //   RosRemote remote([](std::shared_ptr<const RemoteUpdate> u) { /* any thread: queue it */ });
@@ -14,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -27,6 +30,9 @@ struct RosRemoteOptions {
   std::string master_uri;
   // The node's namespace ("/" or "" for the root, "/robot1"): its topics are NAMESPACE/map ...
   std::string ros_namespace = "/";
+  // The operator's image from button_image/compressed (JPEG: a tablet on Wi-Fi) when true, the
+  // raw button_image otherwise.
+  bool compressed_image = true;
 
   // Empty when valid; otherwise a message naming the bad field and value.
   bool IsValid(std::string* error) const;
@@ -66,9 +72,28 @@ struct RemoteTarget {
   std::string frame_id;
 };
 
+// The button pipeline's gate on the node's diagnostics (status "sightline/button/gate"): keys
+// as core/ros/ros_publish.h's ButtonGateStatus writes them.
+struct RemoteGate {
+  std::string state;    // PickerStateKey: "idle", "confirm", "tracking", ..., "stopped".
+  std::string reason;   // GateReasonKey: "send", "not_confirmed", "stale", ...
+  std::string message;  // The gate's own words ("target sent" or why not), English.
+  bool stopped = false, held = false, tracking_only = false, target_published = false;
+};
+
 // One thing that arrived, or a change of the connection. Immutable once handed out.
 struct RemoteUpdate {
-  enum class Kind { kConnection, kMap, kOdometry, kCloud, kWalls, kTarget };
+  enum class Kind {
+    kConnection,
+    kMap,
+    kOdometry,
+    kCloud,
+    kWalls,
+    kTarget,
+    kButtonImage,  // `image`: the frame the operator taps on; stamp_s names it in a tap.
+    kGate,         // `gate`.
+    kStopState,    // `stopped`: the node's latched `stop` (true once it has taken STOP).
+  };
   Kind kind = Kind::kConnection;
   double stamp_s = 0;    // The message's header stamp (sensor time), seconds.
   double receive_s = 0;  // Host time when it arrived (steady clock), seconds.
@@ -80,6 +105,9 @@ struct RemoteUpdate {
   RemoteCloud cloud;
   RemoteWalls walls;
   RemoteTarget target;
+  cv::Mat image;  // kButtonImage: CV_8UC3 BGR or CV_8UC1, its own buffer.
+  RemoteGate gate;
+  bool stopped = false;
 };
 
 // The connection to one master at a time. Thread-safe; the callback runs on ROS's spinner or the
@@ -116,8 +144,19 @@ class RosRemote {
   Status SendConfirm();
   // Forgets the candidate or target (button_cancel).
   Status SendCancel();
-  // STOP with a reason (button_stop).
+  // STOP with a reason (button_stop, latched). Never dropped: published at once on the open
+  // publisher (its connections to the node outlive a master that went away) and kept, so that a
+  // node that subscribes later (reconnecting, restarted) receives it, until SendStart. Ok when a
+  // node subscribes now; kUnavailable (saying it is kept) otherwise, the STOP still pending.
   Status SendStop(const std::string& reason);
+  // Lifts STOP (button_start) and forgets the latched STOP; kUnavailable, the STOP kept, when no
+  // node subscribes to button_start (or no master answers).
+  Status SendStart();
+  // Whether a node (sightline-node's button pipeline) subscribes to button_tap now: false when
+  // the node is gone even though the master answers.
+  bool node_listening() const;
+  // Whether a STOP is kept for nodes (since SendStop, until SendStart).
+  bool stop_latched() const;
 
  private:
   struct Impl;

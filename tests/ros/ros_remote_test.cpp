@@ -12,6 +12,7 @@
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <mutex>
@@ -215,7 +216,7 @@ TEST(RosRemote, TapConfirmCancelAndStopReachTheButtonTopicsWithTheirStamps) {
   Received received;
   RosRemote remote(received.callback());
   // Without a master nothing is sent, and the reason says so.
-  EXPECT_EQ(remote.SendStop("x").code(), StatusCode::kUnavailable);
+  EXPECT_EQ(remote.SendTap(1, 2, 3).code(), StatusCode::kUnavailable);
   ASSERT_TRUE(remote.Connect({master.uri(), "/robot1"}).ok());
   ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
   // No node yet: named.
@@ -269,6 +270,117 @@ TEST(RosRemote, TapConfirmCancelAndStopReachTheButtonTopicsWithTheirStamps) {
   EXPECT_EQ(inbox.stops[0], "operator pressed STOP");
   spinner.stop();
   subs.clear();
+  remote.Disconnect();
+}
+
+// What arrives on button_stop for a subscriber made now (this process, as a node would).
+class StopListener {
+ public:
+  explicit StopListener(const std::string& ns) : nh_(ns) {
+    nh_.setCallbackQueue(&queue_);
+    spinner_.start();
+    sub_ = nh_.subscribe<std_msgs::String>("button_stop", 10,
+                                           [this](const std_msgs::String::ConstPtr& m) {
+                                             std::lock_guard<std::mutex> lock(mutex_);
+                                             stops_.push_back(m->data);
+                                           });
+    start_sub_ = nh_.subscribe<std_msgs::Empty>(
+        "button_start", 10, [this](const std_msgs::Empty::ConstPtr&) { ++starts_; });
+  }
+  ~StopListener() {
+    spinner_.stop();
+    sub_.shutdown();
+    start_sub_.shutdown();
+  }
+  std::vector<std::string> stops() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return stops_;
+  }
+  int publishers() const { return static_cast<int>(sub_.getNumPublishers()); }
+  int starts() const { return starts_.load(); }
+
+ private:
+  ros::NodeHandle nh_;
+  ros::CallbackQueue queue_;
+  ros::AsyncSpinner spinner_{1, &queue_};
+  ros::Subscriber sub_, start_sub_;
+  std::atomic<int> starts_{0};
+  mutable std::mutex mutex_;
+  std::vector<std::string> stops_;
+};
+
+// STOP is never dropped: with no node listening it is kept (latched) and reaches the node that
+// subscribes later; Start forgets it, so a node after that gets none.
+TEST(RosRemote, StopIsKeptForANodeThatSubscribesLaterUntilStart) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  RosRemote remote(nullptr);
+  // Before any connection: kept, and said so.
+  const Status early = remote.SendStop("before connecting");
+  EXPECT_EQ(early.code(), StatusCode::kUnavailable);
+  EXPECT_NE(early.message().find("STOP kept"), std::string::npos) << early.message();
+  EXPECT_TRUE(remote.stop_latched());
+  ASSERT_TRUE(remote.Connect({master.uri(), "/robot2"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  {
+    StopListener node("/robot2");
+    ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
+    EXPECT_EQ(node.stops().front(), "before connecting");
+  }
+  const Status later = remote.SendStop("operator");
+  EXPECT_EQ(later.code(), StatusCode::kUnavailable);  // No node now; kept for the next one.
+  EXPECT_NE(later.message().find("/robot2/button_stop"), std::string::npos) << later.message();
+  {
+    StopListener node("/robot2");
+    ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
+    EXPECT_EQ(node.stops().back(), "operator");
+    EXPECT_TRUE(remote.SendStop("again").ok());  // A node listens: sent, Ok.
+    ASSERT_TRUE(WaitFor([&] { return node.stops().size() >= 2; }, 10));
+    EXPECT_EQ(node.stops().back(), "again");
+  }
+  // A START that reaches no node lifts nothing.
+  const Status unheard = remote.SendStart();
+  EXPECT_EQ(unheard.code(), StatusCode::kUnavailable);
+  EXPECT_NE(unheard.message().find("STOP kept"), std::string::npos) << unheard.message();
+  EXPECT_TRUE(remote.stop_latched());
+  {
+    StopListener node("/robot2");
+    ASSERT_TRUE(WaitFor([&] { return remote.SendStart().ok(); }, 10));
+    ASSERT_TRUE(WaitFor([&] { return node.starts() > 0; }, 10));
+  }
+  EXPECT_FALSE(remote.stop_latched());
+  {
+    StopListener node("/robot2");
+    ASSERT_TRUE(WaitFor([&] { return node.publishers() > 0; }, 10));
+    // A latched STOP would come first on the link, before anything published after it.
+    ASSERT_TRUE(WaitFor([&] { return remote.SendStop("marker").ok(); }, 10));
+    ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
+    EXPECT_EQ(node.stops().front(), "marker");
+    EXPECT_TRUE(remote.SendStart().ok());
+  }
+  remote.Disconnect();
+}
+
+// STOP pressed while the master is gone is sent when it comes back, to a node that registers with
+// the new master.
+TEST(RosRemote, StopSentWithoutAMasterReachesTheNodeWhenTheMasterComesBack) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  RosRemote remote(nullptr);
+  ASSERT_TRUE(remote.Connect({master.uri(), "/"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  const int port = master.port();
+  master.Stop();
+  ASSERT_TRUE(WaitFor([&] { return !remote.connected(); }, 10));
+  const Status kept = remote.SendStop("operator, master gone");
+  EXPECT_EQ(kept.code(), StatusCode::kUnavailable);
+  ASSERT_EQ(master.Start(60, port), "");
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  StopListener node("/");
+  ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
+  EXPECT_EQ(node.stops().back(), "operator, master gone");
   remote.Disconnect();
 }
 
