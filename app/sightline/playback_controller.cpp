@@ -139,6 +139,7 @@ std::optional<SensorStats> PlaybackController::live_stats() const {
 
 void PlaybackController::Play() {
   if (!player_) return;
+  RestartDrawingPace();
   // Play at the end of a recording starts it again from the first frame (the pipeline starts
   // over, as on a seek back).
   if (ended_ && info_ && info_->seekable && !info_->live) player_->Seek(0);
@@ -152,11 +153,13 @@ void PlaybackController::Pause() {
 }
 void PlaybackController::Step() {
   if (!player_) return;
+  RestartDrawingPace();
   player_->Step();
   SetPlayState(false, false);
 }
 void PlaybackController::Seek(int64_t index) {
   if (!player_) return;
+  RestartDrawingPace();
   player_->Seek(index);
   SetPlayState(playing_, false);
 }
@@ -399,6 +402,7 @@ void PlaybackController::WorkerLoop() {
       continue;
     }
     live_outage_ = false;
+    const double got_s = HostTimeS();  // From here on the worker works rather than waits.
     auto shared = std::make_shared<const Frame>(std::move(*frame));
     ViewOptions options;
     FrameTap tap;
@@ -413,6 +417,7 @@ void PlaybackController::WorkerLoop() {
     result->pipeline = RunProcessor(*shared, /*replay=*/false, &result->pipeline_restarted);
     result->prepare_ms = (HostTimeS() - start) * 1000;
     Publish(std::move(result));
+    worker_busy_us_ += static_cast<int64_t>((HostTimeS() - got_s) * 1e6);
   }
 }
 
@@ -505,21 +510,30 @@ void PlaybackController::UpdateDrawingPace() {
   const double process_cpu_s = ThreadCpuS(CLOCK_PROCESS_CPUTIME_ID);
   const double worker_cpu_s = worker_cpu_clock_ ? ThreadCpuS(*worker_cpu_clock_) : 0;
   const double wall_s = now_s - last_delivery_s_;
+  const int64_t busy_us = worker_busy_us_.load();
   if (last_delivery_s_ > 0 && wall_s < 2.0) {
+    // A worker that waits for its frames (a recording played at its own rate, a camera) has
+    // time to spare: drawing does not hold it back.
+    const double busy_share = 1e-6 * static_cast<double>(busy_us - last_worker_busy_us_) / wall_s;
     const double worker_s = std::max(0.0, worker_cpu_s - last_worker_cpu_s_);
     const double drawing_s = std::max(0.0, (process_cpu_s - last_process_cpu_s_) - worker_s);
     draw_cpu_s_ = draw_cpu_s_ > 0 ? 0.7 * draw_cpu_s_ + 0.3 * drawing_s : drawing_s;
     const double worker_rate = worker_s / wall_s;  // Cores the pipeline uses.
     worker_rate_ = worker_rate_ > 0 ? 0.7 * worker_rate_ + 0.3 * worker_rate : worker_rate;
-    // A paused or waiting worker leaves the machine to the views.
-    delivery_interval_s_ = worker_rate_ < 0.05
+    delivery_interval_s_ = busy_share < kBusyShare
                                ? kMinDeliveryInterval_s
                                : std::clamp(draw_cpu_s_ / (kDrawShare * worker_rate_),
                                             kMinDeliveryInterval_s, kMaxDeliveryInterval_s);
   }
   last_delivery_s_ = now_s;
+  last_worker_busy_us_ = busy_us;
   last_process_cpu_s_ = process_cpu_s;
   last_worker_cpu_s_ = worker_cpu_s;
+}
+
+void PlaybackController::RestartDrawingPace() {
+  last_delivery_s_ = 0;
+  delivery_interval_s_ = kMinDeliveryInterval_s;
 }
 
 double PlaybackController::ThreadCpuS(clockid_t clock) {

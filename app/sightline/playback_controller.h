@@ -124,6 +124,8 @@ class PlaybackController : public QObject {
   void DeliverLatest();
   // Sets the next delivery interval from the CPU time drawing took (GUI thread).
   void UpdateDrawingPace();
+  // Playing starts, steps or seeks: the pace is measured anew (GUI thread).
+  void RestartDrawingPace();
   // A CPU-time clock's reading in seconds (0 when it cannot be read).
   static double ThreadCpuS(clockid_t clock);
   // Builds the processor for the current source from the factory (GUI thread); the previous
@@ -178,12 +180,18 @@ class PlaybackController : public QObject {
   bool delivery_pending_ = false;
 
   // Drawing pace (GUI thread): a frame is handed to the views at most every
-  // delivery_interval_s_, chosen so that drawing (the process's CPU time outside the worker)
-  // takes at most kDrawShare of the worker's CPU time, between the bounds below (the views
+  // delivery_interval_s_. While the worker is busy with frames, it is chosen so that drawing
+  // (the process's CPU time outside the worker) takes at most kDrawShare of the worker's CPU
+  // time, between the bounds below (the views
   // show at least 2 frames a second).
   static constexpr double kDrawShare = 0.2;
   static constexpr double kMinDeliveryInterval_s = 1.0 / 30;
   static constexpr double kMaxDeliveryInterval_s = 0.5;
+  // Below this share of wall time spent working (not waiting for frames) the worker has time
+  // to spare and the views draw at the full rate.
+  static constexpr double kBusyShare = 0.8;
+  std::atomic<int64_t> worker_busy_us_{0};  // Worker time spent on frames, microseconds.
+  int64_t last_worker_busy_us_ = 0;
   std::optional<clockid_t> worker_cpu_clock_;  // The worker thread's CPU-time clock.
   double last_delivery_s_ = 0;
   double last_process_cpu_s_ = 0;
