@@ -520,7 +520,9 @@ void PlaybackController::UpdateDrawingPace() {
     draw_cpu_s_ = draw_cpu_s_ > 0 ? 0.7 * draw_cpu_s_ + 0.3 * drawing_s : drawing_s;
     const double worker_rate = worker_s / wall_s;  // Cores the pipeline uses.
     worker_rate_ = worker_rate_ > 0 ? 0.7 * worker_rate_ + 0.3 * worker_rate : worker_rate;
-    delivery_interval_s_ = busy_share < kBusyShare
+    // A recording played as fast as possible is all work (reading and decoding included).
+    const bool flat_out = speed_ == 0 && info_ && !info_->live;
+    delivery_interval_s_ = !flat_out && busy_share < kBusyShare
                                ? kMinDeliveryInterval_s
                                : std::clamp(draw_cpu_s_ / (kDrawShare * worker_rate_),
                                             kMinDeliveryInterval_s, kMaxDeliveryInterval_s);
