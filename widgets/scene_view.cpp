@@ -14,6 +14,7 @@
 
 #include <QLabel>
 #include <algorithm>
+#include <functional>
 #include <map>
 
 #include "core/common/frame.h"
@@ -59,6 +60,9 @@ struct SceneView::Impl {
     vtkSmartPointer<vtkActor> actor;
     Eigen::Isometry3d world_from_layer = Eigen::Isometry3d::Identity();
     bool visible = true;
+    // A cloud set while the layer was hidden: built only when the layer is shown again, so
+    // hidden layers cost nothing per frame.
+    std::function<void()> build_when_shown;
   };
 
   SceneView* view = nullptr;
@@ -92,10 +96,44 @@ struct SceneView::Impl {
     });
   }
 
+  // Shows `poly` in the layer: the layer's own actor gets the new data in place (no actor,
+  // mapper or renderer change per frame); a layer that is new or was an image plane gets an
+  // actor. `point_size_px` / `line_width_px` apply when > 0.
+  void SetPolyData(const std::string& name, vtkSmartPointer<vtkPolyData> poly, bool cell_colors,
+                   double point_size_px, double line_width_px) {
+    const auto it = layers.find(name);
+    vtkActor* existing = it != layers.end() ? it->second.actor.Get() : nullptr;
+    auto* mapper =
+        existing != nullptr ? vtkPolyDataMapper::SafeDownCast(existing->GetMapper()) : nullptr;
+    if (mapper == nullptr || existing->GetTexture() != nullptr) {
+      vtkSmartPointer<vtkActor> actor = MakeActor(poly, cell_colors);
+      if (point_size_px > 0) actor->GetProperty()->SetPointSize(static_cast<float>(point_size_px));
+      if (line_width_px > 0) actor->GetProperty()->SetLineWidth(static_cast<float>(line_width_px));
+      Replace(name, actor);
+      return;
+    }
+    const bool was_empty = !ShowsGeometry();
+    it->second.build_when_shown = nullptr;
+    mapper->SetInputData(poly);
+    if (cell_colors) {
+      mapper->SetScalarModeToUseCellData();
+    } else {
+      mapper->SetScalarModeToUsePointData();
+    }
+    if (point_size_px > 0) existing->GetProperty()->SetPointSize(static_cast<float>(point_size_px));
+    if (line_width_px > 0) existing->GetProperty()->SetLineWidth(static_cast<float>(line_width_px));
+    if (was_empty && it->second.visible && HasGeometry(existing)) {
+      view->ResetView();
+    } else {
+      Changed();
+    }
+  }
+
   // Puts `actor` in place of the layer's previous one, keeping its pose and visibility.
   void Replace(const std::string& name, const vtkSmartPointer<vtkActor>& actor) {
     const bool was_empty = !ShowsGeometry();
     Layer& layer = layers[name];
+    layer.build_when_shown = nullptr;
     if (layer.actor) renderer->RemoveActor(layer.actor);
     layer.actor = actor;
     ApplyPose(layer.actor, layer.world_from_layer);
@@ -169,15 +207,27 @@ SceneView::~SceneView() = default;
 void SceneView::SetPointCloud(const std::string& layer,
                               const std::shared_ptr<const PointCloud>& cloud, ColorMode mode,
                               double point_size_px) {
+  const auto it = impl_->layers.find(layer);
+  if (it != impl_->layers.end() && !it->second.visible) {
+    // A hidden layer (e.g. the frame's cloud while a pipeline shows its own): nothing is built
+    // until it is shown; then its newest cloud is.
+    it->second.build_when_shown = [this, layer, cloud, mode, point_size_px] {
+      SetPointCloud(layer, cloud, mode, point_size_px);
+    };
+    return;
+  }
   PointCloud empty;
   const PointCloud& points = cloud ? *cloud : empty;
   CloudColoring coloring;
   coloring.use_rgb = (mode == ColorMode::kAuto || mode == ColorMode::kRgb) && points.has_colors();
   coloring.scalar_axis =
       (mode == ColorMode::kHeight ? impl_->up : impl_->forward).normalized().cast<float>();
-  vtkSmartPointer<vtkActor> actor = MakeActor(MakeCloudPolyData(points, coloring), false);
-  actor->GetProperty()->SetPointSize(static_cast<float>(point_size_px));
-  impl_->Replace(layer, std::move(actor));
+  impl_->SetPolyData(layer, MakeCloudPolyData(points, coloring), false, point_size_px, 0);
+}
+
+bool SceneView::IsLayerVisible(const std::string& layer) const {
+  const auto it = impl_->layers.find(layer);
+  return it == impl_->layers.end() || it->second.visible;
 }
 
 void SceneView::SetLines(const std::string& layer, const std::vector<Segment>& segments,
@@ -186,7 +236,7 @@ void SceneView::SetLines(const std::string& layer, const std::vector<Segment>& s
   colored.reserve(segments.size());
   const Rgb8 rgb = ToRgb8(color);
   for (const Segment& s : segments) colored.push_back({s.first, s.second, rgb});
-  impl_->Replace(layer, MakeSegmentsActor(colored, line_width_px));
+  impl_->SetPolyData(layer, MakeSegmentsPolyData(colored), true, 0, line_width_px);
 }
 
 void SceneView::SetTrajectory(const std::string& layer, const Trajectory& trajectory, QColor color,
@@ -198,7 +248,7 @@ void SceneView::SetTrajectory(const std::string& layer, const Trajectory& trajec
     colored.push_back({poses[i - 1].world_from_sensor.translation(),
                        poses[i].world_from_sensor.translation(), rgb});
   }
-  impl_->Replace(layer, MakeSegmentsActor(colored, line_width_px));
+  impl_->SetPolyData(layer, MakeSegmentsPolyData(colored), true, 0, line_width_px);
 }
 
 void SceneView::SetPoses(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
@@ -209,7 +259,7 @@ void SceneView::SetPoses(const std::string& layer, const std::vector<Eigen::Isom
   for (const Eigen::Isometry3d& pose : poses) {
     AppendAxes(pose, size, color.isValid() ? &rgb : nullptr, &colored);
   }
-  impl_->Replace(layer, MakeSegmentsActor(colored, 2.0));
+  impl_->SetPolyData(layer, MakeSegmentsPolyData(colored), true, 0, 2.0);
 }
 
 void SceneView::SetFrusta(const std::string& layer, const std::vector<Eigen::Isometry3d>& poses,
@@ -217,7 +267,7 @@ void SceneView::SetFrusta(const std::string& layer, const std::vector<Eigen::Iso
   std::vector<ColoredSegment> colored;
   colored.reserve(10 * poses.size());
   for (const Eigen::Isometry3d& pose : poses) AppendFrustum(pose, size, ToRgb8(color), &colored);
-  impl_->Replace(layer, MakeSegmentsActor(colored, 1.5));
+  impl_->SetPolyData(layer, MakeSegmentsPolyData(colored), true, 0, 1.5);
 }
 
 void SceneView::SetImagePlane(const std::string& layer, const cv::Mat& image,
@@ -286,8 +336,14 @@ void SceneView::SetLayerPose(const std::string& layer, const Eigen::Isometry3d& 
 void SceneView::SetLayerVisible(const std::string& layer, bool visible) {
   auto it = impl_->layers.find(layer);
   if (it == impl_->layers.end()) return;
+  if (it->second.visible == visible) return;  // Presenters set visibility with every frame.
   it->second.visible = visible;
   it->second.actor->SetVisibility(visible);
+  if (visible && it->second.build_when_shown) {
+    const std::function<void()> build = std::move(it->second.build_when_shown);
+    it->second.build_when_shown = nullptr;
+    build();
+  }
   impl_->Changed();
 }
 

@@ -84,10 +84,13 @@ class SceneView : public VtkGlWidget {
   void ClearLayers();
   // Places a layer in the world (world_from_layer), e.g. a cloud in the camera frame.
   void SetLayerPose(const std::string& layer, const Eigen::Isometry3d& world_from_layer);
-  // Shows or hides a layer without discarding it.
+  // Shows or hides a layer without discarding it. A cloud set while its layer is hidden is
+  // built when the layer is shown.
   void SetLayerVisible(const std::string& layer, bool visible);
   // Whether a layer of that name exists.
   bool HasLayer(const std::string& layer) const;
+  // Whether a layer is shown (true for a layer not made yet: it shows once set).
+  bool IsLayerVisible(const std::string& layer) const;
   // Names of all layers, sorted.
   std::vector<std::string> LayerNames() const;
 

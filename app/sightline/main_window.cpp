@@ -460,8 +460,13 @@ void MainWindow::ShowImages(const PlaybackResult& result) {
       secondary_view_->SetImage(result.secondary_image);
     }
   }
-  if (result.cloud) {
-    scene_view_->SetPointCloud("cloud", result.cloud, SceneView::ColorMode::kAuto);
+  // The frame's cloud only when the 3D view shows it (a pipeline may hide it for its own).
+  std::shared_ptr<const PointCloud> cloud = result.cloud;
+  if (!cloud && scene_view_->isVisible() && scene_view_->IsLayerVisible("cloud")) {
+    cloud = playback_->MakeCloud(result);
+  }
+  if (cloud) {
+    scene_view_->SetPointCloud("cloud", cloud, SceneView::ColorMode::kAuto);
     if (first_cloud_) {
       scene_view_->ResetView();
       first_cloud_ = false;

@@ -1,8 +1,13 @@
 #include "app/sightline/playback_controller.h"
 
+#include <pthread.h>
+
 #include <QPointer>
+#include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <cmath>
+#include <ctime>
 #include <filesystem>
 
 #include "core/common/depth_cloud.h"
@@ -134,6 +139,7 @@ std::optional<SensorStats> PlaybackController::live_stats() const {
 
 void PlaybackController::Play() {
   if (!player_) return;
+  RestartDrawingPace();
   // Play at the end of a recording starts it again from the first frame (the pipeline starts
   // over, as on a seek back).
   if (ended_ && info_ && info_->seekable && !info_->live) player_->Seek(0);
@@ -147,11 +153,13 @@ void PlaybackController::Pause() {
 }
 void PlaybackController::Step() {
   if (!player_) return;
+  RestartDrawingPace();
   player_->Step();
   SetPlayState(false, false);
 }
 void PlaybackController::Seek(int64_t index) {
   if (!player_) return;
+  RestartDrawingPace();
   player_->Seek(index);
   SetPlayState(playing_, false);
 }
@@ -277,6 +285,7 @@ std::shared_ptr<const PipelineFrameResult> PlaybackController::RunProcessor(cons
     if (processor_started_s_ == 0) processor_started_s_ = start;
     result = processor_->Process(frame);
     if (result.ok()) {
+      ++frames_processed_;
       AddFrameTiming(processor_->Statistics(), **result, (HostTimeS() - start) * 1000.0,
                      &processor_timing_);
     }
@@ -334,6 +343,9 @@ void PlaybackController::StartWorker(std::unique_ptr<Player> player) {
   player_->SetSpeed(speed_);
   stop_ = false;
   worker_ = std::thread([this] { WorkerLoop(); });
+  clockid_t clock{};
+  if (pthread_getcpuclockid(worker_.native_handle(), &clock) == 0) worker_cpu_clock_ = clock;
+  last_delivery_s_ = 0;
 }
 
 void PlaybackController::StopWorker() {
@@ -341,6 +353,7 @@ void PlaybackController::StopWorker() {
   stop_ = true;
   player_->Stop();
   if (worker_.joinable()) worker_.join();
+  worker_cpu_clock_.reset();
   live_ = nullptr;
   player_.reset();
   std::lock_guard<std::mutex> lock(mutex_);
@@ -360,6 +373,7 @@ void PlaybackController::WorkerLoop() {
         QMetaObject::invokeMethod(
             this,
             [this] {
+              DeliverLatest();  // The last frame reaches the views before the end is told.
               SetPlayState(false, true);
               emit EndOfStream();
             },
@@ -388,6 +402,7 @@ void PlaybackController::WorkerLoop() {
       continue;
     }
     live_outage_ = false;
+    const double got_s = HostTimeS();  // From here on the worker works rather than waits.
     auto shared = std::make_shared<const Frame>(std::move(*frame));
     ViewOptions options;
     FrameTap tap;
@@ -402,6 +417,7 @@ void PlaybackController::WorkerLoop() {
     result->pipeline = RunProcessor(*shared, /*replay=*/false, &result->pipeline_restarted);
     result->prepare_ms = (HostTimeS() - start) * 1000;
     Publish(std::move(result));
+    worker_busy_us_ += static_cast<int64_t>((HostTimeS() - got_s) * 1e6);
   }
 }
 
@@ -419,12 +435,9 @@ std::shared_ptr<const PlaybackResult> PlaybackController::Prepare(
     result->primary_image = rgbd->color;
     result->secondary_image = rgbd->depth_m;
     result->secondary_is_depth = true;
-    if (info && info->rgbd) {
-      cv::Mat depth = rgbd->depth_m.clone();
-      depth.setTo(std::numeric_limits<float>::quiet_NaN(), depth > options.max_depth_m);
-      result->cloud = std::make_shared<PointCloud>(
-          DepthToCloud(depth, rgbd->color, info->rgbd->color, options.cloud_stride));
-    }
+    // The cloud is made by the GUI for the frames it shows (MakeCloud), not for every frame.
+    result->cloud_stride = options.cloud_stride;
+    result->max_depth_m = options.max_depth_m;
   } else if (const auto* stereo = std::get_if<StereoFrame>(&frame)) {
     result->primary_image = stereo->left;
     result->secondary_image = stereo->right;
@@ -436,6 +449,24 @@ std::shared_ptr<const PlaybackResult> PlaybackController::Prepare(
   return result;
 }
 
+std::shared_ptr<const PointCloud> PlaybackController::MakeCloud(
+    const PlaybackResult& result) const {
+  if (result.cloud) return result.cloud;
+  std::shared_ptr<const SourceInfo> info;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    info = info_;
+  }
+  if (!result.secondary_is_depth || !info || !info->rgbd || result.secondary_image.empty() ||
+      result.primary_image.empty()) {
+    return nullptr;
+  }
+  cv::Mat depth = result.secondary_image.clone();
+  depth.setTo(std::numeric_limits<float>::quiet_NaN(), depth > result.max_depth_m);
+  return std::make_shared<PointCloud>(
+      DepthToCloud(depth, result.primary_image, info->rgbd->color, result.cloud_stride));
+}
+
 void PlaybackController::Publish(std::shared_ptr<const PlaybackResult> result) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -443,7 +474,19 @@ void PlaybackController::Publish(std::shared_ptr<const PlaybackResult> result) {
     if (delivery_pending_) return;  // The GUI has not taken the previous one: replace it.
     delivery_pending_ = true;
   }
-  QMetaObject::invokeMethod(this, &PlaybackController::DeliverLatest, Qt::QueuedConnection);
+  QMetaObject::invokeMethod(this, &PlaybackController::DeliverWhenDue, Qt::QueuedConnection);
+}
+
+void PlaybackController::DeliverWhenDue() {
+  // The views draw at most one frame per interval: the worker never waits for them, the newest
+  // result replaces a pending one, and the frames the views cannot draw in time are skipped.
+  const double wait_s = last_delivery_s_ + delivery_interval_s_ - HostTimeS();
+  if (wait_s > 0) {
+    QTimer::singleShot(static_cast<int>(std::ceil(wait_s * 1000)), this,
+                       &PlaybackController::DeliverLatest);
+    return;
+  }
+  DeliverLatest();
 }
 
 void PlaybackController::DeliverLatest() {
@@ -453,7 +496,52 @@ void PlaybackController::DeliverLatest() {
     result = std::move(latest_);
     delivery_pending_ = false;
   }
-  if (result) emit FrameReady(std::move(result));
+  if (!result) return;
+  UpdateDrawingPace();
+  emit FrameReady(std::move(result));
+}
+
+void PlaybackController::UpdateDrawingPace() {
+  // What the rest of the process (the GUI thread, the 3D view's rasteriser threads) spent since
+  // the last frame handed over, against what the worker spent: on a machine the pipeline has
+  // to share, every millisecond of drawing is one the pipeline waits for. The interval keeps
+  // drawing within kDrawShare of the worker's time, and at the full rate when it has time.
+  const double now_s = HostTimeS();
+  const double process_cpu_s = ThreadCpuS(CLOCK_PROCESS_CPUTIME_ID);
+  const double worker_cpu_s = worker_cpu_clock_ ? ThreadCpuS(*worker_cpu_clock_) : 0;
+  const double wall_s = now_s - last_delivery_s_;
+  const int64_t busy_us = worker_busy_us_.load();
+  if (last_delivery_s_ > 0 && wall_s < 2.0) {
+    // A worker that waits for its frames (a recording played at its own rate, a camera) has
+    // time to spare: drawing does not hold it back.
+    const double busy_share = 1e-6 * static_cast<double>(busy_us - last_worker_busy_us_) / wall_s;
+    const double worker_s = std::max(0.0, worker_cpu_s - last_worker_cpu_s_);
+    const double drawing_s = std::max(0.0, (process_cpu_s - last_process_cpu_s_) - worker_s);
+    draw_cpu_s_ = draw_cpu_s_ > 0 ? 0.7 * draw_cpu_s_ + 0.3 * drawing_s : drawing_s;
+    const double worker_rate = worker_s / wall_s;  // Cores the pipeline uses.
+    worker_rate_ = worker_rate_ > 0 ? 0.7 * worker_rate_ + 0.3 * worker_rate : worker_rate;
+    // A recording played as fast as possible is all work (reading and decoding included).
+    const bool flat_out = speed_ == 0 && info_ && !info_->live;
+    delivery_interval_s_ = !flat_out && busy_share < kBusyShare
+                               ? kMinDeliveryInterval_s
+                               : std::clamp(draw_cpu_s_ / (kDrawShare * worker_rate_),
+                                            kMinDeliveryInterval_s, kMaxDeliveryInterval_s);
+  }
+  last_delivery_s_ = now_s;
+  last_worker_busy_us_ = busy_us;
+  last_process_cpu_s_ = process_cpu_s;
+  last_worker_cpu_s_ = worker_cpu_s;
+}
+
+void PlaybackController::RestartDrawingPace() {
+  last_delivery_s_ = 0;
+  delivery_interval_s_ = kMinDeliveryInterval_s;
+}
+
+double PlaybackController::ThreadCpuS(clockid_t clock) {
+  timespec t{};
+  if (clock_gettime(clock, &t) != 0) return 0;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 }  // namespace sightline

@@ -6,6 +6,7 @@
 #include <QString>
 #include <QStringList>
 #include <atomic>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -81,7 +82,14 @@ class PlaybackController : public QObject {
   bool ended() const { return ended_; }
   // Valid after Opened().
   const SourceInfo* info() const { return info_.get(); }
+  // The 3D cloud of a prepared RGB-D frame (depth and colour through the open source's
+  // calibration, with the view options of the frame), or its own cloud; nullptr when it has
+  // none. Made on request: only the frames a visible 3D view draws pay for it.
+  std::shared_ptr<const PointCloud> MakeCloud(const PlaybackResult& result) const;
   const Trajectory* ground_truth() const;
+  // Frames the pipelines have processed since this controller was made (any thread): every
+  // frame played, whether or not the views drew its result.
+  int64_t frames_processed() const { return frames_processed_.load(); }
 
  signals:
   void Opened(const QString& path);
@@ -111,7 +119,15 @@ class PlaybackController : public QObject {
                                                 const ViewOptions& options) const;
   // Stores the newest result and notifies the GUI unless a notification is already pending.
   void Publish(std::shared_ptr<const PlaybackResult> result);
+  // Hands the newest result to the views now, or when the drawing interval has passed.
+  void DeliverWhenDue();
   void DeliverLatest();
+  // Sets the next delivery interval from the CPU time drawing took (GUI thread).
+  void UpdateDrawingPace();
+  // Playing starts, steps or seeks: the pace is measured anew (GUI thread).
+  void RestartDrawingPace();
+  // A CPU-time clock's reading in seconds (0 when it cannot be read).
+  static double ThreadCpuS(clockid_t clock);
   // Builds the processor for the current source from the factory (GUI thread); the previous
   // one is aborted with `reason` first (its live outputs, e.g. arm clients, are told).
   void RebuildProcessor(const std::string& reason);
@@ -154,6 +170,7 @@ class PlaybackController : public QObject {
   int64_t last_processed_id_ = -1;
   TimingStats processor_timing_;    // This run's per-stage timing, as metrics.json reports it.
   double processor_started_s_ = 0;  // Host time of the run's first frame (0: none yet).
+  std::atomic<int64_t> frames_processed_{0};
 
   mutable std::mutex mutex_;  // Guards everything below.
   ViewOptions view_options_;
@@ -161,6 +178,27 @@ class PlaybackController : public QObject {
   bool reprocess_ = false;
   std::shared_ptr<const PlaybackResult> latest_;
   bool delivery_pending_ = false;
+
+  // Drawing pace (GUI thread): a frame is handed to the views at most every
+  // delivery_interval_s_. While the worker is busy with frames, it is chosen so that drawing
+  // (the process's CPU time outside the worker) takes at most kDrawShare of the worker's CPU
+  // time, between the bounds below (the views
+  // show at least 2 frames a second).
+  static constexpr double kDrawShare = 0.2;
+  static constexpr double kMinDeliveryInterval_s = 1.0 / 30;
+  static constexpr double kMaxDeliveryInterval_s = 0.5;
+  // Below this share of wall time spent working (not waiting for frames) the worker has time
+  // to spare and the views draw at the full rate.
+  static constexpr double kBusyShare = 0.8;
+  std::atomic<int64_t> worker_busy_us_{0};  // Worker time spent on frames, microseconds.
+  int64_t last_worker_busy_us_ = 0;
+  std::optional<clockid_t> worker_cpu_clock_;  // The worker thread's CPU-time clock.
+  double last_delivery_s_ = 0;
+  double last_process_cpu_s_ = 0;
+  double last_worker_cpu_s_ = 0;
+  double draw_cpu_s_ = 0;   // Smoothed CPU seconds of drawing per frame handed over.
+  double worker_rate_ = 0;  // Smoothed cores the worker used.
+  double delivery_interval_s_ = kMinDeliveryInterval_s;
   FrameTap tap_;
 };
 
