@@ -470,6 +470,14 @@ std::shared_ptr<const PointCloud> PlaybackController::MakeCloud(
 void PlaybackController::Publish(std::shared_ptr<const PlaybackResult> result) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    // A restart carried by a result the views never took must not be lost with it: the views
+    // would go on drawing the previous run's trajectory under the new one.
+    if (latest_ && delivery_pending_ && latest_->pipeline_restarted &&
+        !result->pipeline_restarted) {
+      auto merged = std::make_shared<PlaybackResult>(*result);
+      merged->pipeline_restarted = true;
+      result = std::move(merged);
+    }
     latest_ = std::move(result);
     if (delivery_pending_) return;  // The GUI has not taken the previous one: replace it.
     delivery_pending_ = true;

@@ -277,6 +277,64 @@ TEST_F(RosNode, StereoOdometryEqualsTheHeadlessTrajectory) {
   }
 }
 
+// sightline-node --pipeline mono-slam on the simulated stereo drive's left images: each tracked
+// frame's pose on odom equals the headless run's pose of that frame (trajectory_map.txt, the
+// SLAM map's frame, as published), and the map's points and keyframes arrive latched.
+TEST_F(RosNode, MonoSlamOdometryAndMapEqualTheHeadlessRun) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_mono_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mono-slam " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto trajectory = testing::ReadTumTrajectory(headless + "/trajectory_map.txt");
+  ASSERT_GE(trajectory.size(), 20u) << "the headless run should track most of the 30 frames";
+
+  ros::NodeHandle nh;
+  Inbox<nav_msgs::Odometry> odoms;
+  ros::Subscriber sub = nh.subscribe("/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  Inbox<sensor_msgs::PointCloud2> clouds;
+  ros::Subscriber points_sub =
+      nh.subscribe("/map_points", 100, &Inbox<sensor_msgs::PointCloud2>::Take, &clouds);
+  Inbox<visualization_msgs::MarkerArray> keyframes;
+  ros::Subscriber keyframes_sub =
+      nh.subscribe("/keyframes", 100, &Inbox<visualization_msgs::MarkerArray>::Take, &keyframes);
+  const std::string out = testing::TempDir("ros_node_mono_node");
+  const std::string log = testing::TempDir("ros_node_mono_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline mono-slam --source " + rec + " --out " + out + " --rate recorded --linger 2",
+      log));
+  EXPECT_EQ(node.Wait(240), 0) << testing::ReadTextFile(log);
+  // The node's own files equal the headless run's: the same pipeline object on the same frames.
+  EXPECT_EQ(testing::ReadTextFile(out + "/trajectory_map.txt"),
+            testing::ReadTextFile(headless + "/trajectory_map.txt"));
+  const auto received = odoms.messages();
+  // At the recorded 10 Hz a subscriber connected before the first tracked frame misses few.
+  ASSERT_GE(received.size(), trajectory.size() / 2) << testing::ReadTextFile(log);
+  for (const auto& odom : received) {
+    const auto row = trajectory.lower_bound(odom.header.stamp.toSec() - 1e-4);
+    ASSERT_NE(row, trajectory.end());
+    ASSERT_NEAR(row->first, odom.header.stamp.toSec(), 1e-4);
+    const auto& v = row->second;
+    const auto& p = odom.pose.pose.position;
+    // trajectory_map.txt holds 9 decimals.
+    EXPECT_NEAR(p.x, v[0], 1e-6);
+    EXPECT_NEAR(p.y, v[1], 1e-6);
+    EXPECT_NEAR(p.z, v[2], 1e-6);
+    const auto& o = odom.pose.pose.orientation;
+    EXPECT_NEAR(std::abs(o.x * v[3] + o.y * v[4] + o.z * v[5] + o.w * v[6]), 1.0, 1e-6);
+  }
+  EXPECT_GT(trajectory.rbegin()->second.head<3>().norm(), 0.1) << "the camera moved";
+  // The map: points in front of the last tracked camera's reach, and one arrow per keyframe.
+  ASSERT_FALSE(clouds.messages().empty()) << testing::ReadTextFile(log);
+  const auto& cloud = clouds.messages().back();
+  EXPECT_GE(cloud.width * cloud.height, 50u);
+  ASSERT_FALSE(keyframes.messages().empty());
+  EXPECT_GE(keyframes.messages().back().markers.size(), 2u);
+}
+
 // sightline-node on live ros:// topics: the test plays the stereo recording onto image and
 // camera_info topics; the odometry equals the headless run on the recording; Ctrl-C ends the
 // live run as cancelled (exit 130) with its files written.
