@@ -335,6 +335,64 @@ TEST_F(RosNode, MonoSlamOdometryAndMapEqualTheHeadlessRun) {
   EXPECT_GE(keyframes.messages().back().markers.size(), 2u);
 }
 
+// mono-slam on a live ros:// mono topic (the stereo drive's left images and camera_info played
+// by the test): the node's trajectory equals the headless run's on the recording.
+TEST_F(RosNode, MonoSlamOnLiveTopicsEqualsTheHeadlessRun) {
+  const std::string rec = testing::CorridorStereo();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_mono_live_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mono-slam " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_EQ(cli.exit_code, 0) << cli.out;
+  const auto expected = testing::ReadTumTrajectory(headless + "/trajectory_map.txt");
+  ASSERT_GE(expected.size(), 20u);
+  StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(rec, SourceKind::kStereo);
+  ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+  const StereoRig rig = *(*dataset)->info().stereo;
+
+  ros::NodeHandle nh;
+  ros::Publisher image = nh.advertise<sensor_msgs::Image>("/mono/image_rect", 50);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/mono/camera_info", 1, true);
+  info.publish(RosInfoFromCamera(rig.left, 0, "camera"));
+  Inbox<nav_msgs::Odometry> odoms;
+  ros::Subscriber sub = nh.subscribe("/odom", 100, &Inbox<nav_msgs::Odometry>::Take, &odoms);
+  const std::string out = testing::TempDir("ros_node_mono_live");
+  const std::string log = testing::TempDir("ros_node_mono_live_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(
+      &node,
+      "--pipeline mono-slam --out " + out + " --source 'ros://?image=/mono/image_rect&queue=50'",
+      log));
+  ASSERT_TRUE(
+      WaitFor([&] { return image.getNumSubscribers() > 0 && sub.getNumPublishers() > 0; }, 60))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (int k = 0; k < 30; ++k) {
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const StereoFrame frame = std::get<StereoFrame>((*dataset)->Retrieve().value());
+    image.publish(EncodeRosImage(frame.left, frame.stamp.sensor_time_s, "camera").value());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  const double last_time = expected.rbegin()->first;
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const auto m = odoms.messages();
+        return !m.empty() && std::abs(m.back().header.stamp.toSec() - last_time) < 1e-3;
+      },
+      120))
+      << odoms.messages().size() << " odometry messages\n"
+      << testing::ReadTextFile(log);
+  node.Interrupt();
+  EXPECT_EQ(node.Wait(60), 130) << testing::ReadTextFile(log);
+  const auto live = testing::ReadTumTrajectory(out + "/trajectory_map.txt");
+  ASSERT_EQ(live.size(), expected.size()) << testing::ReadTextFile(log);
+  for (auto a = expected.begin(), b = live.begin(); a != expected.end(); ++a, ++b) {
+    EXPECT_NEAR(a->first, b->first, 1e-6);
+    for (int i = 0; i < 7; ++i) EXPECT_NEAR(a->second[i], b->second[i], 1e-6) << a->first;
+  }
+  EXPECT_GT(expected.rbegin()->second.head<3>().norm(), 0.1) << "the camera moved";
+}
+
 // sightline-node on live ros:// topics: the test plays the stereo recording onto image and
 // camera_info topics; the odometry equals the headless run on the recording; Ctrl-C ends the
 // live run as cancelled (exit 130) with its files written.
