@@ -1,6 +1,6 @@
 // What reading frames from a ROS bag costs against the folder reader of the same frames: the
 // TUM fr1_desk frames as a TUM folder (colour PNG + 16-bit depth PNG) and as a bag (rgb8 + 32FC1
-// messages), each read from the first frame to the last per iteration.
+// messages), each read from the first frame to the last per iteration; and opening the bag.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -54,6 +54,19 @@ void BM_ReadTumBag(benchmark::State& state) {
   ReadAll(state, source, "rosbags/tum_fr1_desk.bag");
 }
 BENCHMARK(BM_ReadTumBag)->Unit(benchmark::kMillisecond);
+
+// Opening the bag: the record-layout check (every record, and every record inside every chunk,
+// read once) and rosbag's index. Paid once per open, not per frame.
+void BM_OpenTumBag(benchmark::State& state) {
+  for (auto _ : state) {
+    BagSource source(DataPath("rosbags/tum_fr1_desk.bag"));
+    if (Status opened = source.Open(); !opened.ok()) {
+      state.SkipWithError(opened.ToString().c_str());
+      return;
+    }
+  }
+}
+BENCHMARK(BM_OpenTumBag)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace sightline

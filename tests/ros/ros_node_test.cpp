@@ -393,6 +393,67 @@ TEST_F(RosNode, MonoSlamOnLiveTopicsEqualsTheHeadlessRun) {
   EXPECT_GT(expected.rbegin()->second.head<3>().norm(), 0.1) << "the camera moved";
 }
 
+// mobility on live ros:// RGB-D topics (the corridor drive played by the test): a scored cloud
+// per frame, and the node's segments equal the headless run's on the recording.
+TEST_F(RosNode, MobilityOnLiveTopicsEqualsTheHeadlessRun) {
+  const std::string rec = testing::CorridorRgbd();
+  ASSERT_FALSE(rec.empty());
+  const std::string headless = testing::TempDir("ros_node_mobility_live_cli");
+  const auto cli = testing::RunProcess(testing::CliPath() + " run mobility " + rec + " --out " +
+                                       headless + " --quiet");
+  ASSERT_TRUE(cli.exit_code == 0 || cli.exit_code == 3) << cli.out;
+  const std::string expected = testing::ReadTextFile(headless + "/segments.csv");
+  ASSERT_GT(std::count(expected.begin(), expected.end(), '\n'), 30) << "too few segments";
+  StatusOr<std::unique_ptr<Source>> dataset = OpenDataset(rec, SourceKind::kRgbd);
+  ASSERT_TRUE(dataset.ok()) << dataset.status().ToString();
+
+  ros::NodeHandle nh;
+  ros::Publisher color = nh.advertise<sensor_msgs::Image>("/mob/rgb/image", 50);
+  ros::Publisher depth = nh.advertise<sensor_msgs::Image>("/mob/depth/image", 50);
+  ros::Publisher info = nh.advertise<sensor_msgs::CameraInfo>("/mob/rgb/camera_info", 1, true);
+  info.publish(RosInfoFromCamera((*dataset)->info().rgbd->color, 0, "camera"));
+  Inbox<sensor_msgs::PointCloud2> clouds;
+  ros::Subscriber sub =
+      nh.subscribe("/mobility_cloud", 50, &Inbox<sensor_msgs::PointCloud2>::Take, &clouds);
+  const std::string out = testing::TempDir("ros_node_mobility_live");
+  const std::string log = testing::TempDir("ros_node_mobility_live_log") + "/node.log";
+  ChildProcess node;
+  ASSERT_TRUE(StartNode(&node,
+                        "--pipeline mobility --out " + out +
+                            " --source 'ros://?image=/mob/rgb/image&depth=/mob/depth/image&"
+                            "sync=exact&queue=50'",
+                        log));
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        return color.getNumSubscribers() > 0 && depth.getNumSubscribers() > 0 &&
+               sub.getNumPublishers() > 0;
+      },
+      60))
+      << testing::ReadTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  double last_time = 0;
+  for (int k = 0; k < 30; ++k) {
+    ASSERT_TRUE((*dataset)->Grab().ok());
+    const RgbdFrame frame = std::get<RgbdFrame>((*dataset)->Retrieve().value());
+    color.publish(EncodeRosImage(frame.color, frame.stamp.sensor_time_s, "camera").value());
+    depth.publish(EncodeRosImage(frame.depth_m, frame.stamp.sensor_time_s, "camera").value());
+    last_time = frame.stamp.sensor_time_s;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const auto m = clouds.messages();
+        return !m.empty() && std::abs(m.back().header.stamp.toSec() - last_time) < 1e-3;
+      },
+      120))
+      << clouds.messages().size() << " clouds\n"
+      << testing::ReadTextFile(log);
+  node.Interrupt();
+  EXPECT_EQ(node.Wait(60), 130) << testing::ReadTextFile(log);
+  EXPECT_EQ(clouds.messages().size(), 30u);
+  EXPECT_EQ(testing::ReadTextFile(out + "/segments.csv"), expected);
+}
+
 // sightline-node on live ros:// topics: the test plays the stereo recording onto image and
 // camera_info topics; the odometry equals the headless run on the recording; Ctrl-C ends the
 // live run as cancelled (exit 130) with its files written.
