@@ -243,6 +243,31 @@ TEST_F(SceneViewTest, WheelZoomsAndExitKeysAreIgnored) {
 
 // A key to the layers' colours sits in the top-left corner, its swatches in their colours; it
 // stays out of the way of the mouse, and goes with ClearLayers.
+// A cloud set while its layer is hidden is drawn when the layer is shown again (it is built
+// then), and setting a layer again replaces what it showed (the actor is updated in place).
+TEST_F(SceneViewTest, AHiddenLayersCloudShowsWhenShownAndUpdatesReplaceTheOldGeometry) {
+  const QColor red(255, 0, 0), green(0, 255, 0);
+  view_->SetPointCloud("cloud", MakePlane(200, 150, 3.0, &red), SceneView::ColorMode::kRgb, 3.0);
+  view_->ResetView();
+  view_->SetLayerVisible("cloud", false);
+  EXPECT_FALSE(view_->IsLayerVisible("cloud"));
+  view_->SetPointCloud("cloud", MakePlane(200, 150, 3.0, &green), SceneView::ColorMode::kRgb, 3.0);
+  const auto is_red = [](QColor c) { return c.red() > 220 && c.green() < 40 && c.blue() < 40; };
+  const auto is_green = [](QColor c) { return c.green() > 220 && c.red() < 40 && c.blue() < 40; };
+  QImage shot = view_->grabFramebuffer();
+  EXPECT_EQ(CountPixels(shot, is_red) + CountPixels(shot, is_green), 0) << "hidden, yet drawn";
+  view_->SetLayerVisible("cloud", true);
+  shot = view_->grabFramebuffer();
+  EXPECT_GT(CountPixels(shot, is_green), shot.width() * shot.height() / 10)
+      << "the cloud set while hidden did not show";
+  EXPECT_EQ(CountPixels(shot, is_red), 0) << "the replaced cloud still shows";
+  view_->SetPointCloud("cloud", MakePlane(200, 150, 3.0, &red), SceneView::ColorMode::kRgb, 3.0);
+  shot = view_->grabFramebuffer();
+  EXPECT_GT(CountPixels(shot, is_red), shot.width() * shot.height() / 10);
+  EXPECT_EQ(CountPixels(shot, is_green), 0);
+  EXPECT_EQ(view_->LayerNames(), std::vector<std::string>{"cloud"});
+}
+
 TEST_F(SceneViewTest, KeysNameTheLayersColoursUntilTheLayersAreCleared) {
   ASSERT_NE(view_->keys_label(), nullptr);
   EXPECT_FALSE(view_->keys_label()->isVisible());
