@@ -18,37 +18,6 @@
 #include "app/cli/stereo_program.h"
 #include "app/cli/top_level.h"
 #include "core/io/dataset.h"
-#include "core/io/pcd_source.h"
-#include "core/io/recorded_source.h"
-
-namespace sightline {
-namespace {
-
-// Stands in for the PCD reader, which needs PCL: Open() says the full program reads PCD.
-class PcdInFullProgram : public RecordedSource {
- public:
-  explicit PcdInFullProgram(std::string path) : path_(std::move(path)) {}
-  Status Open() override {
-    return Unavailable(path_ + ": PCD clouds are read by sightline-cli-full");
-  }
-
- protected:
-  StatusOr<Frame> Load(int64_t) override { return Unavailable(path_ + ": not open"); }
-
- private:
-  std::string path_;
-};
-
-}  // namespace
-
-// sightline_io_readers leaves the PCD reader to the program (pcd_source.h). `info` hands PCD
-// paths to sightline-cli-full before opening anything, so this is reached only if that check
-// misses one, and then fails with a message instead of linking PCL.
-std::unique_ptr<Source> MakePcdSource(const std::string& path) {
-  return std::make_unique<PcdInFullProgram>(path);
-}
-
-}  // namespace sightline
 
 namespace sightline::cli {
 namespace {

@@ -11,40 +11,11 @@
 #include "app/cli/commands.h"
 #include "app/cli/full_program.h"
 #include "app/cli/stereo_program.h"
-#include "core/io/pcd_source.h"
-#include "core/io/recorded_source.h"
-
-namespace sightline {
-namespace {
-
-// Stands in for the PCD reader, which needs PCL; never reached, as a stereo run opens no cloud.
-class PcdInFullProgram : public RecordedSource {
- public:
-  explicit PcdInFullProgram(std::string path) : path_(std::move(path)) {}
-  Status Open() override {
-    return Unavailable(path_ + ": PCD clouds are read by sightline-cli-full");
-  }
-
- protected:
-  StatusOr<Frame> Load(int64_t) override { return Unavailable(path_ + ": not open"); }
-
- private:
-  std::string path_;
-};
-
-}  // namespace
-
-// sightline_io_readers leaves the PCD reader to the program (pcd_source.h).
-std::unique_ptr<Source> MakePcdSource(const std::string& path) {
-  return std::make_unique<PcdInFullProgram>(path);
-}
-
-}  // namespace sightline
 
 int main(int argc, char** argv) {
   using namespace sightline::cli;
   if (argc < 2) return Fail("sightline-cli-stereo runs `run stereo-vo PATH --out DIR ...`");
-  if (std::string(argv[1]) == "run" && std::string(argv[1]) == "run") {
+  if (std::string(argv[1]) == "run") {
     const std::vector<std::string> args(argv + 2, argv + argc);
     if (RunsInStereoProgram(args)) return RunCommand(args);
   }

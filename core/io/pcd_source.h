@@ -54,8 +54,8 @@ class PcdSource : public RecordedSource {
 };
 
 // A PcdSource for `path`, not yet opened; what OpenDataset() reads PCD datasets with. Defined in
-// pcd_source.cpp (sightline_io); a program that links sightline_io_readers, which lacks PCL,
-// defines its own (sightline-cli's front binary hands PCD paths to the full program).
+// pcd_source.cpp (sightline_io); in sightline_io_readers, which lacks PCL, by
+// pcd_source_elsewhere.cpp: a source whose Open() says sightline-cli-full reads PCD clouds.
 std::unique_ptr<Source> MakePcdSource(const std::string& path);
 
 // The time a file name encodes (see PcdSource), or nullopt. Exposed for tests.

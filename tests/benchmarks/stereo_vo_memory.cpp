@@ -13,13 +13,9 @@
 #include <vector>
 
 #include "core/io/dataset.h"
-#include "core/io/pcd_source.h"
 #include "core/stereo/stereo_odometry.h"
 
 namespace sightline {
-
-// core/io's readers leave the PCD reader to the program; a stereo dataset opens no cloud.
-std::unique_ptr<Source> MakePcdSource(const std::string& path) { return nullptr; }
 
 namespace {
 

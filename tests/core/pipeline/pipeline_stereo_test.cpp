@@ -6,14 +6,10 @@
 #include <memory>
 #include <string>
 
-#include "core/io/pcd_source.h"
 #include "core/pipeline/pipeline_registry.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
-
-// core/io's readers leave the PCD reader to the program; these runs open no cloud.
-std::unique_ptr<Source> MakePcdSource(const std::string&) { return nullptr; }
 
 namespace {
 
