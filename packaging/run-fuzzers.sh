@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (tests/fuzz; clang, ASan+UBSan) in build-fuzz/ and runs each for
+# Builds the libFuzzer targets (tests/fuzz; clang, ASan+UBSan) in build-fuzz/ (hardening-build.sh;
+# the ASan+UBSan tests of run-sanitizers.sh share it) and runs each for
 # a bounded time: `bash packaging/run-fuzzers.sh [SECONDS_PER_TARGET] [TARGET...]` (default 60 s,
 # every target). Each target starts from its seed corpus tests/fuzz/corpus/<target>/ (never
 # changed by a run; new inputs go to build-fuzz/corpus/<target>/). Fails on any finding: the
@@ -12,17 +13,12 @@ cd "$here"
 seconds="${1:-60}"
 shift || true
 build=build-fuzz
-cxx="${SIGHTLINE_FUZZ_CXX:-clang++}"
-cc="${SIGHTLINE_FUZZ_CC:-clang}"
-command -v "$cxx" >/dev/null || { echo "run-fuzzers.sh: $cxx not found (apt-get install clang)" >&2; exit 1; }
+# shellcheck source=packaging/hardening-build.sh
+source packaging/hardening-build.sh
 
 start=$(date +%s)
-mkdir -p "$build"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$cxx" \
-  -DCMAKE_C_COMPILER="$cc" -DSIGHTLINE_FUZZ=ON -DSIGHTLINE_BUILD_TESTS=OFF \
-  -DSIGHTLINE_BUILD_BENCHMARKS=OFF >"$build/configure.log" 2>&1 ||
-  { cat "$build/configure.log"; exit 1; }
-cmake --build "$build" --target fuzzers -j"${SIGHTLINE_JOBS:-$(nproc)}"
+hardening_configure "$build" fuzz
+hardening_build "$build" fuzzers
 echo "run-fuzzers.sh: build took $(( $(date +%s) - start )) s"
 
 targets=("$@")

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds tests with sanitizers, each kind in its own build dir, and runs them:
-#   build-asan/  ASan+UBSan: the core tests (SIGHTLINE_ASAN_TESTS, default every tests/core test)
+# Builds tests with sanitizers, each kind in its own build dir (hardening-build.sh), and runs them:
+#   build-fuzz/  clang, ASan+UBSan (the fuzzers' build): the core tests (SIGHTLINE_ASAN_TESTS,
+#                default every tests/core test)
 #   build-tsan/  TSan: the threaded tests (SIGHTLINE_TSAN_TESTS)
 # Both lists hold "test_target[:gtest_filter]" entries separated by white space.
 # `bash packaging/run-sanitizers.sh [asan|tsan|all]` (default all). Only the listed test targets
@@ -21,7 +22,7 @@ core_tests() {
 # live sources (the synthetic ones), the recorder, the arm server and the threaded mono mode.
 default_tsan_tests="test_bounded_queue test_stage test_record
   test_sensors:ReplaySource*:SensorStats*:TimestampPairer* test_aravis_fake
-  test_button:ArmServer*:ArmClient* test_mono:MonoAccuracy.Threaded*"
+  test_arm_link:ArmServer*:ArmClient* test_mono_threaded"
 
 words() {  # array name, text: splits on any white space (newlines too), no globbing of '*'
   local -n out="$1"
@@ -31,14 +32,14 @@ words() {  # array name, text: splits on any white space (newlines too), no glob
   set +f
 }
 
-configure_and_build() {  # dir, sanitizers, targets...
-  local dir="$1" sanitize="$2"
+# shellcheck source=packaging/hardening-build.sh
+source packaging/hardening-build.sh
+configure_and_build() {  # dir, fuzz|thread, targets...
+  local dir="$1" kind="$2"
   shift 2
   local start=$(date +%s)
-  mkdir -p "$dir"
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSIGHTLINE_SANITIZE="$sanitize" \
-    -DSIGHTLINE_BUILD_BENCHMARKS=OFF >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log"; exit 1; }
-  cmake --build "$dir" -j"$jobs" --target "$@"
+  hardening_configure "$dir" "$kind"
+  hardening_build "$dir" "$@"
   echo "run-sanitizers.sh: $dir build took $(( $(date +%s) - start )) s"
 }
 
@@ -66,11 +67,11 @@ if [ "$which" = all ] || [ "$which" = asan ]; then
   words asan "${SIGHTLINE_ASAN_TESTS:-$(core_tests)}"
   targets=()
   for entry in "${asan[@]}"; do targets+=("${entry%%:*}"); done
-  configure_and_build build-asan "address,undefined" "${targets[@]}"
+  configure_and_build build-fuzz fuzz "${targets[@]}"
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
   export LSAN_OPTIONS="suppressions=$here/packaging/sanitizer-suppressions/lsan.txt"
-  run_tests build-asan "${asan[@]}" || failed=1
+  run_tests build-fuzz "${asan[@]}" || failed=1
 fi
 if [ "$which" = all ] || [ "$which" = tsan ]; then
   words tsan "${SIGHTLINE_TSAN_TESTS:-$default_tsan_tests}"

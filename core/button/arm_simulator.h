@@ -1,4 +1,4 @@
-// A simulated arm for the operator loop (issue 17): it knows the panel scene of its seed, flies
+// A simulated arm for the operator loop: it knows the panel scene of its seed, flies
 // the recorded approach's plan (start pose, a still hold, the sideways moves the metric scale
 // needs, an approach towards the panel), then follows the targets Sightline publishes at a
 // bounded speed: first to a standoff in front of the target, then pushing along `approach` onto

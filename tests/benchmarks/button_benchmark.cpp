@@ -1,5 +1,5 @@
 // Cost of the button picker on one core, on the simulated panel approach (640x480, camera in
-// the arm's hand): tracking per frame with the predicted search window (the bound is
+// the arm's hand): tracking per frame with the predicted search window (the target bound is
 // 20 ms median) and over the whole image, detection from a tap, the plane locator, and the
 // compute latency from a tap to the first target (detect, track the next frame, locate, gate,
 // publish).

@@ -6,7 +6,7 @@
 // as the GUI does, instead of back to back). tracking_ms is wall clock per frame,
 // tracking_cpu_ms the tracking thread's own CPU time (the difference is time the tracker was
 // not running: another thread or process had the core); cpus is the cores the run may use.
-// The setting, tracking on one core and mapping on the other:
+// The threaded setting, tracking on one core and mapping on the other:
 //   taskset -c 0,1 build/bin/bench_mono --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>

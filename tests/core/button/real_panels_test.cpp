@@ -8,7 +8,7 @@
 //    holds the tap.
 //  - A tap on blank wall or plate is "no button here".
 // Per-photo figures are printed; the asserted floors are the figures the detector reaches now
-// (see the README's button section for the targets and the gap).
+// (see the README's button section for the targets and the gap).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // The button pipeline's targets against the simulator's truth on the default simulated approach
 // (8 cm sideways, the seed's plan) on seeds 1-5 and on seeds 6-7 (held out): the final error and
-// the approach within their measured bounds (the 3 mm and 5 deg are not met yet: that
+// the approach within their measured bounds (the 3 mm and 5 deg goal is not met yet: that
 // test is disabled, with the figures); the stated uncertainty honest (the true
 // error within 2 stated sigmas on at least 90 % of the sent targets) including runs with a wrong
 // hand_eye.yaml: a rotated mount is seen online, a shifted one is carried by the residuals the
@@ -113,7 +113,7 @@ void ExpectWithin(int seed, double final_mm, double approach_deg) {
   EXPECT_GE(m.at("position_within_2_sigma"), 0.9) << "seed " << seed;
 }
 
-// The goal, not met yet (measured 2026-11-26, final error / approach max: seed 1 1.33 mm
+// The goal, not met yet (measured 2026-11-26, final error / approach max: seed 1 1.33 mm
 // / 2.1 deg, 2 6.35 / 3.4, 3 3.88 / 4.3, 4 2.20 / 7.7, 5 10.1 / 6.6; held out 6 1.69 / 4.4,
 // 7 3.98 / 8.2): the error lies along the push, from the depth the map gives the button (the
 // true scale and the true centre leave 4.5-15.5 mm,
