@@ -3,9 +3,9 @@
 // Elberink: sigma_z = 1.425e-3 z^2, disparity quantised to 1/8 px), two walking people with
 // ground-truth boxes, boxes, bins and recessed doors along the walls.
 //
-// Wheel odometry drifts 2 deg/m in heading (the figure the mapping targets). Its distance is unbiased
-// (scale_error = 0, the simulator's default distance noise kept): translation comes from dead
-// reckoning alone (seed 000), so a distance scale error bends the stitched map whatever the
+// Wheel odometry drifts 2 deg/m in heading (the figure the mapping targets). Its distance is
+// unbiased (scale_error = 0, the simulator's default distance noise kept): translation comes from
+// dead reckoning alone (seed 000), so a distance scale error bends the stitched map whatever the
 // heading; OdometryScaleErrorBendsTheMap shows that separately.
 #include <gtest/gtest.h>
 
