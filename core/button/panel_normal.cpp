@@ -19,6 +19,9 @@ bool PanelNormalOptions::IsValid(std::string* error) const {
   if (!(ransac_threshold_m > 0)) {
     return Invalid(error, "button.normal.ransac_threshold_m must be > 0");
   }
+  if (!(max_button_offset_m > 0)) {
+    return Invalid(error, "button.normal.max_button_offset_m must be > 0");
+  }
   if (!(min_sigma_deg > 0)) return Invalid(error, "button.normal.min_sigma_deg must be > 0");
   if (!(stated_min_sigma_deg > 0)) {
     return Invalid(error, "button.normal.stated_min_sigma_deg must be > 0");
@@ -40,6 +43,10 @@ OptionTable<PanelNormalOptions> PanelNormalOptions::Describe() {
            "Plane RANSAC hypotheses of the panel normal.")
       .Double("ransac_threshold_m", &O::ransac_threshold_m, "m", 1e-4, 0.1, 0.0005,
               "Inlier distance of the panel plane.")
+      .Double("max_button_offset_m", &O::max_button_offset_m, "m", 1e-4, 1, 0.001,
+              "The panel plane passes at most this far from the located button: of the "
+              "surfaces around it (a side wall, a door frame) only the one holding the button "
+              "gives the push direction.")
       .Double("min_sigma_deg", &O::min_sigma_deg, "deg", 0.01, 45, 0.1,
               "Smallest 1-sigma stated for one frame's normal (the map points' errors are "
               "correlated, so the fit's own figure is optimistic).")
@@ -60,6 +67,7 @@ namespace {
 // distances (MSAC): of two parallel surfaces a few millimetres apart (a plate on its wall) it
 // keeps one, where counting inliers may prefer a plane tilted through both.
 std::vector<Eigen::Vector3d> RansacInliers(const std::vector<Eigen::Vector3d>& points,
+                                           const Eigen::Vector3d& button,
                                            const PanelNormalOptions& o) {
   std::mt19937_64 rng(o.seed);
   std::uniform_int_distribution<size_t> pick(0, points.size() - 1);
@@ -73,6 +81,7 @@ std::vector<Eigen::Vector3d> RansacInliers(const std::vector<Eigen::Vector3d>& p
     if (n.norm() < 1e-12) continue;
     const Eigen::Vector3d unit = n.normalized();
     const double d = -unit.dot(a);
+    if (std::abs(unit.dot(button) + d) > o.max_button_offset_m) continue;  // Not the panel.
     double cost = 0;
     for (const auto& p : points) cost += std::min(t2, std::pow(unit.dot(p) + d, 2));
     if (cost < best_cost) best_cost = cost, best_n = unit, best_d = d;
@@ -111,7 +120,7 @@ StatusOr<PanelNormal> EstimatePanelNormal(const std::vector<Eigen::Vector3d>& po
                     std::to_string(options.radius_m) + " m of the button (needs " +
                     std::to_string(options.min_points) + ")");
   }
-  const std::vector<Eigen::Vector3d> inliers = RansacInliers(near, options);
+  const std::vector<Eigen::Vector3d> inliers = RansacInliers(near, button_in_camera, options);
   out.inliers = int(inliers.size());
   if (out.inliers < options.min_points) {
     return NotFound("panel normal: " + std::to_string(out.inliers) + " plane inliers of " +

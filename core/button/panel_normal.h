@@ -1,7 +1,9 @@
 // The panel's normal for the approach direction: a robust plane through the SLAM map points
-// around the located button (the plate and the wall around it, not only the few points near the
-// button's face), oriented toward the camera, with its own angular uncertainty; and its average
-// over frames in data time (the panel and the arm's base stay put during an approach).
+// around the located button (the plate and the wall around it, up to 45 cm away: the wider the
+// surface, the less a map's depth errors tilt it), passing near the located button (so that a
+// side wall or a door frame cannot give the push direction), oriented toward the camera, with
+// its own angular uncertainty; and its average over frames in data time (the panel and the
+// arm's base stay put during an approach).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -15,10 +17,11 @@ namespace sightline {
 
 // Panel normal options. Keys "button.normal.*".
 struct PanelNormalOptions {
-  double radius_m = 0.2;              // Map points within this of the located button [m].
+  double radius_m = 0.45;             // Map points within this of the located button [m].
   int min_points = 12;                // Fewer points (or inliers): no normal this frame.
   int ransac_iterations = 300;        // Plane hypotheses.
   double ransac_threshold_m = 0.003;  // Plane inlier distance [m].
+  double max_button_offset_m = 0.03;  // The plane passes this near the located button [m].
   double min_sigma_deg = 0.5;         // Floor of a frame's 1-sigma (weights, outlier test).
   double stated_min_sigma_deg = 1.5;  // Floor of the sigma a target states [deg].
   double smoothing_s = 2.0;           // Time constant of the data-time average [s]; 0 = none.

@@ -70,6 +70,30 @@ TEST(PanelNormal, TheStatedSigmaCoversTheErrorOnNinetyFivePercentOfPanels) {
   EXPECT_GE(covered, trials * 95 / 100);
 }
 
+// A side wall at right angles to the panel, 15 cm beside the button, with more map points than
+// the panel itself: the plane with the most support is the wall, but it does not pass near the
+// button, so the panel's normal is kept.
+TEST(PanelNormal, ASideWallWithMorePointsDoesNotGiveTheNormal) {
+  Panel p = MakePanel(10, 0.001, 0.0, 5, 150);
+  const Eigen::Vector3d u = Eigen::Vector3d::UnitY().cross(p.normal_toward_camera).normalized();
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> along(0.0, 0.3), up(-0.2, 0.2);
+  std::normal_distribution<double> noise(0, 0.001);
+  for (int i = 0; i < 400; ++i) {  // The wall: the plane through button + 0.15 u, normal u.
+    p.points.push_back(p.button + (0.15 + noise(rng)) * u + along(rng) * p.normal_toward_camera +
+                       up(rng) * Eigen::Vector3d::UnitY());
+  }
+  StatusOr<PanelNormal> n = EstimatePanelNormal(p.points, p.button, {});
+  ASSERT_TRUE(n.ok()) << n.status().ToString();
+  EXPECT_LT(AngleDeg(n->normal_in_camera, p.normal_toward_camera), 1.0);
+  // Without the condition (any plane), the wall wins and the push would go along it.
+  PanelNormalOptions any;
+  any.max_button_offset_m = 1.0;
+  StatusOr<PanelNormal> wall = EstimatePanelNormal(p.points, p.button, any);
+  ASSERT_TRUE(wall.ok()) << wall.status().ToString();
+  EXPECT_GT(AngleDeg(wall->normal_in_camera, p.normal_toward_camera), 45.0);
+}
+
 TEST(PanelNormal, TooFewPointsNearTheButtonGiveNoNormal) {
   Panel p = MakePanel(0, 0.001, 0, 4, 400);
   PanelNormalOptions o;

@@ -113,26 +113,30 @@ void ExpectWithin(int seed, double final_mm, double approach_deg) {
   EXPECT_GE(m.at("position_within_2_sigma"), 0.9) << "seed " << seed;
 }
 
-// The goal, not met yet (measured 2026-11-26, final error / approach max: seed 1 1.33 mm
-// / 2.1 deg, 2 6.35 / 3.4, 3 3.88 / 4.3, 4 2.20 / 7.7, 5 10.1 / 6.6; held out 6 1.69 / 4.4,
-// 7 3.98 / 8.2): the error lies along the push, from the depth the map gives the button (the
-// true scale and the true centre leave 4.5-15.5 mm,
-// accuracy.final_error_mm_true_scale_true_centre), and the panel normal of seeds 4, 5 and 7 is
-// tilted by the map beyond its stated sigma (docs/button.md). The arm's triangulation
-// (button.triangulate.enabled) does not meet it either.
+// The goal's final error is not met yet (measured 2026-11-27, final error / approach max: seed
+// 1 1.33 mm / 0.74 deg, 2 6.35 / 1.06, 3 3.88 / 0.48, 4 2.20 / 0.72, 5 10.1 / 2.90; held out
+// 6 1.69 / 0.98, 7 3.98 / 0.98): the error lies along the push, from the depth the map gives the
+// button (the true scale and the true centre leave 4.5-15.5 mm,
+// accuracy.final_error_mm_true_scale_true_centre; docs/button.md). The arm's triangulation
+// (button.triangulate.enabled) does not meet it either. The approach part (< 5 deg) is met since
+// the panel plane takes the map points within 45 cm of the button (before, within 20 cm: seeds
+// 4, 5 and 7 at 7.7, 6.6 and 8.2 deg) and is asserted below.
 TEST(ButtonHonesty, DISABLED_FinalErrorUnderThreeMillimetresAndApproachUnderFiveDegrees) {
   for (int seed : {1, 2, 3, 4, 5, 6, 7}) ExpectWithin(seed, 3.0, 5.0);
 }
 
-// What holds today, so that nothing gets worse: the figures above with a margin, and the stated
-// position uncertainty covering the true error on every seed.
+// What holds today, so that nothing gets worse: the final error within its measured bound with
+// a margin, the approach within the goal's 5 deg, and the stated position uncertainty covering
+// the true error on every seed.
 TEST(ButtonHonesty, FiguresOnFiveSeedsStayWithinTheirMeasuredBounds) {
-  for (int seed : {1, 2, 3, 4, 5}) ExpectWithin(seed, 12.0, 9.0);
+  for (int seed : {1, 2, 3, 4, 5}) ExpectWithin(seed, 12.0, 5.0);
 }
 
-// Seeds 6 and 7 were not looked at while changing the estimation (held out).
+// Seeds 6 and 7 were held out of the position's estimation. The panel plane's 45 cm was chosen on
+// seeds 1-7 (0.35 and 0.6 m gave 3.22 and 3.15 deg at worst there); seeds 11 and 12, not run
+// before the choice, gave 0.67 and 0.62 deg (9 and 10: 0.80 and 1.44).
 TEST(ButtonHonesty, HeldOutSeedsStayWithinTheSameBounds) {
-  for (int seed : {6, 7}) ExpectWithin(seed, 12.0, 9.0);
+  for (int seed : {6, 7}) ExpectWithin(seed, 12.0, 5.0);
 }
 
 // The button triangulated from the arm's poses and combined with the map's position
