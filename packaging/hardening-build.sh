@@ -7,8 +7,8 @@
 # asked for are built. Both scripts configure build-fuzz identically, so neither undoes the
 # other's build.
 
-# hardening_configure DIR fuzz|thread: configures DIR unless it already is, quietly (the log is
-# DIR/configure.log and printed on failure).
+# hardening_configure DIR fuzz|thread: configures DIR (again: the same cache values, so nothing is
+# rebuilt), quietly (the log is DIR/configure.log and printed on failure).
 hardening_configure() {
   local dir="$1" kind="$2" args=()
   args=(-S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -11,7 +11,6 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 which="${1:-all}"
-jobs="${SIGHTLINE_JOBS:-$(nproc)}"
 
 # Every test target of tests/core (one per sightline_add_gtest line), hardware-free ones only.
 core_tests() {

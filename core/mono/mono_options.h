@@ -89,7 +89,7 @@ struct MonoMappingOptions {
   double ba_huber_px = 2.5;          // Huber loss of bundle adjustment [px].
   double min_found_ratio =
       0.25;               // Points found in fewer of the frames that should see them are culled.
-  bool threaded = false;  // Mapping on its own thread (GUI) or inline (tests, CLI).
+  bool threaded = false;  // Mapping on its own thread, or inline (deterministic; default).
   int thread_nice = 0;    // Threaded mode: the mapping thread's niceness (Linux).
   int final_ba_iterations = 30;  // Global bundle adjustment when the run stops (0 = none).
 

@@ -5,8 +5,8 @@
 // measured motion (scale_estimator.h, metric_motion.h).
 //
 // Two modes: synchronous (mono.mapping.threaded = false; mapping runs inline after each new
-// keyframe, deterministic; tests and the headless CLI) and threaded (mapping on its own thread,
-// fed through a bounded queue; the GUI). Both stop cleanly.
+// keyframe, deterministic; the default of every front end) and threaded (mapping on its own
+// thread, fed through a bounded queue; mono.mapping.threaded). Both stop cleanly.
 #pragma once
 
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
-// Monocular SLAM with mapping on its own thread (the GUI's mode): it stops cleanly, twice, and
-// a second system dropped without Stop() joins its thread; accuracy as the inline mode's. Linked
-// against the SLAM and the simulator only, for the thread sanitizer's build.
+// Monocular SLAM with mapping on its own thread (mono.mapping.threaded): it stops cleanly, twice,
+// and a second system dropped without Stop() joins its thread; accuracy as the inline mode's.
+// Linked against the SLAM and the simulator only, for the thread sanitizer's build.
 #include <gtest/gtest.h>
 
 #include <iostream>
