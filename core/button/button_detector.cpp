@@ -210,6 +210,32 @@ std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptio
   return out;
 }
 
+// True when `outer` holds, besides a smaller region at the tap, two or more other regions of
+// about that region's size (half to twice its area) that the tap is not on: a plate or a group
+// of buttons whose one button at the tap is itself a region. A button's glyphs are either not
+// alike or fewer than two besides the one at the tap.
+bool HoldsRegionsLikeTheTapped(const Candidate& outer, const std::vector<Candidate>& all,
+                               cv::Point2d tap) {
+  for (const Candidate& t : all) {
+    if (&t == &outer || t.area > 0.25 * outer.area) continue;
+    if (cv::pointPolygonTest(t.contour, cv::Point2f(tap), false) < 0) continue;
+    const double rt = std::sqrt(t.area / M_PI);
+    std::vector<cv::Point2d> alike;
+    for (const Candidate& c : all) {
+      if (&c == &outer || c.area < 0.5 * t.area || c.area > 2 * t.area) continue;
+      if (cv::norm(c.centroid - t.centroid) < 1.5 * rt) continue;
+      if (cv::pointPolygonTest(c.contour, cv::Point2f(tap), false) >= 0) continue;
+      if (cv::pointPolygonTest(outer.contour, cv::Point2f(c.centroid), false) <= 0) continue;
+      bool seen = false;
+      for (const cv::Point2d& a : alike) seen = seen || cv::norm(c.centroid - a) < rt;
+      if (seen) continue;
+      alike.push_back(c.centroid);
+      if (alike.size() >= 2) return true;
+    }
+  }
+  return false;
+}
+
 // True when `outer` holds at least two other regions away from its centre that the tap is not
 // on: a panel plate or a group of buttons rather than one button (whose label sits near its
 // centre).
@@ -245,7 +271,7 @@ const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d ta
     if (on_tap[i] && dist > radius) continue;  // Tap inside a bent or lopsided outline.
     const double score = dist / radius;
     if (best && score >= best_score) continue;
-    if (IsGroup(c, candidates, on_tap)) continue;
+    if (IsGroup(c, candidates, on_tap) || HoldsRegionsLikeTheTapped(c, candidates, tap)) continue;
     best = &c;
     best_score = score;
   }
@@ -353,7 +379,9 @@ const Candidate* ChooseContaining(const std::vector<Candidate>& candidates, cv::
     const double score = (offset + bias) / radius;
     if (best && score >= best_score) continue;
     if (cv::pointPolygonTest(c.contour, cv::Point2f(tap), false) < 0) continue;
-    if (HoldsOtherButtons(c, candidates, tap)) continue;
+    if (HoldsOtherButtons(c, candidates, tap) || HoldsRegionsLikeTheTapped(c, candidates, tap)) {
+      continue;
+    }
     best = &c;
     best_score = score;
   }

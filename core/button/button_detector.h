@@ -9,6 +9,9 @@
 //    the button's outline over a glyph on it), skipping regions that hold other buttons.
 //  - seed (default): the seed's rule, contours at one scale and the centroid nearest the tap within
 //    max_tap_distance_px.
+// Both skip a region that holds, besides a smaller region at the tap, two or more regions like
+// that one: a plate full of buttons, whose centroid relative to its size can lie nearer the tap
+// than the small tapped button's own.
 // No region fits the tap: "no button here", the operator is asked to tap again.
 #pragma once
 

@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "tests/core/button/panel_sim_util.h"
+
 namespace sightline {
 namespace {
 
@@ -58,6 +60,38 @@ TEST(ButtonDetector, SeedRuleTapOnAButtonSelectsIt) {
   ButtonDetectorOptions seed;
   seed.method = "seed";
   ExpectTapsSelectButtons(seed);
+}
+
+// The first frame of the simulated panel at twelve seeds: a tap 2 px off any button's true
+// centre (radius about 9.5 px) selects that button, not the plate holding all of them (whose
+// centroid can lie, relative to its size, nearer the tap than the small button's own). Both
+// methods.
+TEST(ButtonDetector, TapOnASimulatedPanelSelectsTheButtonNotThePlate) {
+  int taps = 0;
+  for (int seed = 1; seed <= 12; ++seed) {
+    const testing::PanelApproach a = testing::RenderPanelApproach(1, 1, seed);
+    ASSERT_EQ(a.frames.size(), 1u);
+    for (const char* method : {"seed", "multiscale"}) {
+      ButtonDetectorOptions options;
+      options.method = method;
+      const ButtonDetector detector(options);
+      for (int b = 0; b < int(a.buttons.size()); ++b) {
+        const Eigen::Vector2d c = a.Project(0, b);
+        const double r = a.RadiusPx(0, b);
+        if (c.x() < 20 || c.y() < 20 || c.x() > 620 || c.y() > 460) continue;
+        ++taps;
+        auto region = detector.FindRegion(a.frames[0].image, {c.x() + 1.5, c.y() - 1.5});
+        ASSERT_TRUE(region.ok()) << "seed " << seed << " " << method << " button " << b << ": "
+                                 << region.status().ToString();
+        EXPECT_LT(cv::norm(region->center - cv::Point2d(c.x(), c.y())), 0.5 * r)
+            << "seed " << seed << " " << method << " button " << b;
+        // The button's ring, its face or (on two-character labels) the label's outline.
+        EXPECT_NEAR(region->RadiusPx(), r, 0.5 * r)
+            << "seed " << seed << " " << method << " button " << b;
+      }
+    }
+  }
+  EXPECT_GE(taps, 12 * 2 * 10);
 }
 
 TEST(ButtonDetector, TapOnBlankWallIsNoButtonHere) {

@@ -16,9 +16,10 @@ double PanelApproach::RadiusPx(int frame, int button) const {
   return camera.fx * buttons[button].radius_m / x.z();
 }
 
-PanelApproach RenderPanelApproach(int frames, int step) {
+PanelApproach RenderPanelApproach(int frames, int step, int seed) {
   PanelApproach out;
   sim::SimulationOptions options = sim::SimulationOptions::ForScene("panel");
+  options.seed = seed;
   auto simulator = sim::Simulator::Create(options);
   if (!simulator.ok()) {
     ADD_FAILURE() << simulator.status().ToString();

@@ -30,8 +30,8 @@ struct PanelApproach {
   double RadiusPx(int frame, int button) const;
 };
 
-// Renders `frames` frames (0 = all) of the default panel scene, every `step`-th frame.
-// Aborts the test (ADD_FAILURE + empty result) when the simulator fails.
-PanelApproach RenderPanelApproach(int frames = 0, int step = 1);
+// Renders `frames` frames (0 = all) of the default panel scene with simulator seed `seed`,
+// every `step`-th frame. Aborts the test (ADD_FAILURE + empty result) when the simulator fails.
+PanelApproach RenderPanelApproach(int frames = 0, int step = 1, int seed = 1);
 
 }  // namespace sightline::testing

@@ -12,9 +12,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "core/button/button_detector.h"
@@ -96,9 +98,24 @@ Figures Evaluate(const ButtonDetectorOptions& options, bool print) {
     EXPECT_FALSE(photo.empty()) << file;
     if (photo.empty()) continue;
     Figures f;
+    // SIGHTLINE_PANEL_OVERLAY_DIR=DIR: each photo with its boxes (buttons green, labels red)
+    // and the region each tap selects (blue when right, magenta otherwise) for inspection.
+    const char* overlay_dir = print ? std::getenv("SIGHTLINE_PANEL_OVERLAY_DIR") : nullptr;
+    cv::Mat overlay = overlay_dir ? photo.clone() : cv::Mat();
     for (const Label* l : photo_labels) {
       if (l->kind == "blank") continue;
       auto region = detector.FindRegion(photo, l->tap);
+      if (!overlay.empty()) {
+        cv::rectangle(overlay, l->box,
+                      l->kind == "button" ? cv::Scalar(0, 255, 0) : cv::Scalar(0, 0, 255));
+        cv::circle(overlay, l->tap, 2, cv::Scalar(0, 255, 255), -1);
+        if (region.ok()) {
+          const bool right = l->kind == "button" && l->box.contains(region->center);
+          cv::polylines(overlay, std::vector<std::vector<cv::Point>>{region->contour}, true,
+                        right ? cv::Scalar(255, 0, 0) : cv::Scalar(255, 0, 255), 1);
+          cv::line(overlay, l->tap, region->center, cv::Scalar(255, 0, 255));
+        }
+      }
       const bool found = region.ok();
       const cv::Point2d c = found ? region->center : cv::Point2d(-1, -1);
       const Label* holder = nullptr;  // Another labelled box holding the centroid.
@@ -141,6 +158,7 @@ Figures Evaluate(const ButtonDetectorOptions& options, bool print) {
                   : "");
       }
     }
+    if (!overlay.empty()) cv::imwrite(std::string(overlay_dir) + "/" + file + ".png", overlay);
     if (print) {
       std::printf(
           "  %-10s buttons %2d / %2d right, %d neighbour, %d label, %d elsewhere, %d none;"
@@ -162,9 +180,26 @@ Figures Evaluate(const ButtonDetectorOptions& options, bool print) {
   return all;
 }
 
+// SIGHTLINE_PANEL_SET="key=value;key=value" (button.detect.* keys) overrides options for
+// sweeps by hand; the asserted floors hold for the defaults.
 ButtonDetectorOptions Multiscale() {
   ButtonDetectorOptions o;
   o.method = "multiscale";
+  const char* set = std::getenv("SIGHTLINE_PANEL_SET");
+  if (!set) return o;
+  const auto table = ButtonDetectorOptions::Describe();
+  std::stringstream ss(set);
+  std::string item;
+  while (std::getline(ss, item, ';')) {
+    const size_t eq = item.find('=');
+    bool done = false;
+    for (const OptionSpec& spec : table.Specs()) {
+      if (eq == std::string::npos || spec.key != item.substr(0, eq)) continue;
+      auto value = ParseOptionValue(spec, item.substr(eq + 1));
+      done = value.ok() && table.SetValue(&o, spec.key, *value);
+    }
+    EXPECT_TRUE(done) << "SIGHTLINE_PANEL_SET: cannot set '" << item << "'";
+  }
   return o;
 }
 
