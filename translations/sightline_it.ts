@@ -2471,62 +2471,62 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Regione dal tocco: contorni a due scale più cerchi di Hough, quella che contiene il tocco più vicino al suo centro (multiscale), oppure la regola della pubblicazione (il baricentro più vicino al tocco entro max_tap_distance_px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
         <translation>Punteggio disegnato nelle mappe: la regola della Tabella I della pubblicazione o il processo gaussiano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
         <translation>Iniziare una nuova mappa quando scatta la regola di reset (come pubblicato); disattivato continua a unire.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
         <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
         <translation>Passo B6: tagliare l&apos;insieme di consenso in corrispondenza di interruzioni lungo la linea più larghe di così e mantenere il tratto più lungo, così le linee sono muri continui (0 = come pubblicato: nessun taglio).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
         <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
         <translation>Passo B7: mantenere l&apos;ipotesi con l&apos;errore sommato più basso (come pubblicato) o con l&apos;errore medio più basso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <location filename="../app/sightline/option_texts.cpp" line="375"/>
         <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
         <translation>Passo C: ritrovare la superficie dominante della linea scelta ruotandone la direzione di tanto da entrambi i lati, poi rifare il fit su di essa (0 = come pubblicato: la linea del passo B6 così com&apos;è).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Estrattore delle linee di muro: il RANSAC multi-linea della pubblicazione o split-and-merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Larghezza dell&apos;immagine di occupazione (pubblicato: 400); il robot si trova al centro del bordo inferiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto entro questa altezza dal piano del pavimento è pavimento (valore pubblicato 3.5, letto come 3.5 cm: generoso, affinché nessun pixel del pavimento sia marcato come occupato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distanza degli inlier in celle di occupazione (pubblicato: 5 pixel); metri = celle x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: percorso sulla griglia di pixel organizzata (veloce); pcl: il percorso della pubblicazione con griglia di voxel, rimozione degli outlier e albero k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: ipotesi per linea (pubblicato: 250); limita anche il conteggio adattivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide della pubblicazione); custom: range_cut_m e max_step_m.</translation>
     </message>
@@ -3322,691 +3322,696 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <source>SIFT on a larger region runs on its crop scaled down so the region&apos;s radius is this (fewer, coarser features, much faster on close-up photos); 0 = never.</source>
+        <translation>Su una regione più grande SIFT lavora sul ritaglio ridotto in modo che il raggio della regione sia questo valore (meno caratteristiche, più grossolane, molto più veloce su foto ravvicinate); 0 = mai.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>SVM score a HOG window needs to count as a person.</source>
         <translation>Punteggio SVM che una finestra HOG deve avere per contare come persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
         <source>Scale between pyramid levels.</source>
         <translation>Fattore di scala tra i livelli della piramide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Scored cloud written per frame.</source>
         <translation>Nuvola valutata scritta per fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
+        <location filename="../app/sightline/option_texts.cpp" line="353"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Finestra di ricerca attorno alla posizione prevista di un punto della mappa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="353"/>
+        <location filename="../app/sightline/option_texts.cpp" line="354"/>
         <source>Serve the targets to the arm over TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 by default. The same as button.run.serve. Switching it keeps the run (map, button, STOP); switching it off sends the arm a stop line.</source>
         <translation>Servire i target al braccio via TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 per impostazione predefinita. Equivale a button.run.serve. Cambiarlo mantiene l&apos;esecuzione (mappa, pulsante, STOP); disattivarlo invia al braccio una riga di stop.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="354"/>
+        <location filename="../app/sightline/option_texts.cpp" line="355"/>
         <source>Shi-Tomasi gradient window.</source>
         <translation>Finestra del gradiente di Shi-Tomasi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="355"/>
+        <location filename="../app/sightline/option_texts.cpp" line="356"/>
         <source>Shi-Tomasi: smallest minimum eigenvalue of a corner (cv::cornerMinEigenVal units).</source>
         <translation>Shi-Tomasi: minimo autovalore minimo di un corner (unità di cv::cornerMinEigenVal).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="356"/>
+        <location filename="../app/sightline/option_texts.cpp" line="357"/>
         <source>Shorter lines are dropped.</source>
         <translation>Le linee più corte vengono scartate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="357"/>
+        <location filename="../app/sightline/option_texts.cpp" line="358"/>
         <source>Side of the aligned patch (odd).</source>
         <translation>Lato della patch allineata (dispari).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="358"/>
+        <location filename="../app/sightline/option_texts.cpp" line="359"/>
         <source>Side of the detection grid&apos;s buckets; each holds at most its share of max_features.</source>
         <translation>Lato delle celle (bucket) della griglia di rilevamento; ognuna contiene al massimo la sua quota di max_features.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="359"/>
+        <location filename="../app/sightline/option_texts.cpp" line="360"/>
         <source>Similarity RANSAC inlier distance.</source>
         <translation>Distanza degli inlier del RANSAC di similitudine.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="360"/>
+        <location filename="../app/sightline/option_texts.cpp" line="361"/>
         <source>Size change since the last refresh that triggers the next.</source>
         <translation>Variazione di dimensione dall&apos;ultimo aggiornamento che fa scattare il successivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="361"/>
+        <location filename="../app/sightline/option_texts.cpp" line="362"/>
         <source>Smaller estimates are not applied: within the spread the estimate shows on a rig without offset (the simulator: +-0.03 px).</source>
         <translation>Le stime più piccole non vengono applicate: rientrano nella dispersione che la stima mostra su un rig senza offset (il simulatore: +-0.03 px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="362"/>
+        <location filename="../app/sightline/option_texts.cpp" line="363"/>
         <source>Smaller regions stay unsegmented and unscored.</source>
         <translation>Le regioni più piccole restano non segmentate e non valutate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="363"/>
+        <location filename="../app/sightline/option_texts.cpp" line="364"/>
         <source>Smallest 1-sigma stated for one frame&apos;s normal (the map points&apos; errors are correlated, so the fit&apos;s own figure is optimistic).</source>
         <translation>Minimo 1 sigma dichiarato per la normale di un fotogramma (gli errori dei punti della mappa sono correlati, quindi il valore proprio del fit è ottimistico).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="364"/>
+        <location filename="../app/sightline/option_texts.cpp" line="365"/>
         <source>Smallest Hough circle radius.</source>
         <translation>Raggio minimo dei cerchi di Hough.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="365"/>
+        <location filename="../app/sightline/option_texts.cpp" line="366"/>
         <source>Smallest approach_sigma_deg a target states: the average of frames that share one map does not beat the map&apos;s own bias (on the simulated approach with the SLAM&apos;s map, up to 4.3 deg against per-frame fits of 0.5 deg).</source>
         <translation>Minimo approach_sigma_deg dichiarato da un target: la media di fotogrammi che condividono una mappa non supera il bias della mappa stessa (nell&apos;avvicinamento simulato con la mappa dello SLAM, fino a 4.3 deg contro fit per fotogramma di 0.5 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="366"/>
+        <location filename="../app/sightline/option_texts.cpp" line="367"/>
         <source>Smallest button region.</source>
         <translation>Regione del pulsante più piccola.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="367"/>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
         <source>Split a piece while a point lies farther than this from its chord; merge pieces that fit one line within it (cells, like RANSAC&apos;s err_max).</source>
         <translation>Dividere un tratto finché un punto si trova più lontano di così dalla sua corda; unire i tratti che stanno su una linea entro questo valore (celle, come err_max di RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="369"/>
+        <location filename="../app/sightline/option_texts.cpp" line="370"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Ricominciare alla fine (i timestamp continuano a crescere) invece di terminare lo stream.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="370"/>
+        <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B2: ... and at most this far apart (no lines across the room).</source>
         <translation>Passo B2: ... e al massimo così distanti (nessuna linea attraverso la stanza).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="371"/>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Passo B2: i due punti campionati devono distare almeno tanto (nessuna linea corta).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="375"/>
+        <location filename="../app/sightline/option_texts.cpp" line="376"/>
         <source>Stereo calibration (OpenCV stereo YAML as `sightline-cli calibrate stereo` writes) used instead of the source&apos;s; needed for live pairs (aravis://L,R) opened without one.</source>
         <translation>Calibrazione stereo (YAML stereo di OpenCV come lo scrive `sightline-cli calibrate stereo`) usata al posto di quella della sorgente; necessaria per coppie dal vivo (aravis://L,R) aperte senza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="376"/>
+        <location filename="../app/sightline/option_texts.cpp" line="377"/>
         <source>Stereo calibration of the pair (OpenCV stereo YAML: M1 D1 M2 D2 R T, image_width/height, as `sightline-cli calibrate stereo` writes); the stereo odometry needs it. Also as aravis://LEFT,RIGHT?calibration_file=FILE.</source>
         <translation>Calibrazione stereo della coppia (YAML stereo di OpenCV: M1 D1 M2 D2 R T, image_width/height, come lo scrive `sightline-cli calibrate stereo`); l&apos;odometria stereo ne ha bisogno. Anche come aravis://LEFT,RIGHT?calibration_file=FILE.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="377"/>
+        <location filename="../app/sightline/option_texts.cpp" line="378"/>
         <source>Stop when the update is smaller (radians or metres).</source>
         <translation>Fermarsi quando l&apos;aggiornamento è minore (radianti o metri).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="378"/>
+        <location filename="../app/sightline/option_texts.cpp" line="379"/>
         <source>Stream colour.</source>
         <translation>Trasmettere il colore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="379"/>
+        <location filename="../app/sightline/option_texts.cpp" line="380"/>
         <source>Stream depth.</source>
         <translation>Trasmettere la profondità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="380"/>
+        <location filename="../app/sightline/option_texts.cpp" line="381"/>
         <source>Stream height for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Altezza dello stream per profondità e colore; 0 mantiene la modalità predefinita del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="381"/>
+        <location filename="../app/sightline/option_texts.cpp" line="382"/>
         <source>Stream rate; 0 keeps the device&apos;s default mode.</source>
         <translation>Frequenza dello stream; 0 mantiene la modalità predefinita del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="382"/>
+        <location filename="../app/sightline/option_texts.cpp" line="383"/>
         <source>Stream width for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Larghezza dello stream per profondità e colore; 0 mantiene la modalità predefinita del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="383"/>
+        <location filename="../app/sightline/option_texts.cpp" line="384"/>
         <source>TCP port of the target server; 0 = any free port.</source>
         <translation>Porta TCP del server dei target; 0 = una porta libera qualsiasi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="384"/>
+        <location filename="../app/sightline/option_texts.cpp" line="385"/>
         <source>Take the camera&apos;s offset ahead of the odometry base from the recording&apos;s scene.yaml (simulator) when present.</source>
         <translation>Prendere lo scostamento della telecamera davanti alla base dell&apos;odometria dal scene.yaml della registrazione (simulatore), se presente.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="385"/>
+        <location filename="../app/sightline/option_texts.cpp" line="386"/>
         <source>The SIFT margin grows to this many region radii when that is larger.</source>
         <translation>Il margine SIFT cresce fino a questo numero di raggi della regione, se è maggiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="386"/>
+        <location filename="../app/sightline/option_texts.cpp" line="387"/>
         <source>The approach direction is the normal of a plane through the map points within this distance of the located button (the panel around it).</source>
         <translation>La direzione di avvicinamento è la normale di un piano passante per i punti della mappa entro questa distanza dal pulsante localizzato (il pannello attorno).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="387"/>
+        <location filename="../app/sightline/option_texts.cpp" line="388"/>
         <source>The arm&apos;s and the SLAM&apos;s displacement directions disagree by more than this (online hand-eye check; a wrong mount rotation): no target.</source>
         <translation>Le direzioni di spostamento del braccio e dello SLAM discordano di più di così (controllo mano-occhio online; una rotazione di montaggio errata): nessun target.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="388"/>
+        <location filename="../app/sightline/option_texts.cpp" line="389"/>
         <source>The arm&apos;s clock minus the camera&apos;s (configured; arm stamp = frame stamp + this).</source>
         <translation>L&apos;orologio del braccio meno quello della telecamera (configurato; timestamp del braccio = timestamp del fotogramma + questo valore).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="389"/>
+        <location filename="../app/sightline/option_texts.cpp" line="390"/>
         <source>The colour image is downscaled to at most this width before detection.</source>
         <translation>L&apos;immagine a colori viene ridotta al massimo a questa larghezza prima del rilevamento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="390"/>
+        <location filename="../app/sightline/option_texts.cpp" line="391"/>
         <source>The current frame becomes the keyframe when fewer keyframe tracks agree with the motion.</source>
         <translation>Il fotogramma corrente diventa il keyframe quando meno tracce del keyframe concordano con il moto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="391"/>
+        <location filename="../app/sightline/option_texts.cpp" line="392"/>
         <source>The current frame becomes the keyframe when fewer of the keyframe&apos;s tracks survive.</source>
         <translation>Il fotogramma corrente diventa il keyframe quando sopravvivono meno tracce del keyframe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="392"/>
+        <location filename="../app/sightline/option_texts.cpp" line="393"/>
         <source>The depth colour map spans zero to this range.</source>
         <translation>La mappa di colori della profondità va da zero a questa distanza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="393"/>
+        <location filename="../app/sightline/option_texts.cpp" line="394"/>
         <source>The estimated offset is clamped to +- this.</source>
         <translation>L&apos;offset stimato è limitato a +- questo valore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="394"/>
+        <location filename="../app/sightline/option_texts.cpp" line="395"/>
         <source>The floor is the lowest plane: at most this fraction of points may lie clearly below it (rejects table tops).</source>
         <translation>Il pavimento è il piano più basso: al massimo questa frazione dei punti può trovarsi chiaramente al di sotto (scarta i piani dei tavoli).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="395"/>
+        <location filename="../app/sightline/option_texts.cpp" line="396"/>
         <source>The floor must hold at least this fraction of the valid points.</source>
         <translation>Il pavimento deve contenere almeno questa frazione dei punti validi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="396"/>
+        <location filename="../app/sightline/option_texts.cpp" line="397"/>
         <source>The gate grows to this many predicted button radii when that is larger.</source>
         <translation>Il gate cresce fino a questo numero di raggi previsti del pulsante, se è maggiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="397"/>
+        <location filename="../app/sightline/option_texts.cpp" line="398"/>
         <source>The gate widens by this per metre driven since the last correction (expected heading drift of the pose source).</source>
         <translation>Il gate si allarga di questo valore per metro percorso dall&apos;ultima correzione (deriva di direzione attesa della sorgente di pose).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="398"/>
+        <location filename="../app/sightline/option_texts.cpp" line="399"/>
         <source>The homography is chosen when its share of the inliers exceeds this.</source>
         <translation>L&apos;omografia viene scelta quando la sua quota di inlier supera questo valore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="399"/>
+        <location filename="../app/sightline/option_texts.cpp" line="400"/>
         <source>The map grows by at least this much each time it must.</source>
         <translation>La mappa cresce almeno di tanto ogni volta che deve.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="400"/>
+        <location filename="../app/sightline/option_texts.cpp" line="401"/>
         <source>The maximum-likelihood estimate is reported from this many pairs on.</source>
         <translation>La stima di massima verosimiglianza viene riportata a partire da questo numero di coppie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="401"/>
+        <location filename="../app/sightline/option_texts.cpp" line="402"/>
         <source>The metric scale counts as converged with this many displacement pairs in the ML estimate at least ...</source>
         <translation>La scala metrica è considerata convergente con almeno questo numero di coppie di spostamenti nella stima ML ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="402"/>
+        <location filename="../app/sightline/option_texts.cpp" line="403"/>
         <source>The model never grows beyond this many keypoints.</source>
         <translation>Il modello non cresce mai oltre questo numero di keypoint.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="403"/>
+        <location filename="../app/sightline/option_texts.cpp" line="404"/>
         <source>The offset is measured between an anchor frame and the first later frame whose translation from it reaches this fraction of the common tracks&apos; median depth: with less parallax, tracking errors dominate the measurement.</source>
         <translation>L&apos;offset viene misurato tra un fotogramma di ancoraggio e il primo fotogramma successivo la cui traslazione da esso raggiunge questa frazione della profondità mediana delle tracce comuni: con meno parallasse gli errori di tracking dominano la misura.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="404"/>
+        <location filename="../app/sightline/option_texts.cpp" line="405"/>
         <source>The online hand-eye check compares keyframes at least this far apart (measured): the directions of shorter displacements drown in the noise.</source>
         <translation>Il controllo mano-occhio online confronta keyframe distanti almeno tanto (misurato): le direzioni degli spostamenti più brevi si perdono nel rumore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="405"/>
+        <location filename="../app/sightline/option_texts.cpp" line="406"/>
         <source>The online hand-eye check sees the mount&apos;s translation only when the arm rotates at least this much between two keyframes.</source>
         <translation>Il controllo mano-occhio online vede la traslazione del montaggio solo quando il braccio ruota almeno di tanto tra due keyframe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="406"/>
+        <location filename="../app/sightline/option_texts.cpp" line="407"/>
         <source>The operator&apos;s tap is refused when the frame it was made on is older than this (data time) by the time the pipeline takes it.</source>
         <translation>Il tocco dell&apos;operatore viene rifiutato quando il fotogramma su cui è stato fatto è più vecchio di così (tempo dei dati) nel momento in cui la pipeline lo prende.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="407"/>
+        <location filename="../app/sightline/option_texts.cpp" line="408"/>
         <source>The operator&apos;s tap: X,Y in pixels, optionally @FRAME (frame index, default 0); confirmed at once. sightline-cli run button --tap X,Y[@FRAME] sets it.</source>
         <translation>Il tocco dell&apos;operatore: X,Y in pixel, facoltativamente @FRAME (indice del fotogramma, predefinito 0); confermato subito. sightline-cli run button --tap X,Y[@FRAME] lo imposta.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="408"/>
+        <location filename="../app/sightline/option_texts.cpp" line="409"/>
         <source>The panel plane passes at most this far from the located button: of the surfaces around it (a side wall, a door frame) only the one holding the button gives the push direction.</source>
         <translation>Il piano del pannello passa al massimo a questa distanza dal pulsante localizzato: delle superfici intorno (una parete laterale, uno stipite) solo quella che porta il pulsante dà la direzione di pressione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="409"/>
+        <location filename="../app/sightline/option_texts.cpp" line="410"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>La dimensione dai soli punti chiave del tocco (non da quelli aggiornati, la cui scala deriva; il looming in button.triangulate.*) richiede almeno tante corrispondenze coerenti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="410"/>
+        <location filename="../app/sightline/option_texts.cpp" line="411"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>La dimensione dai soli punti chiave del tocco (ButtonTrack::anchor_scale: i punti chiave aggiunti dall&apos;aggiornamento del tracker portano avanti l&apos;errore di scala di ogni aggiornamento); false: il raggio tracciato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="411"/>
+        <location filename="../app/sightline/option_texts.cpp" line="412"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>Il target è la mediana per asse di questo numero di posizioni recenti nel sistema della base (piano affidabile, scala convergente); 0 = tutte dal tocco, 1 = nessuna fusione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="412"/>
+        <location filename="../app/sightline/option_texts.cpp" line="413"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>Il gate di tracking non supera mai questo valore: le correzioni maggiori non vengono applicate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="413"/>
+        <location filename="../app/sightline/option_texts.cpp" line="414"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>La finestra cresce fino a questo numero di raggi previsti del pulsante, se è maggiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="414"/>
+        <location filename="../app/sightline/option_texts.cpp" line="415"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Tolleranza di accuracy.map_iou: una cella della mappa entro questo numero di celle da un muro vero conta come sopra di esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="415"/>
+        <location filename="../app/sightline/option_texts.cpp" line="416"/>
         <source>Top-view grid cell.</source>
         <translation>Cella della griglia della vista dall&apos;alto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="416"/>
+        <location filename="../app/sightline/option_texts.cpp" line="417"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Punti della traccia disegnati dietro il pulsante nell&apos;overlay.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="417"/>
+        <location filename="../app/sightline/option_texts.cpp" line="418"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Gate di tracking subito dopo una correzione: le linee più lontane di così dalla direzione attesa non votano né correggono.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="418"/>
+        <location filename="../app/sightline/option_texts.cpp" line="419"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>Il tracking è perso quando si trova meno di questa quota dei punti della mappa previsti nell&apos;immagine (il test di PTAM contro una posa errata dopo un salto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="419"/>
+        <location filename="../app/sightline/option_texts.cpp" line="420"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>La qualità del tracking è buona da questo numero di inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="420"/>
+        <location filename="../app/sightline/option_texts.cpp" line="421"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>La qualità del tracking è scarsa da questo numero di inlier; con meno è perso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="421"/>
+        <location filename="../app/sightline/option_texts.cpp" line="422"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Punti triangolati necessari per accettare l&apos;inizializzazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="422"/>
+        <location filename="../app/sightline/option_texts.cpp" line="423"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: variazione di una distanza tra coppie di punti che un campione rigido può mostrare, prima di aggiungere l&apos;incertezza di profondità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="423"/>
+        <location filename="../app/sightline/option_texts.cpp" line="424"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: rifiuti per rigidità dopo i quali RANSAC fallisce (si mantiene l&apos;ultimo moto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="424"/>
+        <location filename="../app/sightline/option_texts.cpp" line="425"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: errore di riproiezione (RMS di entrambe le immagini) di un inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="425"/>
+        <location filename="../app/sightline/option_texts.cpp" line="426"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: smettere di campionare non appena questa frazione dei punti è inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="426"/>
+        <location filename="../app/sightline/option_texts.cpp" line="427"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: campioni rigidi provati prima di adottare il miglior insieme di inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="427"/>
+        <location filename="../app/sightline/option_texts.cpp" line="428"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Piani rivolti verso l&apos;alto cercati; il più basso tra quelli grandi è il suolo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="428"/>
+        <location filename="../app/sightline/option_texts.cpp" line="429"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Limite superiore dei log-odds di una cella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="429"/>
+        <location filename="../app/sightline/option_texts.cpp" line="430"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Usare un pixel di profondità ogni n per la nuvola 3D; 1 li mostra tutti (più lento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="430"/>
+        <location filename="../app/sightline/option_texts.cpp" line="431"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Usa, oltre ai raggi, la dimensione apparente (looming: il raggio cresce come 1 / profondità mentre il braccio avanza di una distanza misurata).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="431"/>
+        <location filename="../app/sightline/option_texts.cpp" line="432"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Raggio visivo più vicino al parallelo con il piano di questo |cos|: nessuna posizione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="432"/>
+        <location filename="../app/sightline/option_texts.cpp" line="433"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Le linee votanti entro questo valore dalla loro mediana pesata per lunghezza vengono mediate; le altre (un muro fuso con una porta arretrata, una scatola) vengono scartate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Lunghezza di muri votanti di cui un fotogramma ha bisogno prima di poter fissare la direzione di riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Dimensione del voxel per le ipotesi campionate localmente (trova un pavimento che copre poco della vista).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Le linee di muro più corte di così non votano per la direzione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Le linee di muro con meno punti di scansione non votano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confidenza di tracking più debole: nessun target.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Pesare ogni posizione per 1 / la sua varianza (fit del piano e centro tracciato, crescente con la distanza): i fotogrammi vicini dell&apos;avvicinamento contano di più. Disattivato per impostazione predefinita: misurato peggiore sugli avvicinamenti simulati (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Pesare le osservazioni per 1 / (|u - cx| / cx + 0.05) (libviso2), favorendo il centro, come fa il raffinamento a due fotogrammi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Pesare le osservazioni per 1 / (|u - cx| / cx + 0.05) (libviso2), favorendo il centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Peso della dispersione delle posizioni fuse (1.4826 x deviazione assoluta mediana dal target fuso) nell&apos;incertezza dichiarata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Che cosa sostituisce un moto rifiutato: l&apos;ultimo accettato o nessuno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Quando sopravvivono meno tracce di questa frazione della quota sopravvissuta nel fotogramma precedente (cattiva previsione del moto), quelle perse vengono tracciate di nuovo con retrack_pyramid_levels; 0 = mai.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Se impostato, un client deve inviare {&quot;token&quot;: &quot;...&quot;} prima di ricevere qualcosa; obbligatorio quando bind_address non è un indirizzo di loopback.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, OpenCV&apos;s HOG detector, auto (ground truth when present, else HOG) or none.</source>
         <translation>Da dove provengono i riquadri delle persone: la ground truth del dataset, il rilevatore HOG di OpenCV, auto (ground truth se presente, altrimenti HOG) o none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Finestra del secondo passaggio, dopo una prima posa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Finestra usata quando la prima ricerca trova troppo pochi punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Con un token: una connessione che non lo ha presentato dopo questo tempo viene chiusa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Con meno di min_matches ma almeno tante corrispondenze, una matrice essenziale stimata da esse guida un secondo abbinamento lungo le rette epipolari (moto ampio).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Con png: anche overlay.avi (Motion-JPEG tramite il writer integrato di OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Con serve: smettere di attendere i client dopo questo tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Con serve: continuare a servire per questo tempo dopo l&apos;ultimo fotogramma, così i target in coda vengono inviati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Con serve: attendere questo numero di client connessi prima del primo fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Senza riferimento: votano le linee entro questo valore dalla direzione meglio supportata (modulo 90 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Workspace box, base x max.</source>
         <translation>Box dello spazio di lavoro, base x max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Workspace box, base x min.</source>
         <translation>Box dello spazio di lavoro, base x min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Workspace box, base y max.</source>
         <translation>Box dello spazio di lavoro, base y max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Workspace box, base y min.</source>
         <translation>Box dello spazio di lavoro, base y min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Workspace box, base z max.</source>
         <translation>Box dello spazio di lavoro, base z max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Workspace box, base z min.</source>
         <translation>Box dello spazio di lavoro, base z min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Scrivere per fotogramma i PNG della proiezione e della vista dall&apos;alto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: un muro vero è visibile in un fotogramma quando almeno questa parte di esso è inquadrata ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>I messaggi arm_pose più vicini di 1/questo valore nel tempo del braccio vengono scartati (contati).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>I messaggi arm_pose più indietro di così rispetto al più recente vengono dimenticati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); vuoto = accanto alla cartella del sensore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Piattaforma custom: un segmento rialzato più di così sopra il suolo ha punteggio 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Piattaforma custom: i punti più lontani dal sensore vengono scartati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: i triangoli con un lato più lungo di questo numero di celle vengono scartati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: accoppiare per timestamp delle telecamere (telecamere con un orologio comune, ad es. PTP o un trigger condiviso); host: accoppiare per ora di arrivo all&apos;host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la telecamera funziona con il proprio orologio; software: l&apos;host attiva ogni fotogramma (entrambe le telecamere di una coppia insieme); hardware: un impulso esterno su trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: un pixel ogni n in entrambe le direzioni (al posto della griglia di voxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: i vicini nella griglia le cui profondità differiscono di più di questa frazione sono separati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>grid: half-width of the integral-image normal window.</source>
         <translation>grid: semi-larghezza della finestra delle normali sull&apos;immagine integrale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vuoto = accanto a arm_poses (per arm_stream: accanto alle immagini); none = identità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (passo E): al massimo questo numero di linee.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: aggiungere cerchi di Hough (pulsanti rotondi, anelli sottili).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: sfocatura della seconda scala, moltiplicata per blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: metà della dimensione della finestra attorno al tocco in cui si cerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: rapporto tra il lato più lungo e quello più corto del riquadro ruotato di una regione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: le regioni sono ordinate per (offset + bias) / raggio, così il contorno del pulsante prevale su un simbolo sopra di esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: il baricentro della regione si trova al massimo a questo numero di raggi dal tocco.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: le due coppie di Canny sono le soglie moltiplicate per 2/(1+s) e 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del conteggio adattivo: probabilità di estrarre una coppia di soli inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: raggio dei vicini della crescita per regioni.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vicini del fit delle normali.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vicini della rimozione degli outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: dimensione delle foglie della griglia di voxel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (passo B8): un&apos;ipotesi con più inlier di così termina la ricerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (passi B5, B6): una linea richiede questa frazione dei punti rimanenti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (passo E): fermarsi quando questa frazione dei punti si trova su linee.</translation>
     </message>

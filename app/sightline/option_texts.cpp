@@ -345,6 +345,7 @@ const char* const kOptionTexts[] = {
     QT_TRANSLATE_NOOP("sightline::OptionText", "SIFT contrast threshold."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "SIFT contrast threshold; lower finds more keypoints on plain buttons."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "SIFT keypoints up to this far outside the region belong to the button model."),
+    QT_TRANSLATE_NOOP("sightline::OptionText", "SIFT on a larger region runs on its crop scaled down so the region's radius is this (fewer, coarser features, much faster on close-up photos); 0 = never."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "SVM score a HOG window needs to count as a person."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "Scale between pyramid levels."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "Score drawn in the maps: the published Table I rule or the Gaussian process."),

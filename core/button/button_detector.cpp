@@ -65,6 +65,9 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
     return Invalid(
         error, "button.detect.circle_min_radius_px must be >= 2 and below circle_max_radius_px");
   }
+  if (!(sift_max_radius_px == 0 || (sift_max_radius_px >= 4 && sift_max_radius_px <= 1000))) {
+    return Invalid(error, "button.detect.sift_max_radius_px must be 0 or lie in [4, 1000]");
+  }
   if (min_keypoints < 1) return Invalid(error, "button.detect.min_keypoints must be >= 1");
   if (!(sift_contrast > 0 && sift_contrast < 1)) {
     return Invalid(error, "button.detect.sift_contrast must lie in (0, 1)");
@@ -123,6 +126,9 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
               "SIFT keypoints up to this far outside the region belong to the button model.")
       .Double("sift_margin_radius", &O::sift_margin_radius, "radii", 0, 20, 0.1,
               "The SIFT margin grows to this many region radii when that is larger.")
+      .Double("sift_max_radius_px", &O::sift_max_radius_px, "px", 0, 1000, 1,
+              "SIFT on a larger region runs on its crop scaled down so the region's radius is "
+              "this (fewer, coarser features, much faster on close-up photos); 0 = never.")
       .Int("min_keypoints", &O::min_keypoints, "", 1, 1000, 1,
            "Fewer SIFT keypoints on the region: the button cannot be tracked.")
       .Double("sift_contrast", &O::sift_contrast, "", 0.001, 0.5, 0.005,
@@ -446,7 +452,8 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
 
 StatusOr<std::shared_ptr<const ButtonModel>> ButtonDetector::Detect(const cv::Mat& image,
                                                                     cv::Point2d tap) const {
-  StatusOr<ButtonModel> region = FindRegion(image, tap);
+  const cv::Mat grey = ToGrey(image);  // Once for both steps (shared when already grey).
+  StatusOr<ButtonModel> region = FindRegion(grey.empty() ? image : grey, tap);
   if (!region.ok()) return region.status();
   auto model = std::make_shared<ButtonModel>(std::move(*region));
   const double keep =
@@ -455,13 +462,24 @@ StatusOr<std::shared_ptr<const ButtonModel>> ButtonDetector::Detect(const cv::Ma
   const cv::Rect crop =
       (model->box + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
       cv::Rect(0, 0, image.cols, image.rows);
-  const cv::Mat grey = ToGrey(image);
+  // A large region is described at a coarser scale: SIFT's cost grows with the crop's area, and
+  // the tracker matches by descriptor, whatever the scale the features were found at.
+  const double radius = model->RadiusPx();
+  const double shrink = options_.sift_max_radius_px > 0 && radius > options_.sift_max_radius_px
+                            ? options_.sift_max_radius_px / radius
+                            : 1.0;
+  cv::Mat patch = grey(crop);
+  if (shrink < 1) cv::resize(patch, patch, cv::Size(), shrink, shrink, cv::INTER_AREA);
   cv::Ptr<cv::SIFT> sift = cv::SIFT::create(0, 3, options_.sift_contrast);
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
-  sift->detectAndCompute(grey(crop), cv::noArray(), keypoints, descriptors);
+  sift->detectAndCompute(patch, cv::noArray(), keypoints, descriptors);
   for (size_t i = 0; i < keypoints.size(); ++i) {
     cv::KeyPoint k = keypoints[i];
+    if (shrink < 1) {  // Back to image pixels (pixel centres, not corners, scale).
+      k.pt = (k.pt + cv::Point2f(0.5f, 0.5f)) * float(1 / shrink) - cv::Point2f(0.5f, 0.5f);
+      k.size = float(k.size / shrink);
+    }
     k.pt += cv::Point2f(crop.tl());
     if (cv::pointPolygonTest(model->contour, k.pt, true) < -keep) continue;
     model->keypoints.push_back(k);

@@ -57,6 +57,8 @@ struct ButtonDetectorOptions {
   double circle_max_radius_px = 120;  // Largest circle radius [px].
   double sift_margin_px = 8;          // Features up to this far outside the region are kept [px]
   double sift_margin_radius = 5.0;    // ... or this many region radii, if larger.
+  double sift_max_radius_px = 12;     // Larger regions: SIFT on the crop scaled down so the
+                                      // region's radius is this [px] (0 = never scaled).
   int min_keypoints = 3;              // Fewer SIFT keypoints: the button cannot be tracked.
   double sift_contrast = 0.01;  // SIFT contrast threshold (lower finds more on plain buttons).
 
