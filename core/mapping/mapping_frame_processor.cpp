@@ -47,6 +47,7 @@ MappingFrameProcessor::MappingFrameProcessor(MappingOptions options)
     : options_(std::move(options)),
       occupancy_(options_.occupancy),
       scanner_(options_.scan),
+      depth_people_(options_.people),
       rotation_(options_.rotation),
       map_(options_.stitch) {
   if (options_.extractor == "split_and_merge") {
@@ -58,11 +59,17 @@ MappingFrameProcessor::MappingFrameProcessor(MappingOptions options)
 
 MappingFrameProcessor::~MappingFrameProcessor() = default;
 
+StatusOr<std::vector<PersonBox>> MappingFrameProcessor::HogPeople(const cv::Mat& color) {
+  if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
+  return detector_->Detect(color);
+}
+
 Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCamera& camera) {
   configured_ = false;
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   SIGHTLINE_RETURN_IF_ERROR(occupancy_.Configure(floor, camera));
+  SIGHTLINE_RETURN_IF_ERROR(depth_people_.Configure(floor, camera));
   SIGHTLINE_RETURN_IF_ERROR(scanner_.Configure(
       options_.occupancy.width_cells, options_.occupancy.height_cells,
       options_.occupancy.cell_size_m, occupancy_.fov_min_rad(), occupancy_.fov_max_rad()));
@@ -101,17 +108,21 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
   // People.
   const std::string& source = options_.people.source;
   const bool use_truth = (source == "ground_truth" || source == "auto") && input.people.has_value();
-  const bool use_hog = source == "hog" || (source == "auto" && !input.people.has_value());
+  const bool use_depth = source == "depth" || (source == "auto" && !input.people.has_value());
   if (use_truth) {
     result->people = *input.people;
-  } else if (use_hog && !input.color.empty()) {
+    result->people_source = "ground truth";
+  } else if (use_depth || (source == "hog" && !input.color.empty())) {
     auto start = std::chrono::steady_clock::now();
-    if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
-    StatusOr<std::vector<PersonBox>> found = detector_->Detect(input.color);
+    StatusOr<std::vector<PersonBox>> found =
+        use_depth ? depth_people_.Detect(input.depth_m) : HogPeople(input.color);
     if (!found.ok()) return found.status();
     result->people = std::move(*found);
+    result->people_source = use_depth ? "depth" : "hog";
     times.people_ms = MsSince(start);
     if (timing) timing->Add("people", times.people_ms);
+  } else {
+    result->people_source = "none";
   }
 
   // Occupancy image.

@@ -15,6 +15,7 @@
 #include "core/common/status.h"
 #include "core/common/timing.h"
 #include "core/mapping/dead_reckoning.h"
+#include "core/mapping/depth_person_detector.h"
 #include "core/mapping/floor_plane.h"
 #include "core/mapping/line_extractor.h"
 #include "core/mapping/manhattan_rotation.h"
@@ -51,7 +52,7 @@ struct MappingOptions {
 struct MappingInput {
   FrameStamp stamp;
   cv::Mat depth_m;  // CV_32FC1 metres, NaN = invalid (any resolution; seed: 320 x 240).
-  cv::Mat color;    // BGR, optional; the HOG detector runs on it when boxes are not given.
+  cv::Mat color;    // BGR, optional; mapping.people.source=hog runs on it.
   // world_from_base of the pose source (wheel odometry, visual odometry) at this frame.
   std::optional<Pose2d> odometry;
   // Ground-truth person boxes; nullopt = unknown (the detector may run, see mapping.people).
@@ -98,12 +99,15 @@ class MappingFrameProcessor {
   const MappingOptions& options() const { return options_; }
 
  private:
+  StatusOr<std::vector<PersonBox>> HogPeople(const cv::Mat& color);
+
   MappingOptions options_;
   bool configured_ = false;
   OccupancyImageBuilder occupancy_;
   PolarScanner scanner_;
   std::unique_ptr<LineExtractor> extractor_;
-  std::unique_ptr<HogPersonDetector> detector_;
+  std::unique_ptr<HogPersonDetector> detector_;  // Made on first use (loads the SVM).
+  DepthPersonDetector depth_people_;
   ManhattanRotation rotation_;
   DeadReckoning odometry_;
   OccupancyGridMap map_;

@@ -15,8 +15,36 @@ namespace sightline {
 using mapping_internal::Invalid;
 
 bool PersonDetectorOptions::IsValid(std::string* error) const {
-  if (source != "auto" && source != "ground_truth" && source != "hog" && source != "none") {
-    return Invalid(error, "mapping.people.source must be auto, ground_truth, hog or none");
+  if (source != "auto" && source != "ground_truth" && source != "depth" && source != "hog" &&
+      source != "none") {
+    return Invalid(error, "mapping.people.source must be auto, ground_truth, depth, hog or none");
+  }
+  if (!(depth_cell_m >= 0.01 && depth_cell_m <= 0.5)) {
+    return Invalid(error, "mapping.people.depth_cell_m must lie in [0.01, 0.5]");
+  }
+  if (depth_target_columns < 16) {
+    return Invalid(error, "mapping.people.depth_target_columns must be >= 16");
+  }
+  if (!(depth_max_range_m >= 0.5 && depth_max_range_m <= 20)) {
+    return Invalid(error, "mapping.people.depth_max_range_m must lie in [0.5, 20]");
+  }
+  if (!(depth_min_height_m > 0 && depth_max_height_m > depth_min_height_m)) {
+    return Invalid(error,
+                   "mapping.people.depth_min_height_m must be > 0 and below depth_max_height_m");
+  }
+  if (!(depth_min_width_m > 0 && depth_max_width_m > depth_min_width_m)) {
+    return Invalid(error,
+                   "mapping.people.depth_min_width_m must be > 0 and below depth_max_width_m");
+  }
+  if (!(depth_min_thickness_m >= 0)) {
+    return Invalid(error, "mapping.people.depth_min_thickness_m must be >= 0");
+  }
+  if (!(depth_max_foot_m > 0)) return Invalid(error, "mapping.people.depth_max_foot_m must be > 0");
+  if (depth_min_points < 1) return Invalid(error, "mapping.people.depth_min_points must be >= 1");
+  if (!(depth_head_drop_m > 0))
+    return Invalid(error, "mapping.people.depth_head_drop_m must be > 0");
+  if (!(depth_head_radius_m > 0)) {
+    return Invalid(error, "mapping.people.depth_head_radius_m must be > 0");
   }
   if (hog_max_columns < 64) return Invalid(error, "mapping.people.hog_max_columns must be >= 64");
   if (!(hog_scale_step > 1.0)) return Invalid(error, "mapping.people.hog_scale_step must be > 1");
@@ -29,17 +57,43 @@ bool PersonDetectorOptions::IsValid(std::string* error) const {
 OptionTable<PersonDetectorOptions> PersonDetectorOptions::Describe() {
   using O = PersonDetectorOptions;
   return OptionTable<O>("mapping.people")
-      .Choice("source", &O::source, {"auto", "ground_truth", "hog", "none"},
-              "Where person boxes come from: the dataset's ground truth, OpenCV's HOG detector, "
-              "auto (ground truth when present, else HOG) or none.")
-      .Double("hog_hit_threshold", &O::hog_hit_threshold, "", -2, 5, 0.1,
-              "SVM score a HOG window needs to count as a person.")
-      .Int("hog_max_columns", &O::hog_max_columns, "px", 64, 4096, 32,
-           "The colour image is downscaled to at most this width before detection.")
-      .Double("hog_scale_step", &O::hog_scale_step, "", 1.01, 2, 0.01,
-              "Image pyramid step of the HOG detector (smaller is slower and finds more).")
-      .Double("hog_box_shrink", &O::hog_box_shrink, "", 0, 0.45, 0.01,
-              "HOG boxes include padding; each side is shrunk by this fraction of the box.");
+      .Choice("source", &O::source, {"auto", "ground_truth", "depth", "hog", "none"},
+              "Where person boxes come from: the dataset's ground truth, clusters of a person's "
+              "size standing on the floor in the depth image (depth), OpenCV's HOG detector on "
+              "the colour image, auto (ground truth when present, else depth) or none.")
+      .Double("depth_cell_m", &O::depth_cell_m, "m", 0.01, 0.5, 0.01,
+              "depth: floor grid cell in which points are clustered.")
+      .Int("depth_target_columns", &O::depth_target_columns, "px", 16, 4096, 16,
+           "depth: the depth image is sampled to about this many columns.")
+      .Double("depth_max_range_m", &O::depth_max_range_m, "m", 0.5, 20, 0.5,
+              "depth: points farther away are not looked at.")
+      .Double("depth_min_height_m", &O::depth_min_height_m, "m", 0.05, 5, 0.05,
+              "depth: a person's top lies at least this high above the floor.")
+      .Double("depth_max_height_m", &O::depth_max_height_m, "m", 0.1, 5, 0.05,
+              "depth: a person's top lies at most this high (walls and pillars go higher).")
+      .Double("depth_min_width_m", &O::depth_min_width_m, "m", 0.01, 5, 0.05,
+              "depth: a person's footprint is at least this long.")
+      .Double("depth_max_width_m", &O::depth_max_width_m, "m", 0.05, 5, 0.05,
+              "depth: a person's footprint is at most this long (walls are longer); wider "
+              "clusters are split at their heads.")
+      .Double("depth_min_thickness_m", &O::depth_min_thickness_m, "m", 0, 2, 0.02,
+              "depth: the shorter side of a person's footprint is at least this (legs, arms and "
+              "the torso's curve); the end of a wall seen at the edge of view is one cell "
+              "thick.")
+      .Double("depth_max_foot_m", &O::depth_max_foot_m, "m", 0.01, 2, 0.05,
+              "depth: a person's lowest point lies at most this high above the floor.")
+      .Int("depth_min_points", &O::depth_min_points, "", 1, 100000, 10,
+           "depth: sampled points a person needs.")
+      .Double("depth_head_radius_m", &O::depth_head_radius_m, "m", 0.05, 2, 0.05,
+              "depth: a head is the highest point within this radius; people side by side are "
+              "split at their heads.")
+      .Double("depth_head_drop_m", &O::depth_head_drop_m, "m", 0.01, 2, 0.05,
+              "depth: between two heads the tops dip at least this much (neck, shoulders); the "
+              "cut-off top of a wall is flat and is not split.")
+      .Bool("depth_require_top", &O::depth_require_top,
+            "depth: when on, a cluster reaching the image's top row (its top out of view) is not "
+            "a person: fewer false people at the edge of view, but people near enough to have "
+            "their heads cut off are missed.");
 }
 
 struct HogPersonDetector::Impl {

@@ -15,14 +15,31 @@
 
 namespace sightline {
 
-// Where person boxes come from. Keys "mapping.people.*".
+// Where person boxes come from, and the detectors' settings. Keys "mapping.people.*".
 struct PersonDetectorOptions {
-  std::string source = "auto";     // auto: ground truth when the dataset has it, else HOG;
-                                   // ground_truth, hog or none.
-  double hog_hit_threshold = 0.3;  // SVM score a HOG window needs.
-  int hog_max_columns = 320;       // The colour image is downscaled to at most this width first.
-  double hog_scale_step = 1.08;    // Pyramid step of detectMultiScale.
-  double hog_box_shrink = 0.1;     // HOG boxes are padded; shrink each side by this fraction.
+  std::string source = "auto";  // auto: ground truth when the dataset has it, else depth;
+                                // ground_truth, depth, hog or none.
+  // depth (core/mapping/depth_person_detector.h): clusters standing on the floor.
+  double depth_cell_m = 0.05;       // Floor grid cell [m].
+  int depth_target_columns = 160;   // Depth is sampled to about this many columns.
+  double depth_max_range_m = 6.0;   // Farther points are not looked at [m].
+  double depth_min_height_m = 1.0;  // A person's top lies in [min, max] above the floor [m].
+  double depth_max_height_m = 2.1;
+  double depth_min_width_m = 0.15;  // A person's footprint (longer side) in [min, max] [m].
+  double depth_max_width_m = 0.9;
+  double depth_min_thickness_m = 0.22;  // The footprint's shorter side: legs, arms and the torso's
+                                        // curve; a wall's end is one cell thick [m].
+  double depth_max_foot_m = 0.9;        // The lowest point lies at most this high: it stands
+                                        // (legs hidden by a bin or lost in far noise) [m].
+  int depth_min_points = 40;            // Sampled points a person needs.
+  double depth_head_radius_m = 0.3;     // Heads of people side by side are this far apart [m] ...
+  double depth_head_drop_m = 0.2;       // ... with a dip this deep between them [m].
+  bool depth_require_top = false;       // On: a cluster reaching the image's top row (its top out
+                                        // of view) is not a person.
+  double hog_hit_threshold = 0.3;       // SVM score a HOG window needs.
+  int hog_max_columns = 320;     // The colour image is downscaled to at most this width first.
+  double hog_scale_step = 1.08;  // Pyramid step of detectMultiScale.
+  double hog_box_shrink = 0.1;   // HOG boxes are padded; shrink each side by this fraction.
 
   bool IsValid(std::string* error) const;
   static OptionTable<PersonDetectorOptions> Describe();

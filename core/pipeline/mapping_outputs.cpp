@@ -230,6 +230,11 @@ StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
   RunResult result;
   result.frames = static_cast<int64_t>(state.record.frames.size());
   std::vector<std::string> log = state.recording.log_lines;
+  for (const auto& [source, counts] : state.record.people_sources) {
+    log.push_back("person boxes used: " + source + " in " + std::to_string(counts.first) +
+                  " frame(s), " + std::to_string(counts.second) +
+                  " box(es) (mapping.people.source=" + state.options.people.source + ")");
+  }
   log.push_back(state.floor_log);
   log.insert(log.end(), state.record.frame_log.begin(), state.record.frame_log.end());
 

@@ -92,6 +92,9 @@ const StatisticTable& MappingStatistics() {
 void MappingRunRecord::Add(const MappingFrameResult& r, const std::vector<std::string>& reset_log) {
   const FrameStamp& stamp = r.stamp;
   ++statuses[r.status];
+  std::pair<int, int>& people = people_sources[r.people_source];
+  ++people.first;
+  people.second += static_cast<int>(r.people.size());
   if (r.status != "ok") {
     frame_log.push_back("frame " + std::to_string(stamp.sequence_id) + ": " + r.status);
   }

@@ -77,7 +77,7 @@ StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
     if (!read.ok()) return read.status();
     recording.people = std::move(*read);
     recording.people->SetImageSize(cv::Size(recording.camera.width, recording.camera.height));
-    recording.log_lines.push_back("person boxes: ground truth " + path);
+    recording.log_lines.push_back("ground-truth person boxes available: " + path);
   }
   if (const std::string path = JoinPath(root, "walls.csv"); FileExists(path)) {
     StatusOr<std::vector<TrueWall>> read = ReadWallsCsv(path);

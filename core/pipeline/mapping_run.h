@@ -31,7 +31,9 @@ struct MappingRunRecord {
   std::string lines_csv;               // The rows of lines.csv.
   std::vector<MappedFrameLines> frames;
   std::map<std::string, int> statuses;  // Frames per chain status ("ok", "no walls", ...).
-  StatisticsLog stats;                  // Every mapped frame's statistics.
+  // Per source of the person boxes used (ground truth, depth, hog, none): frames and boxes.
+  std::map<std::string, std::pair<int, int>> people_sources;
+  StatisticsLog stats;  // Every mapped frame's statistics.
 
   // Adds one mapped frame; `reset_log` is the chain's log of resets.
   void Add(const MappingFrameResult& r, const std::vector<std::string>& reset_log);

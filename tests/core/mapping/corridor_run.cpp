@@ -121,6 +121,8 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
     odo.y += camera_forward_m * std::sin(odo.heading_rad);
     input.odometry = odo;
     std::vector<PersonBox> people;
+    std::vector<int> people_pixels;
+    std::vector<double> people_range_m;
     for (const sim::PersonObservation& p : sim::ObservePeople(simulator.scene(), frame.view, k)) {
       if (p.pixels == 0) continue;
       PersonBox box;
@@ -128,6 +130,14 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
       box.box = cv::Rect2d(p.u0, p.v0, p.u1 - p.u0 + 1, p.v1 - p.v0 + 1);
       box.image_size = cv::Size(camera.width, camera.height);
       people.push_back(box);
+      people_pixels.push_back(p.pixels);
+      double range = 1e9;
+      for (const sim::WalkingPerson& person : simulator.scene().people) {
+        if (person.id != p.person) continue;
+        const Eigen::Vector2d at = sim::PersonPose(person, simulator.TimeOf(k)).position;
+        range = (at - frame.world_from_camera.translation().head<2>()).norm();
+      }
+      people_range_m.push_back(range);
     }
     input.people = people;
     const Eigen::Isometry3d world_from_base = frame.world_from_camera * camera_from_base;
@@ -155,6 +165,36 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count());
       score.statuses.push_back((*r)->status);
+      // People found against the true boxes.
+      std::vector<cv::Rect2d> detections;
+      for (const PersonBox& b : (*r)->people) {
+        if (b.id < 0) detections.push_back(b.box);
+      }
+      score.people_detections += static_cast<int>(detections.size());
+      for (const cv::Rect2d& d : detections) {
+        bool on_a_person = false;
+        for (const PersonBox& t : people) on_a_person |= (d & t.box).area() >= 0.2 * d.area();
+        score.people_false += on_a_person ? 0 : 1;
+      }
+      for (size_t i = 0; i < people.size(); ++i) {
+        if (people_pixels[i] < kPersonMinPixels || people_range_m[i] < kPersonMinRangeM ||
+            people_range_m[i] > kPersonMaxRangeM) {
+          continue;
+        }
+        ++score.people_visible;
+        bool found = false;
+        for (const cv::Rect2d& d : detections) {
+          found |= (d & people[i].box).area() >= 0.5 * std::min(d.area(), people[i].box.area());
+        }
+        if (found) {
+          ++score.people_found;
+        } else {
+          char text[120];
+          std::snprintf(text, sizeof(text), "frame %d: person %d (%d px, %.1f m)", k, people[i].id,
+                        people_pixels[i], people_range_m[i]);
+          score.people_missed.push_back(text);
+        }
+      }
       // Lines against the true walls, placed with the true pose.
       std::vector<int> matched;
       for (const WallSegment& line : (*r)->lines.lines) {
