@@ -140,28 +140,40 @@ void FeatureTracker::TrackPass(const ImagePyramid& previous, const ImagePyramid&
   std::vector<unsigned char> status;
   cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, cv::noArray(), window,
                            levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  std::vector<unsigned char> back_status;
-  std::vector<cv::Point2f> back;
-  if (options_.max_forward_backward_px > 0) {
-    back = from;
-    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, to, back, back_status, cv::noArray(),
-                             window, 1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  }
   const float border = static_cast<float>(options_.border_px);
   const float max_x = current.image.cols - 1 - border, max_y = current.image.rows - 1 - border;
-  const double max_fb2 = options_.max_forward_backward_px * options_.max_forward_backward_px;
+  // The forward checks first, so only the tracks that pass them are tracked back.
+  std::vector<size_t> passed;
+  passed.reserve(index.size());
   for (size_t k = 0; k < index.size(); ++k) {
-    const size_t i = index[k];
-    (*tracked)[i] = to[k];
+    (*tracked)[index[k]] = to[k];
     if (!status[k]) continue;
     const cv::Point2f& p = to[k];
     if (!(p.x >= border && p.y >= border && p.x <= max_x && p.y <= max_y)) continue;
+    passed.push_back(k);
+  }
+  std::vector<unsigned char> back_status;
+  std::vector<cv::Point2f> back_from, back;
+  if (options_.max_forward_backward_px > 0 && !passed.empty()) {
+    back_from.reserve(passed.size());
+    back.reserve(passed.size());
+    for (size_t k : passed) {
+      back_from.push_back(to[k]);
+      back.push_back(from[k]);
+    }
+    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, back_from, back, back_status,
+                             cv::noArray(), window, 1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW,
+                             1e-4);
+  }
+  const double max_fb2 = options_.max_forward_backward_px * options_.max_forward_backward_px;
+  for (size_t j = 0; j < passed.size(); ++j) {
+    const size_t k = passed[j];
     if (!back.empty()) {
-      if (!back_status[k]) continue;
-      const cv::Point2f d = back[k] - from[k];
+      if (!back_status[j]) continue;
+      const cv::Point2f d = back[j] - from[k];
       if (d.x * d.x + d.y * d.y > max_fb2) continue;
     }
-    (*ok)[i] = 1;
+    (*ok)[index[k]] = 1;
   }
 }
 

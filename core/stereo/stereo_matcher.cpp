@@ -183,14 +183,9 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
   std::vector<unsigned char> status;
   cv::calcOpticalFlowPyrLK(left.levels, right.levels, from, to, status, cv::noArray(), window,
                            levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  std::vector<unsigned char> back_status;
-  std::vector<cv::Point2f> back;
-  if (options_.max_left_right_px > 0) {
-    back = from;
-    cv::calcOpticalFlowPyrLK(right.levels, left.levels, to, back, back_status, cv::noArray(),
-                             window, 0, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  }
-  const double max_lr2 = options_.max_left_right_px * options_.max_left_right_px;
+  // The forward match's own checks first, so only the matches that pass them are tracked back.
+  std::vector<size_t> passed;
+  passed.reserve(index.size());
   for (size_t k = 0; k < index.size(); ++k) {
     if (!status[k]) continue;
     const cv::Point2f& r = to[k];
@@ -200,12 +195,30 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
       continue;
     if (!(std::abs(r.y - l.y) <= options_.max_row_error_px)) continue;
     if (r.x < 0 || r.x > right.image.cols - 1) continue;
+    passed.push_back(k);
+  }
+  std::vector<unsigned char> back_status;
+  std::vector<cv::Point2f> back_from, back;
+  if (options_.max_left_right_px > 0 && !passed.empty()) {
+    back_from.reserve(passed.size());
+    back.reserve(passed.size());
+    for (size_t k : passed) {
+      back_from.push_back(to[k]);
+      back.push_back(from[k]);
+    }
+    cv::calcOpticalFlowPyrLK(right.levels, left.levels, back_from, back, back_status, cv::noArray(),
+                             window, 0, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
+  }
+  const double max_lr2 = options_.max_left_right_px * options_.max_left_right_px;
+  for (size_t j = 0; j < passed.size(); ++j) {
+    const size_t k = passed[j];
+    const cv::Point2f& l = from[k];
     if (!back.empty()) {
-      if (!back_status[k]) continue;
-      const cv::Point2f d = back[k] - l;
+      if (!back_status[j]) continue;
+      const cv::Point2f d = back[j] - l;
       if (d.x * d.x + d.y * d.y > max_lr2) continue;
     }
-    (*right_points)[index[k]] = cv::Point2f(r.x, l.y);
+    (*right_points)[index[k]] = cv::Point2f(to[k].x, l.y);
     (*ok)[index[k]] = 1;
   }
 }
