@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "core/stereo/corner_response.h"
 #include "core/stereo/option_check.h"
@@ -133,36 +137,54 @@ void FeatureTracker::TrackPass(const ImagePyramid& previous, const ImagePyramid&
   const cv::Size window(options_.window_px, options_.window_px);
   const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
                                   options_.max_iterations, options_.epsilon_px);
-  std::vector<float> error;
   std::vector<unsigned char> status;
-  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, error, window, levels,
-                           criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  std::vector<unsigned char> back_status;
-  std::vector<cv::Point2f> back;
-  if (options_.max_forward_backward_px > 0) {
-    back = from;
-    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, to, back, back_status, error, window,
-                             1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
-  }
+  cv::calcOpticalFlowPyrLK(previous.levels, current.levels, from, to, status, cv::noArray(), window,
+                           levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW, 1e-4);
   const float border = static_cast<float>(options_.border_px);
   const float max_x = current.image.cols - 1 - border, max_y = current.image.rows - 1 - border;
-  const double max_fb2 = options_.max_forward_backward_px * options_.max_forward_backward_px;
+  // The forward checks first, so only the tracks that pass them are tracked back.
+  std::vector<size_t> passed;
+  passed.reserve(index.size());
   for (size_t k = 0; k < index.size(); ++k) {
-    const size_t i = index[k];
-    (*tracked)[i] = to[k];
+    (*tracked)[index[k]] = to[k];
     if (!status[k]) continue;
     const cv::Point2f& p = to[k];
     if (!(p.x >= border && p.y >= border && p.x <= max_x && p.y <= max_y)) continue;
+    passed.push_back(k);
+  }
+  std::vector<unsigned char> back_status;
+  std::vector<cv::Point2f> back_from, back;
+  if (options_.max_forward_backward_px > 0 && !passed.empty()) {
+    back_from.reserve(passed.size());
+    back.reserve(passed.size());
+    for (size_t k : passed) {
+      back_from.push_back(to[k]);
+      back.push_back(from[k]);
+    }
+    cv::calcOpticalFlowPyrLK(current.levels, previous.levels, back_from, back, back_status,
+                             cv::noArray(), window, 1, criteria, cv::OPTFLOW_USE_INITIAL_FLOW,
+                             1e-4);
+  }
+  const double max_fb2 = options_.max_forward_backward_px * options_.max_forward_backward_px;
+  for (size_t j = 0; j < passed.size(); ++j) {
+    const size_t k = passed[j];
     if (!back.empty()) {
-      if (!back_status[k]) continue;
-      const cv::Point2f d = back[k] - from[k];
+      if (!back_status[j]) continue;
+      const cv::Point2f d = back[j] - from[k];
       if (d.x * d.x + d.y * d.y > max_fb2) continue;
     }
-    (*ok)[i] = 1;
+    (*ok)[index[k]] = 1;
   }
 }
 
 namespace {
+
+// The smallest float that is not below `value`.
+float FloatAtLeast(double value) {
+  float f = static_cast<float>(value);
+  if (static_cast<double>(f) < value) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
 
 // One Detect() call: the grid of buckets with the corners they hold (existing and new), and
 // the new corners, searched bucket row by bucket row on one pyramid level. Buckets and
@@ -187,7 +209,8 @@ class CornerSearch {
         margin_(options.block_size / 2 + 2),
         // Buckets that need corners: fewer than refill_fraction of their share.
         refill_below_(
-            std::max(1, static_cast<int>(std::ceil(options.refill_fraction * per_bucket_)))) {
+            std::max(1, static_cast<int>(std::ceil(options.refill_fraction * per_bucket_)))),
+        threshold_(FloatAtLeast(options.min_eigenvalue)) {
     for (const cv::Point2f& p : existing) {
       const int bx = std::clamp(static_cast<int>(p.x) / bs_, 0, cols_ - 1);
       const int by = std::clamp(static_cast<int>(p.y) / bs_, 0, rows_ - 1);
@@ -277,23 +300,20 @@ class CornerSearch {
     std::vector<std::pair<float, cv::Point>>& candidates = candidates_;
     candidates.clear();
     const auto weaker = [](const auto& a, const auto& b) { return a.first > b.first; };
+    // Columns of eig_ with both neighbours inside it.
+    const int x_begin = std::max(cell.x - ext.x, 1);
+    const int x_end = std::min(cell.x + cell.width - ext.x, eig_.cols - 1);
     for (int y = cell.y; y < cell.y + cell.height; ++y) {
       const int ey = y - ext.y;
-      if (ey < 1 || ey + 1 >= eig_.rows) continue;
+      if (ey < 1 || ey + 1 >= eig_.rows || x_begin >= x_end) continue;
       const float* up = eig_.ptr<float>(ey - 1);
       const float* row = eig_.ptr<float>(ey);
       const float* down = eig_.ptr<float>(ey + 1);
-      for (int x = cell.x; x < cell.x + cell.width; ++x) {
-        const int ex = x - ext.x;
-        if (ex < 1 || ex + 1 >= eig_.cols) continue;
+      LocalMaxima(up, row, down, x_begin, x_end, &maxima_);
+      for (int ex : maxima_) {
         const float v = row[ex];
-        if (v < options_.min_eigenvalue) continue;
         if (limit > 0 && candidates.size() == limit && v <= candidates.front().first) continue;
-        if (v < row[ex - 1] || v < row[ex + 1] || v < up[ex - 1] || v < up[ex] || v < up[ex + 1] ||
-            v < down[ex - 1] || v < down[ex] || v < down[ex + 1]) {
-          continue;
-        }
-        candidates.emplace_back(v, cv::Point(x, y));
+        candidates.emplace_back(v, cv::Point(ex + ext.x, y));
         if (limit == 0) continue;
         std::push_heap(candidates.begin(), candidates.end(), weaker);
         if (candidates.size() > limit) {
@@ -303,6 +323,42 @@ class CornerSearch {
       }
     }
     std::sort(candidates.begin(), candidates.end(), weaker);
+  }
+
+  // Columns ex in [begin, end) of the middle row where the response reaches min_eigenvalue and
+  // none of its eight neighbours is larger, left to right.
+  void LocalMaxima(const float* up, const float* row, const float* down, int begin, int end,
+                   std::vector<int>* out) const {
+    out->clear();
+    const auto is_maximum = [&](int ex) {
+      const float v = row[ex];
+      return v >= threshold_ && v >= row[ex - 1] && v >= row[ex + 1] && v >= up[ex - 1] &&
+             v >= up[ex] && v >= up[ex + 1] && v >= down[ex - 1] && v >= down[ex] &&
+             v >= down[ex + 1];
+    };
+    int ex = begin;
+#if defined(__SSE2__)
+    const __m128 threshold = _mm_set1_ps(threshold_);
+    for (; ex + 4 <= end; ex += 4) {
+      const __m128 v = _mm_loadu_ps(row + ex);
+      __m128 keep = _mm_cmpge_ps(v, threshold);
+      if (_mm_movemask_ps(keep) == 0) continue;
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(row + ex - 1)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(row + ex + 1)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(up + ex - 1)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(up + ex)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(up + ex + 1)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(down + ex - 1)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(down + ex)));
+      keep = _mm_and_ps(keep, _mm_cmpge_ps(v, _mm_loadu_ps(down + ex + 1)));
+      for (int bits = _mm_movemask_ps(keep); bits != 0; bits &= bits - 1) {
+        out->push_back(ex + __builtin_ctz(static_cast<unsigned>(bits)));
+      }
+    }
+#endif
+    for (; ex < end; ++ex) {
+      if (is_maximum(ex)) out->push_back(ex);
+    }
   }
 
   // Takes candidates far enough from the corners around, up to `need` and the wanted total;
@@ -333,8 +389,12 @@ class CornerSearch {
   const int margin_;  // Around a span, for the eigenvalue image's window.
   const int refill_below_;
   cv::Rect inside_;  // The level's image without the border.
+  // min_eigenvalue as the smallest float not below it, so that a float response v passes
+  // v >= threshold_ exactly when v >= min_eigenvalue.
+  const float threshold_;
   cv::Mat eig_;
   std::vector<std::pair<float, cv::Point>> candidates_;
+  std::vector<int> maxima_;  // Scratch: one row's local maxima.
   std::vector<cv::Point2f> fresh_;
 };
 

@@ -231,7 +231,8 @@ NormalEquations BuildNormalEquations(const Problem& p) {
   return eq;
 }
 
-// The damped system reduced to the poses (Schur complement of the points): *S and *rhs, and
+// The damped system reduced to the poses (Schur complement of the points): *S (its lower
+// triangle; the upper one is not kept up to date) and *rhs, and
 // each point's inverted damped block.
 void ReducedSystem(const Problem& p, const NormalEquations& eq, double lambda, Eigen::MatrixXd* S,
                    Eigen::VectorXd* rhs, std::vector<Eigen::Matrix3d>* inverse) {
@@ -254,15 +255,18 @@ void ReducedSystem(const Problem& p, const NormalEquations& eq, double lambda, E
       const Matrix63 WaInv = (Wa * (*inverse)[pi]).eval();
       const int oa = 6 * (ea.frame - fixed);
       rhs->segment<6>(oa).noalias() -= Wa * v;
-      // S is symmetric: the blocks at and above the diagonal, mirrored below.
+      // S is symmetric and its LDLT reads only the lower triangle: each pair's block is
+      // subtracted there (transposed when it lies above the diagonal), the upper one is left.
       for (size_t c = a; c < es.size(); ++c) {
         const Edge& ec = p.edges[static_cast<size_t>(es[c])];
         if (!p.active[static_cast<size_t>(es[c])] || ec.frame < fixed) continue;
         const int oc = 6 * (ec.frame - fixed);
-        const Eigen::Matrix<double, 6, 6> block =
-            WaInv * eq.coupling[static_cast<size_t>(es[c])].transpose();
-        S->block<6, 6>(oa, oc) -= block;
-        if (oc != oa) S->block<6, 6>(oc, oa) -= block.transpose();
+        const Matrix63& Wc = eq.coupling[static_cast<size_t>(es[c])];
+        if (oc > oa) {
+          S->block<6, 6>(oc, oa).noalias() -= Wc * WaInv.transpose();
+        } else {
+          S->block<6, 6>(oa, oc).noalias() -= WaInv * Wc.transpose();
+        }
       }
     }
   }
@@ -278,7 +282,7 @@ bool DampedStep(const Problem& p, const NormalEquations& eq, double lambda,
   Eigen::VectorXd rhs;
   std::vector<Eigen::Matrix3d> inverse;
   ReducedSystem(p, eq, lambda, &S, &rhs, &inverse);
-  const Eigen::VectorXd dp = S.ldlt().solve(rhs);
+  const Eigen::VectorXd dp = S.ldlt().solve(rhs);  // Reads S's lower triangle only.
   if (!dp.allFinite()) return false;
   *new_poses = p.poses;
   for (int fi = fixed; fi < static_cast<int>(p.poses.size()); ++fi) {
