@@ -1,8 +1,8 @@
 #include "core/mobility/grid_stages.h"
 
-#include <Eigen/Eigenvalues>
-#include <array>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sightline {
 
@@ -108,65 +108,110 @@ void GridRemoveOutliers(double alpha, WorkingCloud* cloud) {
 
 namespace {
 
-// Ten moments per cell: count, x, y, z, xx, xy, xz, yy, yz, zz.
-using Moments = std::array<double, 10>;
+// Ten moments of the points of a cell or window: count, x, y, z, xx, xy, xz, yy, yz, zz.
+struct Moments {
+  double m[10] = {};
+  void Add(const Eigen::Vector3f& p) {
+    const double x = p.x(), y = p.y(), z = p.z();
+    m[0] += 1, m[1] += x, m[2] += y, m[3] += z;
+    m[4] += x * x, m[5] += x * y, m[6] += x * z, m[7] += y * y, m[8] += y * z, m[9] += z * z;
+  }
+  void Subtract(const Eigen::Vector3f& p) {
+    const double x = p.x(), y = p.y(), z = p.z();
+    m[0] -= 1, m[1] -= x, m[2] -= y, m[3] -= z;
+    m[4] -= x * x, m[5] -= x * y, m[6] -= x * z, m[7] -= y * y, m[8] -= y * z, m[9] -= z * z;
+  }
+  void operator+=(const Moments& o) {
+    for (int k = 0; k < 10; ++k) m[k] += o.m[k];
+  }
+  void operator-=(const Moments& o) {
+    for (int k = 0; k < 10; ++k) m[k] -= o.m[k];
+  }
+};
 
-Moments PointMoments(const Eigen::Vector3f& p) {
-  const double x = p.x(), y = p.y(), z = p.z();
-  return {1, x, y, z, x * x, x * y, x * z, y * y, y * z, z * z};
+// The normal (unit eigenvector of the smallest eigenvalue) of a window's covariance, or false
+// when the window bends more than max_curvature (smallest eigenvalue / trace) or is degenerate.
+// The smallest eigenvalue comes from Newton's method on the characteristic polynomial started
+// at 0: for a positive semi-definite matrix the polynomial is concave and increasing below its
+// smallest root, so every iterate is a lower bound and the search stops as soon as one exceeds
+// the curvature limit (edges cost a step or two, flat windows converge in two or three).
+bool WindowNormal(const Moments& s, double max_curvature, Eigen::Vector3d* normal) {
+  const double inv = 1.0 / s.m[0];
+  const double mx = s.m[1] * inv, my = s.m[2] * inv, mz = s.m[3] * inv;
+  const double a00 = s.m[4] * inv - mx * mx, a01 = s.m[5] * inv - mx * my;
+  const double a02 = s.m[6] * inv - mx * mz, a11 = s.m[7] * inv - my * my;
+  const double a12 = s.m[8] * inv - my * mz, a22 = s.m[9] * inv - mz * mz;
+  const double trace = a00 + a11 + a22;
+  if (!(trace > 1e-20)) return false;
+  const double m00 = a11 * a22 - a12 * a12, m01 = a02 * a12 - a01 * a22;
+  const double m02 = a01 * a12 - a02 * a11;
+  const double c1 = m00 + a00 * a22 - a02 * a02 + a00 * a11 - a01 * a01;
+  const double c0 = a00 * m00 + a01 * m01 + a02 * m02;
+  // f(l) = l^3 - trace l^2 + c1 l - c0 = -det(A - l I).
+  const double limit = max_curvature * trace;
+  double l = 0;
+  for (int it = 0; it < 50; ++it) {
+    const double f = ((l - trace) * l + c1) * l - c0;
+    const double df = (3 * l - 2 * trace) * l + c1;
+    if (!(f < 0) || !(df > 0)) break;
+    const double next = l - f / df;
+    if (!(next > l)) break;
+    const bool converged = next - l <= 1e-8 * trace;  // Far below float precision.
+    l = next;
+    if (l > limit) return false;  // An edge or a corner.
+    if (converged) break;
+  }
+  // The null vector of A - l I: the longest cross product of two of its rows.
+  const Eigen::Vector3d r0(a00 - l, a01, a02), r1(a01, a11 - l, a12), r2(a02, a12, a22 - l);
+  const Eigen::Vector3d c01 = r0.cross(r1), c02 = r0.cross(r2), c12 = r1.cross(r2);
+  const double n01 = c01.squaredNorm(), n02 = c02.squaredNorm(), n12 = c12.squaredNorm();
+  const Eigen::Vector3d& best = n01 >= n02 ? (n01 >= n12 ? c01 : c12) : (n02 >= n12 ? c02 : c12);
+  const double norm2 = std::max(n01, std::max(n02, n12));
+  if (!(norm2 > 1e-30 * trace * trace * trace * trace)) return false;  // A line: no plane.
+  *normal = best / std::sqrt(norm2);
+  return true;
 }
 
 }  // namespace
 
 void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
   const int w = cloud->grid_w, h = cloud->grid_h;
-  // Integral image with a zero first row and column: sums over [0, x) x [0, y).
-  std::vector<Moments> integral(static_cast<size_t>(w + 1) * (h + 1), Moments{});
-  for (int y = 0; y < h; ++y) {
-    Moments row{};
-    for (int x = 0; x < w; ++x) {
-      const int j = cloud->cell_point[y * w + x];
-      if (j >= 0) {
-        const Moments m = PointMoments(cloud->points[j]);
-        for (int c = 0; c < 10; ++c) row[c] += m[c];
-      }
-      const Moments& above = integral[static_cast<size_t>(y) * (w + 1) + x + 1];
-      Moments& here = integral[static_cast<size_t>(y + 1) * (w + 1) + x + 1];
-      for (int c = 0; c < 10; ++c) here[c] = above[c] + row[c];
-    }
-  }
   const float nan = std::numeric_limits<float>::quiet_NaN();
   cloud->normals.assign(cloud->size(), Eigen::Vector3f(nan, nan, nan));
-  for (size_t i = 0; i < cloud->size(); ++i) {
-    const int cell = cloud->point_cell[i];
-    const int gx = cell % w, gy = cell / w;
-    const int x0 = std::max(0, gx - window), x1 = std::min(w, gx + window + 1);
-    const int y0 = std::max(0, gy - window), y1 = std::min(h, gy + window + 1);
-    const Moments& a = integral[static_cast<size_t>(y0) * (w + 1) + x0];
-    const Moments& b = integral[static_cast<size_t>(y0) * (w + 1) + x1];
-    const Moments& c = integral[static_cast<size_t>(y1) * (w + 1) + x0];
-    const Moments& d = integral[static_cast<size_t>(y1) * (w + 1) + x1];
+  // Box sums over (2 window + 1)^2 cells, slid along the grid: per column the sum over the
+  // window's rows, then per row a running sum of those column sums. Constant work per cell and
+  // a working set of one grid row.
+  std::vector<Moments> column(w);
+  auto add_row = [&](int y, bool add) {
+    const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
+    for (int x = 0; x < w; ++x) {
+      if (row[x] < 0) continue;
+      if (add) {
+        column[x].Add(cloud->points[row[x]]);
+      } else {
+        column[x].Subtract(cloud->points[row[x]]);
+      }
+    }
+  };
+  for (int y = 0; y < std::min(window, h); ++y) add_row(y, true);
+  for (int y = 0; y < h; ++y) {
+    if (y + window < h) add_row(y + window, true);
+    if (y - window - 1 >= 0) add_row(y - window - 1, false);
     Moments s;
-    for (int k = 0; k < 10; ++k) s[k] = d[k] - b[k] - c[k] + a[k];
-    if (s[0] < 3) continue;
-    const double inv = 1.0 / s[0];
-    const Eigen::Vector3d mean(s[1] * inv, s[2] * inv, s[3] * inv);
-    Eigen::Matrix3d cov;
-    cov(0, 0) = s[4] * inv - mean.x() * mean.x();
-    cov(0, 1) = cov(1, 0) = s[5] * inv - mean.x() * mean.y();
-    cov(0, 2) = cov(2, 0) = s[6] * inv - mean.x() * mean.z();
-    cov(1, 1) = s[7] * inv - mean.y() * mean.y();
-    cov(1, 2) = cov(2, 1) = s[8] * inv - mean.y() * mean.z();
-    cov(2, 2) = s[9] * inv - mean.z() * mean.z();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-    solver.computeDirect(cov);
-    const Eigen::Vector3d& eigenvalues = solver.eigenvalues();
-    const double variation = eigenvalues(0) / std::max(1e-20, eigenvalues.sum());
-    if (variation > max_curvature) continue;  // An edge or a corner.
-    Eigen::Vector3f n = solver.eigenvectors().col(0).cast<float>();
-    if (!n.allFinite()) continue;
-    if (n.dot(cloud->points[i]) > 0) n = -n;  // Towards the viewpoint at the origin.
-    cloud->normals[i] = n.normalized();
+    for (int x = 0; x < std::min(window, w); ++x) s += column[x];
+    const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
+    for (int x = 0; x < w; ++x) {
+      if (x + window < w) s += column[x + window];
+      if (x - window - 1 >= 0) s -= column[x - window - 1];
+      const int i = row[x];
+      if (i < 0 || s.m[0] < 2.5) continue;  // At least 3 points.
+      Eigen::Vector3d n;
+      if (!WindowNormal(s, max_curvature, &n)) continue;
+      Eigen::Vector3f nf = n.cast<float>();
+      if (!nf.allFinite()) continue;
+      if (nf.dot(cloud->points[i]) > 0) nf = -nf;  // Towards the viewpoint at the origin.
+      cloud->normals[i] = nf;
+    }
   }
 }
 

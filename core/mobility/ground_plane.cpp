@@ -29,8 +29,14 @@ bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const 
                  Eigen::Vector3d* normal, double* d) {
   if (pool.size() < 3) return false;
   std::uniform_int_distribution<size_t> pick(0, pool.size() - 1);
-  // Hypotheses are scored on an even subsample of the pool.
+  // Hypotheses are scored on an even subsample of the pool, gathered once with its thresholds.
   const size_t step = std::max<size_t>(1, pool.size() / options.ransac_sample_points);
+  std::vector<Eigen::Vector4f> sample;  // x, y, z, inlier distance.
+  sample.reserve(pool.size() / step + 1);
+  for (size_t k = 0; k < pool.size(); k += step) {
+    const Eigen::Vector3f& p = cloud.points[pool[k]];
+    sample.emplace_back(p.x(), p.y(), p.z(), GroundThreshold(options, p));
+  }
   const double cos_tolerance = std::cos(options.up_tolerance_deg * kDegToRad);
   int best = -1;
   for (int it = 0; it < iterations; ++it) {
@@ -45,9 +51,8 @@ bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const 
     if (n.cast<double>().dot(up) < cos_tolerance) continue;
     const float offset = -n.dot(a);
     int count = 0;
-    for (size_t k = 0; k < pool.size(); k += step) {
-      const Eigen::Vector3f& p = cloud.points[pool[k]];
-      count += std::abs(n.dot(p) + offset) < GroundThreshold(options, p);
+    for (const Eigen::Vector4f& p : sample) {
+      count += std::abs(n.x() * p.x() + n.y() * p.y() + n.z() * p.z() + offset) < p.w();
     }
     if (count > best) {
       best = count;
@@ -85,22 +90,31 @@ Eigen::Vector3d ExpectedUpFromMount(double pitch_deg, double roll_deg) {
   return (roll * pitch * level).normalized();
 }
 
-bool FitPlaneLeastSquares(const std::vector<Eigen::Vector3f>& points, Eigen::Vector3d* normal,
-                          Eigen::Vector3d* centroid) {
-  if (points.size() < 3) return false;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3f& p : points) mean += p.cast<double>();
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3f& p : points) {
-    const Eigen::Vector3d q = p.cast<double>() - mean;
-    cov += q * q.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+void PlaneSums::Add(const Eigen::Vector3f& p) {
+  if (count == 0) reference = p.cast<double>();
+  const Eigen::Vector3d q = p.cast<double>() - reference;
+  ++count;
+  sum += q;
+  sum_outer += q * q.transpose();
+}
+
+bool PlaneSums::Fit(Eigen::Vector3d* normal, Eigen::Vector3d* centroid) const {
+  if (count < 3) return false;
+  const Eigen::Vector3d mean = sum / static_cast<double>(count);
+  // Scatter about the mean (not divided by the count).
+  const Eigen::Matrix3d scatter = sum_outer - static_cast<double>(count) * mean * mean.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
   if (solver.info() != Eigen::Success || solver.eigenvalues()(1) <= 1e-12) return false;
   *normal = solver.eigenvectors().col(0).normalized();
-  *centroid = mean;
+  *centroid = reference + mean;
   return normal->allFinite();
+}
+
+bool FitPlaneLeastSquares(const std::vector<Eigen::Vector3f>& points, Eigen::Vector3d* normal,
+                          Eigen::Vector3d* centroid) {
+  PlaneSums sums;
+  for (const Eigen::Vector3f& p : points) sums.Add(p);
+  return sums.Fit(normal, centroid);
 }
 
 StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3d& up,
@@ -129,17 +143,17 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
     if (!BestUpPlane(cloud, pool, up, options, iterations, &rng, &n, &d)) break;
     // Least-squares refit on the inliers, then the final members (distance and own normal).
     for (int refit = 0; refit < 2; ++refit) {
-      std::vector<Eigen::Vector3f> inliers;
+      PlaneSums inliers;
       const Eigen::Vector3f nf = n.cast<float>();
       for (int i : pool) {
         if (std::abs(n.dot(cloud.points[i].cast<double>()) + d) <
                 GroundThreshold(options, cloud.points[i]) &&
             cloud.normals[i].dot(nf) >= cos_member) {
-          inliers.push_back(cloud.points[i]);
+          inliers.Add(cloud.points[i]);
         }
       }
       Eigen::Vector3d centroid;
-      if (!FitPlaneLeastSquares(inliers, &n, &centroid)) break;
+      if (!inliers.Fit(&n, &centroid)) break;
       if (n.dot(up) < 0) n = -n;
       d = -n.dot(centroid);
     }
@@ -148,6 +162,8 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
     candidate.plane.d = d;
     const Eigen::Vector3f nf = n.cast<float>();
     std::vector<int> rest;
+    rest.reserve(pool.size());
+    candidate.members.reserve(pool.size());
     for (int i : pool) {
       const bool on_plane = std::abs(candidate.plane.HeightOf(cloud.points[i])) <
                                 GroundThreshold(options, cloud.points[i]) &&
@@ -164,16 +180,20 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
   for (const Candidate& c : candidates) {
     if (largest == nullptr || c.members.size() > largest->members.size()) largest = &c;
   }
-  const Candidate* ground = nullptr;
-  double ground_level = 0;
+  std::vector<const Candidate*> qualified;
   for (const Candidate& c : candidates) {
     if (c.plane.d <= 0) continue;  // The camera is below it (a ceiling, a table seen from under).
     if (std::acos(std::clamp(c.plane.normal.dot(up), -1.0, 1.0)) >
         options.up_tolerance_deg * kDegToRad) {
       continue;
     }
-    const double level = MedianLevel(cloud, c.members, largest->plane.normal);
-    if (ground == nullptr || level < ground_level) ground = &c, ground_level = level;
+    qualified.push_back(&c);
+  }
+  const Candidate* ground = qualified.size() == 1 ? qualified[0] : nullptr;
+  double ground_level = 0;
+  for (size_t k = 0; qualified.size() > 1 && k < qualified.size(); ++k) {
+    const double level = MedianLevel(cloud, qualified[k]->members, largest->plane.normal);
+    if (ground == nullptr || level < ground_level) ground = qualified[k], ground_level = level;
   }
   if (ground == nullptr) {
     char text[256];

@@ -28,6 +28,20 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
                                  const MobilityOptions& options, std::vector<uint8_t>* is_ground,
                                  int* iterations = nullptr);
 
+// Running sums for a least-squares plane, in double about the first point added (far points
+// keep their spread). No per-point storage.
+struct PlaneSums {
+  int count = 0;
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
+
+  void Add(const Eigen::Vector3f& p);
+  // Unit normal (smallest scatter direction) and centroid. False for < 3 points or a
+  // degenerate set.
+  bool Fit(Eigen::Vector3d* normal, Eigen::Vector3d* centroid) const;
+};
+
 // Least-squares plane (PCA) of points: unit normal and centroid. False for < 3 points or a
 // degenerate set.
 bool FitPlaneLeastSquares(const std::vector<Eigen::Vector3f>& points, Eigen::Vector3d* normal,
