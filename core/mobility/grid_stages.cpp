@@ -220,14 +220,16 @@ void GridNeighbors(const WorkingCloud& cloud, int i, double max_depth_jump, std:
   const int cell = cloud.point_cell[i];
   const int gx = cell % cloud.grid_w, gy = cell / cloud.grid_w;
   const float z = cloud.points[i].z();
-  const float jump = static_cast<float>(max_depth_jump) * z;
+  const float jump = static_cast<float>(max_depth_jump);
   static constexpr int kDx[4] = {1, -1, 0, 0};
   static constexpr int kDy[4] = {0, 0, 1, -1};
   for (int k = 0; k < 4; ++k) {
     const int x = gx + kDx[k], y = gy + kDy[k];
     if (x < 0 || y < 0 || x >= cloud.grid_w || y >= cloud.grid_h) continue;
     const int j = cloud.cell_point[y * cloud.grid_w + x];
-    if (j >= 0 && std::abs(cloud.points[j].z() - z) <= jump) out->push_back(j);
+    if (j < 0) continue;
+    const float zj = cloud.points[j].z();
+    if (std::abs(zj - z) <= jump * std::min(z, zj)) out->push_back(j);
   }
 }
 

@@ -28,7 +28,7 @@ void GridRemoveOutliers(double alpha, WorkingCloud* cloud);
 void GridNormals(int window, double max_curvature, WorkingCloud* cloud);
 
 // The 4-connected grid neighbours of point i whose depths differ by at most max_depth_jump
-// times the depth.
+// times the nearer depth (symmetric: j is i's neighbour when i is j's).
 void GridNeighbors(const WorkingCloud& cloud, int i, double max_depth_jump, std::vector<int>* out);
 
 }  // namespace sightline

@@ -179,18 +179,16 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
     for (size_t i = 0; i < work.size(); ++i)
       eligible[i] = !is_ground[i] && work.normals[i].allFinite();
     StageClock t(result.get(), "segmentation", work.size() - result->ground.inliers);
-    NeighborFunction neighbors;
     if (work.gridded()) {
-      neighbors = [&](int i, std::vector<int>* out) {
-        GridNeighbors(work, i, o.max_depth_jump, out);
-      };
+      label = GrowGridRegions(work, result->rgbn, eligible, o.color_threshold, o.max_depth_jump,
+                              o.min_segment_points, &regions);
     } else {
-      neighbors = [&](int i, std::vector<int>* out) {
+      const NeighborFunction neighbors = [&](int i, std::vector<int>* out) {
         search->Radius(i, o.pcl_neighbor_radius_m, out);
       };
+      label = GrowRegions(result->rgbn, eligible, o.color_threshold, o.min_segment_points,
+                          neighbors, &regions);
     }
-    label = GrowRegions(result->rgbn, eligible, o.color_threshold, o.min_segment_points, neighbors,
-                        &regions);
   }
   // Segment 0 is the ground when found; regions follow.
   const int offset = result->ground.found ? 1 : 0;
