@@ -70,28 +70,37 @@ void RangeCut(double max_range_m, WorkingCloud* cloud) {
 
 void GridRemoveOutliers(double alpha, WorkingCloud* cloud) {
   const size_t n = cloud->size();
+  const int w = cloud->grid_w, h = cloud->grid_h;
+  // Each neighbour pair once (right, down-left, down, down-right), added to both ends.
+  std::vector<float> total(n, 0.f);
+  std::vector<uint8_t> neighbours(n, 0);
+  for (int y = 0; y < h; ++y) {
+    const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
+    const int* below = y + 1 < h ? row + w : nullptr;
+    for (int x = 0; x < w; ++x) {
+      const int i = row[x];
+      if (i < 0) continue;
+      const Eigen::Vector3f& p = cloud->points[i];
+      auto pair = [&](int j) {
+        if (j < 0) return;
+        const float d = (cloud->points[j] - p).norm();
+        total[i] += d, total[j] += d;
+        ++neighbours[i], ++neighbours[j];
+      };
+      if (x + 1 < w) pair(row[x + 1]);
+      if (below != nullptr) {
+        if (x > 0) pair(below[x - 1]);
+        pair(below[x]);
+        if (x + 1 < w) pair(below[x + 1]);
+      }
+    }
+  }
   std::vector<float> mean_distance(n, -1.f);
   double sum = 0, sum2 = 0;
   int counted = 0;
   for (size_t i = 0; i < n; ++i) {
-    const int cell = cloud->point_cell[i];
-    const int gx = cell % cloud->grid_w, gy = cell / cloud->grid_w;
-    float total = 0;
-    int k = 0;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if ((dx == 0 && dy == 0) || gx + dx < 0 || gy + dy < 0 || gx + dx >= cloud->grid_w ||
-            gy + dy >= cloud->grid_h) {
-          continue;
-        }
-        const int j = cloud->cell_point[(gy + dy) * cloud->grid_w + gx + dx];
-        if (j < 0) continue;
-        total += (cloud->points[j] - cloud->points[i]).norm();
-        ++k;
-      }
-    }
-    if (k == 0) continue;
-    mean_distance[i] = total / k / cloud->points[i].z();
+    if (neighbours[i] == 0) continue;
+    mean_distance[i] = total[i] / neighbours[i] / cloud->points[i].z();
     sum += mean_distance[i];
     sum2 += static_cast<double>(mean_distance[i]) * mean_distance[i];
     ++counted;
@@ -129,40 +138,73 @@ struct Moments {
   }
 };
 
-// The normal (unit eigenvector of the smallest eigenvalue) of a window's covariance, or false
-// when the window bends more than max_curvature (smallest eigenvalue / trace) or is degenerate.
+// The windows of one grid row whose normals are wanted, as arrays (one entry per point) so that
+// the Newton steps below run without branches over many windows at once: their divisions
+// overlap instead of waiting on each other.
+struct WindowBatch {
+  std::vector<int> point;
+  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, step;
+
+  void Resize(size_t n) {
+    for (std::vector<double>* v :
+         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &step}) {
+      v->resize(n);
+    }
+    point.resize(n);
+  }
+
+  // Covariance of the window sums s and the coefficients of its characteristic polynomial
+  // f(l) = l^3 - trace l^2 + c1 l - c0 = -det(A - l I).
+  void Set(size_t k, int i, const Moments& s) {
+    const double inv = 1.0 / s.m[0];
+    const double mx = s.m[1] * inv, my = s.m[2] * inv, mz = s.m[3] * inv;
+    const double b00 = s.m[4] * inv - mx * mx, b01 = s.m[5] * inv - mx * my;
+    const double b02 = s.m[6] * inv - mx * mz, b11 = s.m[7] * inv - my * my;
+    const double b12 = s.m[8] * inv - my * mz, b22 = s.m[9] * inv - mz * mz;
+    const double m00 = b11 * b22 - b12 * b12, m01 = b02 * b12 - b01 * b22;
+    const double m02 = b01 * b12 - b02 * b11;
+    point[k] = i;
+    a00[k] = b00, a01[k] = b01, a02[k] = b02, a11[k] = b11, a12[k] = b12, a22[k] = b22;
+    trace[k] = b00 + b11 + b22;
+    c1[k] = m00 + b00 * b22 - b02 * b02 + b00 * b11 - b01 * b01;
+    c0[k] = b00 * m00 + b01 * m01 + b02 * m02;
+  }
+};
+
+// One Newton step towards the smallest root of f from below, kept only when it moves up.
+inline double NewtonStep(double l, double trace, double c1, double c0) {
+  const double f = ((l - trace) * l + c1) * l - c0;
+  const double df = (3 * l - 2 * trace) * l + c1;
+  const double next = l - f / df;
+  return df > 0 && next > l ? next : l;
+}
+
 // The smallest eigenvalue comes from Newton's method on the characteristic polynomial started
 // at 0: for a positive semi-definite matrix the polynomial is concave and increasing below its
-// smallest root, so every iterate is a lower bound and the search stops as soon as one exceeds
-// the curvature limit (edges cost a step or two, flat windows converge in two or three).
-bool WindowNormal(const Moments& s, double max_curvature, Eigen::Vector3d* normal) {
-  const double inv = 1.0 / s.m[0];
-  const double mx = s.m[1] * inv, my = s.m[2] * inv, mz = s.m[3] * inv;
-  const double a00 = s.m[4] * inv - mx * mx, a01 = s.m[5] * inv - mx * my;
-  const double a02 = s.m[6] * inv - mx * mz, a11 = s.m[7] * inv - my * my;
-  const double a12 = s.m[8] * inv - my * mz, a22 = s.m[9] * inv - mz * mz;
-  const double trace = a00 + a11 + a22;
+// smallest root, so every iterate is a lower bound. Three steps reach it for nearly every
+// window (a step of 1e-6 trace turns the normal by about step / eigenvalue gap: far below one
+// colour step); the rest continue here, stopping as soon as an iterate exceeds the curvature
+// limit. Returns the normal (unit eigenvector of the smallest eigenvalue) of entry k, or false
+// for an edge or corner (smallest eigenvalue / trace > max_curvature) or a degenerate window.
+bool FinishWindow(const WindowBatch& b, size_t k, double max_curvature, Eigen::Vector3d* normal) {
+  const double trace = b.trace[k];
   if (!(trace > 1e-20)) return false;
-  const double m00 = a11 * a22 - a12 * a12, m01 = a02 * a12 - a01 * a22;
-  const double m02 = a01 * a12 - a02 * a11;
-  const double c1 = m00 + a00 * a22 - a02 * a02 + a00 * a11 - a01 * a01;
-  const double c0 = a00 * m00 + a01 * m01 + a02 * m02;
-  // f(l) = l^3 - trace l^2 + c1 l - c0 = -det(A - l I).
   const double limit = max_curvature * trace;
-  double l = 0;
-  for (int it = 0; it < 50; ++it) {
-    const double f = ((l - trace) * l + c1) * l - c0;
-    const double df = (3 * l - 2 * trace) * l + c1;
-    if (!(f < 0) || !(df > 0)) break;
-    const double next = l - f / df;
-    if (!(next > l)) break;
-    const bool converged = next - l <= 1e-8 * trace;  // Far below float precision.
-    l = next;
-    if (l > limit) return false;  // An edge or a corner.
-    if (converged) break;
+  double l = b.l[k];
+  if (l > limit) return false;  // An edge or a corner.
+  if (b.step[k] > 1e-6 * trace) {
+    for (int it = 0; it < 50; ++it) {
+      const double next = NewtonStep(l, trace, b.c1[k], b.c0[k]);
+      const bool converged = next - l <= 1e-6 * trace;
+      l = next;
+      if (l > limit) return false;
+      if (converged) break;
+    }
   }
   // The null vector of A - l I: the longest cross product of two of its rows.
-  const Eigen::Vector3d r0(a00 - l, a01, a02), r1(a01, a11 - l, a12), r2(a02, a12, a22 - l);
+  const Eigen::Vector3d r0(b.a00[k] - l, b.a01[k], b.a02[k]);
+  const Eigen::Vector3d r1(b.a01[k], b.a11[k] - l, b.a12[k]);
+  const Eigen::Vector3d r2(b.a02[k], b.a12[k], b.a22[k] - l);
   const Eigen::Vector3d c01 = r0.cross(r1), c02 = r0.cross(r2), c12 = r1.cross(r2);
   const double n01 = c01.squaredNorm(), n02 = c02.squaredNorm(), n12 = c12.squaredNorm();
   const Eigen::Vector3d& best = n01 >= n02 ? (n01 >= n12 ? c01 : c12) : (n02 >= n12 ? c02 : c12);
@@ -193,6 +235,8 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
       }
     }
   };
+  WindowBatch batch;
+  batch.Resize(w);
   for (int y = 0; y < std::min(window, h); ++y) add_row(y, true);
   for (int y = 0; y < h; ++y) {
     if (y + window < h) add_row(y + window, true);
@@ -200,15 +244,27 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
     Moments s;
     for (int x = 0; x < std::min(window, w); ++x) s += column[x];
     const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
+    size_t count = 0;
     for (int x = 0; x < w; ++x) {
       if (x + window < w) s += column[x + window];
       if (x - window - 1 >= 0) s -= column[x - window - 1];
-      const int i = row[x];
-      if (i < 0 || s.m[0] < 2.5) continue;  // At least 3 points.
+      if (row[x] < 0 || s.m[0] < 2.5) continue;  // At least 3 points.
+      batch.Set(count++, row[x], s);
+    }
+    for (size_t k = 0; k < count; ++k) {
+      const double trace = batch.trace[k], c1 = batch.c1[k], c0 = batch.c0[k];
+      const double l1 = NewtonStep(0, trace, c1, c0);
+      const double l2 = NewtonStep(l1, trace, c1, c0);
+      const double l3 = NewtonStep(l2, trace, c1, c0);
+      batch.l[k] = l3;
+      batch.step[k] = l3 - l2;
+    }
+    for (size_t k = 0; k < count; ++k) {
       Eigen::Vector3d n;
-      if (!WindowNormal(s, max_curvature, &n)) continue;
+      if (!FinishWindow(batch, k, max_curvature, &n)) continue;
       Eigen::Vector3f nf = n.cast<float>();
       if (!nf.allFinite()) continue;
+      const int i = batch.point[k];
       if (nf.dot(cloud->points[i]) > 0) nf = -nf;  // Towards the viewpoint at the origin.
       cloud->normals[i] = nf;
     }

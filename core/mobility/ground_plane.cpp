@@ -90,19 +90,14 @@ Eigen::Vector3d ExpectedUpFromMount(double pitch_deg, double roll_deg) {
   return (roll * pitch * level).normalized();
 }
 
-void PlaneSums::Add(const Eigen::Vector3f& p) {
-  if (count == 0) reference = p.cast<double>();
-  const Eigen::Vector3d q = p.cast<double>() - reference;
-  ++count;
-  sum += q;
-  sum_outer += q * q.transpose();
-}
-
 bool PlaneSums::Fit(Eigen::Vector3d* normal, Eigen::Vector3d* centroid) const {
   if (count < 3) return false;
-  const Eigen::Vector3d mean = sum / static_cast<double>(count);
+  const double n = static_cast<double>(count);
+  const Eigen::Vector3d mean(sx / n, sy / n, sz / n);
   // Scatter about the mean (not divided by the count).
-  const Eigen::Matrix3d scatter = sum_outer - static_cast<double>(count) * mean * mean.transpose();
+  Eigen::Matrix3d scatter;
+  scatter << sxx, sxy, sxz, sxy, syy, syz, sxz, syz, szz;
+  scatter -= n * mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
   if (solver.info() != Eigen::Success || solver.eigenvalues()(1) <= 1e-12) return false;
   *normal = solver.eigenvectors().col(0).normalized();

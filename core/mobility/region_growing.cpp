@@ -1,5 +1,6 @@
 #include "core/mobility/region_growing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -11,7 +12,9 @@ std::vector<cv::Vec3b> EncodeNormals(const std::vector<Eigen::Vector3f>& normals
     const Eigen::Vector3f& n = normals[i];
     if (!n.allFinite()) continue;
     for (int c = 0; c < 3; ++c) {
-      colors[i][c] = cv::saturate_cast<uchar>(std::lround(255.0 * (n[c] + 1.0) / 2.0));
+      // Non-negative for a unit normal: rounding is adding a half and truncating.
+      const double value = 255.0 * (n[c] + 1.0) / 2.0;
+      colors[i][c] = static_cast<uchar>(std::clamp(value + 0.5, 0.0, 255.0));
     }
   }
   return colors;
