@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace sightline {
 
@@ -41,6 +44,8 @@ StatusOr<WorkingCloud> GridDownsample(const PointCloud& cloud, int stride) {
   out.grid_h = (cloud.height + stride - 1) / stride;
   out.cell_point.assign(static_cast<size_t>(out.grid_w) * out.grid_h, -1);
   out.points.reserve(out.cell_point.size());
+  out.pixel.reserve(out.cell_point.size());
+  out.point_cell.reserve(out.cell_point.size());
   for (int gy = 0; gy < out.grid_h; ++gy) {
     for (int gx = 0; gx < out.grid_w; ++gx) {
       const int index = gy * stride * cloud.width + gx * stride;
@@ -61,11 +66,13 @@ StatusOr<WorkingCloud> GridDownsample(const PointCloud& cloud, int stride) {
 void RangeCut(double max_range_m, WorkingCloud* cloud) {
   const float max2 = static_cast<float>(max_range_m * max_range_m);
   std::vector<uint8_t> keep(cloud->size());
+  size_t kept = 0;
   for (size_t i = 0; i < cloud->size(); ++i) {
     const Eigen::Vector3f& p = cloud->points[i];
     keep[i] = p.allFinite() && p.squaredNorm() <= max2;
+    kept += keep[i];
   }
-  cloud->Compact(keep);
+  if (kept < cloud->size()) cloud->Compact(keep);
 }
 
 void GridRemoveOutliers(double alpha, WorkingCloud* cloud) {
@@ -138,80 +145,151 @@ struct Moments {
   }
 };
 
-// The windows of one grid row whose normals are wanted, as arrays (one entry per point) so that
-// the Newton steps below run without branches over many windows at once: their divisions
-// overlap instead of waiting on each other.
+// The windows of one grid row whose normals are wanted, as arrays (one entry per point), so
+// that the arithmetic runs on two windows at a time and the divisions and square roots of
+// different windows overlap.
 struct WindowBatch {
   std::vector<int> point;
-  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, step;
+  std::vector<double> sums[10];  // The window's moments (Moments::m).
+  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, step, nx, ny, nz, norm2;
 
   void Resize(size_t n) {
+    point.resize(n);
+    for (std::vector<double>& v : sums) v.resize(n);
     for (std::vector<double>* v :
-         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &step}) {
+         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &step, &nx, &ny, &nz, &norm2}) {
       v->resize(n);
     }
-    point.resize(n);
-  }
-
-  // Covariance of the window sums s and the coefficients of its characteristic polynomial
-  // f(l) = l^3 - trace l^2 + c1 l - c0 = -det(A - l I).
-  void Set(size_t k, int i, const Moments& s) {
-    const double inv = 1.0 / s.m[0];
-    const double mx = s.m[1] * inv, my = s.m[2] * inv, mz = s.m[3] * inv;
-    const double b00 = s.m[4] * inv - mx * mx, b01 = s.m[5] * inv - mx * my;
-    const double b02 = s.m[6] * inv - mx * mz, b11 = s.m[7] * inv - my * my;
-    const double b12 = s.m[8] * inv - my * mz, b22 = s.m[9] * inv - mz * mz;
-    const double m00 = b11 * b22 - b12 * b12, m01 = b02 * b12 - b01 * b22;
-    const double m02 = b01 * b12 - b02 * b11;
-    point[k] = i;
-    a00[k] = b00, a01[k] = b01, a02[k] = b02, a11[k] = b11, a12[k] = b12, a22[k] = b22;
-    trace[k] = b00 + b11 + b22;
-    c1[k] = m00 + b00 * b22 - b02 * b02 + b00 * b11 - b01 * b01;
-    c0[k] = b00 * m00 + b01 * m01 + b02 * m02;
   }
 };
 
-// One Newton step towards the smallest root of f from below, kept only when it moves up.
-inline double NewtonStep(double l, double trace, double c1, double c0) {
-  const double f = ((l - trace) * l + c1) * l - c0;
-  const double df = (3 * l - 2 * trace) * l + c1;
-  const double next = l - f / df;
-  return df > 0 && next > l ? next : l;
+// Two doubles in one SSE2 / NEON register (GCC and Clang vector extension): the arithmetic
+// below runs on two windows at once, with the scalar type for an odd last window.
+using Double2 = double __attribute__((vector_size(16)));
+using Mask2 = int64_t __attribute__((vector_size(16)));  // All ones where a comparison holds.
+
+template <typename T>
+T Broadcast(double v) {
+  if constexpr (std::is_same_v<T, double>) {
+    return v;
+  } else {
+    return T{v, v};
+  }
+}
+template <typename T>
+T Load(const std::vector<double>& v, size_t k) {
+  T out;
+  std::memcpy(&out, v.data() + k, sizeof(T));
+  return out;
+}
+template <typename T>
+void Store(std::vector<double>* v, size_t k, const T& value) {
+  std::memcpy(v->data() + k, &value, sizeof(T));
+}
+inline double Select(bool mask, double a, double b) { return mask ? a : b; }
+inline Double2 Select(Mask2 mask, Double2 a, Double2 b) {
+  return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(a) & mask) |
+                                   (reinterpret_cast<Mask2>(b) & ~mask));
+}
+inline double Sqrt(double v) { return std::sqrt(v); }
+inline Double2 Sqrt(Double2 v) { return Double2{std::sqrt(v[0]), std::sqrt(v[1])}; }
+// The magnitude of a with the sign of b.
+inline double CopySign(double a, double b) { return std::copysign(a, b); }
+inline Double2 CopySign(Double2 a, Double2 b) {
+  const Mask2 sign = reinterpret_cast<Mask2>(Broadcast<Double2>(-0.0));
+  return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(a) & ~sign) |
+                                   (reinterpret_cast<Mask2>(b) & sign));
 }
 
-// The smallest eigenvalue comes from Newton's method on the characteristic polynomial started
-// at 0: for a positive semi-definite matrix the polynomial is concave and increasing below its
-// smallest root, so every iterate is a lower bound. Three steps reach it for nearly every
-// window (a step of 1e-6 trace turns the normal by about step / eigenvalue gap: far below one
-// colour step); the rest continue here, stopping as soon as an iterate exceeds the curvature
-// limit. Returns the normal (unit eigenvector of the smallest eigenvalue) of entry k, or false
-// for an edge or corner (smallest eigenvalue / trace > max_curvature) or a degenerate window.
-bool FinishWindow(const WindowBatch& b, size_t k, double max_curvature, Eigen::Vector3d* normal) {
-  const double trace = b.trace[k];
-  if (!(trace > 1e-20)) return false;
-  const double limit = max_curvature * trace;
-  double l = b.l[k];
-  if (l > limit) return false;  // An edge or a corner.
-  if (b.step[k] > 1e-6 * trace) {
-    for (int it = 0; it < 50; ++it) {
-      const double next = NewtonStep(l, trace, b.c1[k], b.c0[k]);
-      const bool converged = next - l <= 1e-6 * trace;
-      l = next;
-      if (l > limit) return false;
-      if (converged) break;
+// One Newton step towards the smallest root of f(l) = l^3 - trace l^2 + c1 l - c0 =
+// -det(A - l I) from below, kept only when it moves up.
+template <typename T>
+T NewtonStep(T l, T trace, T c1, T c0) {
+  const T f = ((l - trace) * l + c1) * l - c0;
+  const T df = (Broadcast<T>(3) * l - Broadcast<T>(2) * trace) * l + c1;
+  const T next = l - f / df;
+  return Select((df > Broadcast<T>(0)) & (next > l), next, l);
+}
+
+// Covariance, characteristic polynomial and smallest eigenvalue of entry k (and k + 1 for
+// Double2). The smallest eigenvalue comes from Newton's method on the characteristic polynomial
+// started at 0: for a positive semi-definite matrix the polynomial is concave and increasing
+// below its smallest root, so every iterate is a lower bound. Three steps reach it for nearly
+// every window; `step` is the last step's length.
+template <typename T>
+void SmallestEigenvalue(WindowBatch* b, size_t k) {
+  T m[10];
+  for (int c = 0; c < 10; ++c) m[c] = Load<T>(b->sums[c], k);
+  const T inv = Broadcast<T>(1) / m[0];
+  const T mx = m[1] * inv, my = m[2] * inv, mz = m[3] * inv;
+  const T b00 = m[4] * inv - mx * mx, b01 = m[5] * inv - mx * my;
+  const T b02 = m[6] * inv - mx * mz, b11 = m[7] * inv - my * my;
+  const T b12 = m[8] * inv - my * mz, b22 = m[9] * inv - mz * mz;
+  const T m00 = b11 * b22 - b12 * b12, m01 = b02 * b12 - b01 * b22;
+  const T m02 = b01 * b12 - b02 * b11;
+  const T t = b00 + b11 + b22;
+  const T q1 = m00 + b00 * b22 - b02 * b02 + b00 * b11 - b01 * b01;
+  const T q0 = b00 * m00 + b01 * m01 + b02 * m02;
+  Store(&b->a00, k, b00), Store(&b->a01, k, b01), Store(&b->a02, k, b02);
+  Store(&b->a11, k, b11), Store(&b->a12, k, b12), Store(&b->a22, k, b22);
+  Store(&b->trace, k, t), Store(&b->c1, k, q1), Store(&b->c0, k, q0);
+  const T l1 = NewtonStep(Broadcast<T>(0), t, q1, q0);
+  const T l2 = NewtonStep(l1, t, q1, q0);
+  const T l3 = NewtonStep(l2, t, q1, q0);
+  Store(&b->l, k, l3);
+  Store(&b->step, k, l3 - l2);
+}
+
+// The few windows Newton has not settled in three steps continue here, stopping as soon as an
+// iterate exceeds the curvature limit (a step of 1e-6 trace turns the normal by about
+// step / eigenvalue gap: far below one colour step). Rejected windows get l = infinity.
+void RefineEigenvalues(WindowBatch* b, size_t n, double max_curvature) {
+  for (size_t k = 0; k < n; ++k) {
+    const double trace = b->trace[k], limit = max_curvature * trace;
+    double l = b->l[k];
+    if (b->step[k] > 1e-6 * trace && l <= limit) {
+      for (int it = 0; it < 50; ++it) {
+        const double next = NewtonStep(l, trace, b->c1[k], b->c0[k]);
+        const bool converged = next - l <= 1e-6 * trace;
+        l = next;
+        if (l > limit || converged) break;
+      }
     }
+    // An edge or a corner (smallest eigenvalue / trace > max_curvature), or no spread at all.
+    b->l[k] = l > limit || !(trace > 1e-20) ? std::numeric_limits<double>::infinity() : l;
   }
-  // The null vector of A - l I: the longest cross product of two of its rows.
-  const Eigen::Vector3d r0(b.a00[k] - l, b.a01[k], b.a02[k]);
-  const Eigen::Vector3d r1(b.a01[k], b.a11[k] - l, b.a12[k]);
-  const Eigen::Vector3d r2(b.a02[k], b.a12[k], b.a22[k] - l);
-  const Eigen::Vector3d c01 = r0.cross(r1), c02 = r0.cross(r2), c12 = r1.cross(r2);
-  const double n01 = c01.squaredNorm(), n02 = c02.squaredNorm(), n12 = c12.squaredNorm();
-  const Eigen::Vector3d& best = n01 >= n02 ? (n01 >= n12 ? c01 : c12) : (n02 >= n12 ? c02 : c12);
-  const double norm2 = std::max(n01, std::max(n02, n12));
-  if (!(norm2 > 1e-30 * trace * trace * trace * trace)) return false;  // A line: no plane.
-  *normal = best / std::sqrt(norm2);
-  return true;
+}
+
+// Unit null vector of A - l I (the normal) of entry k (and k + 1), norm2 its length before
+// scaling. Every cross product of two rows of A - l I is parallel to the null vector; their
+// sum with signs aligned (no branch on which is longest) keeps it when one or two vanish.
+template <typename T>
+void NullVector(WindowBatch* b, size_t k) {
+  const T l = Load<T>(b->l, k);
+  const T a01 = Load<T>(b->a01, k), a02 = Load<T>(b->a02, k), a12 = Load<T>(b->a12, k);
+  const T r0x = Load<T>(b->a00, k) - l, r0y = a01, r0z = a02;
+  const T r1x = a01, r1y = Load<T>(b->a11, k) - l, r1z = a12;
+  const T r2x = a02, r2y = a12, r2z = Load<T>(b->a22, k) - l;
+  const T c01x = r0y * r1z - r0z * r1y, c01y = r0z * r1x - r0x * r1z, c01z = r0x * r1y - r0y * r1x;
+  const T c02x = r0y * r2z - r0z * r2y, c02y = r0z * r2x - r0x * r2z, c02z = r0x * r2y - r0y * r2x;
+  const T c12x = r1y * r2z - r1z * r2y, c12y = r1z * r2x - r1x * r2z, c12z = r1x * r2y - r1y * r2x;
+  const T one = Broadcast<T>(1);
+  const T s02 = CopySign(one, c01x * c02x + c01y * c02y + c01z * c02z);
+  const T ux = c01x + s02 * c02x, uy = c01y + s02 * c02y, uz = c01z + s02 * c02z;
+  const T s12 = CopySign(one, ux * c12x + uy * c12y + uz * c12z);
+  const T vx = ux + s12 * c12x, vy = uy + s12 * c12y, vz = uz + s12 * c12z;
+  const T norm2 = vx * vx + vy * vy + vz * vz;
+  const T inv = one / Sqrt(norm2);
+  Store(&b->nx, k, vx * inv), Store(&b->ny, k, vy * inv), Store(&b->nz, k, vz * inv);
+  Store(&b->norm2, k, norm2);
+}
+
+// Runs f<Double2> on pairs of entries and f<double> on an odd last one.
+template <typename Pair, typename Single>
+void ForEntries(size_t n, const Pair& pair, const Single& single) {
+  size_t k = 0;
+  for (; k + 1 < n; k += 2) pair(k);
+  if (k < n) single(k);
 }
 
 }  // namespace
@@ -249,24 +327,27 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
       if (x + window < w) s += column[x + window];
       if (x - window - 1 >= 0) s -= column[x - window - 1];
       if (row[x] < 0 || s.m[0] < 2.5) continue;  // At least 3 points.
-      batch.Set(count++, row[x], s);
+      batch.point[count] = row[x];
+      for (int k = 0; k < 10; ++k) batch.sums[k][count] = s.m[k];
+      ++count;
     }
+    ForEntries(
+        count, [&](size_t k) { SmallestEigenvalue<Double2>(&batch, k); },
+        [&](size_t k) { SmallestEigenvalue<double>(&batch, k); });
+    RefineEigenvalues(&batch, count, max_curvature);
+    ForEntries(
+        count, [&](size_t k) { NullVector<Double2>(&batch, k); },
+        [&](size_t k) { NullVector<double>(&batch, k); });
     for (size_t k = 0; k < count; ++k) {
-      const double trace = batch.trace[k], c1 = batch.c1[k], c0 = batch.c0[k];
-      const double l1 = NewtonStep(0, trace, c1, c0);
-      const double l2 = NewtonStep(l1, trace, c1, c0);
-      const double l3 = NewtonStep(l2, trace, c1, c0);
-      batch.l[k] = l3;
-      batch.step[k] = l3 - l2;
-    }
-    for (size_t k = 0; k < count; ++k) {
-      Eigen::Vector3d n;
-      if (!FinishWindow(batch, k, max_curvature, &n)) continue;
-      Eigen::Vector3f nf = n.cast<float>();
-      if (!nf.allFinite()) continue;
+      const double trace = batch.trace[k];
+      if (batch.l[k] == std::numeric_limits<double>::infinity()) continue;      // An edge.
+      if (!(batch.norm2[k] > 1e-30 * trace * trace * trace * trace)) continue;  // A line.
+      const Eigen::Vector3f n(static_cast<float>(batch.nx[k]), static_cast<float>(batch.ny[k]),
+                              static_cast<float>(batch.nz[k]));
+      if (!n.allFinite()) continue;
       const int i = batch.point[k];
-      if (nf.dot(cloud->points[i]) > 0) nf = -nf;  // Towards the viewpoint at the origin.
-      cloud->normals[i] = nf;
+      // Towards the viewpoint at the origin (a sign, not a branch: the sign is a coin toss).
+      cloud->normals[i] = std::copysign(1.f, -n.dot(cloud->points[i])) * n;
     }
   }
 }

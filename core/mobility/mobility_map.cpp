@@ -59,9 +59,10 @@ TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
   for (size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(scores[i])) continue;
     const Eigen::Vector3f g = rotation * points[i] + translation;
-    const int r = static_cast<int>(std::floor((range_m - g.x()) * inv));
-    const int c = static_cast<int>(std::floor((range_m - g.y()) * inv));
-    if (r < 0 || c < 0 || r >= rows || c >= cols) continue;
+    const double fr = (range_m - g.x()) * inv, fc = (range_m - g.y()) * inv;
+    // Off the map either way (also guards the conversions below).
+    if (!(fr >= 0 && fc >= 0 && fr < rows && fc < cols)) continue;
+    const int r = static_cast<int>(fr), c = static_cast<int>(fc);  // Floor: non-negative.
     float& cell = map.score.at<float>(r, c);
     if (!(cell <= scores[i])) cell = scores[i];  // NaN or higher: take the lower score.
   }
@@ -98,8 +99,9 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
     if (!std::isfinite(scores[i])) continue;
     const Eigen::Vector3f& p = points[i];
     if (!(p.z() > 0)) continue;
-    const double u = camera.fx * (p.x() + offset_x_m) / p.z() + camera.cx;
-    const double v = camera.fy * (p.y() + offset_y_m) / p.z() + camera.cy;
+    const double inv_z = 1.0 / p.z();
+    const double u = camera.fx * (p.x() + offset_x_m) * inv_z + camera.cx;
+    const double v = camera.fy * (p.y() + offset_y_m) * inv_z + camera.cy;
     // Pixel of the dot's centre; far outside the image is the same as just outside it.
     const int px = RoundToPixel(std::clamp(u, -1e6, 1e6));
     const int py = RoundToPixel(std::clamp(v, -1e6, 1e6));

@@ -93,7 +93,12 @@ Status PointStages(const PointCloud& cloud, const MobilityOptions& o, WorkingClo
 // Gathers the points of each label into one vector per segment.
 std::vector<std::vector<Eigen::Vector3f>> SegmentPoints(const WorkingCloud& work,
                                                         const std::vector<int>& label, int count) {
+  std::vector<int> sizes(count, 0);
+  for (int l : label) {
+    if (l >= 0) ++sizes[l];
+  }
   std::vector<std::vector<Eigen::Vector3f>> points(count);
+  for (int s = 0; s < count; ++s) points[s].reserve(sizes[s]);
   for (size_t i = 0; i < label.size(); ++i) {
     if (label[i] >= 0) points[label[i]].push_back(work.points[i]);
   }

@@ -134,8 +134,7 @@ StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& point
                            std::to_string(points.size()));
   }
   SegmentPlane plane;
-  const std::vector<Eigen::Vector3f>* fit_points = &points;
-  std::vector<Eigen::Vector3f> inliers;
+  PlaneSums inliers;
   if (iterations > 0) {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<size_t> pick(0, points.size() - 1);
@@ -157,16 +156,19 @@ StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& point
     }
     if (best > 0) {
       for (const Eigen::Vector3f& p : points) {
-        if (std::abs(best_n.dot(p) + best_d) < distance_m) inliers.push_back(p);
+        if (std::abs(best_n.dot(p) + best_d) < distance_m) inliers.Add(p);
       }
-      if (inliers.size() >= 3) fit_points = &inliers;
     }
   }
-  if (!FitPlaneLeastSquares(*fit_points, &plane.normal, &plane.centroid)) {
+  if (inliers.count < 3) {  // No RANSAC, or too few inliers: all points.
+    inliers = PlaneSums();
+    for (const Eigen::Vector3f& p : points) inliers.Add(p);
+  }
+  if (!inliers.Fit(&plane.normal, &plane.centroid)) {
     return InvalidArgument("the segment's " + std::to_string(points.size()) +
                            " points are collinear: no plane");
   }
-  plane.inliers = static_cast<int>(fit_points->size());
+  plane.inliers = inliers.count;
   return plane;
 }
 
