@@ -22,9 +22,24 @@ struct Candidate {
   std::vector<int> members;  // Indices into the cloud.
 };
 
-// One RANSAC search among `pool` (cloud indices); returns false when no hypothesis had an
-// up-facing normal.
-bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const Eigen::Vector3d& up,
+// A point that may support the ground, gathered once with its inlier distance so that the
+// passes over the pool stream through one array.
+struct PoolPoint {
+  Eigen::Vector3f point;
+  float threshold;  // GroundThreshold of the point.
+  Eigen::Vector3f normal;
+  int index;  // Into the cloud.
+};
+
+// Whether p lies on the plane n . x + d = 0 (distance and own normal within tolerance).
+inline bool OnPlane(const PoolPoint& p, const Eigen::Vector3d& n, double d,
+                    const Eigen::Vector3f& nf, float cos_member) {
+  return (std::abs(n.dot(p.point.cast<double>()) + d) < p.threshold) &
+         (p.normal.dot(nf) >= cos_member);
+}
+
+// One RANSAC search among the pool; returns false when no hypothesis had an up-facing normal.
+bool BestUpPlane(const std::vector<PoolPoint>& pool, const Eigen::Vector3d& up,
                  const MobilityOptions& options, int iterations, std::mt19937* rng,
                  Eigen::Vector3d* normal, double* d) {
   if (pool.size() < 3) return false;
@@ -34,15 +49,15 @@ bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const 
   std::vector<Eigen::Vector4f> sample;  // x, y, z, inlier distance.
   sample.reserve(pool.size() / step + 1);
   for (size_t k = 0; k < pool.size(); k += step) {
-    const Eigen::Vector3f& p = cloud.points[pool[k]];
-    sample.emplace_back(p.x(), p.y(), p.z(), GroundThreshold(options, p));
+    const PoolPoint& p = pool[k];
+    sample.emplace_back(p.point.x(), p.point.y(), p.point.z(), p.threshold);
   }
   const double cos_tolerance = std::cos(options.up_tolerance_deg * kDegToRad);
   int best = -1;
   for (int it = 0; it < iterations; ++it) {
-    const Eigen::Vector3f& a = cloud.points[pool[pick(*rng)]];
-    const Eigen::Vector3f& b = cloud.points[pool[pick(*rng)]];
-    const Eigen::Vector3f& c = cloud.points[pool[pick(*rng)]];
+    const Eigen::Vector3f& a = pool[pick(*rng)].point;
+    const Eigen::Vector3f& b = pool[pick(*rng)].point;
+    const Eigen::Vector3f& c = pool[pick(*rng)].point;
     Eigen::Vector3f n = (b - a).cross(c - a);
     const float norm = n.norm();
     if (norm < 1e-9f) continue;  // Collinear or repeated.
@@ -61,6 +76,33 @@ bool BestUpPlane(const WorkingCloud& cloud, const std::vector<int>& pool, const 
     }
   }
   return best > 0;
+}
+
+// Least-squares plane of the pool's points on the plane n . x + d = 0, without a branch per
+// point (outliers add with weight 0). False when too few or degenerate.
+bool RefitPlane(const std::vector<PoolPoint>& pool, const Eigen::Vector3d& up, float cos_member,
+                Eigen::Vector3d* n, double* d) {
+  const Eigen::Vector3f nf = n->cast<float>();
+  const Eigen::Vector3d reference = pool.front().point.cast<double>();
+  double count = 0, sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
+  for (const PoolPoint& p : pool) {
+    const double w = OnPlane(p, *n, *d, nf, cos_member) ? 1.0 : 0.0;
+    const double x = p.point.x() - reference.x(), y = p.point.y() - reference.y(),
+                 z = p.point.z() - reference.z();
+    const double wx = w * x, wy = w * y, wz = w * z;
+    count += w, sx += wx, sy += wy, sz += wz;
+    sxx += wx * x, sxy += wx * y, sxz += wx * z, syy += wy * y, syz += wy * z, szz += wz * z;
+  }
+  PlaneSums sums;
+  sums.count = static_cast<int>(count);
+  sums.reference = reference;
+  sums.sx = sx, sums.sy = sy, sums.sz = sz;
+  sums.sxx = sxx, sums.sxy = sxy, sums.sxz = sxz, sums.syy = syy, sums.syz = syz, sums.szz = szz;
+  Eigen::Vector3d centroid;
+  if (!sums.Fit(n, &centroid)) return false;
+  if (n->dot(up) < 0) *n = -*n;
+  *d = -n->dot(centroid);
+  return true;
 }
 
 // Median of direction . x over the members.
@@ -122,49 +164,46 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
   // Only points whose own normal faces up within the tolerance may support a plane.
   const double cos_pool = std::cos(options.up_tolerance_deg * kDegToRad);
   const float cos_member = static_cast<float>(std::cos(options.ground_normal_deg * kDegToRad));
-  std::vector<int> pool;
+  std::vector<PoolPoint> pool;
+  pool.reserve(cloud.size());
   for (size_t i = 0; i < cloud.size(); ++i) {
     const Eigen::Vector3f& n = cloud.normals[i];
-    if (n.allFinite() && n.cast<double>().dot(up) >= cos_pool) pool.push_back(static_cast<int>(i));
+    if (n.allFinite() && n.cast<double>().dot(up) >= cos_pool) {
+      const Eigen::Vector3f& p = cloud.points[i];
+      pool.push_back({p, GroundThreshold(options, p), n, static_cast<int>(i)});
+    }
   }
   std::mt19937 rng(7);
   const int min_points =
       std::max(3, static_cast<int>(options.min_ground_ratio * static_cast<double>(cloud.size())));
   std::vector<Candidate> candidates;
+  std::vector<PoolPoint> rest;
   for (int c = 0; c < options.ground_candidates && static_cast<int>(pool.size()) >= min_points;
        ++c) {
     Eigen::Vector3d n;
     double d = 0;
-    if (!BestUpPlane(cloud, pool, up, options, iterations, &rng, &n, &d)) break;
+    if (!BestUpPlane(pool, up, options, iterations, &rng, &n, &d)) break;
     // Least-squares refit on the inliers, then the final members (distance and own normal).
     for (int refit = 0; refit < 2; ++refit) {
-      PlaneSums inliers;
-      const Eigen::Vector3f nf = n.cast<float>();
-      for (int i : pool) {
-        if (std::abs(n.dot(cloud.points[i].cast<double>()) + d) <
-                GroundThreshold(options, cloud.points[i]) &&
-            cloud.normals[i].dot(nf) >= cos_member) {
-          inliers.Add(cloud.points[i]);
-        }
-      }
-      Eigen::Vector3d centroid;
-      if (!inliers.Fit(&n, &centroid)) break;
-      if (n.dot(up) < 0) n = -n;
-      d = -n.dot(centroid);
+      if (!RefitPlane(pool, up, cos_member, &n, &d)) break;
     }
     Candidate candidate;
     candidate.plane.normal = n;
     candidate.plane.d = d;
     const Eigen::Vector3f nf = n.cast<float>();
-    std::vector<int> rest;
-    rest.reserve(pool.size());
-    candidate.members.reserve(pool.size());
-    for (int i : pool) {
-      const bool on_plane = std::abs(candidate.plane.HeightOf(cloud.points[i])) <
-                                GroundThreshold(options, cloud.points[i]) &&
-                            cloud.normals[i].dot(nf) >= cos_member;
-      (on_plane ? candidate.members : rest).push_back(i);
+    // Members and the rest written without a branch per point.
+    candidate.members.resize(pool.size());
+    rest.resize(pool.size());
+    size_t members = 0, others = 0;
+    for (const PoolPoint& p : pool) {
+      const bool on_plane = OnPlane(p, n, d, nf, cos_member);
+      candidate.members[members] = p.index;
+      rest[others] = p;
+      members += on_plane;
+      others += !on_plane;
     }
+    candidate.members.resize(members);
+    rest.resize(others);
     pool.swap(rest);
     if (static_cast<int>(candidate.members.size()) < min_points) break;
     candidates.push_back(std::move(candidate));
