@@ -102,15 +102,20 @@ void GridRemoveOutliers(double alpha, WorkingCloud* cloud) {
       }
     }
   }
-  std::vector<float> mean_distance(n, -1.f);
+  // Mean neighbour distance over depth (-1 for an isolated point), then its mean and spread.
+  std::vector<float> mean_distance(n);
+  for (size_t i = 0; i < n; ++i) {
+    const float k = neighbours[i];
+    mean_distance[i] = k > 0 ? total[i] / (k * cloud->points[i].z()) : -1.f;
+  }
   double sum = 0, sum2 = 0;
   int counted = 0;
   for (size_t i = 0; i < n; ++i) {
-    if (neighbours[i] == 0) continue;
-    mean_distance[i] = total[i] / neighbours[i] / cloud->points[i].z();
-    sum += mean_distance[i];
-    sum2 += static_cast<double>(mean_distance[i]) * mean_distance[i];
-    ++counted;
+    const double d = mean_distance[i];
+    const bool has = d >= 0;
+    sum += has ? d : 0.0;
+    sum2 += has ? d * d : 0.0;
+    counted += has;
   }
   std::vector<uint8_t> keep(n, 0);
   if (counted > 0) {
@@ -151,13 +156,17 @@ struct Moments {
 struct WindowBatch {
   std::vector<int> point;
   std::vector<double> sums[10];  // The window's moments (Moments::m).
-  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, step, nx, ny, nz, norm2;
+  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, nx, ny, nz, norm2;
+  std::vector<float> c1_scaled, c0_scaled, l_scaled, step_scaled;  // Over the trace.
 
   void Resize(size_t n) {
     point.resize(n);
     for (std::vector<double>& v : sums) v.resize(n);
     for (std::vector<double>* v :
-         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &step, &nx, &ny, &nz, &norm2}) {
+         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &nx, &ny, &nz, &norm2}) {
+      v->resize(n);
+    }
+    for (std::vector<float>* v : {&c1_scaled, &c0_scaled, &l_scaled, &step_scaled}) {
       v->resize(n);
     }
   }
@@ -167,29 +176,43 @@ struct WindowBatch {
 // below runs on two windows at once, with the scalar type for an odd last window.
 using Double2 = double __attribute__((vector_size(16)));
 using Mask2 = int64_t __attribute__((vector_size(16)));  // All ones where a comparison holds.
+// Four floats in one register: the Newton steps on the characteristic polynomial scaled by the
+// trace, four windows per division.
+using Float4 = float __attribute__((vector_size(16)));
+using Mask4 = int32_t __attribute__((vector_size(16)));
 
 template <typename T>
 T Broadcast(double v) {
   if constexpr (std::is_same_v<T, double>) {
     return v;
-  } else {
+  } else if constexpr (std::is_same_v<T, float>) {
+    return static_cast<float>(v);
+  } else if constexpr (std::is_same_v<T, Double2>) {
     return T{v, v};
+  } else {
+    const float f = static_cast<float>(v);
+    return T{f, f, f, f};
   }
 }
-template <typename T>
-T Load(const std::vector<double>& v, size_t k) {
+template <typename T, typename Scalar>
+T Load(const std::vector<Scalar>& v, size_t k) {
   T out;
   std::memcpy(&out, v.data() + k, sizeof(T));
   return out;
 }
-template <typename T>
-void Store(std::vector<double>* v, size_t k, const T& value) {
+template <typename T, typename Scalar>
+void Store(std::vector<Scalar>* v, size_t k, const T& value) {
   std::memcpy(v->data() + k, &value, sizeof(T));
 }
 inline double Select(bool mask, double a, double b) { return mask ? a : b; }
+inline float Select(bool mask, float a, float b) { return mask ? a : b; }
 inline Double2 Select(Mask2 mask, Double2 a, Double2 b) {
   return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(a) & mask) |
                                    (reinterpret_cast<Mask2>(b) & ~mask));
+}
+inline Float4 Select(Mask4 mask, Float4 a, Float4 b) {
+  return reinterpret_cast<Float4>((reinterpret_cast<Mask4>(a) & mask) |
+                                  (reinterpret_cast<Mask4>(b) & ~mask));
 }
 inline double Sqrt(double v) { return std::sqrt(v); }
 inline Double2 Sqrt(Double2 v) { return Double2{std::sqrt(v[0]), std::sqrt(v[1])}; }
@@ -233,11 +256,32 @@ void SmallestEigenvalue(WindowBatch* b, size_t k) {
   Store(&b->a00, k, b00), Store(&b->a01, k, b01), Store(&b->a02, k, b02);
   Store(&b->a11, k, b11), Store(&b->a12, k, b12), Store(&b->a22, k, b22);
   Store(&b->trace, k, t), Store(&b->c1, k, q1), Store(&b->c0, k, q0);
-  const T l1 = NewtonStep(Broadcast<T>(0), t, q1, q0);
-  const T l2 = NewtonStep(l1, t, q1, q0);
-  const T l3 = NewtonStep(l2, t, q1, q0);
-  Store(&b->l, k, l3);
-  Store(&b->step, k, l3 - l2);
+  // The polynomial of A / trace: its roots are the eigenvalues over the trace, in [0, 1].
+  const T inv_t = Broadcast<T>(1) / t;
+  const T c1_scaled = q1 * inv_t * inv_t, c0_scaled = q0 * inv_t * inv_t * inv_t;
+  if constexpr (std::is_same_v<T, double>) {
+    b->c1_scaled[k] = static_cast<float>(c1_scaled);
+    b->c0_scaled[k] = static_cast<float>(c0_scaled);
+  } else {
+    for (size_t lane = 0; lane < 2; ++lane) {
+      b->c1_scaled[k + lane] = static_cast<float>(c1_scaled[lane]);
+      b->c0_scaled[k + lane] = static_cast<float>(c0_scaled[lane]);
+    }
+  }
+}
+
+// Three Newton steps on the scaled polynomial of entry k (and the next three for Float4), in
+// float: the smallest root is wanted to 1e-6 of the trace, and the scaled coefficients hold it
+// to about 1e-7. `l` and `step` come back scaled by the trace.
+template <typename T>
+void NewtonSteps(WindowBatch* b, size_t k) {
+  const T one = Broadcast<T>(1);
+  const T c1 = Load<T>(b->c1_scaled, k), c0 = Load<T>(b->c0_scaled, k);
+  const T l1 = NewtonStep(Broadcast<T>(0), one, c1, c0);
+  const T l2 = NewtonStep(l1, one, c1, c0);
+  const T l3 = NewtonStep(l2, one, c1, c0);
+  Store(&b->l_scaled, k, l3);
+  Store(&b->step_scaled, k, l3 - l2);
 }
 
 // The few windows Newton has not settled in three steps continue here, stopping as soon as an
@@ -246,8 +290,8 @@ void SmallestEigenvalue(WindowBatch* b, size_t k) {
 void RefineEigenvalues(WindowBatch* b, size_t n, double max_curvature) {
   for (size_t k = 0; k < n; ++k) {
     const double trace = b->trace[k], limit = max_curvature * trace;
-    double l = b->l[k];
-    if (b->step[k] > 1e-6 * trace && l <= limit) {
+    double l = b->l_scaled[k] * trace;
+    if (b->step_scaled[k] > 1e-6f && l <= limit) {
       for (int it = 0; it < 50; ++it) {
         const double next = NewtonStep(l, trace, b->c1[k], b->c0[k]);
         const bool converged = next - l <= 1e-6 * trace;
@@ -334,6 +378,8 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
     ForEntries(
         count, [&](size_t k) { SmallestEigenvalue<Double2>(&batch, k); },
         [&](size_t k) { SmallestEigenvalue<double>(&batch, k); });
+    for (size_t k = 0; k + 3 < count; k += 4) NewtonSteps<Float4>(&batch, k);
+    for (size_t k = count - count % 4; k < count; ++k) NewtonSteps<float>(&batch, k);
     RefineEigenvalues(&batch, count, max_curvature);
     ForEntries(
         count, [&](size_t k) { NullVector<Double2>(&batch, k); },

@@ -34,8 +34,9 @@ struct PoolPoint {
 // Whether p lies on the plane n . x + d = 0 (distance and own normal within tolerance).
 inline bool OnPlane(const PoolPoint& p, const Eigen::Vector3d& n, double d,
                     const Eigen::Vector3f& nf, float cos_member) {
-  return (std::abs(n.dot(p.point.cast<double>()) + d) < p.threshold) &
-         (p.normal.dot(nf) >= cos_member);
+  const double distance = std::abs(n.dot(p.point.cast<double>()) + d);
+  const float facing = p.normal.dot(nf);
+  return static_cast<int>(distance < p.threshold) & static_cast<int>(facing >= cos_member);
 }
 
 // One RANSAC search among the pool; returns false when no hypothesis had an up-facing normal.

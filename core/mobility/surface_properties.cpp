@@ -272,11 +272,16 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
   // Roughness from the near points (depth noise grows with z^2), area from all of them.
   const float max2 =
       static_cast<float>(options.roughness_max_range_m * options.roughness_max_range_m);
-  std::vector<Eigen::Vector3f> near;
-  near.reserve(points.size());
-  for (const Eigen::Vector3f& p : points) {
-    if (p.squaredNorm() <= max2) near.push_back(p);
+  size_t near_count = 0;
+  for (const Eigen::Vector3f& p : points) near_count += p.squaredNorm() <= max2;
+  std::vector<Eigen::Vector3f> near_points;  // Only when some are far.
+  if (near_count != points.size()) {
+    near_points.reserve(near_count);
+    for (const Eigen::Vector3f& p : points) {
+      if (p.squaredNorm() <= max2) near_points.push_back(p);
+    }
   }
+  const std::vector<Eigen::Vector3f>& near = near_count == points.size() ? points : near_points;
   StatusOr<RoughnessResult> rough(InvalidArgument("no near points"));
   if (near.size() >= 3) {
     rough = ComputeRoughness(near, *plane, options.roughness_cell_m, options.triangulation,
