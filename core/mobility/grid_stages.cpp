@@ -78,29 +78,78 @@ void RangeCut(double max_range_m, WorkingCloud* cloud) {
 void GridRemoveOutliers(double alpha, WorkingCloud* cloud) {
   const size_t n = cloud->size();
   const int w = cloud->grid_w, h = cloud->grid_h;
-  // Each neighbour pair once (right, down-left, down, down-right), added to both ends.
-  std::vector<float> total(n, 0.f);
-  std::vector<uint8_t> neighbours(n, 0);
+  // Each neighbour pair once (right, down-left, down, down-right), added to both ends. Rows
+  // are laid out densely (NaN where a cell holds no point), so that the distances between two
+  // rows run as plain loops the compiler vectorizes; a NaN distance is no pair.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const size_t width = static_cast<size_t>(w);
+  std::vector<float> row_a(3 * width), row_b(3 * width);  // x..., y..., z... of a row.
+  auto fill = [&](int y, std::vector<float>* row) {
+    float* out = row->data();
+    const int* cells = &cloud->cell_point[static_cast<size_t>(y) * w];
+    for (size_t x = 0; x < width; ++x) {
+      const int i = cells[x];
+      const Eigen::Vector3f p = i >= 0 ? cloud->points[i] : Eigen::Vector3f(nan, nan, nan);
+      out[x] = p.x(), out[width + x] = p.y(), out[2 * width + x] = p.z();
+    }
+  };
+  // d[x + 1] = |a[x] - b[x + shift]| for x + shift inside the row, NaN elsewhere (d has a
+  // NaN margin of one on both sides, so that neighbours' entries need no bounds checks).
+  std::vector<float> right(width + 2, nan), down(width + 2, nan), down_left(width + 2, nan);
+  std::vector<float> down_right(width + 2, nan);
+  auto distances = [&](const std::vector<float>& a, const std::vector<float>& b, int shift,
+                       std::vector<float>* d) {
+    const float *ax = a.data(), *ay = ax + width, *az = ay + width;
+    const float *bx = b.data(), *by = bx + width, *bz = by + width;
+    const size_t x0 = shift < 0 ? 1 : 0, x1 = shift > 0 ? width - 1 : width;
+    float* out = d->data() + 1;
+    for (size_t x = 0; x < x0; ++x) out[x] = nan;
+    for (size_t x = x0; x < x1; ++x) {
+      const float dx = ax[x] - bx[x + shift], dy = ay[x] - by[x + shift];
+      const float dz = az[x] - bz[x + shift];
+      out[x] = std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    for (size_t x = x1; x < width; ++x) out[x] = nan;
+  };
+  auto value = [](float d) { return d == d ? d : 0.f; };  // NaN (no pair) adds nothing.
+  auto count = [](float d) { return d == d ? 1.f : 0.f; };
+  std::vector<float> total_a(width, 0.f), total_b(width), count_a(width, 0.f), count_b(width);
+  std::vector<float> total(n, 0.f), neighbours(n, 0.f);
+  if (h > 0) fill(0, &row_a);
   for (int y = 0; y < h; ++y) {
-    const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
-    const int* below = y + 1 < h ? row + w : nullptr;
-    for (int x = 0; x < w; ++x) {
-      const int i = row[x];
-      if (i < 0) continue;
-      const Eigen::Vector3f& p = cloud->points[i];
-      auto pair = [&](int j) {
-        if (j < 0) return;
-        const float d = (cloud->points[j] - p).norm();
-        total[i] += d, total[j] += d;
-        ++neighbours[i], ++neighbours[j];
-      };
-      if (x + 1 < w) pair(row[x + 1]);
-      if (below != nullptr) {
-        if (x > 0) pair(below[x - 1]);
-        pair(below[x]);
-        if (x + 1 < w) pair(below[x + 1]);
+    distances(row_a, row_a, 1, &right);
+    const bool last = y + 1 == h;
+    if (!last) {
+      fill(y + 1, &row_b);
+      distances(row_a, row_b, 0, &down);
+      distances(row_a, row_b, -1, &down_left);
+      distances(row_a, row_b, 1, &down_right);
+    }
+    // Entry x of the distance arrays is at x + 1.
+    const float *r = right.data() + 1, *dn = down.data() + 1, *dl = down_left.data() + 1;
+    const float* dr = down_right.data() + 1;
+    for (size_t x = 0; x < width; ++x) {
+      total_a[x] += value(r[x]) + value(r[x - 1]);
+      count_a[x] += count(r[x]) + count(r[x - 1]);
+    }
+    std::fill(total_b.begin(), total_b.end(), 0.f);
+    std::fill(count_b.begin(), count_b.end(), 0.f);
+    if (!last) {
+      for (size_t x = 0; x < width; ++x) {
+        total_a[x] += value(dn[x]) + value(dl[x]) + value(dr[x]);
+        count_a[x] += count(dn[x]) + count(dl[x]) + count(dr[x]);
+        // Below: its up neighbour, its up-right (our down-left) and up-left (down-right).
+        total_b[x] = value(dn[x]) + value(dl[x + 1]) + value(dr[x - 1]);
+        count_b[x] = count(dn[x]) + count(dl[x + 1]) + count(dr[x - 1]);
       }
     }
+    const int* cells = &cloud->cell_point[static_cast<size_t>(y) * w];
+    for (size_t x = 0; x < width; ++x) {
+      if (cells[x] >= 0) total[cells[x]] = total_a[x], neighbours[cells[x]] = count_a[x];
+    }
+    std::swap(row_a, row_b);
+    std::swap(total_a, total_b);
+    std::swap(count_a, count_b);
   }
   // Mean neighbour distance over depth (-1 for an isolated point), then its mean and spread.
   std::vector<float> mean_distance(n);
