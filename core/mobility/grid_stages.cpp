@@ -42,24 +42,31 @@ StatusOr<WorkingCloud> GridDownsample(const PointCloud& cloud, int stride) {
   WorkingCloud out;
   out.grid_w = (cloud.width + stride - 1) / stride;
   out.grid_h = (cloud.height + stride - 1) / stride;
-  out.cell_point.assign(static_cast<size_t>(out.grid_w) * out.grid_h, -1);
-  out.points.reserve(out.cell_point.size());
-  out.pixel.reserve(out.cell_point.size());
-  out.point_cell.reserve(out.cell_point.size());
+  const size_t cells = static_cast<size_t>(out.grid_w) * out.grid_h;
+  out.cell_point.resize(cells);
+  // Written in place (sized for every cell, trimmed at the end): no growth checks per point.
+  out.points.resize(cells);
+  out.pixel.resize(cells);
+  out.point_cell.resize(cells);
+  int count = 0;
   for (int gy = 0; gy < out.grid_h; ++gy) {
     for (int gx = 0; gx < out.grid_w; ++gx) {
       const int index = gy * stride * cloud.width + gx * stride;
       const Eigen::Vector3f& p = cloud.points[index];
-      if (!std::isfinite(p.z()) || !std::isfinite(p.x()) || !std::isfinite(p.y()) || p.z() <= 0) {
-        continue;
-      }
       const int cell = gy * out.grid_w + gx;
-      out.cell_point[cell] = static_cast<int>(out.points.size());
-      out.point_cell.push_back(cell);
-      out.points.push_back(p);
-      out.pixel.push_back(index);
+      // Finite with positive depth (x - x is NaN for an infinite or NaN x).
+      const bool valid = p.x() - p.x() == 0 && p.y() - p.y() == 0 && p.z() > 0 &&
+                         p.z() < std::numeric_limits<float>::infinity();
+      out.cell_point[cell] = valid ? count : -1;
+      out.points[count] = p;
+      out.pixel[count] = index;
+      out.point_cell[count] = cell;
+      count += valid;
     }
   }
+  out.points.resize(count);
+  out.pixel.resize(count);
+  out.point_cell.resize(count);
   return out;
 }
 
@@ -205,14 +212,14 @@ struct Moments {
 struct WindowBatch {
   std::vector<int> point;
   std::vector<double> sums[10];  // The window's moments (Moments::m).
-  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, nx, ny, nz, norm2;
+  std::vector<double> a00, a01, a02, a11, a12, a22, trace, c0, c1, l, nx, ny, nz;
   std::vector<float> c1_scaled, c0_scaled, l_scaled, step_scaled;  // Over the trace.
 
   void Resize(size_t n) {
     point.resize(n);
     for (std::vector<double>& v : sums) v.resize(n);
     for (std::vector<double>* v :
-         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &nx, &ny, &nz, &norm2}) {
+         {&a00, &a01, &a02, &a11, &a12, &a22, &trace, &c0, &c1, &l, &nx, &ny, &nz}) {
       v->resize(n);
     }
     for (std::vector<float>* v : {&c1_scaled, &c0_scaled, &l_scaled, &step_scaled}) {
@@ -333,29 +340,37 @@ void NewtonSteps(WindowBatch* b, size_t k) {
   Store(&b->step_scaled, k, l3 - l2);
 }
 
-// The few windows Newton has not settled in three steps continue here, stopping as soon as an
-// iterate exceeds the curvature limit (a step of 1e-6 trace turns the normal by about
-// step / eigenvalue gap: far below one colour step). Rejected windows get l = infinity.
+// The smallest eigenvalues in units of the covariance. The few windows Newton has not settled
+// in three steps continue alone, stopping as soon as an iterate exceeds the curvature limit (a
+// step of 1e-6 trace turns the normal by about step / eigenvalue gap: far below one colour
+// step). Rejected windows get l = infinity.
 void RefineEigenvalues(WindowBatch* b, size_t n, double max_curvature) {
+  double* l = b->l.data();
+  const double* trace = b->trace.data();
+  const float* l_scaled = b->l_scaled.data();
+  for (size_t k = 0; k < n; ++k) l[k] = l_scaled[k] * trace[k];
   for (size_t k = 0; k < n; ++k) {
-    const double trace = b->trace[k], limit = max_curvature * trace;
-    double l = b->l_scaled[k] * trace;
-    if (b->step_scaled[k] > 1e-6f && l <= limit) {
-      for (int it = 0; it < 50; ++it) {
-        const double next = NewtonStep(l, trace, b->c1[k], b->c0[k]);
-        const bool converged = next - l <= 1e-6 * trace;
-        l = next;
-        if (l > limit || converged) break;
-      }
+    if (!(b->step_scaled[k] > 1e-6f)) continue;  // Settled: nearly all.
+    const double limit = max_curvature * trace[k];
+    for (int it = 0; it < 50 && l[k] <= limit; ++it) {
+      const double next = NewtonStep(l[k], trace[k], b->c1[k], b->c0[k]);
+      const bool converged = next - l[k] <= 1e-6 * trace[k];
+      l[k] = next;
+      if (converged) break;
     }
-    // An edge or a corner (smallest eigenvalue / trace > max_curvature), or no spread at all.
-    b->l[k] = l > limit || !(trace > 1e-20) ? std::numeric_limits<double>::infinity() : l;
+  }
+  // An edge or a corner (smallest eigenvalue / trace > max_curvature), or no spread at all.
+  const double inf = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < n; ++k) {
+    const bool reject = (l[k] > max_curvature * trace[k]) | !(trace[k] > 1e-20);
+    l[k] = reject ? inf : l[k];
   }
 }
 
-// Unit null vector of A - l I (the normal) of entry k (and k + 1), norm2 its length before
-// scaling. Every cross product of two rows of A - l I is parallel to the null vector; their
-// sum with signs aligned (no branch on which is longest) keeps it when one or two vanish.
+// Unit null vector of A - l I (the normal) of entry k (and k + 1), NaN for a rejected window
+// (l infinite) or a line (no plane). Every cross product of two rows of A - l I is parallel to the
+// null vector; their sum with signs aligned (no branch on which is longest) keeps it when one or
+// two vanish.
 template <typename T>
 void NullVector(WindowBatch* b, size_t k) {
   const T l = Load<T>(b->l, k);
@@ -372,9 +387,12 @@ void NullVector(WindowBatch* b, size_t k) {
   const T s12 = CopySign(one, ux * c12x + uy * c12y + uz * c12z);
   const T vx = ux + s12 * c12x, vy = uy + s12 * c12y, vz = uz + s12 * c12z;
   const T norm2 = vx * vx + vy * vy + vz * vz;
-  const T inv = one / Sqrt(norm2);
+  const T t = Load<T>(b->trace, k);
+  const T valid_factor = Select((l < Broadcast<T>(std::numeric_limits<double>::infinity())) &
+                                    (norm2 > Broadcast<T>(1e-30) * t * t * t * t),
+                                one, Broadcast<T>(std::numeric_limits<double>::quiet_NaN()));
+  const T inv = valid_factor / Sqrt(norm2);
   Store(&b->nx, k, vx * inv), Store(&b->ny, k, vy * inv), Store(&b->nz, k, vz * inv);
-  Store(&b->norm2, k, norm2);
 }
 
 // Runs f<Double2> on pairs of entries and f<double> on an odd last one.
@@ -434,12 +452,9 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
         count, [&](size_t k) { NullVector<Double2>(&batch, k); },
         [&](size_t k) { NullVector<double>(&batch, k); });
     for (size_t k = 0; k < count; ++k) {
-      const double trace = batch.trace[k];
-      if (batch.l[k] == std::numeric_limits<double>::infinity()) continue;      // An edge.
-      if (!(batch.norm2[k] > 1e-30 * trace * trace * trace * trace)) continue;  // A line.
       const Eigen::Vector3f n(static_cast<float>(batch.nx[k]), static_cast<float>(batch.ny[k]),
                               static_cast<float>(batch.nz[k]));
-      if (!n.allFinite()) continue;
+      if (!n.allFinite()) continue;  // An edge, a corner or a line.
       const int i = batch.point[k];
       // Towards the viewpoint at the origin (a sign, not a branch: the sign is a coin toss).
       cloud->normals[i] = std::copysign(1.f, -n.dot(cloud->points[i])) * n;

@@ -105,6 +105,14 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
     // Pixel of the dot's centre; far outside the image is the same as just outside it.
     const int px = RoundToPixel(std::clamp(u, -1e6, 1e6));
     const int py = RoundToPixel(std::clamp(v, -1e6, 1e6));
+    if (dot_px == 1) {  // Full resolution: one pixel per point.
+      if (px < 0 || py < 0 || px >= out.cols || py >= out.rows) continue;
+      if (!(scores[i] == last_score)) color = ScoreColorBgr(scores[i]), last_score = scores[i];
+      cv::Vec3b& pixel = out.ptr<cv::Vec3b>(py)[px];
+      for (int c = 0; c < 3; ++c)
+        pixel[c] = static_cast<uchar>((9 * pixel[c] + 11 * color[c]) / 20);
+      continue;
+    }
     const int x0 = std::max(0, px - half);
     const int y0 = std::max(0, py - half);
     const int x1 = std::min(out.cols, px - half + dot_px);
