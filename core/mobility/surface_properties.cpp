@@ -46,6 +46,12 @@ void TriangulateGrid(const Find& find, const std::vector<std::pair<int, int>>& k
   }
 }
 
+// std::floor to int for |x| < 2^31 without the library call (no SSE4.1 rounding here).
+inline int FloorToInt(double x) {
+  const int t = static_cast<int>(x);  // Truncates towards zero.
+  return t - (x < t);
+}
+
 // A point in the plane's coordinates: cell indices, (u, v) and height h.
 struct PlanePoint {
   int a, b;
@@ -67,8 +73,8 @@ std::vector<PlanePoint> ToPlane(const std::vector<Eigen::Vector3f>& points,
     const Eigen::Vector3d q = points[i].cast<double>() - plane.centroid;
     PlanePoint& pp = out[i];
     pp.u = q.dot(e1), pp.v = q.dot(e2), pp.h = q.dot(n);
-    pp.a = static_cast<int>(std::floor(pp.u * inv));
-    pp.b = static_cast<int>(std::floor(pp.v * inv));
+    pp.a = FloorToInt(pp.u * inv);
+    pp.b = FloorToInt(pp.v * inv);
     bounds[0] = std::min(bounds[0], pp.a), bounds[1] = std::min(bounds[1], pp.b);
     bounds[2] = std::max(bounds[2], pp.a), bounds[3] = std::max(bounds[3], pp.b);
   }
