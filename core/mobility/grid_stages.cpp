@@ -412,7 +412,10 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
   // Box sums over (2 window + 1)^2 cells, slid along the grid: per column the sum over the
   // window's rows, then per row a running sum of those column sums. Constant work per cell and
   // a working set of one grid row.
-  std::vector<Moments> column(w);
+  // Column sums with window + 1 empty columns on each side, so that the running sum along a
+  // row adds and drops a column at every cell without bounds checks.
+  std::vector<Moments> padded(static_cast<size_t>(w) + 2 * (window + 1));
+  Moments* column = padded.data() + window + 1;
   auto add_row = [&](int y, bool add) {
     const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
     for (int x = 0; x < w; ++x) {
@@ -431,12 +434,12 @@ void GridNormals(int window, double max_curvature, WorkingCloud* cloud) {
     if (y + window < h) add_row(y + window, true);
     if (y - window - 1 >= 0) add_row(y - window - 1, false);
     Moments s;
-    for (int x = 0; x < std::min(window, w); ++x) s += column[x];
+    for (int x = 0; x < window; ++x) s += column[x];
     const int* row = &cloud->cell_point[static_cast<size_t>(y) * w];
     size_t count = 0;
     for (int x = 0; x < w; ++x) {
-      if (x + window < w) s += column[x + window];
-      if (x - window - 1 >= 0) s -= column[x - window - 1];
+      s += column[x + window];
+      s -= column[x - window - 1];
       if (row[x] < 0 || s.m[0] < 2.5) continue;  // At least 3 points.
       batch.point[count] = row[x];
       for (int k = 0; k < 10; ++k) batch.sums[k][count] = s.m[k];

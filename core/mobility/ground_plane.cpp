@@ -192,19 +192,20 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
     candidate.plane.normal = n;
     candidate.plane.d = d;
     const Eigen::Vector3f nf = n.cast<float>();
-    // Members and the rest written without a branch per point.
+    // Members and the rest written without a branch per point; the last candidate needs no rest.
+    const bool last = c + 1 == options.ground_candidates;
     candidate.members.resize(pool.size());
-    rest.resize(pool.size());
+    rest.resize(last ? 0 : pool.size());
     size_t members = 0, others = 0;
     for (const PoolPoint& p : pool) {
       const bool on_plane = OnPlane(p, n, d, nf, cos_member);
       candidate.members[members] = p.index;
-      rest[others] = p;
+      if (!last) rest[others] = p;
       members += on_plane;
       others += !on_plane;
     }
     candidate.members.resize(members);
-    rest.resize(others);
+    rest.resize(last ? 0 : others);
     pool.swap(rest);
     if (static_cast<int>(candidate.members.size()) < min_points) break;
     candidates.push_back(std::move(candidate));
