@@ -47,12 +47,14 @@ bool BestUpPlane(const std::vector<PoolPoint>& pool, const Eigen::Vector3d& up,
   std::uniform_int_distribution<size_t> pick(0, pool.size() - 1);
   // Hypotheses are scored on an even subsample of the pool, gathered once with its thresholds.
   const size_t step = std::max<size_t>(1, pool.size() / options.ransac_sample_points);
-  std::vector<Eigen::Vector4f> sample;  // x, y, z, inlier distance.
-  sample.reserve(pool.size() / step + 1);
+  // As arrays (x, y, z, inlier distance), so that scoring a hypothesis vectorizes.
+  std::vector<float> sx, sy, sz, sw;
   for (size_t k = 0; k < pool.size(); k += step) {
     const PoolPoint& p = pool[k];
-    sample.emplace_back(p.point.x(), p.point.y(), p.point.z(), p.threshold);
+    sx.push_back(p.point.x()), sy.push_back(p.point.y()), sz.push_back(p.point.z());
+    sw.push_back(p.threshold);
   }
+  const size_t samples = sx.size();
   const double cos_tolerance = std::cos(options.up_tolerance_deg * kDegToRad);
   int best = -1;
   for (int it = 0; it < iterations; ++it) {
@@ -67,8 +69,9 @@ bool BestUpPlane(const std::vector<PoolPoint>& pool, const Eigen::Vector3d& up,
     if (n.cast<double>().dot(up) < cos_tolerance) continue;
     const float offset = -n.dot(a);
     int count = 0;
-    for (const Eigen::Vector4f& p : sample) {
-      count += std::abs(n.x() * p.x() + n.y() * p.y() + n.z() * p.z() + offset) < p.w();
+    const float nx = n.x(), ny = n.y(), nz = n.z();
+    for (size_t k = 0; k < samples; ++k) {
+      count += std::abs(nx * sx[k] + ny * sy[k] + nz * sz[k] + offset) < sw[k];
     }
     if (count > best) {
       best = count;

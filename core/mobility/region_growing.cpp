@@ -12,9 +12,10 @@ std::vector<cv::Vec3b> EncodeNormals(const std::vector<Eigen::Vector3f>& normals
     const Eigen::Vector3f& n = normals[i];
     if (!n.allFinite()) continue;
     for (int c = 0; c < 3; ++c) {
-      // Non-negative for a unit normal: rounding is adding a half and truncating.
+      // In [0, 255] for a unit normal (up to rounding): rounding is adding a half and
+      // truncating.
       const double value = 255.0 * (n[c] + 1.0) / 2.0;
-      colors[i][c] = static_cast<uchar>(std::clamp(value + 0.5, 0.0, 255.0));
+      colors[i][c] = static_cast<uchar>(static_cast<int>(value + 0.5));
     }
   }
   return colors;

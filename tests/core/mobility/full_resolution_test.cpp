@@ -28,11 +28,11 @@
 namespace sightline {
 namespace {
 
-constexpr double kVoxelM = 0.01;           // The PCL path's voxel (MobilityOptions::voxel_m).
-constexpr double kLargeFraction = 0.03;    // Of the PCL path's segmented points.
-constexpr int kLargeMinPoints = 500;       // PCL path points.
-constexpr double kMinScoredShare = 0.25;    // Of the large segment's points.
-constexpr double kMinEqualShare = 0.9;      // Of the large segment's points the grid scored.
+constexpr double kVoxelM = 0.01;          // The PCL path's voxel (MobilityOptions::voxel_m).
+constexpr double kLargeFraction = 0.03;   // Of the PCL path's segmented points.
+constexpr int kLargeMinPoints = 500;      // PCL path points.
+constexpr double kMinScoredShare = 0.25;  // Of the large segment's points.
+constexpr double kMinEqualShare = 0.9;    // Of the large segment's points the grid scored.
 
 int64_t VoxelKey(const Eigen::Vector3f& p) {
   const int64_t x = static_cast<int64_t>(std::floor(p.x() / kVoxelM)) + (1 << 20);
@@ -44,7 +44,8 @@ int64_t VoxelKey(const Eigen::Vector3f& p) {
 // The majority grid segment of each 1 cm voxel (-1 = unsegmented wins).
 std::unordered_map<int64_t, int> VoxelSegments(const MobilityResult& grid) {
   std::unordered_map<int64_t, std::map<int, int>> votes;
-  for (size_t i = 0; i < grid.points.size(); ++i) ++votes[VoxelKey(grid.points[i])][grid.segment[i]];
+  for (size_t i = 0; i < grid.points.size(); ++i)
+    ++votes[VoxelKey(grid.points[i])][grid.segment[i]];
   std::unordered_map<int64_t, int> majority;
   for (const auto& [key, counts] : votes) {
     int best = -1, best_count = -1;
@@ -104,7 +105,8 @@ void ExpectGridMatchesPcl(const MobilityInput& input, const std::string& name) {
         name.c_str(), s, p.points, p.slope_deg, p.roughness, p.height_m, p.score_rule, partner,
         100.0 * overlap / p.points, g.slope_deg, g.roughness, g.height_m, g.score_rule,
         100 * scored_share, 100 * equal_share);
-    EXPECT_EQ(p.score_rule, g.score_rule) << name << ": PCL segment " << s << " vs grid " << partner;
+    EXPECT_EQ(p.score_rule, g.score_rule)
+        << name << ": PCL segment " << s << " vs grid " << partner;
     EXPECT_GE(scored_share, kMinScoredShare) << name << ": PCL segment " << s;
     EXPECT_GE(equal_share, kMinEqualShare) << name << ": PCL segment " << s;
     equal_scores += p.score_rule == g.score_rule && equal_share >= kMinEqualShare;
