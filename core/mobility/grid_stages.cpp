@@ -75,8 +75,8 @@ void RangeCut(double max_range_m, WorkingCloud* cloud) {
   std::vector<uint8_t> keep(cloud->size());
   size_t kept = 0;
   for (size_t i = 0; i < cloud->size(); ++i) {
-    const Eigen::Vector3f& p = cloud->points[i];
-    keep[i] = p.allFinite() && p.squaredNorm() <= max2;
+    // A NaN or infinite coordinate fails the comparison too.
+    keep[i] = cloud->points[i].squaredNorm() <= max2;
     kept += keep[i];
   }
   if (kept < cloud->size()) cloud->Compact(keep);

@@ -56,6 +56,7 @@ TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
   const Eigen::Matrix3f rotation = map.ground_from_camera.linear().cast<float>();
   const Eigen::Vector3f translation = map.ground_from_camera.translation().cast<float>();
   const float inv = static_cast<float>(1.0 / cell_m);
+  float* cells = map.score.ptr<float>();  // Continuous: rows x cols.
   for (size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(scores[i])) continue;
     const Eigen::Vector3f g = rotation * points[i] + translation;
@@ -63,7 +64,7 @@ TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
     // Off the map either way (also guards the conversions below).
     if (!(fr >= 0 && fc >= 0 && fr < rows && fc < cols)) continue;
     const int r = static_cast<int>(fr), c = static_cast<int>(fc);  // Floor: non-negative.
-    float& cell = map.score.at<float>(r, c);
+    float& cell = cells[static_cast<size_t>(r) * cols + c];
     if (!(cell <= scores[i])) cell = scores[i];  // NaN or higher: take the lower score.
   }
   return map;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include "core/common/depth_cloud.h"
 #include "core/mobility/grid_stages.h"
@@ -232,8 +233,15 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
   result->segment = std::move(label);
   {
     StageClock t(result.get(), "maps", result->points.size());
+    // PointScore through a table per segment: entry 0 is "unsegmented" (NaN).
+    std::vector<float> segment_score(result->segments.size() + 1,
+                                     std::numeric_limits<float>::quiet_NaN());
+    for (size_t s = 0; s < result->segments.size(); ++s) {
+      const SegmentProperties& p = result->segments[s];
+      segment_score[s + 1] = static_cast<float>(result->use_gpr ? p.score_gpr : p.score_rule);
+    }
     std::vector<float> scores(result->points.size());
-    for (size_t i = 0; i < scores.size(); ++i) scores[i] = result->PointScore(i);
+    for (size_t i = 0; i < scores.size(); ++i) scores[i] = segment_score[result->segment[i] + 1];
     result->map = BuildTopView(result->points, scores, result->ground, o.map_cell_m, o.RangeCutM());
     std::optional<PinholeCamera> camera = input.camera;
     if (!camera) {
