@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/common/depth_cloud.h"
+#include "core/mobility/grid_normals.h"
 #include "core/mobility/grid_stages.h"
 #include "core/mobility/ground_plane.h"
 #include "core/mobility/mobility_map.h"
