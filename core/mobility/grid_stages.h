@@ -1,6 +1,6 @@
 // The per-point stages on the organized pixel grid (mode "grid"): downsampling by a pixel
-// stride, range cut, statistical outlier removal over grid neighbours, normals from integral
-// images of the point moments, and the grid neighbours the region growing walks.
+// stride, range cut, statistical outlier removal over grid neighbours and the grid neighbours
+// the region growing walks (normals: grid_normals.h).
 #pragma once
 
 #include <vector>
@@ -22,13 +22,8 @@ void RangeCut(double max_range_m, WorkingCloud* cloud);
 // depth (grid spacing grows with depth), kept when d_i <= mu + alpha sigma; isolated points go.
 void GridRemoveOutliers(double alpha, WorkingCloud* cloud);
 
-// Normals by PCA of the points in a (2 window + 1)^2 cell window, from integral images of the
-// moments (constant time per point), oriented towards the viewpoint (seed eq. 4).
-// Points whose surface variation (smallest eigenvalue / sum) exceeds max_curvature get none.
-void GridNormals(int window, double max_curvature, WorkingCloud* cloud);
-
 // The 4-connected grid neighbours of point i whose depths differ by at most max_depth_jump
-// times the depth.
+// times the nearer depth (symmetric: j is i's neighbour when i is j's).
 void GridNeighbors(const WorkingCloud& cloud, int i, double max_depth_jump, std::vector<int>* out);
 
 }  // namespace sightline

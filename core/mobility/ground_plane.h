@@ -28,6 +28,26 @@ StatusOr<GroundPlane> FindGround(const WorkingCloud& cloud, const Eigen::Vector3
                                  const MobilityOptions& options, std::vector<uint8_t>* is_ground,
                                  int* iterations = nullptr);
 
+// Running sums for a least-squares plane, in double about the first point added (far points
+// keep their spread). No per-point storage.
+struct PlaneSums {
+  int count = 0;
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  double sx = 0, sy = 0, sz = 0;                                // Sums of q = p - reference.
+  double sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;  // Sums of q q^T.
+
+  void Add(const Eigen::Vector3f& p) {
+    if (count == 0) reference = p.cast<double>();
+    const double x = p.x() - reference.x(), y = p.y() - reference.y(), z = p.z() - reference.z();
+    ++count;
+    sx += x, sy += y, sz += z;
+    sxx += x * x, sxy += x * y, sxz += x * z, syy += y * y, syz += y * z, szz += z * z;
+  }
+  // Unit normal (smallest scatter direction) and centroid. False for < 3 points or a
+  // degenerate set.
+  bool Fit(Eigen::Vector3d* normal, Eigen::Vector3d* centroid) const;
+};
+
 // Least-squares plane (PCA) of points: unit normal and centroid. False for < 3 points or a
 // degenerate set.
 bool FitPlaneLeastSquares(const std::vector<Eigen::Vector3f>& points, Eigen::Vector3d* normal,

@@ -3,9 +3,20 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 namespace sightline {
+
+namespace {
+
+// Nearest integer, halves away from zero (std::lround without the library call), for |x| < 2^30.
+int RoundToPixel(double x) {
+  const double shifted = x + (x >= 0 ? 0.5 : -0.5);
+  return static_cast<int>(shifted);  // Truncates towards zero.
+}
+
+}  // namespace
 
 cv::Vec3b ScoreColorBgr(float score) {
   if (!std::isfinite(score)) return cv::Vec3b(128, 128, 128);
@@ -45,13 +56,15 @@ TopViewMap BuildTopView(const std::vector<Eigen::Vector3f>& points,
   const Eigen::Matrix3f rotation = map.ground_from_camera.linear().cast<float>();
   const Eigen::Vector3f translation = map.ground_from_camera.translation().cast<float>();
   const float inv = static_cast<float>(1.0 / cell_m);
+  float* cells = map.score.ptr<float>();  // Continuous: rows x cols.
   for (size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(scores[i])) continue;
     const Eigen::Vector3f g = rotation * points[i] + translation;
-    const int r = static_cast<int>(std::floor((range_m - g.x()) * inv));
-    const int c = static_cast<int>(std::floor((range_m - g.y()) * inv));
-    if (r < 0 || c < 0 || r >= rows || c >= cols) continue;
-    float& cell = map.score.at<float>(r, c);
+    const double fr = (range_m - g.x()) * inv, fc = (range_m - g.y()) * inv;
+    // Off the map either way (also guards the conversions below).
+    if (!(fr >= 0 && fc >= 0 && fr < rows && fc < cols)) continue;
+    const int r = static_cast<int>(fr), c = static_cast<int>(fc);  // Floor: non-negative.
+    float& cell = cells[static_cast<size_t>(r) * cols + c];
     if (!(cell <= scores[i])) cell = scores[i];  // NaN or higher: take the lower score.
   }
   return map;
@@ -80,17 +93,33 @@ cv::Mat ProjectScores(const std::vector<Eigen::Vector3f>& points, const std::vec
   // Dots are blended straight into the pixels (one pass, no per-dot matrix operations).
   cv::Mat out = base;
   const int half = dot_px / 2;
+  // Scores repeat along a segment: the colour of the last one is kept.
+  float last_score = std::numeric_limits<float>::quiet_NaN();
+  cv::Vec3b color;
   for (size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(scores[i])) continue;
     const Eigen::Vector3f& p = points[i];
     if (!(p.z() > 0)) continue;
-    const double u = camera.fx * (p.x() + offset_x_m) / p.z() + camera.cx;
-    const double v = camera.fy * (p.y() + offset_y_m) / p.z() + camera.cy;
-    const int x0 = std::max(0, static_cast<int>(std::lround(u)) - half);
-    const int y0 = std::max(0, static_cast<int>(std::lround(v)) - half);
-    const int x1 = std::min(out.cols, static_cast<int>(std::lround(u)) - half + dot_px);
-    const int y1 = std::min(out.rows, static_cast<int>(std::lround(v)) - half + dot_px);
-    const cv::Vec3b color = ScoreColorBgr(scores[i]);
+    const double inv_z = 1.0 / p.z();
+    const double u = camera.fx * (p.x() + offset_x_m) * inv_z + camera.cx;
+    const double v = camera.fy * (p.y() + offset_y_m) * inv_z + camera.cy;
+    // Pixel of the dot's centre; far outside the image is the same as just outside it.
+    const int px = RoundToPixel(std::clamp(u, -1e6, 1e6));
+    const int py = RoundToPixel(std::clamp(v, -1e6, 1e6));
+    if (dot_px == 1) {  // Full resolution: one pixel per point.
+      if (px < 0 || py < 0 || px >= out.cols || py >= out.rows) continue;
+      if (!(scores[i] == last_score)) color = ScoreColorBgr(scores[i]), last_score = scores[i];
+      cv::Vec3b& pixel = out.ptr<cv::Vec3b>(py)[px];
+      for (int c = 0; c < 3; ++c)
+        pixel[c] = static_cast<uchar>((9 * pixel[c] + 11 * color[c]) / 20);
+      continue;
+    }
+    const int x0 = std::max(0, px - half);
+    const int y0 = std::max(0, py - half);
+    const int x1 = std::min(out.cols, px - half + dot_px);
+    const int y1 = std::min(out.rows, py - half + dot_px);
+    if (x0 >= x1 || y0 >= y1) continue;
+    if (!(scores[i] == last_score)) color = ScoreColorBgr(scores[i]), last_score = scores[i];
     for (int y = y0; y < y1; ++y) {
       cv::Vec3b* row = out.ptr<cv::Vec3b>(y);
       for (int x = x0; x < x1; ++x) {

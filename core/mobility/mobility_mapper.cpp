@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include "core/common/depth_cloud.h"
+#include "core/mobility/grid_normals.h"
 #include "core/mobility/grid_stages.h"
 #include "core/mobility/ground_plane.h"
 #include "core/mobility/mobility_map.h"
@@ -93,7 +95,12 @@ Status PointStages(const PointCloud& cloud, const MobilityOptions& o, WorkingClo
 // Gathers the points of each label into one vector per segment.
 std::vector<std::vector<Eigen::Vector3f>> SegmentPoints(const WorkingCloud& work,
                                                         const std::vector<int>& label, int count) {
+  std::vector<int> sizes(count, 0);
+  for (int l : label) {
+    if (l >= 0) ++sizes[l];
+  }
   std::vector<std::vector<Eigen::Vector3f>> points(count);
+  for (int s = 0; s < count; ++s) points[s].reserve(sizes[s]);
   for (size_t i = 0; i < label.size(); ++i) {
     if (label[i] >= 0) points[label[i]].push_back(work.points[i]);
   }
@@ -179,18 +186,16 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
     for (size_t i = 0; i < work.size(); ++i)
       eligible[i] = !is_ground[i] && work.normals[i].allFinite();
     StageClock t(result.get(), "segmentation", work.size() - result->ground.inliers);
-    NeighborFunction neighbors;
     if (work.gridded()) {
-      neighbors = [&](int i, std::vector<int>* out) {
-        GridNeighbors(work, i, o.max_depth_jump, out);
-      };
+      label = GrowGridRegions(work, result->rgbn, eligible, o.color_threshold, o.max_depth_jump,
+                              o.min_segment_points, &regions);
     } else {
-      neighbors = [&](int i, std::vector<int>* out) {
+      const NeighborFunction neighbors = [&](int i, std::vector<int>* out) {
         search->Radius(i, o.pcl_neighbor_radius_m, out);
       };
+      label = GrowRegions(result->rgbn, eligible, o.color_threshold, o.min_segment_points,
+                          neighbors, &regions);
     }
-    label = GrowRegions(result->rgbn, eligible, o.color_threshold, o.min_segment_points, neighbors,
-                        &regions);
   }
   // Segment 0 is the ground when found; regions follow.
   const int offset = result->ground.found ? 1 : 0;
@@ -229,8 +234,15 @@ std::shared_ptr<const MobilityResult> MobilityMapper::Process(const MobilityInpu
   result->segment = std::move(label);
   {
     StageClock t(result.get(), "maps", result->points.size());
+    // PointScore through a table per segment: entry 0 is "unsegmented" (NaN).
+    std::vector<float> segment_score(result->segments.size() + 1,
+                                     std::numeric_limits<float>::quiet_NaN());
+    for (size_t s = 0; s < result->segments.size(); ++s) {
+      const SegmentProperties& p = result->segments[s];
+      segment_score[s + 1] = static_cast<float>(result->use_gpr ? p.score_gpr : p.score_rule);
+    }
     std::vector<float> scores(result->points.size());
-    for (size_t i = 0; i < scores.size(); ++i) scores[i] = result->PointScore(i);
+    for (size_t i = 0; i < scores.size(); ++i) scores[i] = segment_score[result->segment[i] + 1];
     result->map = BuildTopView(result->points, scores, result->ground, o.map_cell_m, o.RangeCutM());
     std::optional<PinholeCamera> camera = input.camera;
     if (!camera) {

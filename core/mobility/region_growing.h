@@ -26,4 +26,13 @@ std::vector<int> GrowRegions(const std::vector<cv::Vec3b>& rgbn,
                              const std::vector<uint8_t>& eligible, double color_threshold,
                              int min_points, const NeighborFunction& neighbors, int* regions);
 
+// The same regions on the organized grid by label propagation instead of a flood fill: one
+// pass joins each point to its left and upper grid neighbours (union-find), a second numbers
+// the regions by their first point. Grid neighbours are linked when both are eligible, their
+// colours lie within color_threshold and their depths differ by at most max_depth_jump times
+// the nearer depth (the link of GridNeighbors). Gives GrowRegions' labels with GridNeighbors.
+std::vector<int> GrowGridRegions(const WorkingCloud& cloud, const std::vector<cv::Vec3b>& rgbn,
+                                 const std::vector<uint8_t>& eligible, double color_threshold,
+                                 double max_depth_jump, int min_points, int* regions);
+
 }  // namespace sightline

@@ -30,21 +30,62 @@ void AddTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen
   ++r->triangles;
 }
 
-void TriangulateGrid(const std::unordered_map<int64_t, CellMean>& cells,
-                     const std::vector<std::pair<int, int>>& keys, RoughnessResult* r) {
+// Two triangles per square of four occupied cells; `find(a, b)` gives a cell or nullptr.
+template <typename Find>
+void TriangulateGrid(const Find& find, const std::vector<std::pair<int, int>>& keys,
+                     RoughnessResult* r) {
   for (const auto& [a, b] : keys) {
-    auto c00 = cells.find(CellKey(a, b));
-    auto c10 = cells.find(CellKey(a + 1, b));
-    auto c01 = cells.find(CellKey(a, b + 1));
-    auto c11 = cells.find(CellKey(a + 1, b + 1));
-    const bool has10 = c10 != cells.end(), has01 = c01 != cells.end(), has11 = c11 != cells.end();
-    if (has10 && has11) AddTriangle(c00->second.Mean(), c10->second.Mean(), c11->second.Mean(), r);
-    if (has01 && has11) AddTriangle(c00->second.Mean(), c11->second.Mean(), c01->second.Mean(), r);
+    const CellMean* c00 = find(a, b);
+    const CellMean* c10 = find(a + 1, b);
+    const CellMean* c01 = find(a, b + 1);
+    const CellMean* c11 = find(a + 1, b + 1);
+    if (c10 && c11) AddTriangle(c00->Mean(), c10->Mean(), c11->Mean(), r);
+    if (c01 && c11) AddTriangle(c00->Mean(), c11->Mean(), c01->Mean(), r);
     // Squares missing their far corner still get the one triangle they hold.
-    if (!has11 && has10 && has01) {
-      AddTriangle(c00->second.Mean(), c10->second.Mean(), c01->second.Mean(), r);
-    }
+    if (!c11 && c10 && c01) AddTriangle(c00->Mean(), c10->Mean(), c01->Mean(), r);
   }
+}
+
+// std::floor to int for |x| < 2^31 without the library call (no SSE4.1 rounding here).
+inline int FloorToInt(double x) {
+  const int t = static_cast<int>(x);  // Truncates towards zero.
+  return t - (x < t);
+}
+
+// A point in the plane's coordinates: cell indices, (u, v) and height h.
+struct PlanePoint {
+  int a, b;
+  double u, v, h;
+};
+
+// Plane coordinates of the points (basis e1 = n.unitOrthogonal(), e2 = n x e1, origin the
+// centroid) and the cells' index bounds.
+std::vector<PlanePoint> ToPlane(const std::vector<Eigen::Vector3f>& points,
+                                const SegmentPlane& plane, double cell_m, int bounds[4]) {
+  const Eigen::Vector3d& n = plane.normal;
+  const Eigen::Vector3d e1 = n.unitOrthogonal();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  const double inv = 1.0 / cell_m;
+  std::vector<PlanePoint> out(points.size());
+  bounds[0] = bounds[1] = std::numeric_limits<int>::max();
+  bounds[2] = bounds[3] = std::numeric_limits<int>::min();
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d q = points[i].cast<double>() - plane.centroid;
+    PlanePoint& pp = out[i];
+    pp.u = q.dot(e1), pp.v = q.dot(e2), pp.h = q.dot(n);
+    pp.a = FloorToInt(pp.u * inv);
+    pp.b = FloorToInt(pp.v * inv);
+    bounds[0] = std::min(bounds[0], pp.a), bounds[1] = std::min(bounds[1], pp.b);
+    bounds[2] = std::max(bounds[2], pp.a), bounds[3] = std::max(bounds[3], pp.b);
+  }
+  return out;
+}
+
+// A dense cell array pays when the bounding box is not much larger than the point count.
+bool DenseFits(const int bounds[4], size_t points) {
+  const int64_t cells = (static_cast<int64_t>(bounds[2]) - bounds[0] + 1) *
+                        (static_cast<int64_t>(bounds[3]) - bounds[1] + 1);
+  return cells <= std::max<int64_t>(4096, 4 * static_cast<int64_t>(points));
 }
 
 void TriangulateDelaunay(const std::vector<Eigen::Vector3d>& means, double cell_m,
@@ -99,8 +140,7 @@ StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& point
                            std::to_string(points.size()));
   }
   SegmentPlane plane;
-  const std::vector<Eigen::Vector3f>* fit_points = &points;
-  std::vector<Eigen::Vector3f> inliers;
+  PlaneSums inliers;
   if (iterations > 0) {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<size_t> pick(0, points.size() - 1);
@@ -122,16 +162,19 @@ StatusOr<SegmentPlane> FitSegmentPlane(const std::vector<Eigen::Vector3f>& point
     }
     if (best > 0) {
       for (const Eigen::Vector3f& p : points) {
-        if (std::abs(best_n.dot(p) + best_d) < distance_m) inliers.push_back(p);
+        if (std::abs(best_n.dot(p) + best_d) < distance_m) inliers.Add(p);
       }
-      if (inliers.size() >= 3) fit_points = &inliers;
     }
   }
-  if (!FitPlaneLeastSquares(*fit_points, &plane.normal, &plane.centroid)) {
+  if (inliers.count < 3) {  // No RANSAC, or too few inliers: all points.
+    inliers = PlaneSums();
+    for (const Eigen::Vector3f& p : points) inliers.Add(p);
+  }
+  if (!inliers.Fit(&plane.normal, &plane.centroid)) {
     return InvalidArgument("the segment's " + std::to_string(points.size()) +
                            " points are collinear: no plane");
   }
-  plane.inliers = static_cast<int>(fit_points->size());
+  plane.inliers = inliers.count;
   return plane;
 }
 
@@ -139,31 +182,48 @@ StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& p
                                            const SegmentPlane& plane, double cell_m,
                                            const std::string& triangulation,
                                            double max_edge_cells) {
-  // Plane basis: e1, e2 span the plane, n is the height axis.
-  const Eigen::Vector3d& n = plane.normal;
-  const Eigen::Vector3d e1 = n.unitOrthogonal();
-  const Eigen::Vector3d e2 = n.cross(e1);
-  std::unordered_map<int64_t, CellMean> cells;
+  int bounds[4];
+  const std::vector<PlanePoint> projected = ToPlane(points, plane, cell_m, bounds);
+  // Cell means, in a dense array over the bounding box when it is small enough (no hashing),
+  // else in a hash map; keys keep the order of first occupation either way.
   std::vector<std::pair<int, int>> keys;
-  cells.reserve(points.size());
-  for (const Eigen::Vector3f& pf : points) {
-    const Eigen::Vector3d q = pf.cast<double>() - plane.centroid;
-    const double u = q.dot(e1), v = q.dot(e2), h = q.dot(n);
-    const int a = static_cast<int>(std::floor(u / cell_m));
-    const int b = static_cast<int>(std::floor(v / cell_m));
-    CellMean& cell = cells[CellKey(a, b)];
-    if (cell.count == 0) keys.emplace_back(a, b);
-    cell.u += u, cell.v += v, cell.h += h, ++cell.count;
+  std::vector<CellMean> dense;
+  std::unordered_map<int64_t, CellMean> sparse;
+  const bool use_dense = !points.empty() && DenseFits(bounds, points.size());
+  const int width = use_dense ? bounds[2] - bounds[0] + 1 : 0;
+  const int height = use_dense ? bounds[3] - bounds[1] + 1 : 0;
+  if (use_dense) {
+    dense.resize(static_cast<size_t>(width) * height);
+  } else {
+    sparse.reserve(points.size());
   }
+  auto cell_at = [&](int a, int b) -> CellMean& {
+    if (use_dense) return dense[static_cast<size_t>(b - bounds[1]) * width + (a - bounds[0])];
+    return sparse[CellKey(a, b)];
+  };
+  for (const PlanePoint& pp : projected) {
+    CellMean& cell = cell_at(pp.a, pp.b);
+    if (cell.count == 0) keys.emplace_back(pp.a, pp.b);
+    cell.u += pp.u, cell.v += pp.v, cell.h += pp.h, ++cell.count;
+  }
+  auto find = [&](int a, int b) -> const CellMean* {
+    if (use_dense) {
+      if (a < bounds[0] || b < bounds[1] || a > bounds[2] || b > bounds[3]) return nullptr;
+      const CellMean& c = dense[static_cast<size_t>(b - bounds[1]) * width + (a - bounds[0])];
+      return c.count > 0 ? &c : nullptr;
+    }
+    const auto it = sparse.find(CellKey(a, b));
+    return it == sparse.end() ? nullptr : &it->second;
+  };
   RoughnessResult r;
-  r.cells = static_cast<int>(cells.size());
+  r.cells = static_cast<int>(keys.size());
   if (triangulation == "delaunay") {
     std::vector<Eigen::Vector3d> means;
     means.reserve(keys.size());
-    for (const auto& [a, b] : keys) means.push_back(cells[CellKey(a, b)].Mean());
+    for (const auto& [a, b] : keys) means.push_back(find(a, b)->Mean());
     if (means.size() >= 3) TriangulateDelaunay(means, cell_m, max_edge_cells, &r);
   } else {
-    TriangulateGrid(cells, keys, &r);
+    TriangulateGrid(find, keys, &r);
   }
   if (r.triangles == 0 || r.projected_area_m2 <= 0) {
     return InvalidArgument("no triangle for the roughness: the segment covers " +
@@ -172,6 +232,29 @@ StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& p
   }
   r.roughness = std::max(1.0, r.surface_area_m2 / r.projected_area_m2);
   return r;
+}
+
+int CountPlaneCells(const std::vector<Eigen::Vector3f>& points, const SegmentPlane& plane,
+                    double cell_m) {
+  int bounds[4];
+  const std::vector<PlanePoint> projected = ToPlane(points, plane, cell_m, bounds);
+  if (projected.empty()) return 0;
+  int cells = 0;
+  if (DenseFits(bounds, points.size())) {
+    const int width = bounds[2] - bounds[0] + 1;
+    std::vector<uint8_t> occupied(static_cast<size_t>(width) * (bounds[3] - bounds[1] + 1), 0);
+    for (const PlanePoint& pp : projected) {
+      uint8_t& o = occupied[static_cast<size_t>(pp.b - bounds[1]) * width + (pp.a - bounds[0])];
+      cells += o == 0;
+      o = 1;
+    }
+  } else {
+    std::unordered_map<int64_t, uint8_t> occupied;
+    occupied.reserve(points.size());
+    for (const PlanePoint& pp : projected) occupied[CellKey(pp.a, pp.b)] = 1;
+    cells = static_cast<int>(occupied.size());
+  }
+  return cells;
 }
 
 StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
@@ -195,10 +278,16 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
   // Roughness from the near points (depth noise grows with z^2), area from all of them.
   const float max2 =
       static_cast<float>(options.roughness_max_range_m * options.roughness_max_range_m);
-  std::vector<Eigen::Vector3f> near;
-  for (const Eigen::Vector3f& p : points) {
-    if (p.squaredNorm() <= max2) near.push_back(p);
+  size_t near_count = 0;
+  for (const Eigen::Vector3f& p : points) near_count += p.squaredNorm() <= max2;
+  std::vector<Eigen::Vector3f> near_points;  // Only when some are far.
+  if (near_count != points.size()) {
+    near_points.reserve(near_count);
+    for (const Eigen::Vector3f& p : points) {
+      if (p.squaredNorm() <= max2) near_points.push_back(p);
+    }
   }
+  const std::vector<Eigen::Vector3f>& near = near_count == points.size() ? points : near_points;
   StatusOr<RoughnessResult> rough(InvalidArgument("no near points"));
   if (near.size() >= 3) {
     rough = ComputeRoughness(near, *plane, options.roughness_cell_m, options.triangulation,
@@ -213,9 +302,8 @@ StatusOr<SegmentProperties> MeasureSegment(int id, bool is_ground,
   s.area_m2 = rough->cells * options.roughness_cell_m * options.roughness_cell_m;
   if (near.size() != points.size()) {
     // Area over every point: count the occupied cells of all of them.
-    StatusOr<RoughnessResult> all =
-        ComputeRoughness(points, *plane, options.roughness_cell_m, "grid", options.max_edge_cells);
-    if (all.ok()) s.area_m2 = all->cells * options.roughness_cell_m * options.roughness_cell_m;
+    s.area_m2 = CountPlaneCells(points, *plane, options.roughness_cell_m) *
+                options.roughness_cell_m * options.roughness_cell_m;
   }
   // Raised height: a low quantile of the heights above the ground.
   if (ground.found && !is_ground) {

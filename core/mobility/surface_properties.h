@@ -43,6 +43,11 @@ StatusOr<RoughnessResult> ComputeRoughness(const std::vector<Eigen::Vector3f>& p
                                            const SegmentPlane& plane, double cell_m,
                                            const std::string& triangulation, double max_edge_cells);
 
+// The number of plane cells of cell_m the points occupy (ComputeRoughness's cells, without
+// the triangulation).
+int CountPlaneCells(const std::vector<Eigen::Vector3f>& points, const SegmentPlane& plane,
+                    double cell_m);
+
 // All properties of one segment (scores are left 0). `ground` is the found ground (for the
 // ground segment itself the slope is 0 by definition). InvalidArgument, naming the segment,
 // when the segment has too few points or no plane.

@@ -1,6 +1,7 @@
 // Cost of the mobility map per 640x480 organized cloud on one core (real PCL clouds: office1
-// and the grabber sequence), in the fast grid mode and in the seed's PCL mode, with the mean
-// of every stage as counters (ms). Skipped (with a message) when the data is absent.
+// and the grabber sequence), in grid mode at the default stride and at stride 1 (every finite
+// pixel) and in the seed's PCL mode, with the mean of every stage as counters (ms). Skipped (with a
+// message) when the data is absent.
 // Run: taskset -c 1 build/bin/bench_mobility --benchmark_repetitions=5 \
 //        --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -35,7 +36,8 @@ std::vector<MobilityInput> LoadClouds(const std::string& path) {
   return inputs;
 }
 
-void RunMobility(benchmark::State& state, const std::string& name, const std::string& mode) {
+void RunMobility(benchmark::State& state, const std::string& name, const std::string& mode,
+                 int grid_stride = MobilityOptions().grid_stride) {
   cv::setNumThreads(1);  // One core.
   const std::vector<MobilityInput> inputs = LoadClouds(DataPath(name));
   if (inputs.empty()) {
@@ -44,6 +46,7 @@ void RunMobility(benchmark::State& state, const std::string& name, const std::st
   }
   MobilityOptions options;
   options.mode = mode;
+  options.grid_stride = grid_stride;
   MobilityMapper mapper(options);
   std::map<std::string, double> stage_ms;
   int64_t frames = 0;
@@ -67,6 +70,12 @@ void BM_MobilityGridOffice1(benchmark::State& state) {
 void BM_MobilityGridGrabber(benchmark::State& state) {
   RunMobility(state, "pcl_clouds/grabber_sequences/pcd", "grid");
 }
+void BM_MobilityGridStride1Office1(benchmark::State& state) {
+  RunMobility(state, "pcl_clouds/office1.pcd", "grid", 1);
+}
+void BM_MobilityGridStride1Grabber(benchmark::State& state) {
+  RunMobility(state, "pcl_clouds/grabber_sequences/pcd", "grid", 1);
+}
 void BM_MobilityPclOffice1(benchmark::State& state) {
   RunMobility(state, "pcl_clouds/office1.pcd", "pcl");
 }
@@ -75,6 +84,8 @@ void BM_MobilityPclGrabber(benchmark::State& state) {
 }
 BENCHMARK(BM_MobilityGridOffice1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MobilityGridGrabber)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MobilityGridStride1Office1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MobilityGridStride1Grabber)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MobilityPclOffice1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MobilityPclGrabber)->Unit(benchmark::kMillisecond);
 
