@@ -1,15 +1,15 @@
 #include "core/mapping/depth_person_detector.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <Eigen/Eigenvalues>
 
 namespace sightline {
 
 namespace {
 constexpr double kRangeMarginM = 1.0;
-constexpr double kShoulders = 0.5;   // Shoulders reach this many head radii from the head.
-constexpr int kJoin = 1;  // Cells up to this many apart join a cluster (8-neighbours).
+constexpr double kShoulders = 0.5;  // Shoulders reach this many head radii from the head.
+constexpr int kJoin = 1;            // Cells up to this many apart join a cluster (8-neighbours).
 }  // namespace
 
 DepthPersonDetector::DepthPersonDetector(PersonDetectorOptions options)
@@ -67,8 +67,8 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
                                 ? camera_
                                 : camera_.Scaled(depth_m.cols, depth_m.rows);
   const PersonDetectorOptions& o = options_;
-  const int step = std::max(1, static_cast<int>(std::lround(
-                                   static_cast<double>(depth_m.cols) / o.depth_target_columns)));
+  const int step = std::max(
+      1, static_cast<int>(std::lround(static_cast<double>(depth_m.cols) / o.depth_target_columns)));
   const double cell = o.depth_cell_m;
   const float floor_band = static_cast<float>(std::max(2 * floor_.epsilon_m, 0.05));
   // Clusters are made of points up to a metre beyond the range, so that a wall there is not cut
@@ -88,7 +88,8 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
       const float h = static_cast<float>(up_.dot(x) + floor_.d);
       if (h < floor_band) continue;
       const double f = forward_.dot(x), l = left_.dot(x);
-      const int r = static_cast<int>(f / cell), c = static_cast<int>(std::floor(l / cell)) + grid_rows_;
+      const int r = static_cast<int>(f / cell),
+                c = static_cast<int>(std::floor(l / cell)) + grid_rows_;
       if (r < 0 || r >= grid_rows_ || c < 0 || c >= grid_cols_) continue;
       const int i = r * grid_cols_ + c;
       Cell& k = cells_[i];
@@ -130,7 +131,8 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
   }
 
   auto centre = [&](int i) {
-    return Eigen::Vector2d((i / grid_cols_ + 0.5) * cell, (i % grid_cols_ - grid_rows_ + 0.5) * cell);
+    return Eigen::Vector2d((i / grid_cols_ + 0.5) * cell,
+                           (i % grid_cols_ - grid_rows_ + 0.5) * cell);
   };
   auto measure = [&](std::vector<int> members) {
     Part p;
@@ -168,8 +170,8 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
   };
   auto is_person = [&](const Part& p) {
     if (o.depth_require_top && p.box.y < step) return false;  // Its top is out of view.
-    return p.range_m <= o.depth_max_range_m && p.points >= o.depth_min_points && p.top >= o.depth_min_height_m &&
-           p.top <= o.depth_max_height_m &&
+    return p.range_m <= o.depth_max_range_m && p.points >= o.depth_min_points &&
+           p.top >= o.depth_min_height_m && p.top <= o.depth_max_height_m &&
            (p.bottom <= o.depth_max_foot_m || p.box.br().y >= depth_m.rows - step) &&
            p.length_m >= o.depth_min_width_m && p.length_m <= o.depth_max_width_m &&
            p.width_m >= o.depth_min_thickness_m;

@@ -39,8 +39,8 @@ void AddBlock(double x, double y, double size_x, double size_y, double height,
 // the body, as a person's do.
 void AddWalker(double x, double y, double h, std::vector<SyntheticWall>* walls) {
   const double k = h / 1.75;
-  AddBlock(x, y, 0.22, 0.38, 1.45 * k, walls);               // Body.
-  AddBlock(x, y, 0.18, 0.16, h, walls);                      // Head.
+  AddBlock(x, y, 0.22, 0.38, 1.45 * k, walls);                // Body.
+  AddBlock(x, y, 0.18, 0.16, h, walls);                       // Head.
   AddBlock(x - 0.14, y + 0.23, 0.09, 0.09, 1.35 * k, walls);  // Arm swung forward.
   AddBlock(x + 0.12, y - 0.23, 0.09, 0.09, 1.35 * k, walls);  // Arm swung back.
   AddBlock(x - 0.17, y + 0.08, 0.12, 0.12, 0.85 * k, walls);  // Leg stepping forward.
@@ -105,8 +105,7 @@ TEST_F(DepthPeople, BadInputIsAClearStatus) {
   EXPECT_NE(s.message().find("depth_min_height_m"), std::string::npos) << s.ToString();
   DepthPersonDetector good;
   ASSERT_TRUE(good.Configure(PlaneOf(view_), camera_).ok());
-  EXPECT_EQ(good.Detect(cv::Mat(240, 320, CV_16UC1)).status().code(),
-            StatusCode::kInvalidArgument);
+  EXPECT_EQ(good.Detect(cv::Mat(240, 320, CV_16UC1)).status().code(), StatusCode::kInvalidArgument);
   EXPECT_TRUE(good.Detect(cv::Mat()).ok());
   cv::Mat nan(240, 320, CV_32FC1, std::nanf(""));
   ASSERT_TRUE(good.Detect(nan).ok());
