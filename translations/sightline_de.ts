@@ -3972,8 +3972,8 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="487"/>
-        <source>grid: half-width of the integral-image normal window.</source>
-        <translation>grid: halbe Breite des Normalenfensters im Integralbild.</translation>
+        <source>grid: half-width of the window of grid points each normal is fitted to.</source>
+        <translation>grid: halbe Breite des Fensters der Rasterpunkte, an die jede Normale angepasst wird.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="489"/>

@@ -3972,8 +3972,8 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="487"/>
-        <source>grid: half-width of the integral-image normal window.</source>
-        <translation>grid: semianchura de la ventana de normales sobre la imagen integral.</translation>
+        <source>grid: half-width of the window of grid points each normal is fitted to.</source>
+        <translation>grid: semianchura de la ventana de puntos de la rejilla a la que se ajusta cada normal.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="489"/>

@@ -3972,8 +3972,8 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="487"/>
-        <source>grid: half-width of the integral-image normal window.</source>
-        <translation>grid: semi-larghezza della finestra delle normali sull&apos;immagine integrale.</translation>
+        <source>grid: half-width of the window of grid points each normal is fitted to.</source>
+        <translation>grid: semi-larghezza della finestra di punti della griglia a cui si adatta ogni normale.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="489"/>

@@ -484,7 +484,7 @@ const char* const kOptionTexts[] = {
     QT_TRANSLATE_NOOP("sightline::OptionText", "free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "grid: every n-th pixel in both directions (stands in for the voxel grid)."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "grid: grid neighbours whose depths differ by more than this fraction are apart."),
-    QT_TRANSLATE_NOOP("sightline::OptionText", "grid: half-width of the integral-image normal window."),
+    QT_TRANSLATE_NOOP("sightline::OptionText", "grid: half-width of the window of grid points each normal is fitted to."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "i_max (step E): at most this many lines."),

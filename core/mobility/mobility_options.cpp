@@ -99,7 +99,7 @@ OptionTable<MobilityOptions> MobilityOptions::Describe() {
       .Double("sor_alpha", &O::sor_alpha, "", 0.1, 10, 0.1,
               "Outlier removal: keep points with mean neighbour distance <= mu + alpha sigma.")
       .Int("normal_window", &O::normal_window, "cells", 1, 20, 1,
-           "grid: half-width of the integral-image normal window.")
+           "grid: half-width of the window of grid points each normal is fitted to.")
       .Int("normal_k", &O::normal_k, "", 3, 100, 1, "pcl: neighbours of the normal fit.")
       .Double("max_curvature", &O::max_curvature, "", 0.001, 0.34, 0.001,
               "Points whose neighbourhood bends more (surface variation, 0 = flat) get no normal "

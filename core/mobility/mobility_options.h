@@ -11,8 +11,8 @@ namespace sightline {
 
 // Which way the per-point stages run.
 //  "grid": on the organized 640x480 pixel grid (a pixel stride stands in for the voxel grid,
-//          normals from integral images of the point moments, denoising and region growing over
-//          grid neighbours). Needs an organized cloud; the fast path.
+//          normals from window sums of the point moments slid along the grid, denoising and
+//          region growing over grid neighbours). Needs an organized cloud; the fast path.
 //  "pcl":  the seed's unorganized path (PCL voxel grid, statistical outlier removal, k-d tree
 //          normals and region growing over k-d tree neighbours). Any cloud.
 // Both share the ground search, surface properties, scoring and the maps.
@@ -35,7 +35,7 @@ struct MobilityOptions {
   double sor_alpha = 2.0;  // Density restrictiveness factor alpha.
 
   // Normals (oriented towards the viewpoint).
-  int normal_window = 3;         // grid: half-width of the integral-image window [cells].
+  int normal_window = 3;         // grid: half-width of the normal's window [cells].
   int normal_k = 16;             // pcl: neighbours of the k-d tree normal fit.
   double max_curvature = 0.1;    // Points whose neighbourhood bends more (smallest
                                  // eigenvalue / sum: 0 flat, 1/3 isotropic) get no normal:
