@@ -1,5 +1,6 @@
 #include "core/common/floor.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,17 @@ bool Invalid(std::string* error, const std::string& message) {
 
 double FloorPlane::PitchDownDeg() const {
   return std::asin(std::clamp(-normal.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+bool FloorPlane::BaseFromCameraRotation(Eigen::Matrix3d* base_from_camera) const {
+  const Eigen::Vector3d optical_axis(0, 0, 1);
+  Eigen::Vector3d forward = optical_axis - optical_axis.dot(normal) * normal;
+  if (forward.norm() < 0.1) return false;
+  forward.normalize();
+  base_from_camera->row(0) = forward.transpose();
+  base_from_camera->row(1) = normal.cross(forward).transpose();
+  base_from_camera->row(2) = normal.transpose();
+  return true;
 }
 
 bool FloorPlane::IsValid(std::string* error) const {

@@ -25,6 +25,10 @@ struct FloorPlane {
   double CameraHeightM() const { return d; }
   // Angle between the camera's optical axis and the floor [deg]; positive = looking down.
   double PitchDownDeg() const;
+  // The rotation base_from_camera of a base on this floor facing where the camera looks: its
+  // rows are forward (the optical axis projected onto the floor), left and up. False when the
+  // camera looks (almost) straight down and has no forward direction.
+  bool BaseFromCameraRotation(Eigen::Matrix3d* base_from_camera) const;
   // Checks that the normal is unit, points up (d > 0) and epsilon is positive.
   bool IsValid(std::string* error) const;
 };

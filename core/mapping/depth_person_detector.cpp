@@ -22,21 +22,21 @@ Status DepthPersonDetector::Configure(const FloorPlane& floor, const PinholeCame
   if (!(camera.fx > 0 && camera.fy > 0 && camera.width > 0 && camera.height > 0)) {
     return InvalidArgument("depth person detector: the depth camera has no valid intrinsics");
   }
-  up_ = floor.normal;
-  const Eigen::Vector3d optical_axis(0, 0, 1);
-  forward_ = optical_axis - optical_axis.dot(up_) * up_;
-  if (forward_.norm() < 0.1) {
+  Eigen::Matrix3d base_from_camera;
+  if (!floor.BaseFromCameraRotation(&base_from_camera)) {
     return InvalidArgument(
         "depth person detector: the camera looks (almost) straight at the floor");
   }
-  forward_.normalize();
-  left_ = up_.cross(forward_);
+  forward_ = base_from_camera.row(0).transpose();
+  left_ = base_from_camera.row(1).transpose();
+  up_ = base_from_camera.row(2).transpose();
   floor_ = floor;
   camera_ = camera;
   const double range = options_.depth_max_range_m + kRangeMarginM;
   grid_rows_ = static_cast<int>(std::ceil(range / options_.depth_cell_m)) + 1;
   grid_cols_ = 2 * grid_rows_;
   cells_.assign(static_cast<size_t>(grid_rows_) * grid_cols_, Cell());
+  used_.clear();
   label_.assign(cells_.size(), -1);
   configured_ = true;
   return Status::Ok();
@@ -74,8 +74,9 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
   // Clusters are made of points up to a metre beyond the range, so that a wall there is not cut
   // into person-sized slices by the range noise; only clusters within the range are tested.
   const double range_cut = o.depth_max_range_m + kRangeMarginM;
-  std::fill(cells_.begin(), cells_.end(), Cell());
-  std::vector<int> used;  // Cells with points.
+  for (int i : used_) cells_[i] = Cell();  // Only the last frame's cells hold points.
+  used_.clear();
+  std::vector<int>& used = used_;
 
   // 1. Points into the floor grid.
   for (int v = 0; v < depth_m.rows; v += step) {

@@ -62,6 +62,7 @@ class DepthPersonDetector {
   Eigen::Vector3d forward_, left_, up_;
   int grid_rows_ = 0, grid_cols_ = 0;  // Forward x left cells.
   std::vector<Cell> cells_;
+  std::vector<int> used_;  // Cells holding points, in the order they were first hit.
   std::vector<int> label_;
 };
 

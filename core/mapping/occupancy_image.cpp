@@ -56,19 +56,13 @@ Status OccupancyImageBuilder::Configure(const FloorPlane& floor, const PinholeCa
   if (!(camera.fx > 0 && camera.fy > 0 && camera.width > 0 && camera.height > 0)) {
     return InvalidArgument("occupancy image: the depth camera has no valid intrinsics");
   }
-  const Eigen::Vector3d up = floor.normal;
-  const Eigen::Vector3d optical_axis(0, 0, 1);
-  Eigen::Vector3d forward = optical_axis - optical_axis.dot(up) * up;
-  if (forward.norm() < 0.1) {
+  if (!floor.BaseFromCameraRotation(&base_from_camera_)) {
     return InvalidArgument(
         "occupancy image: the camera looks (almost) straight at the floor; "
         "no forward direction");
   }
-  forward.normalize();
-  const Eigen::Vector3d left = up.cross(forward);
-  base_from_camera_.row(0) = forward.transpose();
-  base_from_camera_.row(1) = left.transpose();
-  base_from_camera_.row(2) = up.transpose();
+  const Eigen::Vector3d forward = base_from_camera_.row(0).transpose();
+  const Eigen::Vector3d left = base_from_camera_.row(1).transpose();
   floor_ = floor;
   camera_ = camera;
   // Field of view: the extreme bearings over the border pixels.

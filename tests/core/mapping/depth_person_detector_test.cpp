@@ -13,17 +13,11 @@
 namespace sightline {
 namespace {
 
+using testing::FloorPlaneOf;
 using testing::KinectCamera;
 using testing::RenderDepth;
 using testing::SyntheticView;
 using testing::SyntheticWall;
-
-FloorPlane PlaneOf(const SyntheticView& view) {
-  FloorPlane plane;
-  plane.normal = testing::WorldFromCameraRotation(view).transpose() * Eigen::Vector3d::UnitZ();
-  plane.d = view.height_m;
-  return plane;
-}
 
 // A closed rectangle of walls centred at (x, y): a standing block seen from any side.
 void AddBlock(double x, double y, double size_x, double size_y, double height,
@@ -56,7 +50,7 @@ class DepthPeople : public ::testing::Test {
   }
   std::vector<PersonBox> Detect(const std::vector<SyntheticWall>& walls, double noise = 0.0) {
     DepthPersonDetector detector;
-    EXPECT_TRUE(detector.Configure(PlaneOf(view_), camera_).ok());
+    EXPECT_TRUE(detector.Configure(FloorPlaneOf(view_), camera_).ok());
     const cv::Mat depth = RenderDepth(camera_, view_, walls, true, 8.0, noise);
     StatusOr<std::vector<PersonBox>> people = detector.Detect(depth);
     EXPECT_TRUE(people.ok()) << people.status().ToString();
@@ -100,11 +94,11 @@ TEST_F(DepthPeople, BadInputIsAClearStatus) {
   PersonDetectorOptions bad;
   bad.depth_max_height_m = 0.5;
   DepthPersonDetector detector(bad);
-  const Status s = detector.Configure(PlaneOf(view_), camera_);
+  const Status s = detector.Configure(FloorPlaneOf(view_), camera_);
   EXPECT_EQ(s.code(), StatusCode::kInvalidArgument);
   EXPECT_NE(s.message().find("depth_min_height_m"), std::string::npos) << s.ToString();
   DepthPersonDetector good;
-  ASSERT_TRUE(good.Configure(PlaneOf(view_), camera_).ok());
+  ASSERT_TRUE(good.Configure(FloorPlaneOf(view_), camera_).ok());
   EXPECT_EQ(good.Detect(cv::Mat(240, 320, CV_16UC1)).status().code(), StatusCode::kInvalidArgument);
   EXPECT_TRUE(good.Detect(cv::Mat()).ok());
   cv::Mat nan(240, 320, CV_32FC1, std::nanf(""));

@@ -16,15 +16,6 @@ using testing::KinectCamera;
 using testing::RenderDepth;
 using testing::SyntheticView;
 
-// The true floor plane of a synthetic view, in the camera frame.
-FloorPlane TruePlane(const SyntheticView& view) {
-  const Eigen::Matrix3d world_from_camera = testing::WorldFromCameraRotation(view);
-  FloorPlane plane;
-  plane.normal = world_from_camera.transpose() * Eigen::Vector3d::UnitZ();
-  plane.d = view.height_m;
-  return plane;
-}
-
 double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return RadToDeg(std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)));
 }
@@ -41,7 +32,7 @@ TEST(FloorPlane, RansacRecoversATiltedRolledPlane) {
   AppendDepthPoints(depth, camera, 6.0, 1, &points);
   StatusOr<FloorFitResult> fit = FloorPlaneEstimator().Fit(points);
   ASSERT_TRUE(fit.ok()) << fit.status().ToString();
-  const FloorPlane truth = TruePlane(view);
+  const FloorPlane truth = testing::FloorPlaneOf(view);
   EXPECT_LT(AngleDeg(fit->plane.normal, truth.normal), 0.3);
   EXPECT_NEAR(fit->plane.d, truth.d, 0.01);
   EXPECT_NEAR(fit->plane.PitchDownDeg(), 17.0, 0.3);

@@ -10,23 +10,17 @@
 namespace sightline {
 namespace {
 
+using testing::FloorPlaneOf;
 using testing::KinectCamera;
 using testing::RenderDepth;
 using testing::SyntheticView;
 using testing::SyntheticWall;
 
-FloorPlane PlaneOf(const SyntheticView& view) {
-  FloorPlane plane;
-  plane.normal = testing::WorldFromCameraRotation(view).transpose() * Eigen::Vector3d::UnitZ();
-  plane.d = view.height_m;
-  return plane;
-}
-
 class MappingFrameProcessorTest : public ::testing::Test {
  protected:
   void SetUp() override {
     camera_ = KinectCamera(320, 240);
-    ASSERT_TRUE(processor_.Configure(PlaneOf(SyntheticView()), camera_).ok());
+    ASSERT_TRUE(processor_.Configure(FloorPlaneOf(SyntheticView()), camera_).ok());
   }
   // A frame of the robot at `x` in a straight corridor along world x.
   MappingInput CorridorFrame(int index, double x, double heading_deg = 0) const {
@@ -155,7 +149,7 @@ TEST_F(MappingFrameProcessorTest, MapImageEveryNFrames) {
   MappingOptions options;
   options.stitch.render_every_n = 3;
   MappingFrameProcessor processor(options);
-  ASSERT_TRUE(processor.Configure(PlaneOf(SyntheticView()), camera_).ok());
+  ASSERT_TRUE(processor.Configure(FloorPlaneOf(SyntheticView()), camera_).ok());
   for (int k = 0; k < 7; ++k) {
     StatusOr<std::shared_ptr<const MappingFrameResult>> r =
         processor.Process(CorridorFrame(k, 0.2 * k));

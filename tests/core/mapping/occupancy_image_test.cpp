@@ -10,16 +10,10 @@
 namespace sightline {
 namespace {
 
+using testing::FloorPlaneOf;
 using testing::KinectCamera;
 using testing::RenderDepth;
 using testing::SyntheticView;
-
-FloorPlane PlaneOf(const SyntheticView& view) {
-  FloorPlane plane;
-  plane.normal = testing::WorldFromCameraRotation(view).transpose() * Eigen::Vector3d::UnitZ();
-  plane.d = view.height_m;
-  return plane;
-}
 
 int Count(const OccupancyImage& image, OccupancyCell label) {
   return cv::countNonZero(image.cells == static_cast<uint8_t>(label));
@@ -33,7 +27,7 @@ class OccupancyFloorAndWall : public ::testing::Test {
     view_.pitch_down_rad = DegToRad(10);
     camera_ = KinectCamera(320, 240);
     depth_ = RenderDepth(camera_, view_, {{{3.0, -4}, {3.0, 4}, 2.0}});
-    ASSERT_TRUE(builder_.Configure(PlaneOf(view_), camera_).ok());
+    ASSERT_TRUE(builder_.Configure(FloorPlaneOf(view_), camera_).ok());
   }
   SyntheticView view_;
   PinholeCamera camera_;

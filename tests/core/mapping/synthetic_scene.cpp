@@ -32,6 +32,13 @@ Eigen::Matrix3d WorldFromCameraRotation(const SyntheticView& view) {
   return r;
 }
 
+FloorPlane FloorPlaneOf(const SyntheticView& view) {
+  FloorPlane plane;
+  plane.normal = WorldFromCameraRotation(view).transpose() * Eigen::Vector3d::UnitZ();
+  plane.d = view.height_m;
+  return plane;
+}
+
 cv::Mat RenderDepth(const PinholeCamera& camera, const SyntheticView& view,
                     const std::vector<SyntheticWall>& walls, bool with_floor, double max_depth_m,
                     double noise_sigma_m, unsigned seed) {

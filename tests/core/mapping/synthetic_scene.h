@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/common/camera.h"
+#include "core/common/floor.h"
 
 namespace sightline::testing {
 
@@ -32,6 +33,9 @@ PinholeCamera KinectCamera(int width = 320, int height = 240);
 
 // world_from_camera rotation of a view (camera x right, y down, z forward).
 Eigen::Matrix3d WorldFromCameraRotation(const SyntheticView& view);
+
+// The floor plane (z = 0) in the camera frame of a view.
+FloorPlane FloorPlaneOf(const SyntheticView& view);
 
 // Renders metric depth (CV_32FC1, NaN where nothing within max_depth_m is hit). `noise_sigma_m`
 // adds depth noise sigma(z) = noise_sigma_m * z^2 (Kinect-like), seeded by `seed`.
