@@ -53,6 +53,7 @@ KeyFrameStats LocalMapper::ProcessKeyFrame(const std::shared_ptr<KeyFrame>& keyf
   stats.ba_outliers = LocalBundle(&stats);
   stats.bundle_ms = (HostTimeS() - ba_start) * 1000.0;
   stats.culled = Cull(stats.keyframe);
+  MapChanged();
   stats.mapping_ms = (HostTimeS() - start) * 1000.0;
   return stats;
 }
@@ -163,9 +164,16 @@ int LocalMapper::TriangulateWith(KeyFrame* current, const KeyFrame& neighbour) {
 }
 
 int LocalMapper::LocalBundle(KeyFrameStats* stats) {
+  const int n = static_cast<int>(map_->keyframes().size());
+  IdleBundleStats window =
+      AdjustWindow(std::max(0, n - options_.local_window), n, options_.ba_iterations);
+  stats->bundle = window.bundle;
+  return window.removed;
+}
+
+IdleBundleStats LocalMapper::AdjustWindow(int first_free, int end, int iterations) {
   const auto& keyframes = map_->keyframes();
-  const int n = static_cast<int>(keyframes.size());
-  const int first_free = std::max(0, n - options_.local_window);
+  IdleBundleStats stats;
   BundleProblem problem;
   std::unordered_map<int64_t, int> pose_index, point_index;
   auto add_pose = [&](const KeyFrame& k, bool fixed) {
@@ -175,7 +183,7 @@ int LocalMapper::LocalBundle(KeyFrameStats* stats) {
     problem.poses.push_back({k.id, k.camera_from_map, fixed || k.id == 0});
     return static_cast<int>(problem.poses.size()) - 1;
   };
-  for (int k = first_free; k < n; ++k) {
+  for (int k = first_free; k < end; ++k) {
     add_pose(*keyframes[k], false);
     for (int64_t id : keyframes[k]->point_ids) {
       if (id < 0 || point_index.count(id)) continue;
@@ -185,19 +193,29 @@ int LocalMapper::LocalBundle(KeyFrameStats* stats) {
       problem.points.push_back({id, p->position});
     }
   }
+  // Observations behind their camera (left by a revisit's correction) would make the solver
+  // fail on the whole window: they are dropped instead.
+  std::vector<std::pair<int64_t, int64_t>> behind;
   for (const auto& point : problem.points) {
     const MapPoint* p = map_->FindPoint(point.id);
     for (const auto& [kf, index] : p->observations) {
       const KeyFrame& k = *keyframes[kf];
-      const int pose = add_pose(k, kf < first_free);
+      if ((k.camera_from_map * point.position).z() <= 1e-6) {
+        behind.emplace_back(point.id, kf);
+        continue;
+      }
+      const int pose = add_pose(k, kf < first_free || kf >= end);
       problem.observations.push_back({pose, point_index[point.id], k.features.pixels[index],
                                       Scale(scale_factor_, k.features.keypoints[index])});
     }
   }
-  stats->bundle = SolveBundle(camera_, &problem, options_.ba_iterations, options_.ba_huber_px);
-  if (!stats->bundle.usable) return 0;
-  int removed = 0;
+  stats.keyframes = end - first_free;
+  stats.points = static_cast<int>(problem.points.size());
+  stats.bundle = SolveBundle(camera_, &problem, iterations, options_.ba_huber_px);
   std::lock_guard<std::mutex> lock(*mutex_);
+  for (const auto& [point, keyframe] : behind) map_->RemoveObservation(point, keyframe);
+  stats.removed = static_cast<int>(behind.size());
+  if (!stats.bundle.usable) return stats;
   for (const auto& pose : problem.poses) {
     if (!pose.fixed) map_->FindKeyFrame(pose.keyframe)->camera_from_map = pose.camera_from_map;
   }
@@ -208,10 +226,28 @@ int LocalMapper::LocalBundle(KeyFrameStats* stats) {
     const double limit = 2.0 * options_.max_reprojection_px * o.level_scale;
     if (ReprojectionErrorPx(camera_, problem, o) > limit) {
       map_->RemoveObservation(problem.points[o.point].id, problem.poses[o.pose].keyframe);
-      ++removed;
+      ++stats.removed;
     }
   }
-  return removed;
+  return stats;
+}
+
+void LocalMapper::MapChanged() {
+  const int n = static_cast<int>(map_->keyframes().size());
+  const int step = std::max(1, options_.idle_ba_window / 2);
+  idle_slices_left_ = n < 3 ? 0 : (n + step - 1) / step;
+}
+
+IdleBundleStats LocalMapper::IdleBundle(int iterations) {
+  const int n = static_cast<int>(map_->keyframes().size());
+  if (idle_slices_left_ <= 0 || iterations <= 0 || n < 3) return {};
+  // Slices overlap by half a window, so every keyframe is optimised with both neighbours.
+  const int window = std::min(n, options_.idle_ba_window);
+  const int first = std::min(idle_cursor_, n - window);
+  IdleBundleStats stats = AdjustWindow(first, first + window, iterations);
+  idle_cursor_ = first + window >= n ? 0 : first + std::max(1, window / 2);
+  --idle_slices_left_;
+  return stats;
 }
 
 int LocalMapper::Cull(int64_t current_keyframe) {
@@ -236,6 +272,7 @@ BundleSummary LocalMapper::FinalBundle(int iterations) {
   // Points made late in the run are observed only by the keyframes near them; finding them in
   // every keyframe first links the whole run, so the adjustment can take out the scale drift.
   BundleSummary summary;
+  int iterations_done = 0;
   for (int round = 0; round < 2; ++round) {
     std::vector<KeyFrame*> all;
     for (const auto& k : map_->keyframes()) all.push_back(k.get());
@@ -247,7 +284,9 @@ BundleSummary LocalMapper::FinalBundle(int iterations) {
       FuseNeighbourPoints(k, others);
     }
     summary = SolveGlobal(iterations, 0, true);
+    iterations_done += summary.iterations;
   }
+  summary.iterations = iterations_done;  // Of both rounds.
   return summary;
 }
 

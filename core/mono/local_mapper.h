@@ -21,13 +21,23 @@ namespace sightline {
 // What processing one keyframe did.
 struct KeyFrameStats {
   int64_t keyframe = -1;
-  int new_points = 0;   // Triangulated.
-  int fused = 0;        // Observations of existing points added.
-  int culled = 0;       // Points removed.
-  int ba_outliers = 0;  // Observations removed after bundle adjustment.
+  int new_points = 0;       // Triangulated.
+  int fused = 0;            // Observations of existing points added.
+  int culled = 0;           // Points removed.
+  int ba_outliers = 0;      // Observations removed after bundle adjustment.
+  int64_t revisit_of = -1;  // The old keyframe a revisit matched it with, or -1.
+  int merged = 0;           // Its points merged with old points (revisit).
   BundleSummary bundle;
   double mapping_ms = 0;  // Everything.
   double bundle_ms = 0;   // Bundle adjustment alone.
+};
+
+// What one idle-time adjustment slice did.
+struct IdleBundleStats {
+  int keyframes = 0;     // Poses optimised (0: nothing to do).
+  int points = 0;        // Points optimised.
+  int removed = 0;       // Observations removed as outliers afterwards.
+  BundleSummary bundle;  // Iterations and reprojection RMS before / after.
 };
 
 class LocalMapper {
@@ -43,21 +53,36 @@ class LocalMapper {
   BundleSummary GlobalBundle(double baseline);
 
   // Bundle adjustment of every keyframe and point with the first keyframe fixed (PTAM's global
-  // adjustment, run when the run stops), rescaled so the keyframes' path length is unchanged:
-  // the map keeps its units and the tracked poses stay comparable.
+  // adjustment, run when the run stops on a small map), rescaled so the keyframes' path length
+  // is unchanged: the map keeps its units and the tracked poses stay comparable. The summary's
+  // iterations are those of both rounds.
   BundleSummary FinalBundle(int iterations);
+
+  // One slice of PTAM's global adjustment for idle time: the poses of idle_ba_window
+  // consecutive keyframes (taken in turn over the map) and every point they see, the other
+  // keyframes that see those points fixed; `iterations` bound the work. Slices are only run
+  // while the map changed since a whole pass (idle_slices_left() > 0).
+  IdleBundleStats IdleBundle(int iterations);
+  // Slices still to run for one pass over the map since it last changed.
+  int idle_slices_left() const { return idle_slices_left_; }
+  // The map changed (a keyframe or a revisit): one more pass over it is due.
+  void MapChanged();
 
  private:
   int TriangulateWith(KeyFrame* current, const KeyFrame& neighbour);
   int FuseNeighbourPoints(KeyFrame* current, const std::vector<KeyFrame*>& neighbours);
   // Local BA over the window; returns the observations removed as outliers.
   int LocalBundle(KeyFrameStats* stats);
+  // Bundle adjustment of keyframes [first_free, end) and every point they see, written back.
+  IdleBundleStats AdjustWindow(int first_free, int end, int iterations);
   int Cull(int64_t current_keyframe);
   // Global bundle adjustment written back to the map, rescaled so the first two keyframes are
   // `baseline` apart or, with keep_path_length, so the keyframes' path length is unchanged.
   BundleSummary SolveGlobal(int iterations, double baseline, bool keep_path_length);
 
   MonoMappingOptions options_;
+  int idle_cursor_ = 0;       // First keyframe of the next idle slice.
+  int idle_slices_left_ = 0;  // Slices left in the current pass.
   PinholeCamera camera_;
   double scale_factor_;
   SlamMap* map_;

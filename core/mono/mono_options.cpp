@@ -203,6 +203,27 @@ bool MonoMappingOptions::IsValid(std::string* error) const {
   if (final_ba_iterations < 0)
     return Invalid(error, "mono.mapping.final_ba_iterations must be >= 0");
   if (!(ba_huber_px > 0)) return Invalid(error, "mono.mapping.ba_huber_px must be > 0");
+  if (!(local_map_distance >= 0)) {
+    return Invalid(error, "mono.mapping.local_map_distance must be >= 0");
+  }
+  if (loop_min_age < 1) return Invalid(error, "mono.mapping.loop_min_age must be >= 1");
+  if (!(loop_search_radius >= 0)) {
+    return Invalid(error, "mono.mapping.loop_search_radius must be >= 0");
+  }
+  if (loop_min_inliers < 10) return Invalid(error, "mono.mapping.loop_min_inliers must be >= 10");
+  if (idle_ba_window < 2) return Invalid(error, "mono.mapping.idle_ba_window must be >= 2");
+  if (idle_ba_iterations < 0) {
+    return Invalid(error, "mono.mapping.idle_ba_iterations must be >= 0");
+  }
+  if (idle_ba_every_frames < 1) {
+    return Invalid(error, "mono.mapping.idle_ba_every_frames must be >= 1");
+  }
+  if (final_ba_max_keyframes < 3) {
+    return Invalid(error, "mono.mapping.final_ba_max_keyframes must be >= 3");
+  }
+  if (final_ba_max_slices < 0) {
+    return Invalid(error, "mono.mapping.final_ba_max_slices must be >= 0");
+  }
   if (!(min_found_ratio >= 0 && min_found_ratio < 1)) {
     return Invalid(error, "mono.mapping.min_found_ratio must lie in [0, 1)");
   }
@@ -251,7 +272,32 @@ OptionTable<MonoMappingOptions> MonoMappingOptions::Describe() {
            "Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core "
            "it shares with mapping, but starves mapping on a loaded machine.")
       .Int("final_ba_iterations", &O::final_ba_iterations, "iterations", 0, 1000, 5,
-           "Global bundle adjustment of every keyframe and point when the run stops (0 = none).");
+           "Global bundle adjustment of every keyframe and point when the run stops (0 = none).")
+      .Double("local_map_distance", &O::local_map_distance, "x mean depth", 0, 100, 0.1,
+              "Once a revisit links the map to old keyframes, those whose centre is this close "
+              "to the camera (relative to the mean depth) join the recent ones in the map "
+              "tracked against, so the place is tracked on its old points (0 = recent keyframes "
+              "only).")
+      .Int("loop_min_age", &O::loop_min_age, "keyframes", 1, 100000, 1,
+           "A new keyframe looks for a revisit among keyframes at least this many keyframes "
+           "older.")
+      .Double("loop_search_radius", &O::loop_search_radius, "x mean depth", 0, 100, 0.1,
+              "Old keyframes this close to a new keyframe (relative to the mean depth) are tried "
+              "as a revisit (0 = no revisit search).")
+      .Int("loop_min_inliers", &O::loop_min_inliers, "points", 10, 10000, 5,
+           "Inliers against the old map that confirm a revisit; the map since then is then "
+           "bent onto the old one.")
+      .Int("idle_ba_window", &O::idle_ba_window, "keyframes", 2, 1000, 1,
+           "Keyframes whose poses one slice of the idle-time global adjustment optimises.")
+      .Int("idle_ba_iterations", &O::idle_ba_iterations, "iterations", 0, 1000, 1,
+           "Iterations of one idle-time adjustment slice (0 = no adjustment in idle time).")
+      .Int("idle_ba_every_frames", &O::idle_ba_every_frames, "frames", 1, 10000, 1,
+           "Synchronous mode: frames without a new keyframe between two idle-time slices.")
+      .Int("final_ba_max_keyframes", &O::final_ba_max_keyframes, "keyframes", 3, 100000, 1,
+           "Maps with up to this many keyframes get the full global adjustment at stop; larger "
+           "ones get at most final_ba_max_slices slices of the idle-time adjustment.")
+      .Int("final_ba_max_slices", &O::final_ba_max_slices, "slices", 0, 1000, 1,
+           "Idle-time adjustment slices run at stop on a large map (bounds the stop time).");
 }
 
 bool MonoSlamOptions::IsValid(std::string* error) const {

@@ -92,6 +92,16 @@ struct MonoMappingOptions {
   bool threaded = false;  // Mapping on its own thread, or inline (deterministic; default).
   int thread_nice = 0;    // Threaded mode: the mapping thread's niceness (Linux).
   int final_ba_iterations = 30;  // Global bundle adjustment when the run stops (0 = none).
+  // Bounded map (revisits) and bundle adjustment in idle time (PTAM):
+  double local_map_distance = 1.0;  // Linked old keyframes this close (x mean depth) are tracked.
+  int loop_min_age = 40;            // Keyframes at least this much older are searched ...
+  double loop_search_radius = 2.0;  // ... within this distance (x mean depth) for a revisit.
+  int loop_min_inliers = 80;        // Inliers against the old map that confirm a revisit.
+  int idle_ba_window = 20;          // Keyframes optimised by one idle-time adjustment slice.
+  int idle_ba_iterations = 5;       // Iterations of one slice (0 = no idle-time adjustment).
+  int idle_ba_every_frames = 10;    // Synchronous mode: frames without a keyframe between slices.
+  int final_ba_max_keyframes = 80;  // Larger maps get bounded slices at stop, not a full one ...
+  int final_ba_max_slices = 3;      // ... at most this many.
 
   bool IsValid(std::string* error) const;
   static OptionTable<MonoMappingOptions> Describe();

@@ -1,8 +1,8 @@
 #include "core/mono/mono_slam.h"
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
-#include <set>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -39,6 +39,7 @@ Status MonoSlam::Configure(const PinholeCamera& camera, TimingStats* timing) {
   initializer_ = std::make_unique<TwoViewInitializer>(options_.init, camera_, factor);
   tracker_ = std::make_unique<Tracker>(options_.tracking, camera_, factor);
   mapper_ = std::make_unique<LocalMapper>(options_.mapping, camera_, factor, &map_, &map_mutex_);
+  loop_closer_ = std::make_unique<LoopCloser>(options_.mapping, options_.tracking, camera_, factor);
   configured_ = true;
   Reset();
   return Status::Ok();
@@ -66,9 +67,102 @@ void MonoSlam::Stop() {
   final_bundle_done_ = true;
   FlushPointCounts(true);
   const double start = HostTimeS();
-  mapper_->FinalBundle(options_.mapping.final_ba_iterations);
+  const MonoMappingOptions& o = options_.mapping;
+  const int keyframes = static_cast<int>(map_.keyframes().size());
+  IdleBundleTotals stop;
+  if (keyframes <= o.final_ba_max_keyframes) {
+    // A small map: the full global adjustment (two rounds), as PTAM does it.
+    const BundleSummary summary = mapper_->FinalBundle(o.final_ba_iterations);
+    stop.stop_full = true;
+    stop.stop_keyframes_adjusted = 2 * keyframes;
+    stop.stop_iterations = summary.iterations;
+    stop.stop_longest_step_ms = (HostTimeS() - start) * 1000.0;
+  } else {
+    // A large map: what is left of the idle-time pass, at most final_ba_max_slices slices.
+    for (int i = 0; i < o.final_ba_max_slices && mapper_->idle_slices_left() > 0; ++i) {
+      const double step_start = HostTimeS();
+      const IdleBundleStats slice = mapper_->IdleBundle(o.final_ba_iterations);
+      ++stop.stop_slices;
+      stop.stop_keyframes_adjusted += slice.keyframes;
+      stop.stop_iterations += slice.bundle.iterations;
+      stop.stop_longest_step_ms =
+          std::max(stop.stop_longest_step_ms, (HostTimeS() - step_start) * 1000.0);
+    }
+  }
   if (timing_) timing_->Add("final_bundle_adjustment", (HostTimeS() - start) * 1000.0);
+  {
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    idle_totals_.stop_full = stop.stop_full;
+    idle_totals_.stop_slices = stop.stop_slices;
+    idle_totals_.stop_keyframes_adjusted = stop.stop_keyframes_adjusted;
+    idle_totals_.stop_iterations = stop.stop_iterations;
+    idle_totals_.stop_longest_step_ms = stop.stop_longest_step_ms;
+  }
   PublishSnapshot();
+}
+
+int MonoSlam::revisits() const {
+  std::lock_guard<std::mutex> lock(snapshot_mutex_);
+  return static_cast<int>(corrections_.size());
+}
+
+IdleBundleTotals MonoSlam::idle_bundle() const {
+  std::lock_guard<std::mutex> lock(snapshot_mutex_);
+  return idle_totals_;
+}
+
+void MonoSlam::RunIdleSlice() {
+  const MonoMappingOptions& o = options_.mapping;
+  if (o.idle_ba_iterations <= 0 || mapper_->idle_slices_left() <= 0) return;
+  const double start = HostTimeS();
+  const IdleBundleStats slice = mapper_->IdleBundle(o.idle_ba_iterations);
+  if (slice.keyframes == 0) return;
+  if (timing_) timing_->Add("idle_bundle_adjustment", (HostTimeS() - start) * 1000.0);
+  {
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    if (idle_totals_.slices == 0) idle_totals_.first_initial_rms_px = slice.bundle.initial_rms_px;
+    ++idle_totals_.slices;
+    idle_totals_.keyframes_adjusted += slice.keyframes;
+    idle_totals_.iterations += slice.bundle.iterations;
+    idle_totals_.last_final_rms_px = slice.bundle.final_rms_px;
+  }
+  PublishSnapshot();
+}
+
+void MonoSlam::ApplyCorrections() {
+  std::lock_guard<std::mutex> lock(snapshot_mutex_);
+  for (; corrections_applied_ < corrections_.size(); ++corrections_applied_) {
+    const MapCorrection& c = corrections_[corrections_applied_];
+    camera_from_map_ = c.CorrectPose(camera_from_map_);
+    velocity_.translation() *= c.scale;
+  }
+}
+
+void MonoSlam::RefreshLocalPoints(double mean_depth) {
+  const double radius = options_.mapping.local_map_distance * mean_depth;
+  Eigen::Vector3d built;
+  {
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    local_camera_ = camera_from_map_;
+    local_radius_ = radius;
+    built = local_built_at_;
+  }
+  const Eigen::Vector3d centre = camera_from_map_.inverse().translation();
+  if (radius <= 0 || (centre - built).norm() < 0.25 * radius) return;
+  std::unique_lock<std::mutex> map_lock(map_mutex_, std::defer_lock);
+  if (options_.mapping.threaded) {
+    if (!map_lock.try_lock()) return;  // Mapping holds the map: next frame.
+  } else {
+    map_lock.lock();
+  }
+  std::vector<int64_t> keyframes;
+  auto local = std::make_shared<const std::vector<LocalPoint>>(
+      LocalPointsOf(camera_from_map_, radius, &keyframes));
+  map_lock.unlock();
+  std::lock_guard<std::mutex> lock(snapshot_mutex_);
+  local_points_ = std::move(local);
+  local_keyframes_ = std::move(keyframes);
+  local_built_at_ = centre;
 }
 
 void MonoSlam::FlushPointCounts(bool wait) {
@@ -94,9 +188,20 @@ void MonoSlam::MappingLoop() {
   // Tracking must keep the frame rate; mapping takes what the core has left.
   setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), options_.mapping.thread_nice);
 #endif
-  while (std::optional<std::shared_ptr<KeyFrame>> keyframe = keyframe_queue_->Pop()) {
-    MapKeyFrame(std::move(*keyframe));
-    mapping_busy_ = false;
+  for (;;) {
+    // Idle time (no keyframe waiting) goes to slices of the global adjustment while a pass over
+    // the changed map is due; otherwise the thread sleeps until the next keyframe.
+    const bool idle_work = options_.mapping.idle_ba_iterations > 0 && !mapping_paused_ &&
+                           mapper_->idle_slices_left() > 0;
+    std::optional<std::shared_ptr<KeyFrame>> keyframe =
+        idle_work ? keyframe_queue_->TryPop() : keyframe_queue_->Pop();
+    if (keyframe) {
+      MapKeyFrame(std::move(*keyframe));
+      mapping_busy_ = false;
+      continue;
+    }
+    if (!idle_work || keyframe_queue_->IsShutdown()) break;
+    RunIdleSlice();
   }
 }
 
@@ -111,7 +216,14 @@ void MonoSlam::Reset() {
     snapshot_ = std::make_shared<MapSnapshot>();
     local_points_ = std::make_shared<std::vector<LocalPoint>>();
     keyframe_history_.clear();
+    corrections_.clear();
+    local_keyframes_.clear();
+    idle_totals_ = {};
+    local_camera_ = Eigen::Isometry3d::Identity();
+    local_radius_ = 0;
+    local_built_at_ = Eigen::Vector3d::Zero();
   }
+  corrections_applied_ = 0;
   if (initializer_)
     initializer_ = std::make_unique<TwoViewInitializer>(options_.init, camera_,
                                                         options_.features.scale_factor);
@@ -142,14 +254,25 @@ std::vector<KeyFrameStats> MonoSlam::KeyFrameHistory() const {
 void MonoSlam::PublishSnapshot() {
   std::shared_ptr<const MapSnapshot> snapshot;
   std::shared_ptr<const std::vector<LocalPoint>> local;
+  Eigen::Isometry3d camera;
+  double radius = 0;
+  {
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    camera = local_camera_;
+    radius = local_radius_;
+  }
+  std::vector<int64_t> keyframes;
   {
     std::lock_guard<std::mutex> lock(map_mutex_);
     snapshot = SnapshotOf(map_);
-    local = std::make_shared<const std::vector<LocalPoint>>(LocalPointsOf());
+    local =
+        std::make_shared<const std::vector<LocalPoint>>(LocalPointsOf(camera, radius, &keyframes));
   }
   std::lock_guard<std::mutex> lock(snapshot_mutex_);
   snapshot_ = std::move(snapshot);
   local_points_ = std::move(local);
+  local_keyframes_ = std::move(keyframes);
+  local_built_at_ = camera.inverse().translation();
 }
 
 std::shared_ptr<const std::vector<LocalPoint>> MonoSlam::LocalPoints() const {
@@ -157,18 +280,51 @@ std::shared_ptr<const std::vector<LocalPoint>> MonoSlam::LocalPoints() const {
   return local_points_;
 }
 
-std::vector<LocalPoint> MonoSlam::LocalPointsOf() const {
+std::vector<LocalPoint> MonoSlam::LocalPointsOf(const Eigen::Isometry3d& camera_from_map,
+                                                double radius,
+                                                std::vector<int64_t>* keyframe_ids) const {
   // The points seen by the most recent keyframes (PTAM projects the whole map; recent
-  // keyframes' points are what the camera can see and keep tracking cost bounded).
-  constexpr int kLocalKeyFrames = 12;
-  std::set<int64_t> ids;
+  // keyframes' points are what the camera can see and keep tracking cost bounded), and by the
+  // old keyframes nearest the camera that look the same way: a revisited place is tracked on
+  // the points mapped there before instead of being mapped again.
+  constexpr int kLocalKeyFrames = 12, kOldKeyFrames = 12;
   const auto& keyframes = map_.keyframes();
-  for (int k = static_cast<int>(keyframes.size()) - 1;
-       k >= 0 && k >= static_cast<int>(keyframes.size()) - kLocalKeyFrames; --k) {
-    for (int64_t id : keyframes[k]->point_ids) {
-      if (id >= 0) ids.insert(id);
+  const int n = static_cast<int>(keyframes.size());
+  std::vector<int> chosen;
+  for (int k = n - 1; k >= 0 && k >= n - kLocalKeyFrames; --k) chosen.push_back(k);
+  // Old keyframes join once the newest keyframe is linked to them (it observes old points,
+  // as after a revisit): before that the old map lies where drift put it, and its points
+  // would only be mismatched.
+  const int old_end = n - kLocalKeyFrames - options_.mapping.loop_min_age;
+  int old_points = 0;
+  if (old_end > 0) {
+    for (int64_t id : keyframes.back()->point_ids) {
+      const MapPoint* p = id >= 0 ? map_.FindPoint(id) : nullptr;
+      if (p != nullptr && p->first_keyframe < old_end) ++old_points;
     }
   }
+  if (radius > 0 && old_end > 0 && old_points >= options_.mapping.loop_min_inliers / 2) {
+    const Eigen::Vector3d centre = camera_from_map.inverse().translation();
+    const Eigen::Vector3d axis = camera_from_map.rotation().row(2).transpose();
+    std::vector<std::pair<double, int>> near;
+    for (int k = 0; k < old_end; ++k) {
+      const double d = (keyframes[k]->CentreInMap() - centre).norm();
+      if (d > radius || keyframes[k]->camera_from_map.rotation().row(2).dot(axis) < 0.5) continue;
+      near.emplace_back(d, k);
+    }
+    const size_t count = std::min<size_t>(kOldKeyFrames, near.size());
+    std::partial_sort(near.begin(), near.begin() + count, near.end());
+    for (size_t i = 0; i < count; ++i) chosen.push_back(near[i].second);
+  }
+  keyframe_ids->assign(chosen.begin(), chosen.end());  // Ids are indices.
+  std::vector<int64_t> ids;
+  for (int k : chosen) {
+    for (int64_t id : keyframes[k]->point_ids) {
+      if (id >= 0) ids.push_back(id);
+    }
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::vector<LocalPoint> points;
   points.reserve(ids.size());
   for (int64_t id : ids) {
@@ -254,13 +410,30 @@ bool MonoSlam::TryInitialise(const FrameFeatures& features, const FrameStamp& st
 }
 
 bool MonoSlam::TryRelocalise(const FrameFeatures& features, TrackOutcome* outcome) {
+  // The keyframes of the local map first (the recent ones, newest first, then old ones near
+  // the camera on a revisit), then every other keyframe, newest first.
   std::vector<std::shared_ptr<KeyFrame>> keyframes;
+  std::vector<int64_t> local_ids;
+  {
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    local_ids = local_keyframes_;
+  }
   {
     std::lock_guard<std::mutex> lock(map_mutex_);
-    keyframes = map_.keyframes();
+    const auto& all = map_.keyframes();
+    std::vector<bool> taken(all.size(), false);
+    for (int64_t id : local_ids) {
+      if (id < static_cast<int64_t>(all.size()) && !taken[id]) {
+        keyframes.push_back(all[id]);
+        taken[id] = true;
+      }
+    }
+    for (auto it = all.rbegin(); it != all.rend(); ++it) {
+      if (!taken[(*it)->id]) keyframes.push_back(*it);
+    }
   }
   const std::shared_ptr<const std::vector<LocalPoint>> all = LocalPoints();
-  for (auto it = keyframes.rbegin(); it != keyframes.rend(); ++it) {
+  for (auto it = keyframes.begin(); it != keyframes.end(); ++it) {
     std::vector<LocalPoint> seen;
     {
       std::lock_guard<std::mutex> lock(map_mutex_);
@@ -316,10 +489,29 @@ bool MonoSlam::NeedKeyFrame(const TrackOutcome& outcome) const {
 }
 
 void MonoSlam::MapKeyFrame(std::shared_ptr<KeyFrame> keyframe) {
-  KeyFrameStats stats = mapper_->ProcessKeyFrame(std::move(keyframe));
+  {
+    // Threaded mode: tracked before a revisit bent the map.
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    for (size_t i = keyframe->corrections_seen; i < corrections_.size(); ++i) {
+      keyframe->camera_from_map = corrections_[i].CorrectPose(keyframe->camera_from_map);
+    }
+  }
+  KeyFrameStats stats = mapper_->ProcessKeyFrame(keyframe);
+  const double revisit_start = HostTimeS();
+  if (std::optional<LoopMatch> loop = loop_closer_->Detect(map_, *keyframe)) {
+    {
+      std::lock_guard<std::mutex> lock(map_mutex_);
+      stats.merged = loop_closer_->Apply(*loop, &map_);
+    }
+    stats.revisit_of = loop->partner;
+    mapper_->MapChanged();
+    std::lock_guard<std::mutex> lock(snapshot_mutex_);
+    corrections_.push_back(loop->correction);
+  }
   if (timing_) {
     timing_->Add("mapping", stats.mapping_ms);
     timing_->Add("bundle_adjustment", stats.bundle_ms);
+    timing_->Add("revisit_search", (HostTimeS() - revisit_start) * 1000.0);
   }
   PublishSnapshot();
   std::lock_guard<std::mutex> lock(snapshot_mutex_);
@@ -366,6 +558,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
     result->tracked = TryInitialise(features, frame.stamp, &stats);
     result->quality = result->tracked ? TrackingQuality::kGood : TrackingQuality::kInitialising;
   } else {
+    ApplyCorrections();
     TrackOutcome outcome = TrackFrame(features, &stats);
     const TrackingQuality quality = tracker_->QualityOf(outcome);
     stats.matches = static_cast<int>(outcome.matches.size());
@@ -379,8 +572,12 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
       velocity_ = Eigen::Isometry3d::Identity();
       stats.status = "lost (" + std::to_string(outcome.inliers) + " inliers); relocalising";
     } else {
+      // A relocalisation right after a tracked frame (tracking fell behind in a fast turn)
+      // keeps the motion, so the next frame is predicted where the camera is going.
+      if (!stats.relocalised || !lost_) {
+        velocity_ = outcome.camera_from_map * camera_from_map_.inverse();
+      }
       lost_ = false;
-      if (!stats.relocalised) velocity_ = outcome.camera_from_map * camera_from_map_.inverse();
       camera_from_map_ = outcome.camera_from_map;
       result->tracked = true;
       stats.status = stats.relocalised ? "relocalised" : TrackingQualityName(quality);
@@ -399,6 +596,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
         new_keyframe->frame_index = frame.stamp.sequence_id;
         new_keyframe->time_s = frame.stamp.sensor_time_s;
         new_keyframe->camera_from_map = camera_from_map_;
+        new_keyframe->corrections_seen = static_cast<int>(corrections_applied_);
         new_keyframe->point_ids.assign(features.size(), -1);
         for (const PointMatch& m : outcome.matches) {
           if (m.inlier) new_keyframe->point_ids[m.keypoint] = m.point;
@@ -407,6 +605,7 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
         keyframe_inliers_ = outcome.inliers;
         stats.new_keyframe = true;
       }
+      RefreshLocalPoints(outcome.mean_depth);
     }
   }
   stats.tracking_ms = (HostTimeS() - start) * 1000.0;
@@ -414,7 +613,14 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
     timing_->Add("tracking", stats.tracking_ms);
     timing_->Add("tracking_cpu", ThreadCpuMs() - start_cpu);
   }
-  if (new_keyframe) HandOver(std::move(new_keyframe));
+  if (new_keyframe) {
+    HandOver(std::move(new_keyframe));
+  } else if (!options_.mapping.threaded && result->tracked && !mapping_paused_ &&
+             frames_since_keyframe_ > 0 &&
+             frames_since_keyframe_ % options_.mapping.idle_ba_every_frames == 0) {
+    RunIdleSlice();  // Synchronous mode: the frames without a keyframe are the idle time.
+  }
+  if (initialised_) ApplyCorrections();  // A revisit found with this keyframe moves it too.
   result->map_from_camera = camera_from_map_.inverse();
   result->map = Snapshot();
   stats.map_points = static_cast<int>(result->map->points.size());

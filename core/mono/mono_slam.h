@@ -7,6 +7,12 @@
 // Two modes: synchronous (mono.mapping.threaded = false; mapping runs inline after each new
 // keyframe, deterministic; the default of every front end) and threaded (mapping on its own
 // thread, fed through a bounded queue; mono.mapping.threaded). Both stop cleanly.
+//
+// Bounded map (PTAM's and ORB-SLAM's habits): a new keyframe that comes back to mapped space
+// after a long way round is matched against the old keyframes there (loop_closer.h); the map
+// since then is bent onto the old one, and tracking continues on the old points, so a revisit
+// adds almost no keyframes. Idle time (the mapping thread with no keyframe waiting, or frames
+// without a keyframe in synchronous mode) runs the global adjustment in bounded slices.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -26,6 +32,7 @@
 #include "core/common/timing.h"
 #include "core/mono/features.h"
 #include "core/mono/local_mapper.h"
+#include "core/mono/loop_closer.h"
 #include "core/mono/mono_options.h"
 #include "core/mono/mono_types.h"
 #include "core/mono/slam_map.h"
@@ -33,6 +40,21 @@
 #include "core/mono/two_view_initializer.h"
 
 namespace sightline {
+
+// Bundle adjustment outside keyframe mapping: in idle time (slices) and when the run stops.
+struct IdleBundleTotals {
+  int slices = 0;                   // Idle-time slices run.
+  int keyframes_adjusted = 0;       // Keyframe poses optimised, summed over slices.
+  int iterations = 0;               // Solver iterations, summed.
+  double first_initial_rms_px = 0;  // Reprojection RMS before the first slice ...
+  double last_final_rms_px = 0;     // ... and after the latest.
+  // Stop():
+  bool stop_full = false;           // The full global adjustment ran (small map).
+  int stop_slices = 0;              // Or this many slices.
+  int stop_keyframes_adjusted = 0;  // Keyframe poses optimised at stop (each slice or round).
+  int stop_iterations = 0;          // Solver iterations at stop.
+  double stop_longest_step_ms = 0;  // Longest single step at stop (a slice or the full one).
+};
 
 // The SLAM system.
 //
@@ -65,7 +87,9 @@ class MonoSlam {
   // Paused mapping adds no keyframes; tracking continues on the map as it is.
   void SetMappingPaused(bool paused) { mapping_paused_ = paused; }
   // Waits for queued mapping work and stops the mapping thread (threaded mode), then runs the
-  // global bundle adjustment of mono.mapping.final_ba_iterations once per map. Idempotent.
+  // global bundle adjustment of mono.mapping.final_ba_iterations once per map: in full on a
+  // small map (final_ba_max_keyframes), else at most final_ba_max_slices slices of what the
+  // idle-time adjustment has left, so stopping is bounded. Idempotent.
   void Stop();
 
   std::shared_ptr<const MapSnapshot> Snapshot() const;
@@ -75,11 +99,24 @@ class MonoSlam {
   int relocalisations() const { return relocalisations_; }
   const std::string& init_model() const { return init_model_; }
   const MonoSlamOptions& options() const { return options_; }
+  // Revisits of mapped space found and applied (loop corrections).
+  int revisits() const;
+  // What the idle-time and stop-time adjustments did (read after Stop() in threaded mode).
+  IdleBundleTotals idle_bundle() const;
 
  private:
   bool TryInitialise(const FrameFeatures& features, const FrameStamp& stamp, MonoFrameStats* stats);
-  // The points seen by the most recent keyframes (call with the map lock held).
-  std::vector<LocalPoint> LocalPointsOf() const;
+  // The points seen by the most recent keyframes and, once linked to them, by old keyframes
+  // near the camera (call with the map lock held); `keyframe_ids` receives the keyframes.
+  std::vector<LocalPoint> LocalPointsOf(const Eigen::Isometry3d& camera_from_map, double radius,
+                                        std::vector<int64_t>* keyframe_ids) const;
+  // Rebuilds the published local map around the camera when it moved away from where the
+  // last one was built (skipped in threaded mode while mapping holds the map).
+  void RefreshLocalPoints(double mean_depth);
+  // Applies revisit corrections the mapper made since the last call to the tracked pose.
+  void ApplyCorrections();
+  // One idle-time adjustment slice and the snapshot it changed.
+  void RunIdleSlice();
   std::shared_ptr<const std::vector<LocalPoint>> LocalPoints() const;  // The published copy.
   void StopThread();
   // Applies the visible / found counts of tracked frames if the map lock is free (it always is
@@ -107,6 +144,7 @@ class MonoSlam {
   mutable std::mutex map_mutex_;  // Guards map_ (see local_mapper.h for who locks when).
   SlamMap map_;
   std::unique_ptr<LocalMapper> mapper_;
+  std::unique_ptr<LoopCloser> loop_closer_;
 
   // Threaded mode.
   std::unique_ptr<BoundedQueue<std::shared_ptr<KeyFrame>>> keyframe_queue_;
@@ -120,6 +158,13 @@ class MonoSlam {
   std::shared_ptr<const MapSnapshot> snapshot_;
   std::shared_ptr<const std::vector<LocalPoint>> local_points_;
   std::vector<KeyFrameStats> keyframe_history_;
+  std::vector<MapCorrection> corrections_;  // Revisit corrections, in order.
+  std::vector<int64_t> local_keyframes_;    // Keyframes of local_points_, most relevant first.
+  IdleBundleTotals idle_totals_;
+  // The camera and radius the local map is built around, and where the published one was.
+  Eigen::Isometry3d local_camera_ = Eigen::Isometry3d::Identity();
+  double local_radius_ = 0;
+  Eigen::Vector3d local_built_at_ = Eigen::Vector3d::Zero();
 
   // Tracking state (tracking thread only).
   bool initialised_ = false;
@@ -138,6 +183,7 @@ class MonoSlam {
   int keyframe_inliers_ = 0;
   int lost_frames_ = 0;
   int relocalisations_ = 0;
+  size_t corrections_applied_ = 0;  // Of corrections_, applied to camera_from_map_.
 };
 
 }  // namespace sightline

@@ -48,6 +48,7 @@ struct KeyFrame {
   Eigen::Isometry3d camera_from_map = Eigen::Isometry3d::Identity();
   FrameFeatures features;
   std::vector<int64_t> point_ids;  // Per keypoint: the map point it observes, or -1.
+  int corrections_seen = 0;        // Revisit corrections applied to the map it was tracked on.
 
   Eigen::Vector3d CentreInMap() const { return camera_from_map.inverse().translation(); }
 };
