@@ -89,6 +89,8 @@ const StatisticTable& MonoSlamStatistics() {
       {"mono/tracking_cpu_ms", "ms", "CPU time of the tracking thread for the frame."},
       {"mono/mapping_ms", "ms", "Mapping of a new keyframe (frames that made one)."},
       {"mono/bundle_adjustment_ms", "ms", "Local bundle adjustment of a new keyframe."},
+      {"mono/revisit_search_ms", "ms", "Search of a new keyframe for a revisit of mapped space."},
+      {"mono/idle_bundle_adjustment_ms", "ms", "Global adjustment slices run in idle time."},
   };
   return kTable;
 }
@@ -210,8 +212,8 @@ void MonoSlamPipeline::AddFrameStats(const MonoSlamResult& r, MonoSlamFrameResul
                 {"mono/keyframes", double(s.keyframes)}};
   // MonoSlam times its stages into slam_timing_: this frame's (and, with threaded mapping, the
   // mapper's since the last frame) become the frame's "ms" statistics.
-  for (const char* stage :
-       {"features", "tracking", "tracking_cpu", "mapping", "bundle_adjustment"}) {
+  for (const char* stage : {"features", "tracking", "tracking_cpu", "mapping", "bundle_adjustment",
+                            "revisit_search", "idle_bundle_adjustment"}) {
     const TimingSummary t = slam_timing_.Summary(stage);
     if (t.count > 0)
       out->stats.emplace_back(std::string("mono/") + stage + "_ms", t.mean_ms * t.count);
@@ -311,6 +313,10 @@ StatusOr<RunResult> MonoSlamPipeline::Finish(const std::string& out_dir) {
   result.counts.emplace_back("init_homography", run->init_model == "homography" ? 1 : 0);
   result.counts.emplace_back("metric_scale_from_arm", run->metric_source == "arm" ? 1 : 0);
   result.counts.emplace_back("final_bundle_adjustment_ms", final_bundle_ms_);
+  const IdleBundleTotals idle = slam_->idle_bundle();
+  result.counts.emplace_back("final_bundle_longest_step_ms", idle.stop_longest_step_ms);
+  result.counts.emplace_back("idle_bundle_slices", idle.slices);
+  result.counts.emplace_back("revisits", slam_->revisits());
   notes.push_back("metric scale source: " + run->metric_source);
   result.nothing_achieved = NeverInitialised(*run);
   if (!result.nothing_achieved.empty()) notes.insert(notes.begin(), result.nothing_achieved);
