@@ -80,8 +80,24 @@ double ReprojectionErrorPx(const PinholeCamera& camera, const BundleProblem& pro
   return (proj - o.pixel).norm();
 }
 
+namespace {
+
+// Ends a solve early when asked to.
+class StopCallback : public ceres::IterationCallback {
+ public:
+  explicit StopCallback(const std::function<bool()>& should_stop) : should_stop_(should_stop) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return should_stop_() ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::function<bool()>& should_stop_;
+};
+
+}  // namespace
+
 BundleSummary SolveBundle(const PinholeCamera& camera, BundleProblem* problem, int iterations,
-                          double huber_px) {
+                          double huber_px, const std::function<bool()>& should_stop) {
   BundleSummary summary;
   summary.initial_rms_px = Rms(camera, *problem);
   summary.final_rms_px = summary.initial_rms_px;
@@ -116,6 +132,8 @@ BundleSummary SolveBundle(const PinholeCamera& camera, BundleProblem* problem, i
   options.max_num_iterations = iterations;
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
+  StopCallback stop(should_stop);
+  if (should_stop) options.callbacks.push_back(&stop);
   ceres::Solver::Summary ceres_summary;
   ceres::Solve(options, &ceres_problem, &ceres_summary);
   summary.iterations = static_cast<int>(ceres_summary.iterations.size());

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,8 +45,10 @@ struct BundleSummary {
 };
 
 // Optimises the free poses and every point in place. `iterations` 0 leaves everything as it is.
+// `should_stop` (optional) is asked after every iteration; true ends the solve there with the
+// state reached (PTAM's mapper abandons idle-time adjustment when a keyframe arrives).
 BundleSummary SolveBundle(const PinholeCamera& camera, BundleProblem* problem, int iterations,
-                          double huber_px);
+                          double huber_px, const std::function<bool()>& should_stop = {});
 
 // Reprojection error of one observation in the current state [px, unscaled]; infinity behind
 // the camera.

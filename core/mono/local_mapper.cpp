@@ -171,7 +171,8 @@ int LocalMapper::LocalBundle(KeyFrameStats* stats) {
   return window.removed;
 }
 
-IdleBundleStats LocalMapper::AdjustWindow(int first_free, int end, int iterations) {
+IdleBundleStats LocalMapper::AdjustWindow(int first_free, int end, int iterations,
+                                          const std::function<bool()>& should_stop) {
   const auto& keyframes = map_->keyframes();
   IdleBundleStats stats;
   BundleProblem problem;
@@ -211,7 +212,7 @@ IdleBundleStats LocalMapper::AdjustWindow(int first_free, int end, int iteration
   }
   stats.keyframes = end - first_free;
   stats.points = static_cast<int>(problem.points.size());
-  stats.bundle = SolveBundle(camera_, &problem, iterations, options_.ba_huber_px);
+  stats.bundle = SolveBundle(camera_, &problem, iterations, options_.ba_huber_px, should_stop);
   std::lock_guard<std::mutex> lock(*mutex_);
   for (const auto& [point, keyframe] : behind) map_->RemoveObservation(point, keyframe);
   stats.removed = static_cast<int>(behind.size());
@@ -238,13 +239,13 @@ void LocalMapper::MapChanged() {
   idle_slices_left_ = n < 3 ? 0 : (n + step - 1) / step;
 }
 
-IdleBundleStats LocalMapper::IdleBundle(int iterations) {
+IdleBundleStats LocalMapper::IdleBundle(int iterations, const std::function<bool()>& should_stop) {
   const int n = static_cast<int>(map_->keyframes().size());
   if (idle_slices_left_ <= 0 || iterations <= 0 || n < 3) return {};
   // Slices overlap by half a window, so every keyframe is optimised with both neighbours.
   const int window = std::min(n, options_.idle_ba_window);
   const int first = std::min(idle_cursor_, n - window);
-  IdleBundleStats stats = AdjustWindow(first, first + window, iterations);
+  IdleBundleStats stats = AdjustWindow(first, first + window, iterations, should_stop);
   idle_cursor_ = first + window >= n ? 0 : first + std::max(1, window / 2);
   --idle_slices_left_;
   return stats;

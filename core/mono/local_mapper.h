@@ -7,6 +7,7 @@
 // each keyframe and takes the lock only to count points seen (try-lock) and to relocalise.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
 
@@ -62,7 +63,8 @@ class LocalMapper {
   // consecutive keyframes (taken in turn over the map) and every point they see, the other
   // keyframes that see those points fixed; `iterations` bound the work. Slices are only run
   // while the map changed since a whole pass (idle_slices_left() > 0).
-  IdleBundleStats IdleBundle(int iterations);
+  // `should_stop` (optional) ends the slice after the current iteration (a keyframe waits).
+  IdleBundleStats IdleBundle(int iterations, const std::function<bool()>& should_stop = {});
   // Slices still to run for one pass over the map since it last changed.
   int idle_slices_left() const { return idle_slices_left_; }
   // The map changed (a keyframe or a revisit): one more pass over it is due.
@@ -74,7 +76,8 @@ class LocalMapper {
   // Local BA over the window; returns the observations removed as outliers.
   int LocalBundle(KeyFrameStats* stats);
   // Bundle adjustment of keyframes [first_free, end) and every point they see, written back.
-  IdleBundleStats AdjustWindow(int first_free, int end, int iterations);
+  IdleBundleStats AdjustWindow(int first_free, int end, int iterations,
+                               const std::function<bool()>& should_stop = {});
   int Cull(int64_t current_keyframe);
   // Global bundle adjustment written back to the map, rescaled so the first two keyframes are
   // `baseline` apart or, with keep_path_length, so the keyframes' path length is unchanged.

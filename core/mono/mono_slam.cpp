@@ -115,7 +115,13 @@ void MonoSlam::RunIdleSlice() {
   const MonoMappingOptions& o = options_.mapping;
   if (o.idle_ba_iterations <= 0 || mapper_->idle_slices_left() <= 0) return;
   const double start = HostTimeS();
-  const IdleBundleStats slice = mapper_->IdleBundle(o.idle_ba_iterations);
+  // Threaded mode: a keyframe waiting ends the slice after the current iteration, so idle-time
+  // adjustment never holds up mapping.
+  std::function<bool()> keyframe_waiting;
+  if (options_.mapping.threaded && keyframe_queue_) {
+    keyframe_waiting = [this] { return keyframe_queue_->size() > 0; };
+  }
+  const IdleBundleStats slice = mapper_->IdleBundle(o.idle_ba_iterations, keyframe_waiting);
   if (slice.keyframes == 0) return;
   if (timing_) timing_->Add("idle_bundle_adjustment", (HostTimeS() - start) * 1000.0);
   {
@@ -188,20 +194,15 @@ void MonoSlam::MappingLoop() {
   // Tracking must keep the frame rate; mapping takes what the core has left.
   setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), options_.mapping.thread_nice);
 #endif
-  for (;;) {
-    // Idle time (no keyframe waiting) goes to slices of the global adjustment while a pass over
-    // the changed map is due; otherwise the thread sleeps until the next keyframe.
-    const bool idle_work = options_.mapping.idle_ba_iterations > 0 && !mapping_paused_ &&
-                           mapper_->idle_slices_left() > 0;
-    std::optional<std::shared_ptr<KeyFrame>> keyframe =
-        idle_work ? keyframe_queue_->TryPop() : keyframe_queue_->Pop();
-    if (keyframe) {
+  // An empty item is the tracker's signal of idle time (frames without a keyframe): one slice
+  // of the global adjustment.
+  while (std::optional<std::shared_ptr<KeyFrame>> keyframe = keyframe_queue_->Pop()) {
+    if (*keyframe) {
       MapKeyFrame(std::move(*keyframe));
       mapping_busy_ = false;
-      continue;
+    } else if (!mapping_paused_) {
+      RunIdleSlice();
     }
-    if (!idle_work || keyframe_queue_->IsShutdown()) break;
-    RunIdleSlice();
   }
 }
 
@@ -615,10 +616,15 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
   }
   if (new_keyframe) {
     HandOver(std::move(new_keyframe));
-  } else if (!options_.mapping.threaded && result->tracked && !mapping_paused_ &&
-             frames_since_keyframe_ > 0 &&
+  } else if (result->tracked && !mapping_paused_ && frames_since_keyframe_ > 0 &&
              frames_since_keyframe_ % options_.mapping.idle_ba_every_frames == 0) {
-    RunIdleSlice();  // Synchronous mode: the frames without a keyframe are the idle time.
+    // Frames without a keyframe are the mapper's idle time: one slice, inline or on the
+    // mapping thread when it has nothing queued (only this thread pushes, so this never blocks).
+    if (!options_.mapping.threaded) {
+      RunIdleSlice();
+    } else if (keyframe_queue_ && !mapping_busy_ && keyframe_queue_->size() == 0) {
+      keyframe_queue_->Push(nullptr);
+    }
   }
   if (initialised_) ApplyCorrections();  // A revisit found with this keyframe moves it too.
   result->map_from_camera = camera_from_map_.inverse();
