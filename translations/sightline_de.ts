@@ -2531,62 +2531,62 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>depth: Der höchste Punkt einer Person liegt mindestens so hoch über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: Der höchste Punkt einer Person liegt höchstens so hoch (Wände und Säulen reichen höher).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: Zwischen zwei Köpfen sinken die Höhen mindestens um so viel ab (Hals, Schultern); die abgeschnittene Oberkante einer Wand ist flach und wird nicht getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: Zelle des Bodenrasters, in dem Punkte zu Clustern zusammengefasst werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: Weiter entfernte Punkte werden nicht betrachtet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: Abgetastete Punkte, die eine Person braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: Das Tiefenbild wird auf etwa so viele Spalten abgetastet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: Die kürzere Seite der Grundfläche einer Person ist mindestens so lang (Beine, Arme und die Rundung des Rumpfs); das Ende einer Wand am Bildrand ist eine Zelle dick.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (veröffentlichter Wert 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: Inlier-Abstand in Belegungszellen (veröffentlicht: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Veröffentlichung mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: Hypothesen pro Linie (veröffentlicht: 250); begrenzt auch die adaptive Anzahl.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Veröffentlichung); custom: range_cut_m und max_step_m.</translation>
     </message>
@@ -3946,117 +3946,137 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>delaunay: Dreiecke mit einer Kante, die länger als so viele Zellen ist, werden verworfen.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
+        <translation>depth: Die Oberkante einer Person liegt mindestens so viele Grundflächenlängen über dem Boden (ein Schreibtisch, ein Tisch oder ein Sofa ist breiter als hoch).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
+        <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er den Bildrand berührt (ein abgeschnittener Körper wird niedriger bewertet).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
+        <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er ganz im Bild liegt.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: Wenn an, ist ein Cluster, der die oberste Bildzeile erreicht (seine Oberkante liegt außerhalb des Bildes), keine Person: weniger falsche Personen am Bildrand, aber Personen, die so nah sind, dass ihr Kopf abgeschnitten ist, werden übersehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
+        <translation>depth: Ist das Farbbild zum Tiefenbild registriert, muss auch OpenCVs HOG-Personendetektor den Rahmen jedes Clusters bestätigen (ein Stuhl oder Schreibtisch von Personengröße fällt weg).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: Paare nach Kamerazeitstempeln bilden (Kameras mit gemeinsamer Uhr, z. B. PTP oder gemeinsamer Trigger); host: Paare nach Ankunftszeit am Host bilden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: Die Kamera läuft mit eigenem Takt; software: Der Host triggert jedes Bild (beide Kameras eines Paars gemeinsam); hardware: ein externer Impuls auf trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: jedes n-te Pixel in beiden Richtungen (anstelle des Voxelgitters).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: Rasternachbarn, deren Tiefen sich um mehr als diesen Anteil unterscheiden, sind getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: halbe Breite des Fensters der Rasterpunkte, an die jede Normale angepasst wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); leer = neben arm_poses (für arm_stream: neben den Bildern); none = Identität.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (Schritt E): höchstens so viele Linien.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: Hough-Kreise hinzufügen (runde Knöpfe, dünne Ringe).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: Unschärfe der zweiten Skala, mal blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: halbe Größe des Fensters um die Tippstelle, das durchsucht wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: längste durch kürzeste Seite des gedrehten Rahmens einer Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: Regionen werden nach (Versatz + Bias) / Radius gereiht, sodass der Umriss des Knopfs gegen ein Symbol darauf gewinnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: Der Schwerpunkt der Region liegt höchstens so viele Radien von der Tippstelle entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: Die beiden Canny-Paare sind die Schwellen mal 2/(1+s) und 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p der adaptiven Anzahl: Wahrscheinlichkeit, ein Paar nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: Nachbarradius des Regionenwachstums.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: Nachbarn der Normalenanpassung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: Nachbarn der Ausreißerentfernung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: Blattgröße des Voxelgitters.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (Schritt B8): Eine Hypothese mit mehr Inliern als diesem Anteil beendet die Suche.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (Schritte B5, B6): Eine Linie braucht diesen Anteil der verbleibenden Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (Schritt E): aufhören, sobald dieser Anteil der Punkte auf Linien liegt.</translation>
     </message>

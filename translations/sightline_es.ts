@@ -2531,62 +2531,62 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>depth: el punto más alto de una persona está al menos a esta altura sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: el punto más alto de una persona está como mucho a esta altura (las paredes y columnas suben más).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: entre dos cabezas las alturas bajan al menos esto (cuello, hombros); el borde superior cortado de una pared es plano y no se separa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: celda de la rejilla del suelo en la que se agrupan los puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: los puntos más lejanos no se consideran.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: puntos muestreados que necesita una persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: la imagen de profundidad se muestrea a unas tantas columnas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: el lado más corto de la huella de una persona mide al menos esto (piernas, brazos y la curva del torso); el extremo de una pared visto en el borde de la imagen tiene una celda de grosor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto dentro de esta altura respecto al plano del suelo es suelo (valor publicado 3.5, leído como 3.5 cm: generoso para que ningún píxel del suelo se marque como ocupado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distancia de inliers en celdas de ocupación (publicado: 5 píxeles); metros = celdas x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: camino por la rejilla de píxeles organizada (rápido); pcl: el camino de la publicación con rejilla de vóxeles, eliminación de outliers y árbol k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: hipótesis por línea (publicado: 250); también limita el recuento adaptativo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide de la publicación); custom: range_cut_m y max_step_m.</translation>
     </message>
@@ -3946,117 +3946,137 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>delaunay: se descartan los triángulos con un lado más largo que este número de celdas.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
+        <translation>depth: la parte superior de una persona está al menos a este múltiplo de la longitud de su huella sobre el suelo (un escritorio, una mesa o un sofá es más ancho que alto).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
+        <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando toca el borde de la imagen (un cuerpo cortado puntúa menos).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
+        <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando está entero a la vista.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: si está activo, un grupo que llega a la fila superior de la imagen (su parte alta fuera de vista) no es una persona: menos personas falsas en el borde de la imagen, pero se pierden las personas tan cercanas que tienen la cabeza cortada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
+        <translation>depth: cuando la imagen en color está registrada con la de profundidad, el detector de personas HOG de OpenCV también debe aceptar el recuadro de cada clúster (se descarta una silla o un escritorio del tamaño de una persona).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: emparejar por marcas de tiempo de las cámaras (cámaras con un reloj común, p. ej. PTP o un disparo compartido); host: emparejar por hora de llegada al host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la cámara funciona con su propio reloj; software: el host dispara cada fotograma (las dos cámaras de un par a la vez); hardware: un pulso externo en trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: uno de cada n píxeles en ambas direcciones (en lugar de la rejilla de vóxeles).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: los vecinos de la rejilla cuyas profundidades difieren más de esta fracción están separados.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: semianchura de la ventana de puntos de la rejilla a la que se ajusta cada normal.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vacío = junto a arm_poses (para arm_stream: junto a las imágenes); none = identidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (paso E): como máximo este número de líneas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: añadir círculos de Hough (botones redondos, anillos finos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: desenfoque de la segunda escala, multiplicado por blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: mitad del tamaño de la ventana alrededor del toque en la que se busca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: cociente entre el lado más largo y el más corto del recuadro girado de una región.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: las regiones se ordenan por (desplazamiento + sesgo) / radio, para que el contorno del botón gane a un símbolo sobre él.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: el centroide de la región está como máximo a este número de radios del toque.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: los dos pares de Canny son los umbrales multiplicados por 2/(1+s) y 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del recuento adaptativo: probabilidad de extraer un par solo de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: radio de vecindad del crecimiento de regiones.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vecinos del ajuste de normales.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vecinos de la eliminación de outliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: tamaño de hoja de la rejilla de vóxeles.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (paso B8): una hipótesis con más inliers que esto termina la búsqueda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (pasos B5, B6): una línea necesita esta fracción de los puntos restantes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (paso E): parar en cuanto esta fracción de los puntos está sobre líneas.</translation>
     </message>

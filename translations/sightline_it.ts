@@ -2531,62 +2531,62 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>depth: il punto più alto di una persona si trova almeno a questa altezza dal pavimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: il punto più alto di una persona si trova al massimo a questa altezza (pareti e colonne salgono di più).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: tra due teste le altezze scendono almeno di tanto (collo, spalle); il bordo superiore tagliato di una parete è piatto e non viene separato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: cella della griglia sul pavimento in cui i punti vengono raggruppati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: i punti più lontani non vengono considerati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: punti campionati necessari per una persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: l&apos;immagine di profondità viene campionata a circa questo numero di colonne.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: il lato più corto dell&apos;impronta di una persona è almeno tanto (gambe, braccia e la curva del busto); l&apos;estremità di una parete vista al bordo dell&apos;immagine è spessa una cella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto entro questa altezza dal piano del pavimento è pavimento (valore pubblicato 3.5, letto come 3.5 cm: generoso, affinché nessun pixel del pavimento sia marcato come occupato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distanza degli inlier in celle di occupazione (pubblicato: 5 pixel); metri = celle x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: percorso sulla griglia di pixel organizzata (veloce); pcl: il percorso della pubblicazione con griglia di voxel, rimozione degli outlier e albero k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: ipotesi per linea (pubblicato: 250); limita anche il conteggio adattivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide della pubblicazione); custom: range_cut_m e max_step_m.</translation>
     </message>
@@ -3946,117 +3946,137 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>delaunay: i triangoli con un lato più lungo di questo numero di celle vengono scartati.</translation>
     </message>
     <message>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
+        <translation>depth: la sommità di una persona è almeno a questo multiplo della lunghezza dell&apos;impronta sopra il pavimento (una scrivania, un tavolo o un divano è più largo che alto).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
+        <translation>depth: il punteggio HOG che il riquadro di un cluster deve raggiungere quando tocca il bordo dell&apos;immagine (un corpo tagliato ottiene un punteggio più basso).</translation>
+    </message>
+    <message>
         <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
+        <translation>depth: il punteggio HOG che il riquadro di un cluster deve raggiungere quando è interamente visibile.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: se attivo, un gruppo che raggiunge la prima riga dell&apos;immagine (con la sommità fuori vista) non è una persona: meno persone false al bordo dell&apos;immagine, ma le persone tanto vicine da avere la testa tagliata vengono perse.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
+        <translation>depth: se l&apos;immagine a colori è registrata sull&apos;immagine di profondità, anche il rilevatore di persone HOG di OpenCV deve confermare il riquadro di ogni cluster (una sedia o una scrivania delle dimensioni di una persona viene scartata).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: accoppiare per timestamp delle telecamere (telecamere con un orologio comune, ad es. PTP o un trigger condiviso); host: accoppiare per ora di arrivo all&apos;host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la telecamera funziona con il proprio orologio; software: l&apos;host attiva ogni fotogramma (entrambe le telecamere di una coppia insieme); hardware: un impulso esterno su trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: un pixel ogni n in entrambe le direzioni (al posto della griglia di voxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: i vicini nella griglia le cui profondità differiscono di più di questa frazione sono separati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: semi-larghezza della finestra di punti della griglia a cui si adatta ogni normale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vuoto = accanto a arm_poses (per arm_stream: accanto alle immagini); none = identità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (passo E): al massimo questo numero di linee.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: aggiungere cerchi di Hough (pulsanti rotondi, anelli sottili).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: sfocatura della seconda scala, moltiplicata per blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: metà della dimensione della finestra attorno al tocco in cui si cerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: rapporto tra il lato più lungo e quello più corto del riquadro ruotato di una regione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: le regioni sono ordinate per (offset + bias) / raggio, così il contorno del pulsante prevale su un simbolo sopra di esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: il baricentro della regione si trova al massimo a questo numero di raggi dal tocco.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: le due coppie di Canny sono le soglie moltiplicate per 2/(1+s) e 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del conteggio adattivo: probabilità di estrarre una coppia di soli inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: raggio dei vicini della crescita per regioni.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vicini del fit delle normali.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vicini della rimozione degli outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: dimensione delle foglie della griglia di voxel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (passo B8): un&apos;ipotesi con più inlier di così termina la ricerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (passi B5, B6): una linea richiede questa frazione dei punti rimanenti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (passo E): fermarsi quando questa frazione dei punti si trova su linee.</translation>
     </message>

@@ -64,6 +64,28 @@ StatusOr<std::vector<PersonBox>> MappingFrameProcessor::HogPeople(const cv::Mat&
   return detector_->Detect(color);
 }
 
+void MappingFrameProcessor::CheckWithHog(const cv::Mat& color, const cv::Size& depth_size,
+                                         std::vector<PersonBox>* people) {
+  if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
+  const double sx = static_cast<double>(color.cols) / depth_size.width;
+  const double sy = static_cast<double>(color.rows) / depth_size.height;
+  // A box within one depth sample of the border is cut off by it.
+  const double margin =
+      std::max(2.0, static_cast<double>(depth_size.width) / options_.people.depth_target_columns);
+  std::vector<PersonBox> kept;
+  for (const PersonBox& p : *people) {
+    const cv::Rect2d& b = p.box;
+    const bool cut = b.x < margin || b.y < margin || b.br().x > depth_size.width - margin ||
+                     b.br().y > depth_size.height - margin;
+    const double score =
+        detector_->Score(color, cv::Rect2d(b.x * sx, b.y * sy, b.width * sx, b.height * sy));
+    const double needed =
+        cut ? options_.people.depth_hog_min_score_cut : options_.people.depth_hog_min_score;
+    if (score >= needed) kept.push_back(p);
+  }
+  *people = std::move(kept);
+}
+
 Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCamera& camera) {
   configured_ = false;
   std::string error;
@@ -119,6 +141,16 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
     if (!found.ok()) return found.status();
     result->people = std::move(*found);
     result->people_source = use_depth ? "depth" : "hog";
+    // HOG as the second cue when the colour image is registered to the depth image (the same
+    // shape within 2 %).
+    if (use_depth && options_.people.depth_hog_check && !input.color.empty() &&
+        !input.depth_m.empty() &&
+        std::abs(static_cast<double>(input.color.cols) * input.depth_m.rows /
+                     (static_cast<double>(input.color.rows) * input.depth_m.cols) -
+                 1.0) < 0.02) {
+      if (!result->people.empty()) CheckWithHog(input.color, input.depth_m.size(), &result->people);
+      result->people_source = "depth+hog";
+    }
     times.people_ms = MsSince(start);
     if (timing) timing->Add("people", times.people_ms);
   } else {

@@ -100,6 +100,9 @@ class MappingFrameProcessor {
 
  private:
   StatusOr<std::vector<PersonBox>> HogPeople(const cv::Mat& color);
+  // Drops the depth boxes HOG does not score as people (mapping.people.depth_hog_*).
+  void CheckWithHog(const cv::Mat& color, const cv::Size& depth_size,
+                    std::vector<PersonBox>* people);
 
   MappingOptions options_;
   bool configured_ = false;

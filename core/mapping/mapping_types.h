@@ -166,7 +166,7 @@ struct MappingStageTimes {
 struct MappingFrameResult {
   FrameStamp stamp;
   std::vector<PersonBox> people;  // Boxes used (image pixels).
-  std::string people_source;      // Where they came from: ground truth, depth, hog or none.
+  std::string people_source;  // Where they came from: ground truth, depth, depth+hog, hog or none.
   OccupancyImage occupancy;
   PolarScan scan;
   LineExtraction lines;  // Base frame; direction_class set.

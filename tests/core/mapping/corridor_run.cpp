@@ -116,6 +116,7 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
     input.stamp.sequence_id = k;
     input.stamp.sensor_time_s = simulator.TimeOf(k);
     input.depth_m = frame.depth_m;
+    input.color = frame.color;
     Pose2d odo = Pose2d::FromIsometry(odometry.poses().at(k).world_from_sensor);
     odo.x += camera_forward_m * std::cos(odo.heading_rad);
     odo.y += camera_forward_m * std::sin(odo.heading_rad);
