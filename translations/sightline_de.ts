@@ -2461,132 +2461,137 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Höhe des Belegungsbilds (veröffentlicht: 400), d. h. die Reichweite nach vorn in Zellen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the published rule (the centroid nearest the tap within max_tap_distance_px).</source>
         <translation>Region ab der Tippstelle: Umrisse in zwei Skalen plus Hough-Kreise, diejenige, die die Tippstelle am nächsten an ihrer Mitte enthält (multiscale), oder die Regel der Veröffentlichung (der Schwerpunkt, der der Tippstelle innerhalb max_tap_distance_px am nächsten liegt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
         <translation>In den Karten gezeichnete Bewertung: die Regel aus Tabelle I der Veröffentlichung oder der Gaußprozess.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="366"/>
+        <location filename="../app/sightline/option_texts.cpp" line="367"/>
         <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
         <translation>Eine neue Karte beginnen, wenn die Reset-Regel greift (wie veröffentlicht); aus setzt das Zusammenfügen fort.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="370"/>
+        <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
         <translation>Schritt B6: die Konsensmenge an Lücken entlang der Linie, die breiter als dies sind, schneiden und das längste Stück behalten, damit Linien zusammenhängende Wände sind (0 = wie veröffentlicht: kein Schnitt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="371"/>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
         <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
         <translation>Schritt B7: die Hypothese mit dem kleinsten summierten Fehler (wie veröffentlicht) oder mittleren Fehler behalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
         <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
         <translation>Schritt C: die dominante Fläche der gewählten Linie neu finden, indem ihre Richtung so weit in beide Richtungen geschwenkt wird, dann darauf neu anpassen (0 = wie veröffentlicht: die Linie aus Schritt B6 unverändert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Wandlinien-Extraktor: das Mehrlinien-RANSAC der Veröffentlichung oder Split-and-Merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <source>When even after that fewer tracks survive than this fraction of the share that usually survives (a slow average over the last frames; a sharp turn, or a turn at a low frame rate), the camera&apos;s rotation is searched by comparing the two images and the points are tracked again from where it puts them; the better attempt is kept. 0 = never.</source>
+        <translation>Wenn selbst danach weniger Spuren überleben als dieser Anteil des üblicherweise überlebenden Anteils (ein langsamer Mittelwert über die letzten Bilder; eine scharfe Kurve oder eine Kurve bei niedriger Bildrate), wird die Drehung der Kamera durch Vergleich der beiden Bilder gesucht und die Punkte werden von dort aus erneut verfolgt; der bessere Versuch wird behalten. 0 = nie.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, clusters of a person&apos;s size standing on the floor in the depth image (depth), OpenCV&apos;s HOG detector on the colour image, auto (ground truth when present, else depth) or none.</source>
         <translation>Woher die Personenboxen kommen: die Ground Truth des Datensatzes, Cluster von Personengröße, die im Tiefenbild auf dem Boden stehen (depth), OpenCVs HOG-Detektor im Farbbild, auto (Ground Truth, wenn vorhanden, sonst depth) oder none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Breite des Belegungsbilds (veröffentlicht: 400); der Roboter sitzt unten in der Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>depth: a head is the highest point within this radius; people side by side are split at their heads.</source>
         <translation>depth: Ein Kopf ist der höchste Punkt innerhalb dieses Radius; nebeneinander stehende Personen werden an ihren Köpfen getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>depth: a person&apos;s footprint is at least this long.</source>
         <translation>depth: Die Grundfläche einer Person ist mindestens so lang.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>depth: a person&apos;s footprint is at most this long (walls are longer); wider clusters are split at their heads.</source>
         <translation>depth: Die Grundfläche einer Person ist höchstens so lang (Wände sind länger); breitere Cluster werden an ihren Köpfen getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>depth: a person&apos;s lowest point lies at most this high above the floor.</source>
         <translation>depth: Der tiefste Punkt einer Person liegt höchstens so hoch über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>depth: a person&apos;s top lies at least this high above the floor.</source>
         <translation>depth: Der höchste Punkt einer Person liegt mindestens so hoch über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: Der höchste Punkt einer Person liegt höchstens so hoch (Wände und Säulen reichen höher).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: Zwischen zwei Köpfen sinken die Höhen mindestens um so viel ab (Hals, Schultern); die abgeschnittene Oberkante einer Wand ist flach und wird nicht getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: Zelle des Bodenrasters, in dem Punkte zu Clustern zusammengefasst werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: Weiter entfernte Punkte werden nicht betrachtet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: Abgetastete Punkte, die eine Person braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: Das Tiefenbild wird auf etwa so viele Spalten abgetastet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: Die kürzere Seite der Grundfläche einer Person ist mindestens so lang (Beine, Arme und die Rundung des Rumpfs); das Ende einer Wand am Bildrand ist eine Zelle dick.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (veröffentlichter Wert 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: Inlier-Abstand in Belegungszellen (veröffentlicht: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Veröffentlichung mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: Hypothesen pro Linie (veröffentlicht: 250); begrenzt auch die adaptive Anzahl.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="511"/>
+        <location filename="../app/sightline/option_texts.cpp" line="514"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Veröffentlichung); custom: range_cut_m und max_step_m.</translation>
     </message>
@@ -2767,1316 +2772,1326 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="210"/>
+        <source>Largest turn between two frames that search looks for.</source>
+        <translation>Größte Drehung zwischen zwei Bildern, nach der diese Suche sucht.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="211"/>
         <source>Left-right check: the right point tracked back must land this close; 0 = no check.</source>
         <translation>Links-rechts-Prüfung: Der zurückverfolgte rechte Punkt muss so nah landen; 0 = keine Prüfung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="211"/>
+        <location filename="../app/sightline/option_texts.cpp" line="212"/>
         <source>Length of the first baseline in map units (PTAM: 0.1); metric scale comes later.</source>
         <translation>Länge der ersten Basislinie in Karteneinheiten (PTAM: 0.1); die metrische Skala kommt später.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="212"/>
+        <location filename="../app/sightline/option_texts.cpp" line="213"/>
         <source>Levenberg-Marquardt iterations per frame.</source>
         <translation>Levenberg-Marquardt-Iterationen pro Bild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="213"/>
+        <location filename="../app/sightline/option_texts.cpp" line="214"/>
         <source>Lines vote with weight length / (1 + (rms / rms_scale_m)^2): scattered consensus sets (a wall merged with a door recess) count less.</source>
         <translation>Linien stimmen mit dem Gewicht Länge / (1 + (rms / rms_scale_m)^2) ab: verstreute Konsensmengen (eine mit einer Türnische verschmolzene Wand) zählen weniger.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="214"/>
+        <location filename="../app/sightline/option_texts.cpp" line="215"/>
         <source>Lines with fewer points are dropped.</source>
         <translation>Linien mit weniger Punkten werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="215"/>
+        <location filename="../app/sightline/option_texts.cpp" line="216"/>
         <source>Log-odds added when a frame sees a cell free.</source>
         <translation>Log-Odds, die addiert werden, wenn ein Bild eine Zelle frei sieht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="216"/>
+        <location filename="../app/sightline/option_texts.cpp" line="217"/>
         <source>Log-odds added when a frame sees a cell occupied.</source>
         <translation>Log-Odds, die addiert werden, wenn ein Bild eine Zelle belegt sieht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="217"/>
+        <location filename="../app/sightline/option_texts.cpp" line="218"/>
         <source>Longer client lines are discarded; an over-long token line closes the connection.</source>
         <translation>Längere Client-Zeilen werden verworfen; eine überlange Token-Zeile schließt die Verbindung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="218"/>
+        <location filename="../app/sightline/option_texts.cpp" line="219"/>
         <source>Longer image side at which contours are searched; larger frames are scaled down.</source>
         <translation>Längere Bildseite, auf der Konturen gesucht werden; größere Bilder werden verkleinert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="219"/>
+        <location filename="../app/sightline/option_texts.cpp" line="220"/>
         <source>Longest over shortest side of the region&apos;s rotated box.</source>
         <translation>Längste durch kürzeste Seite des gedrehten Rahmens der Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="220"/>
+        <location filename="../app/sightline/option_texts.cpp" line="221"/>
         <source>Looming needs the largest and smallest depth to differ by this fraction ...</source>
         <translation>Die Größenzunahme (Looming) verlangt, dass größte und kleinste Tiefe sich um diesen Anteil unterscheiden ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="221"/>
+        <location filename="../app/sightline/option_texts.cpp" line="222"/>
         <source>Lowe&apos;s ratio test: best over second-best descriptor distance must be below this.</source>
         <translation>Lowes Verhältnistest: Bester durch zweitbesten Deskriptorabstand muss unter diesem Wert liegen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="222"/>
+        <location filename="../app/sightline/option_texts.cpp" line="223"/>
         <source>Lower clamp of a cell&apos;s log-odds.</source>
         <translation>Untere Begrenzung der Log-Odds einer Zelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="223"/>
+        <location filename="../app/sightline/option_texts.cpp" line="224"/>
         <source>Lowest plausible camera height above the floor.</source>
         <translation>Niedrigste plausible Kamerahöhe über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="224"/>
+        <location filename="../app/sightline/option_texts.cpp" line="225"/>
         <source>Map points projecting within this distance of the button centre are used.</source>
         <translation>Kartenpunkte, die innerhalb dieses Abstands von der Knopfmitte projiziert werden, werden verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="225"/>
+        <location filename="../app/sightline/option_texts.cpp" line="226"/>
         <source>Map points within this many tracked button radii (the button&apos;s face) are used first; 0 = always use radius_px.</source>
         <translation>Kartenpunkte innerhalb so vieler verfolgter Knopfradien (die Knopffläche) werden zuerst verwendet; 0 = immer radius_px verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="226"/>
+        <location filename="../app/sightline/option_texts.cpp" line="227"/>
         <source>Matches with a smaller disparity (too far to triangulate) are rejected.</source>
         <translation>Übereinstimmungen mit kleinerer Disparität (zu weit für die Triangulation) werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="227"/>
+        <location filename="../app/sightline/option_texts.cpp" line="228"/>
         <source>Matches with the first frame needed before initialisation is tried.</source>
         <translation>Übereinstimmungen mit dem ersten Bild, die vor einem Initialisierungsversuch nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="228"/>
+        <location filename="../app/sightline/option_texts.cpp" line="229"/>
         <source>Measured displacements shorter than this are dropped.</source>
         <translation>Gemessene Verschiebungen, die kürzer als dies sind, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="229"/>
+        <location filename="../app/sightline/option_texts.cpp" line="230"/>
         <source>Measured motion for the metric scale: the arm&apos;s recorded poses (arm_poses.txt), the arm&apos;s poses streamed live to the button pipeline&apos;s arm-target server (arm_stream), ground-truth displacements, or none. auto: the recorded arm poses when arm_poses.txt is there; else, for the button pipeline while serving, the stream; else (mono-slam) ground truth.</source>
         <translation>Gemessene Bewegung für die metrische Skala: die aufgezeichneten Posen des Arms (arm_poses.txt), die live an den Armzielserver der Knopf-Pipeline gestreamten Posen des Arms (arm_stream), Ground-Truth-Verschiebungen oder keine. auto: die aufgezeichneten Armposen, wenn arm_poses.txt vorhanden ist; sonst, für die Knopf-Pipeline beim Bereitstellen, der Stream; sonst (mono-slam) die Ground Truth.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="230"/>
+        <location filename="../app/sightline/option_texts.cpp" line="231"/>
         <source>Median angle between the rays of a match needed before trying (move sideways).</source>
         <translation>Medianwinkel zwischen den Strahlen einer Übereinstimmung, der vor einem Versuch nötig ist (seitlich bewegen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="231"/>
+        <location filename="../app/sightline/option_texts.cpp" line="232"/>
         <source>Minimum distance between corners.</source>
         <translation>Mindestabstand zwischen Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="232"/>
+        <location filename="../app/sightline/option_texts.cpp" line="233"/>
         <source>Mirror images left-right, as OpenNI does by default for people facing the camera.</source>
         <translation>Bilder links-rechts spiegeln, wie OpenNI es standardmäßig für Personen vor der Kamera tut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="233"/>
+        <location filename="../app/sightline/option_texts.cpp" line="234"/>
         <source>Morphological closing that joins broken button outlines; 0 = none.</source>
         <translation>Morphologisches Schließen, das unterbrochene Knopfumrisse verbindet; 0 = keins.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="234"/>
+        <location filename="../app/sightline/option_texts.cpp" line="235"/>
         <source>Most recent keyframes whose poses local bundle adjustment optimises.</source>
         <translation>So viele jüngste Schlüsselbilder, deren Posen die lokale Bündelausgleichung optimiert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="236"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Nice-Wert des Mapping-Threads (Thread-Modus, Linux); 10 lässt das Tracking einen mit dem Mapping geteilten Kern gewinnen, lässt das Mapping aber auf einem ausgelasteten Rechner verhungern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>No pose is interpolated across a larger gap between two arm_pose messages.</source>
         <translation>Über eine größere Lücke zwischen zwei arm_pose-Nachrichten wird keine Pose interpoliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="238"/>
+        <location filename="../app/sightline/option_texts.cpp" line="239"/>
         <source>No second reset within this many frames of the last one.</source>
         <translation>Kein zweiter Reset innerhalb so vieler Bilder nach dem letzten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="239"/>
+        <location filename="../app/sightline/option_texts.cpp" line="240"/>
         <source>No target until the online hand-eye check has seen the mount&apos;s translation (the arm must rotate between keyframes); without it that translation is taken on trust.</source>
         <translation>Kein Ziel, bis die Online-Hand-Auge-Prüfung die Translation der Montage gesehen hat (der Arm muss sich zwischen Schlüsselbildern drehen); ohne sie wird diese Translation ungeprüft übernommen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="240"/>
+        <location filename="../app/sightline/option_texts.cpp" line="241"/>
         <source>Noise of a camera displacement measured in the map (sigma_x of the ML estimator).</source>
         <translation>Rauschen einer in der Karte gemessenen Kameraverschiebung (sigma_x des ML-Schätzers).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="241"/>
+        <location filename="../app/sightline/option_texts.cpp" line="242"/>
         <source>Noise of a displacement measured by the arm or robot (sigma_y).</source>
         <translation>Rauschen einer vom Arm oder Roboter gemessenen Verschiebung (sigma_y).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="242"/>
+        <location filename="../app/sightline/option_texts.cpp" line="243"/>
         <source>ORB keypoints extracted per frame.</source>
         <translation>Pro Bild extrahierte ORB-Keypoints.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="243"/>
+        <location filename="../app/sightline/option_texts.cpp" line="244"/>
         <source>Observations reprojecting worse than this are dropped from the window.</source>
         <translation>Beobachtungen, die schlechter als dies reprojizieren, werden aus dem Fenster entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="244"/>
+        <location filename="../app/sightline/option_texts.cpp" line="245"/>
         <source>Observations with a smaller disparity (no usable depth) are left out.</source>
         <translation>Beobachtungen mit kleinerer Disparität (keine nutzbare Tiefe) bleiben unberücksichtigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="245"/>
+        <location filename="../app/sightline/option_texts.cpp" line="246"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Belegte Zellen, die näher als dies am Roboter liegen, werden ignoriert (Roboterkörper, Rauschen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="247"/>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
         <source>Of the re-acquiring matches, at least this many lie on the button itself.</source>
         <translation>Von den wiederfindenden Übereinstimmungen liegen mindestens so viele auf dem Knopf selbst.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <location filename="../app/sightline/option_texts.cpp" line="249"/>
         <source>Older estimates are not sent.</source>
         <translation>Ältere Schätzungen werden nicht gesendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="249"/>
+        <location filename="../app/sightline/option_texts.cpp" line="250"/>
         <source>Older frames&apos; normals fade with exp(-age / this) in the average (data time); 0 = this frame&apos;s normal only.</source>
         <translation>Die Normalen älterer Bilder klingen im Mittel mit exp(-Alter / diesem Wert) ab (Datenzeit); 0 = nur die Normale dieses Bildes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="250"/>
+        <location filename="../app/sightline/option_texts.cpp" line="251"/>
         <source>On close: how long the stop lines may take to go out before the sockets close.</source>
         <translation>Beim Schließen: wie lange das Senden der Stoppzeilen dauern darf, bevor die Sockets schließen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="251"/>
+        <location filename="../app/sightline/option_texts.cpp" line="252"/>
         <source>On the button: within this many radii of its centre.</source>
         <translation>Auf dem Knopf: innerhalb so vieler Radien um seine Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="252"/>
+        <location filename="../app/sightline/option_texts.cpp" line="253"/>
         <source>Only frames tracked at least this confidently refresh the model.</source>
         <translation>Nur Bilder, die mindestens so sicher verfolgt wurden, erneuern das Modell.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="253"/>
+        <location filename="../app/sightline/option_texts.cpp" line="254"/>
         <source>Otherwise: the camera&apos;s optical centre this far ahead of the odometry base.</source>
         <translation>Sonst: das optische Zentrum der Kamera so weit vor der Odometriebasis.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="254"/>
+        <location filename="../app/sightline/option_texts.cpp" line="255"/>
         <source>Outlier removal: keep points with mean neighbour distance &lt;= mu + alpha sigma.</source>
         <translation>Ausreißerentfernung: Punkte mit mittlerem Nachbarabstand &lt;= mu + alpha sigma behalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="255"/>
+        <location filename="../app/sightline/option_texts.cpp" line="256"/>
         <source>Pairs weigh |measured displacement|^-e in the ML estimate: 1 = the map&apos;s error grows with the distance travelled, 0 = every pair equally noisy.</source>
         <translation>Paare gehen mit |gemessene Verschiebung|^-e in die ML-Schätzung ein: 1 = der Fehler der Karte wächst mit der zurückgelegten Strecke, 0 = jedes Paar gleich verrauscht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="256"/>
+        <location filename="../app/sightline/option_texts.cpp" line="257"/>
         <source>Pairs whose own ratio lies outside a factor of this from the estimate are dropped.</source>
         <translation>Paare, deren eigenes Verhältnis außerhalb eines Faktors dieses Werts von der Schätzung liegt, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="257"/>
+        <location filename="../app/sightline/option_texts.cpp" line="258"/>
         <source>Pause between attempts to reopen a lost device.</source>
         <translation>Pause zwischen Versuchen, ein verlorenes Gerät neu zu öffnen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="258"/>
+        <location filename="../app/sightline/option_texts.cpp" line="259"/>
         <source>Per-client queue length; a slow client loses its oldest messages (counted).</source>
         <translation>Warteschlangenlänge pro Client; ein langsamer Client verliert seine ältesten Nachrichten (gezählt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="259"/>
+        <location filename="../app/sightline/option_texts.cpp" line="260"/>
         <source>Per-segment plane RANSAC inlier distance.</source>
         <translation>RANSAC-Inlier-Abstand der Ebene pro Segment.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="260"/>
+        <location filename="../app/sightline/option_texts.cpp" line="261"/>
         <source>Per-segment plane RANSAC iterations before the least-squares refit (0 = PCA only).</source>
         <translation>RANSAC-Iterationen der Ebene pro Segment vor der Neuanpassung nach kleinsten Quadraten (0 = nur PCA).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="261"/>
+        <location filename="../app/sightline/option_texts.cpp" line="262"/>
         <source>Pixel format as a FOURCC, e.g. MJPG for high resolutions over USB 2; empty keeps the camera&apos;s.</source>
         <translation>Pixelformat als FOURCC, z. B. MJPG für hohe Auflösungen über USB 2; leer behält das der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="262"/>
+        <location filename="../app/sightline/option_texts.cpp" line="263"/>
         <source>Pixels in a person box within this depth of the box&apos;s median depth are the person.</source>
         <translation>Pixel in einem Personenrahmen innerhalb dieser Tiefe um die Mediantiefe des Rahmens gehören zur Person.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="263"/>
+        <location filename="../app/sightline/option_texts.cpp" line="264"/>
         <source>Place every kept position again with the newest metric scale (kept in map units).</source>
         <translation>Jede behaltene Position mit der neuesten metrischen Skala neu platzieren (in Karteneinheiten behalten).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="264"/>
+        <location filename="../app/sightline/option_texts.cpp" line="265"/>
         <source>Plane RANSAC hypotheses of the panel normal.</source>
         <translation>RANSAC-Ebenenhypothesen der Panelnormale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="265"/>
+        <location filename="../app/sightline/option_texts.cpp" line="266"/>
         <source>Plane RANSAC hypotheses.</source>
         <translation>RANSAC-Ebenenhypothesen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="266"/>
+        <location filename="../app/sightline/option_texts.cpp" line="267"/>
         <source>Plane inlier distance.</source>
         <translation>Inlier-Abstand der Ebene.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="267"/>
+        <location filename="../app/sightline/option_texts.cpp" line="268"/>
         <source>Point-to-plane distance of an inlier while fitting the floor.</source>
         <translation>Punkt-Ebene-Abstand eines Inliers bei der Anpassung des Bodens.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="268"/>
+        <location filename="../app/sightline/option_texts.cpp" line="269"/>
         <source>Points are subsampled evenly to at most this many.</source>
         <translation>Punkte werden gleichmäßig auf höchstens so viele unterabgetastet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="269"/>
+        <location filename="../app/sightline/option_texts.cpp" line="270"/>
         <source>Points each ground hypothesis is scored on.</source>
         <translation>Punkte, an denen jede Bodenhypothese bewertet wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="270"/>
+        <location filename="../app/sightline/option_texts.cpp" line="271"/>
         <source>Points farther than this are not used for the fit.</source>
         <translation>Weiter entfernte Punkte werden für die Anpassung nicht verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="271"/>
+        <location filename="../app/sightline/option_texts.cpp" line="272"/>
         <source>Points found in fewer of the frames that should see them are culled.</source>
         <translation>Punkte, die in weniger der Bilder gefunden werden, die sie sehen sollten, werden entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="272"/>
+        <location filename="../app/sightline/option_texts.cpp" line="273"/>
         <source>Points higher than this above the floor (ceiling, lamps) are ignored.</source>
         <translation>Punkte, die höher als dies über dem Boden liegen (Decke, Lampen), werden ignoriert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="273"/>
+        <location filename="../app/sightline/option_texts.cpp" line="274"/>
         <source>Points on the button&apos;s face that move the panel plane onto the face.</source>
         <translation>Punkte auf der Knopffläche, die die Panelebene auf die Fläche verschieben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="274"/>
+        <location filename="../app/sightline/option_texts.cpp" line="275"/>
         <source>Points whose neighbourhood bends more (surface variation, 0 = flat) get no normal and stay unsegmented: edges between surfaces.</source>
         <translation>Punkte, deren Nachbarschaft sich stärker krümmt (Oberflächenvariation, 0 = flach), erhalten keine Normale und bleiben unsegmentiert: Kanten zwischen Flächen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="275"/>
+        <location filename="../app/sightline/option_texts.cpp" line="276"/>
         <source>Prior standard deviation of the offset around zero; smaller trusts the calibration longer.</source>
         <translation>A-priori-Standardabweichung des Versatzes um null; kleiner vertraut der Kalibrierung länger.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="276"/>
+        <location filename="../app/sightline/option_texts.cpp" line="277"/>
         <source>Probability above which a cell is occupied (map.yaml occupied_thresh).</source>
         <translation>Wahrscheinlichkeit, über der eine Zelle belegt ist (map.yaml occupied_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="277"/>
+        <location filename="../app/sightline/option_texts.cpp" line="278"/>
         <source>Probability below which a cell is free (map.yaml free_thresh).</source>
         <translation>Wahrscheinlichkeit, unter der eine Zelle frei ist (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="279"/>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Jedes stride-te gelesene Bild verarbeiten, ab dem ersten (1 = alle): eine Sequenz in Schlüsselbildrate aus einer Aufnahme mit voller Rate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Publish the targets through the arm-target server (button.arm.*); --serve HOST:PORT.</source>
         <translation>Die Ziele über den Armzielserver veröffentlichen (button.arm.*); --serve HOST:PORT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="281"/>
+        <location filename="../app/sightline/option_texts.cpp" line="282"/>
         <source>Published eq. 13: depth-to-colour sensor offset along x.</source>
         <translation>Veröffentlichung Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang x.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="282"/>
+        <location filename="../app/sightline/option_texts.cpp" line="283"/>
         <source>Published eq. 13: depth-to-colour sensor offset along y.</source>
         <translation>Veröffentlichung Gl. 13: Versatz zwischen Tiefen- und Farbsensor entlang y.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
         <source>Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
         <translation>Veröffentlichung Gl. 6: erwartete Inlier-Quote w; Iterationen = log(1-p) / log(1-w^3).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
         <source>Published eq. 6: wanted probability p of drawing one all-inlier sample.</source>
         <translation>Veröffentlichung Gl. 6: gewünschte Wahrscheinlichkeit p, eine Stichprobe nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Pyramidenstufe, auf der Shi-Tomasi-Ecken erkannt werden (0 = volle Auflösung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Pyramidenstufe der Zeilensuche für Merkmale ohne Disparitätsschätzung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Pyramidenstufen des zweiten Tracking-Versuchs (reicht etwa 2^levels weiter).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>Pyramid levels.</source>
         <translation>Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>RANSAC-Inlier-Abstand der essenziellen Matrix und der Homographie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>RANSAC-Ebenenhypothesen (die Hälfte davon innerhalb eines Voxels gezogen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: largest time between the two tf samples a pose at a frame&apos;s stamp is interpolated between; frames in a longer gap get no pose.</source>
         <translation>ROS-Bag: größter Zeitabstand der beiden tf-Samples, zwischen denen eine Pose zum Zeitstempel eines Frames interpoliert wird; Frames in einer längeren Lücke erhalten keine Pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the arm&apos;s base tf frame; the pose of end_effector_frame in it is the arm&apos;s pose when there is no arm_poses.txt.</source>
         <translation>ROS-Bag: der tf-Frame der Armbasis; die Pose von end_effector_frame darin ist die Pose des Arms, wenn es keine arm_poses.txt gibt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the arm&apos;s end-effector tf frame.</source>
         <translation>ROS-Bag: der tf-Frame des Endeffektors des Arms.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>ROS bag: the platform&apos;s tf frame whose pose in odom_frame is the odometry.</source>
         <translation>ROS-Bag: der tf-Frame der Plattform, dessen Pose in odom_frame die Odometrie ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>ROS bag: the tf frame of the odometry; without an odometry topic, the pose of base_frame in it on /tf is the platform&apos;s odometry.</source>
         <translation>ROS-Bag: der tf-Frame der Odometrie; ohne Odometrie-Topic ist die Pose von base_frame darin auf /tf die Odometrie der Plattform.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>Random generator seed.</source>
         <translation>Startwert des Zufallsgenerators.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Startwert des Zufallsgenerators; jeder Scan beginnt damit, sodass Ergebnisse reproduzierbar sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Zufalls-Startwert des Ebenen-RANSAC.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Rate, mit der eine wiedergegebene Aufzeichnung Bilder liefert; 0 folgt ihren Zeitstempeln.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Strahlwinkel, den ein erster Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Strahlwinkel, den ein neuer Kartenpunkt braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>Strahlen enden bei dieser Reichweite; 0 = am Rand des Belegungsbilds.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>Das Wiederfinden wird abgelehnt, wenn die übrigen Übereinstimmungen eine zweite Ähnlichkeitstransformation mit diesem Anteil der Inlier stützen (ein anderer Knopf eines Panels mit Wiederholungen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Jüngste Schlüsselbilder, mit denen ein neues Schlüsselbild neue Punkte trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Auch rektifizieren, wenn das Rig angibt, seine Bilder seien rektifiziert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Jede verfolgte Position gegen den Anker des Tracks verfeinern (wo er zuerst gesehen wurde), dessen Patch mit der Bewegung seither verzerrt, damit Tracks nicht von Bild zu Bild driften.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Die 3D-Punkte mit der Bewegung verfeinern (Zwei-Bild-Bündelausgleichung); entfernt die Tiefenverzerrung der Triangulation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Die Posen der letzten Bilder und die Punkte ihrer Tracks gemeinsam auf dem Stereo-Reprojektionsfehler verfeinern (Bündelausgleichung im gleitenden Fenster), damit sich Fehler einzelner Bilder nicht aufaddieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Ein verfeinerter RMS-Reprojektionsfehler über diesem Wert wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Verfeinerungsrunden: verfeinern, Inlier anhand der Reprojektionsschwelle neu wählen, verfeinern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Regionenwachstum: größter RGB-N-Farbabstand zwischen Nachbarn (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Höhe des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Breite des Interessenbereichs (ROI); 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Tiefe im Gerät auf die Farbkamera registrieren, wenn es das unterstützt, damit sich Tiefen- und Farbpixel entsprechen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Reprojektionsfehler, den ein erster Kartenpunkt in jeder Ansicht haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Reprojektionsfehler, den ein neuer Kartenpunkt in jedem Schlüsselbild haben darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildrate; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Gewünschte Bildhöhe; 0 behält die der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Gewünschte Bildbreite; 0 behält die der Kamera. V4L2 wählt den nächstliegenden Modus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Bewegung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Reset-Regel: Eine Drehung der Posenquelle zwischen zwei Bildern, die größer als dies ist, setzt die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Reset-Regel: So viele aufeinanderfolgende Bilder, deren Wände um mehr als max_correction_deg abweichen, setzen die Referenz zurück.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuum, ab dem eine Übereinstimmung ein Ausreißer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Neu gewichtete Gauß-Newton-Iterationen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Mindestens so viele versuchte starre Stichproben, bevor der adaptive Abbruch greifen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangulation für die Rauheit in Ebenenkoordinaten: das Zellraster oder 2D-Delaunay.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>Die Rauheit verwendet die Punkte des Segments innerhalb dieser Reichweite (alle, wenn keiner darin liegt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rauheit: Punkte werden in Ebenenzellen dieser Größe gemittelt und dann trianguliert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Zeilensuche: Eine mittlere absolute Differenz über diesem Wert bedeutet keine Übereinstimmung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Mapping in einem eigenen Thread ausführen (live); aus = direkt nach jedem Schlüsselbild, deterministisch.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Seitenlänge des SAD-Fensters der Zeilensuche, auf ihrer Stufe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>SIFT contrast threshold.</source>
         <translation>SIFT-Kontrastschwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>SIFT-Kontrastschwelle; niedriger findet mehr Keypoints auf schlichten Knöpfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>SIFT-Keypoints bis zu so weit außerhalb der Region gehören zum Knopfmodell.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>SIFT on a larger region runs on its crop scaled down so the region&apos;s radius is this (fewer, coarser features, much faster on close-up photos); 0 = never.</source>
         <translation>SIFT läuft bei einer größeren Region auf ihrem Ausschnitt, so verkleinert, dass der Radius der Region diesem Wert entspricht (weniger, gröbere Merkmale, bei Nahaufnahmen viel schneller); 0 = nie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>Scale between pyramid levels.</source>
         <translation>Skalierung zwischen Pyramidenstufen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
         <source>Scored cloud written per frame.</source>
         <translation>Pro Bild geschriebene bewertete Punktwolke.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Suchfenster um die vorhergesagte Position eines Kartenpunkts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Serve the targets to the arm over TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 by default. The same as button.run.serve. Switching it keeps the run (map, button, STOP); switching it off sends the arm a stop line.</source>
         <translation>Die Ziele per TCP an den Arm liefern (button.arm.bind_address, port, token); standardmäßig 127.0.0.1:5757. Dasselbe wie button.run.serve. Das Umschalten behält den Lauf (Karte, Knopf, STOPP); das Ausschalten sendet dem Arm eine Stoppzeile.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
+        <location filename="../app/sightline/option_texts.cpp" line="353"/>
         <source>Shi-Tomasi gradient window.</source>
         <translation>Shi-Tomasi-Gradientenfenster.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="353"/>
+        <location filename="../app/sightline/option_texts.cpp" line="354"/>
         <source>Shi-Tomasi: smallest minimum eigenvalue of a corner (cv::cornerMinEigenVal units).</source>
         <translation>Shi-Tomasi: kleinster minimaler Eigenwert einer Ecke (Einheiten von cv::cornerMinEigenVal).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="354"/>
+        <location filename="../app/sightline/option_texts.cpp" line="355"/>
         <source>Shorter lines are dropped.</source>
         <translation>Kürzere Linien werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="355"/>
+        <location filename="../app/sightline/option_texts.cpp" line="356"/>
         <source>Side of the aligned patch (odd).</source>
         <translation>Seitenlänge des ausgerichteten Patches (ungerade).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="356"/>
+        <location filename="../app/sightline/option_texts.cpp" line="357"/>
         <source>Side of the detection grid&apos;s buckets; each holds at most its share of max_features.</source>
         <translation>Seitenlänge der Zellen (Buckets) des Erkennungsrasters; jede hält höchstens ihr Kontingent an max_features.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="357"/>
+        <location filename="../app/sightline/option_texts.cpp" line="358"/>
         <source>Similarity RANSAC inlier distance.</source>
         <translation>Inlier-Abstand der RANSAC-Ähnlichkeitstransformation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="358"/>
+        <location filename="../app/sightline/option_texts.cpp" line="359"/>
         <source>Size change since the last refresh that triggers the next.</source>
         <translation>Größenänderung seit der letzten Erneuerung, die die nächste auslöst.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="359"/>
+        <location filename="../app/sightline/option_texts.cpp" line="360"/>
         <source>Smaller estimates are not applied: within the spread the estimate shows on a rig without offset (the simulator: +-0.03 px).</source>
         <translation>Kleinere Schätzungen werden nicht angewandt: Sie liegen innerhalb der Streuung, die die Schätzung auf einem Rig ohne Versatz zeigt (der Simulator: +-0.03 px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="360"/>
+        <location filename="../app/sightline/option_texts.cpp" line="361"/>
         <source>Smaller regions stay unsegmented and unscored.</source>
         <translation>Kleinere Regionen bleiben unsegmentiert und unbewertet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="361"/>
+        <location filename="../app/sightline/option_texts.cpp" line="362"/>
         <source>Smallest 1-sigma stated for one frame&apos;s normal (the map points&apos; errors are correlated, so the fit&apos;s own figure is optimistic).</source>
         <translation>Kleinstes für die Normale eines Bildes angegebenes 1-Sigma (die Fehler der Kartenpunkte sind korreliert, daher ist der eigene Wert der Anpassung zu optimistisch).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="362"/>
+        <location filename="../app/sightline/option_texts.cpp" line="363"/>
         <source>Smallest Hough circle radius.</source>
         <translation>Kleinster Radius der Hough-Kreise.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="363"/>
+        <location filename="../app/sightline/option_texts.cpp" line="364"/>
         <source>Smallest approach_sigma_deg a target states: the average of frames that share one map does not beat the map&apos;s own bias (on the simulated approach with the SLAM&apos;s map, up to 4.3 deg against per-frame fits of 0.5 deg).</source>
         <translation>Kleinstes approach_sigma_deg, das ein Ziel angibt: Das Mittel von Bildern, die sich eine Karte teilen, ist nicht besser als die eigene Verzerrung der Karte (bei der simulierten Anfahrt mit der Karte des SLAM bis zu 4.3 deg gegenüber Anpassungen einzelner Bilder von 0.5 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="364"/>
+        <location filename="../app/sightline/option_texts.cpp" line="365"/>
         <source>Smallest button region.</source>
         <translation>Kleinste Knopfregion.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="365"/>
+        <location filename="../app/sightline/option_texts.cpp" line="366"/>
         <source>Split a piece while a point lies farther than this from its chord; merge pieces that fit one line within it (cells, like RANSAC&apos;s err_max).</source>
         <translation>Ein Stück teilen, solange ein Punkt weiter als dies von seiner Sehne entfernt liegt; Stücke zusammenführen, die innerhalb dieses Werts auf eine Linie passen (Zellen, wie err_max von RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="367"/>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Am Ende von vorn beginnen (die Zeitstempel steigen weiter), statt den Stream zu beenden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Step B2: ... and at most this far apart (no lines across the room).</source>
         <translation>Schritt B2: ... und höchstens so weit auseinander (keine Linien quer durch den Raum).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="369"/>
+        <location filename="../app/sightline/option_texts.cpp" line="370"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Schritt B2: Die beiden gezogenen Punkte müssen mindestens so weit auseinanderliegen (keine kurzen Linien).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
         <source>Stereo calibration (OpenCV stereo YAML as `sightline-cli calibrate stereo` writes) used instead of the source&apos;s; needed for live pairs (aravis://L,R) opened without one.</source>
         <translation>Stereokalibrierung (OpenCV-Stereo-YAML, wie `sightline-cli calibrate stereo` sie schreibt), die statt der der Quelle verwendet wird; nötig für Live-Paare (aravis://L,R), die ohne eine geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <location filename="../app/sightline/option_texts.cpp" line="375"/>
         <source>Stereo calibration of the pair (OpenCV stereo YAML: M1 D1 M2 D2 R T, image_width/height, as `sightline-cli calibrate stereo` writes); the stereo odometry needs it. Also as aravis://LEFT,RIGHT?calibration_file=FILE.</source>
         <translation>Stereokalibrierung des Paars (OpenCV-Stereo-YAML: M1 D1 M2 D2 R T, image_width/height, wie `sightline-cli calibrate stereo` sie schreibt); die Stereo-Odometrie braucht sie. Auch als aravis://LEFT,RIGHT?calibration_file=FILE.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="375"/>
+        <location filename="../app/sightline/option_texts.cpp" line="376"/>
         <source>Stop when the update is smaller (radians or metres).</source>
         <translation>Aufhören, wenn die Aktualisierung kleiner ist (Radiant oder Meter).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="376"/>
+        <location filename="../app/sightline/option_texts.cpp" line="377"/>
         <source>Stream colour.</source>
         <translation>Farbe streamen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="377"/>
+        <location filename="../app/sightline/option_texts.cpp" line="378"/>
         <source>Stream depth.</source>
         <translation>Tiefe streamen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="378"/>
+        <location filename="../app/sightline/option_texts.cpp" line="379"/>
         <source>Stream height for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Streamhöhe für Tiefe und Farbe; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="379"/>
+        <location filename="../app/sightline/option_texts.cpp" line="380"/>
         <source>Stream rate; 0 keeps the device&apos;s default mode.</source>
         <translation>Streamrate; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="380"/>
+        <location filename="../app/sightline/option_texts.cpp" line="381"/>
         <source>Stream width for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Streambreite für Tiefe und Farbe; 0 behält den Standardmodus des Geräts.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="381"/>
+        <location filename="../app/sightline/option_texts.cpp" line="382"/>
         <source>TCP port of the target server; 0 = any free port.</source>
         <translation>TCP-Port des Zielservers; 0 = ein beliebiger freier Port.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="382"/>
+        <location filename="../app/sightline/option_texts.cpp" line="383"/>
         <source>Take the camera&apos;s offset ahead of the odometry base from the recording&apos;s scene.yaml (simulator) when present.</source>
         <translation>Den Versatz der Kamera vor der Odometriebasis aus der scene.yaml der Aufzeichnung (Simulator) übernehmen, wenn vorhanden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="383"/>
+        <location filename="../app/sightline/option_texts.cpp" line="384"/>
         <source>The SIFT margin grows to this many region radii when that is larger.</source>
         <translation>Der SIFT-Rand wächst auf so viele Regionsradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="384"/>
+        <location filename="../app/sightline/option_texts.cpp" line="385"/>
         <source>The approach direction is the normal of a plane through the map points within this distance of the located button (the panel around it).</source>
         <translation>Die Anfahrrichtung ist die Normale einer Ebene durch die Kartenpunkte innerhalb dieses Abstands vom gefundenen Knopf (das Panel um ihn herum).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="385"/>
+        <location filename="../app/sightline/option_texts.cpp" line="386"/>
         <source>The arm&apos;s and the SLAM&apos;s displacement directions disagree by more than this (online hand-eye check; a wrong mount rotation): no target.</source>
         <translation>Die Verschiebungsrichtungen von Arm und SLAM weichen um mehr als dies voneinander ab (Online-Hand-Auge-Prüfung; eine falsche Montagerotation): kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="386"/>
+        <location filename="../app/sightline/option_texts.cpp" line="387"/>
         <source>The arm&apos;s clock minus the camera&apos;s (configured; arm stamp = frame stamp + this).</source>
         <translation>Die Uhr des Arms minus die der Kamera (konfiguriert; Armzeitstempel = Bildzeitstempel + dieser Wert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="387"/>
+        <location filename="../app/sightline/option_texts.cpp" line="388"/>
         <source>The current frame becomes the keyframe when fewer keyframe tracks agree with the motion.</source>
         <translation>Das aktuelle Bild wird zum Schlüsselbild, wenn weniger Tracks des Schlüsselbilds mit der Bewegung übereinstimmen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="388"/>
+        <location filename="../app/sightline/option_texts.cpp" line="389"/>
         <source>The current frame becomes the keyframe when fewer of the keyframe&apos;s tracks survive.</source>
         <translation>Das aktuelle Bild wird zum Schlüsselbild, wenn weniger Tracks des Schlüsselbilds überleben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="389"/>
+        <location filename="../app/sightline/option_texts.cpp" line="390"/>
         <source>The depth colour map spans zero to this range.</source>
         <translation>Die Tiefen-Farbskala reicht von null bis zu diesem Wert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="390"/>
+        <location filename="../app/sightline/option_texts.cpp" line="391"/>
         <source>The estimated offset is clamped to +- this.</source>
         <translation>Der geschätzte Versatz wird auf +- diesen Wert begrenzt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="391"/>
+        <location filename="../app/sightline/option_texts.cpp" line="392"/>
         <source>The floor is the lowest plane: at most this fraction of points may lie clearly below it (rejects table tops).</source>
         <translation>Der Boden ist die niedrigste Ebene: Höchstens dieser Anteil der Punkte darf deutlich darunter liegen (verwirft Tischplatten).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="392"/>
+        <location filename="../app/sightline/option_texts.cpp" line="393"/>
         <source>The floor must hold at least this fraction of the valid points.</source>
         <translation>Der Boden muss mindestens diesen Anteil der gültigen Punkte enthalten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="393"/>
+        <location filename="../app/sightline/option_texts.cpp" line="394"/>
         <source>The gate grows to this many predicted button radii when that is larger.</source>
         <translation>Das Gate wächst auf so viele vorhergesagte Knopfradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="394"/>
+        <location filename="../app/sightline/option_texts.cpp" line="395"/>
         <source>The gate widens by this per metre driven since the last correction (expected heading drift of the pose source).</source>
         <translation>Das Gate weitet sich um diesen Wert pro seit der letzten Korrektur gefahrenem Meter (erwartete Richtungsdrift der Posenquelle).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="395"/>
+        <location filename="../app/sightline/option_texts.cpp" line="396"/>
         <source>The homography is chosen when its share of the inliers exceeds this.</source>
         <translation>Die Homographie wird gewählt, wenn ihr Anteil an den Inliern diesen Wert übersteigt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="396"/>
+        <location filename="../app/sightline/option_texts.cpp" line="397"/>
         <source>The map grows by at least this much each time it must.</source>
         <translation>Die Karte wächst jedes Mal, wenn sie muss, um mindestens so viel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="397"/>
+        <location filename="../app/sightline/option_texts.cpp" line="398"/>
         <source>The maximum-likelihood estimate is reported from this many pairs on.</source>
         <translation>Die Maximum-Likelihood-Schätzung wird ab so vielen Paaren gemeldet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="398"/>
+        <location filename="../app/sightline/option_texts.cpp" line="399"/>
         <source>The metric scale counts as converged with this many displacement pairs in the ML estimate at least ...</source>
         <translation>Die metrische Skala gilt als konvergiert mit mindestens so vielen Verschiebungspaaren in der ML-Schätzung ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="399"/>
+        <location filename="../app/sightline/option_texts.cpp" line="400"/>
         <source>The model never grows beyond this many keypoints.</source>
         <translation>Das Modell wächst nie über so viele Keypoints hinaus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="400"/>
+        <location filename="../app/sightline/option_texts.cpp" line="401"/>
         <source>The offset is measured between an anchor frame and the first later frame whose translation from it reaches this fraction of the common tracks&apos; median depth: with less parallax, tracking errors dominate the measurement.</source>
         <translation>Der Versatz wird zwischen einem Ankerbild und dem ersten späteren Bild gemessen, dessen Translation davon diesen Anteil der Mediantiefe der gemeinsamen Tracks erreicht: Bei weniger Parallaxe dominieren Tracking-Fehler die Messung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="401"/>
+        <location filename="../app/sightline/option_texts.cpp" line="402"/>
         <source>The online hand-eye check compares keyframes at least this far apart (measured): the directions of shorter displacements drown in the noise.</source>
         <translation>Die Online-Hand-Auge-Prüfung vergleicht Schlüsselbilder, die mindestens so weit auseinanderliegen (gemessen): Die Richtungen kürzerer Verschiebungen gehen im Rauschen unter.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="402"/>
+        <location filename="../app/sightline/option_texts.cpp" line="403"/>
         <source>The online hand-eye check sees the mount&apos;s translation only when the arm rotates at least this much between two keyframes.</source>
         <translation>Die Online-Hand-Auge-Prüfung sieht die Translation der Montage nur, wenn sich der Arm zwischen zwei Schlüsselbildern mindestens so weit dreht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="403"/>
+        <location filename="../app/sightline/option_texts.cpp" line="404"/>
         <source>The operator&apos;s tap is refused when the frame it was made on is older than this (data time) by the time the pipeline takes it.</source>
         <translation>Das Antippen des Bedieners wird abgelehnt, wenn das Bild, auf dem es erfolgte, älter als dies ist (Datenzeit), sobald die Pipeline es übernimmt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="404"/>
+        <location filename="../app/sightline/option_texts.cpp" line="405"/>
         <source>The operator&apos;s tap: X,Y in pixels, optionally @FRAME (frame index, default 0); confirmed at once. sightline-cli run button --tap X,Y[@FRAME] sets it.</source>
         <translation>Das Antippen des Bedieners: X,Y in Pixeln, optional @FRAME (Bildindex, Standard 0); sofort bestätigt. sightline-cli run button --tap X,Y[@FRAME] setzt es.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="405"/>
+        <location filename="../app/sightline/option_texts.cpp" line="406"/>
         <source>The panel plane passes at most this far from the located button: of the surfaces around it (a side wall, a door frame) only the one holding the button gives the push direction.</source>
         <translation>Die Panelebene verläuft höchstens so weit vom gefundenen Taster entfernt: von den Flächen um ihn herum (eine Seitenwand, ein Türrahmen) gibt nur die, die den Taster trägt, die Drückrichtung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="406"/>
+        <location filename="../app/sightline/option_texts.cpp" line="407"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>Die Größe allein aus den eigenen Schlüsselpunkten des Tippens (nicht den aufgefrischten, deren Maßstab driftet; das Looming in button.triangulate.*) braucht so viele konsistente Zuordnungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="407"/>
+        <location filename="../app/sightline/option_texts.cpp" line="408"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>Die Größe nur aus den eigenen Schlüsselpunkten des Tippens (ButtonTrack::anchor_scale: die vom Auffrischen des Trackers hinzugefügten Schlüsselpunkte tragen den Maßstabsfehler jedes Auffrischens weiter); false: der verfolgte Radius.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="408"/>
+        <location filename="../app/sightline/option_texts.cpp" line="409"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>Das Ziel ist der achsweise Median so vieler jüngster Positionen im Basissystem (verlässliche Ebene, konvergierte Skala); 0 = jede seit dem Antippen, 1 = keine Fusion.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="409"/>
+        <location filename="../app/sightline/option_texts.cpp" line="410"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>Das Tracking-Gate überschreitet nie diesen Wert: Größere Korrekturen werden nicht angewandt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="410"/>
+        <location filename="../app/sightline/option_texts.cpp" line="411"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>Das Fenster wächst auf so viele vorhergesagte Knopfradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="411"/>
+        <location filename="../app/sightline/option_texts.cpp" line="412"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Toleranz von accuracy.map_iou: Eine Kartenzelle innerhalb so vieler Zellen einer wahren Wand zählt als darauf liegend.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="412"/>
+        <location filename="../app/sightline/option_texts.cpp" line="413"/>
         <source>Top-view grid cell.</source>
         <translation>Rasterzelle der Draufsicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="413"/>
+        <location filename="../app/sightline/option_texts.cpp" line="414"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Auf dem Overlay hinter dem Knopf gezeichnete Trackpunkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="414"/>
+        <location filename="../app/sightline/option_texts.cpp" line="415"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Tracking-Gate direkt nach einer Korrektur: Linien, die weiter als dies von der erwarteten Richtung abweichen, stimmen weder ab noch korrigieren sie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="415"/>
+        <location filename="../app/sightline/option_texts.cpp" line="416"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>Das Tracking ist verloren, wenn weniger als dieser Anteil der im Bild vorhergesagten Kartenpunkte gefunden wird (der Test von PTAM gegen eine falsche Pose nach einem Sprung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="416"/>
+        <location filename="../app/sightline/option_texts.cpp" line="417"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern gut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="417"/>
+        <location filename="../app/sightline/option_texts.cpp" line="418"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern schlecht; weniger gilt als verloren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="418"/>
+        <location filename="../app/sightline/option_texts.cpp" line="419"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Triangulierte Punkte, die zum Akzeptieren der Initialisierung nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="419"/>
+        <location filename="../app/sightline/option_texts.cpp" line="420"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: Änderung eines paarweisen Abstands, die eine starre Stichprobe zeigen darf, bevor die Tiefenunsicherheit addiert wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="420"/>
+        <location filename="../app/sightline/option_texts.cpp" line="421"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: Starrheitsablehnungen, nach denen RANSAC scheitert (die letzte Bewegung bleibt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="421"/>
+        <location filename="../app/sightline/option_texts.cpp" line="422"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: Reprojektionsfehler (RMS beider Bilder) eines Inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="422"/>
+        <location filename="../app/sightline/option_texts.cpp" line="423"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: das Ziehen beenden, sobald dieser Anteil der Punkte Inlier ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="423"/>
+        <location filename="../app/sightline/option_texts.cpp" line="424"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: versuchte starre Stichproben, bevor die beste Inlier-Menge übernommen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="424"/>
+        <location filename="../app/sightline/option_texts.cpp" line="425"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Gesuchte nach oben gerichtete Ebenen; die niedrigste große ist der Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="425"/>
+        <location filename="../app/sightline/option_texts.cpp" line="426"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Obere Begrenzung der Log-Odds einer Zelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="426"/>
+        <location filename="../app/sightline/option_texts.cpp" line="427"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Jedes n-te Tiefenpixel für die 3D-Wolke verwenden; 1 zeigt alle (langsamer).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="427"/>
+        <location filename="../app/sightline/option_texts.cpp" line="428"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Neben den Strahlen die scheinbare Größe nutzen (Looming: der Radius wächst mit 1 / Tiefe, während der Arm um eine gemessene Strecke vorfährt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="428"/>
+        <location filename="../app/sightline/option_texts.cpp" line="429"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Sehstrahl paralleler zur Ebene als dieses |cos|: keine Position.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="429"/>
+        <location filename="../app/sightline/option_texts.cpp" line="430"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Abstimmende Linien innerhalb dieses Werts um ihren längengewichteten Median werden gemittelt; andere (eine mit einer Türnische verschmolzene Wand, eine Kiste) werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="430"/>
+        <location filename="../app/sightline/option_texts.cpp" line="431"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Abstimmende Wandlänge, die ein Bild braucht, bevor es die Referenzrichtung setzen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="431"/>
+        <location filename="../app/sightline/option_texts.cpp" line="432"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Voxelgröße für lokal gezogene Hypothesen (findet einen Boden, der wenig vom Bild bedeckt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="432"/>
+        <location filename="../app/sightline/option_texts.cpp" line="433"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Wandlinien, die kürzer als dies sind, stimmen nicht über die Richtung ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Wandlinien mit weniger Scanpunkten stimmen nicht ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Geringere Tracking-Sicherheit: kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Jede Position mit 1 / ihrer eigenen Varianz gewichten (Ebenenanpassung und verfolgte Mitte, mit dem Abstand wachsend): Die nahen Bilder der Anfahrt zählen am meisten. Standardmäßig aus: bei den simulierten Anfahrten schlechter gemessen (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt, wie es die Zwei-Bild-Verfeinerung tut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Gewicht der Streuung der fusionierten Positionen (1.4826 x mittlere absolute Abweichung vom fusionierten Ziel) in der angegebenen Unsicherheit.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Was eine verworfene Bewegung ersetzt: die letzte akzeptierte oder keine.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Wenn weniger Tracks überleben als dieser Anteil des im vorigen Bild überlebenden Anteils (schlechte Bewegungsvorhersage), werden die verlorenen mit retrack_pyramid_levels erneut verfolgt; 0 = nie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Wenn gesetzt, muss ein Client {&quot;token&quot;: &quot;...&quot;} senden, bevor er etwas erhält; erforderlich, wenn bind_address keine Loopback-Adresse ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <source>Width of the reduced copies of the two images compared in that search.</source>
+        <translation>Breite der verkleinerten Kopien der beiden Bilder, die bei dieser Suche verglichen werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Fenster des zweiten Durchgangs, nach einer ersten Pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Fenster, das verwendet wird, wenn die erste Suche zu wenige Punkte findet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Mit einem Token: Eine Verbindung, die es nach dieser Zeit nicht vorgelegt hat, wird geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Bei weniger als min_matches, aber mindestens so vielen Zuordnungen leitet eine daraus geschätzte Essentielle Matrix eine zweite Zuordnung entlang der Epipolarlinien (große Bewegung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Mit png: auch overlay.avi (Motion-JPEG über den eingebauten Writer von OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Mit serve: das Warten auf Clients nach dieser Zeit aufgeben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Mit serve: nach dem letzten Bild noch so lange weiter bereitstellen, damit wartende Ziele hinausgehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Mit serve: vor dem ersten Bild auf so viele verbundene Clients warten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Ohne Referenz: Linien innerhalb dieses Werts um die am besten gestützte Richtung (modulo 90 deg) stimmen ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Workspace box, base x max.</source>
         <translation>Arbeitsraumquader, Basis x max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Workspace box, base x min.</source>
         <translation>Arbeitsraumquader, Basis x min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Workspace box, base y max.</source>
         <translation>Arbeitsraumquader, Basis y max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Workspace box, base y min.</source>
         <translation>Arbeitsraumquader, Basis y min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Workspace box, base z max.</source>
         <translation>Arbeitsraumquader, Basis z max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Workspace box, base z min.</source>
         <translation>Arbeitsraumquader, Basis z min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Die Projektions- und Draufsicht-PNGs pro Bild schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: Eine wahre Wand ist in einem Bild sichtbar, wenn mindestens so viel von ihr im Blickfeld liegt ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>arm_pose-Nachrichten, die in der Zeit des Arms näher als 1/dieser Wert beieinanderliegen, werden verworfen (gezählt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>arm_pose-Nachrichten, die weiter als dies hinter der neuesten liegen, werden vergessen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); leer = neben dem Sensorordner.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Plattform custom: Ein Segment, das mehr als dies über den Boden erhöht ist, erhält den Wert 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Plattform custom: Weiter vom Sensor entfernte Punkte werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: Dreiecke mit einer Kante, die länger als so viele Zellen ist, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
         <translation>depth: Die Oberkante einer Person liegt mindestens so viele Grundflächenlängen über dem Boden (ein Schreibtisch, ein Tisch oder ein Sofa ist breiter als hoch).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
         <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er den Bildrand berührt (ein abgeschnittener Körper wird niedriger bewertet).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
         <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er ganz im Bild liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: Wenn an, ist ein Cluster, der die oberste Bildzeile erreicht (seine Oberkante liegt außerhalb des Bildes), keine Person: weniger falsche Personen am Bildrand, aber Personen, die so nah sind, dass ihr Kopf abgeschnitten ist, werden übersehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
         <translation>depth: Ist das Farbbild zum Tiefenbild registriert, muss auch OpenCVs HOG-Personendetektor den Rahmen jedes Clusters bestätigen (ein Stuhl oder Schreibtisch von Personengröße fällt weg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: Paare nach Kamerazeitstempeln bilden (Kameras mit gemeinsamer Uhr, z. B. PTP oder gemeinsamer Trigger); host: Paare nach Ankunftszeit am Host bilden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: Die Kamera läuft mit eigenem Takt; software: Der Host triggert jedes Bild (beide Kameras eines Paars gemeinsam); hardware: ein externer Impuls auf trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: jedes n-te Pixel in beiden Richtungen (anstelle des Voxelgitters).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: Rasternachbarn, deren Tiefen sich um mehr als diesen Anteil unterscheiden, sind getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: halbe Breite des Fensters der Rasterpunkte, an die jede Normale angepasst wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); leer = neben arm_poses (für arm_stream: neben den Bildern); none = Identität.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (Schritt E): höchstens so viele Linien.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: Hough-Kreise hinzufügen (runde Knöpfe, dünne Ringe).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: Unschärfe der zweiten Skala, mal blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: halbe Größe des Fensters um die Tippstelle, das durchsucht wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: längste durch kürzeste Seite des gedrehten Rahmens einer Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: Regionen werden nach (Versatz + Bias) / Radius gereiht, sodass der Umriss des Knopfs gegen ein Symbol darauf gewinnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: Der Schwerpunkt der Region liegt höchstens so viele Radien von der Tippstelle entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: Die beiden Canny-Paare sind die Schwellen mal 2/(1+s) und 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p der adaptiven Anzahl: Wahrscheinlichkeit, ein Paar nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: Nachbarradius des Regionenwachstums.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: Nachbarn der Normalenanpassung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: Nachbarn der Ausreißerentfernung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: Blattgröße des Voxelgitters.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="508"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (Schritt B8): Eine Hypothese mit mehr Inliern als diesem Anteil beendet die Suche.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="509"/>
+        <location filename="../app/sightline/option_texts.cpp" line="512"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (Schritte B5, B6): Eine Linie braucht diesen Anteil der verbleibenden Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="510"/>
+        <location filename="../app/sightline/option_texts.cpp" line="513"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (Schritt E): aufhören, sobald dieser Anteil der Punkte auf Linien liegt.</translation>
     </message>
@@ -4086,67 +4101,67 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Art der aus einer ROS-Bag gelesenen Bilder; auto wählt RGB-D, dann Stereo, dann Mono, dann Punktwolken, je nachdem, was die Topics der Bag erlauben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="235"/>
+        <location filename="../app/sightline/option_texts.cpp" line="236"/>
         <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the published rule).</source>
         <translation>Neue Mitte: die Modellmitte über eine RANSAC-Ähnlichkeitstransformation der Übereinstimmungen oder der Schwerpunkt der übereinstimmenden Keypoints (die Regel der Veröffentlichung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="246"/>
+        <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as published; depth noise behind walls stays).</source>
         <translation>Belegt-Evidenz: die Treffer des Polarscans (sichtbare Flächen, dünne Wände) oder jede belegte Zelle des Belegungsbilds (wie veröffentlicht; Tiefenrauschen hinter Wänden bleibt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="278"/>
+        <location filename="../app/sightline/option_texts.cpp" line="279"/>
         <source>Process every k-th frame (the published subsampling sweep); --subsample K.</source>
         <translation>Jedes k-te Bild verarbeiten (der Unterabtastungsdurchlauf der Veröffentlichung); --subsample K.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>ROS-Bag: Die Referenz ist die Pose von tf_child_frame in diesem tf-Frame; leer nimmt die einzige Transformationskette der Bag auf /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>ROS-Bag: größter Zeitstempelabstand eines Farb-/Tiefen- oder Links-/Rechts-Paars; Bilder ohne Partner werden übersprungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>ROS-Bag: das CameraInfo-Topic des Bild-Topics; leer sucht neben dem Bild-Topic und nimmt dann das einzige CameraInfo-Topic der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>ROS-Bag: das PointCloud2-Topic, das als Punktwolken gelesen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>ROS-Bag: der tf-Frame der Kamera, dessen Pose in tf_parent_frame die Referenz ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Farb-, linke oder Mono-Bild-Topic (Image oder CompressedImage); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>ROS-Bag: das Tiefenbild-Topic (16UC1 Millimeter oder 32FC1 Meter); leer wählt es, wenn die Bag keinen Zweifel lässt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>ROS-Bag: das nav_msgs/Odometry-Topic; leer nimmt das einzige der Bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>ROS-Bag: das CameraInfo-Topic der rechten Kamera; seine Projektionsmatrix P ergibt die Stereobasis.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>ROS-Bag: das rechte Bild-Topic eines Stereopaars; leer wählt das Topic, dessen Name right sagt, neben einem, dessen Name left sagt.</translation>
     </message>

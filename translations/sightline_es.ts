@@ -2461,132 +2461,137 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Altura de la imagen de ocupación (publicado: 400), es decir, el alcance hacia delante en celdas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="321"/>
+        <location filename="../app/sightline/option_texts.cpp" line="322"/>
         <source>Region from the tap: outlines at two scales plus Hough circles, the one holding the tap nearest its centre (multiscale), or the published rule (the centroid nearest the tap within max_tap_distance_px).</source>
         <translation>Región desde el toque: contornos a dos escalas más círculos de Hough, la que contiene el toque más cerca de su centro (multiscale), o la regla de la publicación (el centroide más cercano al toque dentro de max_tap_distance_px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="348"/>
+        <location filename="../app/sightline/option_texts.cpp" line="349"/>
         <source>Score drawn in the maps: the published Table I rule or the Gaussian process.</source>
         <translation>Puntuación dibujada en los mapas: la regla de la Tabla I de la publicación o el proceso gaussiano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="366"/>
+        <location filename="../app/sightline/option_texts.cpp" line="367"/>
         <source>Start a new map when the reset rule fires (as published); off keeps stitching.</source>
         <translation>Empezar un mapa nuevo cuando se dispara la regla de reinicio (como se publicó); desactivado sigue uniendo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="370"/>
+        <location filename="../app/sightline/option_texts.cpp" line="371"/>
         <source>Step B6: cut the consensus set at gaps wider than this along the line and keep the longest piece, so that lines are contiguous walls (0 = as published: no cut).</source>
         <translation>Paso B6: cortar el conjunto de consenso en los huecos a lo largo de la línea más anchos que esto y conservar el tramo más largo, para que las líneas sean paredes continuas (0 = como se publicó: sin corte).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="371"/>
+        <location filename="../app/sightline/option_texts.cpp" line="372"/>
         <source>Step B7: keep the hypothesis with the lowest summed error (as published) or mean error.</source>
         <translation>Paso B7: conservar la hipótesis con el menor error sumado (como se publicó) o con el menor error medio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="372"/>
+        <location filename="../app/sightline/option_texts.cpp" line="373"/>
         <source>Step C: re-find the chosen line&apos;s dominant surface by sweeping its direction this far either way, then refit on it (0 = as published: the line of step B6 as is).</source>
         <translation>Paso C: volver a encontrar la superficie dominante de la línea elegida girando su dirección esto hacia cada lado, y luego reajustar sobre ella (0 = como se publicó: la línea del paso B6 tal cual).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Extractor de líneas de pared: el RANSAC multilínea de la publicación o split-and-merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <source>When even after that fewer tracks survive than this fraction of the share that usually survives (a slow average over the last frames; a sharp turn, or a turn at a low frame rate), the camera&apos;s rotation is searched by comparing the two images and the points are tracked again from where it puts them; the better attempt is kept. 0 = never.</source>
+        <translation>Si aun después sobreviven menos pistas que esta fracción de la parte que suele sobrevivir (un promedio lento de los últimos fotogramas; un giro cerrado o un giro a baja frecuencia de imagen), se busca la rotación de la cámara comparando las dos imágenes y los puntos se siguen de nuevo desde donde ella los coloca; se conserva el mejor intento. 0 = nunca.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, clusters of a person&apos;s size standing on the floor in the depth image (depth), OpenCV&apos;s HOG detector on the colour image, auto (ground truth when present, else depth) or none.</source>
         <translation>De dónde vienen los recuadros de personas: la verdad de referencia del conjunto de datos, grupos de puntos del tamaño de una persona de pie sobre el suelo en la imagen de profundidad (depth), el detector HOG de OpenCV en la imagen en color, auto (verdad de referencia si existe, si no depth) o none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Anchura de la imagen de ocupación (publicado: 400); el robot está en el centro del borde inferior.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>depth: a head is the highest point within this radius; people side by side are split at their heads.</source>
         <translation>depth: una cabeza es el punto más alto dentro de este radio; las personas una al lado de otra se separan por sus cabezas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>depth: a person&apos;s footprint is at least this long.</source>
         <translation>depth: la huella de una persona mide al menos esto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>depth: a person&apos;s footprint is at most this long (walls are longer); wider clusters are split at their heads.</source>
         <translation>depth: la huella de una persona mide como mucho esto (las paredes son más largas); los grupos más anchos se separan por sus cabezas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>depth: a person&apos;s lowest point lies at most this high above the floor.</source>
         <translation>depth: el punto más bajo de una persona está como mucho a esta altura sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>depth: a person&apos;s top lies at least this high above the floor.</source>
         <translation>depth: el punto más alto de una persona está al menos a esta altura sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: el punto más alto de una persona está como mucho a esta altura (las paredes y columnas suben más).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: entre dos cabezas las alturas bajan al menos esto (cuello, hombros); el borde superior cortado de una pared es plano y no se separa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: celda de la rejilla del suelo en la que se agrupan los puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: los puntos más lejanos no se consideran.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: puntos muestreados que necesita una persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: la imagen de profundidad se muestrea a unas tantas columnas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: el lado más corto de la huella de una persona mide al menos esto (piernas, brazos y la curva del torso); el extremo de una pared visto en el borde de la imagen tiene una celda de grosor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto dentro de esta altura respecto al plano del suelo es suelo (valor publicado 3.5, leído como 3.5 cm: generoso para que ningún píxel del suelo se marque como ocupado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distancia de inliers en celdas de ocupación (publicado: 5 píxeles); metros = celdas x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: camino por la rejilla de píxeles organizada (rápido); pcl: el camino de la publicación con rejilla de vóxeles, eliminación de outliers y árbol k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: hipótesis por línea (publicado: 250); también limita el recuento adaptativo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="511"/>
+        <location filename="../app/sightline/option_texts.cpp" line="514"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide de la publicación); custom: range_cut_m y max_step_m.</translation>
     </message>
@@ -2767,1316 +2772,1326 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="210"/>
+        <source>Largest turn between two frames that search looks for.</source>
+        <translation>Giro máximo entre dos fotogramas que busca esa búsqueda.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="211"/>
         <source>Left-right check: the right point tracked back must land this close; 0 = no check.</source>
         <translation>Comprobación izquierda-derecha: el punto derecho seguido hacia atrás debe caer así de cerca; 0 = sin comprobación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="211"/>
+        <location filename="../app/sightline/option_texts.cpp" line="212"/>
         <source>Length of the first baseline in map units (PTAM: 0.1); metric scale comes later.</source>
         <translation>Longitud de la primera línea base en unidades del mapa (PTAM: 0.1); la escala métrica llega después.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="212"/>
+        <location filename="../app/sightline/option_texts.cpp" line="213"/>
         <source>Levenberg-Marquardt iterations per frame.</source>
         <translation>Iteraciones de Levenberg-Marquardt por fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="213"/>
+        <location filename="../app/sightline/option_texts.cpp" line="214"/>
         <source>Lines vote with weight length / (1 + (rms / rms_scale_m)^2): scattered consensus sets (a wall merged with a door recess) count less.</source>
         <translation>Las líneas votan con peso longitud / (1 + (rms / rms_scale_m)^2): los conjuntos de consenso dispersos (una pared fusionada con el hueco de una puerta) cuentan menos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="214"/>
+        <location filename="../app/sightline/option_texts.cpp" line="215"/>
         <source>Lines with fewer points are dropped.</source>
         <translation>Se descartan las líneas con menos puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="215"/>
+        <location filename="../app/sightline/option_texts.cpp" line="216"/>
         <source>Log-odds added when a frame sees a cell free.</source>
         <translation>Log-odds que se suman cuando un fotograma ve una celda libre.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="216"/>
+        <location filename="../app/sightline/option_texts.cpp" line="217"/>
         <source>Log-odds added when a frame sees a cell occupied.</source>
         <translation>Log-odds que se suman cuando un fotograma ve una celda ocupada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="217"/>
+        <location filename="../app/sightline/option_texts.cpp" line="218"/>
         <source>Longer client lines are discarded; an over-long token line closes the connection.</source>
         <translation>Las líneas de cliente más largas se descartan; una línea de token demasiado larga cierra la conexión.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="218"/>
+        <location filename="../app/sightline/option_texts.cpp" line="219"/>
         <source>Longer image side at which contours are searched; larger frames are scaled down.</source>
         <translation>Lado mayor de la imagen con el que se buscan contornos; los fotogramas más grandes se reducen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="219"/>
+        <location filename="../app/sightline/option_texts.cpp" line="220"/>
         <source>Longest over shortest side of the region&apos;s rotated box.</source>
         <translation>Cociente entre el lado más largo y el más corto del recuadro girado de la región.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="220"/>
+        <location filename="../app/sightline/option_texts.cpp" line="221"/>
         <source>Looming needs the largest and smallest depth to differ by this fraction ...</source>
         <translation>El crecimiento aparente (looming) requiere que la profundidad mayor y la menor difieran en esta fracción ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="221"/>
+        <location filename="../app/sightline/option_texts.cpp" line="222"/>
         <source>Lowe&apos;s ratio test: best over second-best descriptor distance must be below this.</source>
         <translation>Test del cociente de Lowe: la mejor distancia de descriptores dividida por la segunda mejor debe quedar por debajo de este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="222"/>
+        <location filename="../app/sightline/option_texts.cpp" line="223"/>
         <source>Lower clamp of a cell&apos;s log-odds.</source>
         <translation>Límite inferior de los log-odds de una celda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="223"/>
+        <location filename="../app/sightline/option_texts.cpp" line="224"/>
         <source>Lowest plausible camera height above the floor.</source>
         <translation>Altura mínima plausible de la cámara sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="224"/>
+        <location filename="../app/sightline/option_texts.cpp" line="225"/>
         <source>Map points projecting within this distance of the button centre are used.</source>
         <translation>Se usan los puntos del mapa que se proyectan a menos de esta distancia del centro del botón.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="225"/>
+        <location filename="../app/sightline/option_texts.cpp" line="226"/>
         <source>Map points within this many tracked button radii (the button&apos;s face) are used first; 0 = always use radius_px.</source>
         <translation>Los puntos del mapa dentro de este número de radios del botón seguido (la cara del botón) se usan primero; 0 = usar siempre radius_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="226"/>
+        <location filename="../app/sightline/option_texts.cpp" line="227"/>
         <source>Matches with a smaller disparity (too far to triangulate) are rejected.</source>
         <translation>Se rechazan las coincidencias con una disparidad menor (demasiado lejos para triangular).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="227"/>
+        <location filename="../app/sightline/option_texts.cpp" line="228"/>
         <source>Matches with the first frame needed before initialisation is tried.</source>
         <translation>Coincidencias con el primer fotograma necesarias antes de intentar la inicialización.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="228"/>
+        <location filename="../app/sightline/option_texts.cpp" line="229"/>
         <source>Measured displacements shorter than this are dropped.</source>
         <translation>Se descartan los desplazamientos medidos más cortos que esto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="229"/>
+        <location filename="../app/sightline/option_texts.cpp" line="230"/>
         <source>Measured motion for the metric scale: the arm&apos;s recorded poses (arm_poses.txt), the arm&apos;s poses streamed live to the button pipeline&apos;s arm-target server (arm_stream), ground-truth displacements, or none. auto: the recorded arm poses when arm_poses.txt is there; else, for the button pipeline while serving, the stream; else (mono-slam) ground truth.</source>
         <translation>Movimiento medido para la escala métrica: las poses grabadas del brazo (arm_poses.txt), las poses del brazo transmitidas en vivo al servidor de objetivos del pipeline del botón (arm_stream), los desplazamientos de ground truth, o ninguno. auto: las poses grabadas del brazo si existe arm_poses.txt; si no, para el pipeline del botón mientras sirve objetivos, el stream; si no (mono-slam), el ground truth.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="230"/>
+        <location filename="../app/sightline/option_texts.cpp" line="231"/>
         <source>Median angle between the rays of a match needed before trying (move sideways).</source>
         <translation>Ángulo mediano entre los rayos de una coincidencia necesario antes de intentarlo (muévase lateralmente).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="231"/>
+        <location filename="../app/sightline/option_texts.cpp" line="232"/>
         <source>Minimum distance between corners.</source>
         <translation>Distancia mínima entre esquinas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="232"/>
+        <location filename="../app/sightline/option_texts.cpp" line="233"/>
         <source>Mirror images left-right, as OpenNI does by default for people facing the camera.</source>
         <translation>Reflejar las imágenes de izquierda a derecha, como hace OpenNI por defecto para personas de cara a la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="233"/>
+        <location filename="../app/sightline/option_texts.cpp" line="234"/>
         <source>Morphological closing that joins broken button outlines; 0 = none.</source>
         <translation>Cierre morfológico que une los contornos rotos de los botones; 0 = ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="234"/>
+        <location filename="../app/sightline/option_texts.cpp" line="235"/>
         <source>Most recent keyframes whose poses local bundle adjustment optimises.</source>
         <translation>Fotogramas clave más recientes cuyas poses optimiza el ajuste de haces local.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="236"/>
+        <location filename="../app/sightline/option_texts.cpp" line="237"/>
         <source>Niceness of the mapping thread (threaded mode, Linux); 10 lets tracking win a core it shares with mapping, but starves mapping on a loaded machine.</source>
         <translation>Valor nice del hilo de mapeo (modo con hilos, Linux); 10 hace que el seguimiento gane un núcleo que comparte con el mapeo, pero deja sin recursos al mapeo en una máquina cargada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="237"/>
+        <location filename="../app/sightline/option_texts.cpp" line="238"/>
         <source>No pose is interpolated across a larger gap between two arm_pose messages.</source>
         <translation>No se interpola ninguna pose a través de un hueco mayor entre dos mensajes arm_pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="238"/>
+        <location filename="../app/sightline/option_texts.cpp" line="239"/>
         <source>No second reset within this many frames of the last one.</source>
         <translation>Ningún segundo reinicio en este número de fotogramas desde el último.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="239"/>
+        <location filename="../app/sightline/option_texts.cpp" line="240"/>
         <source>No target until the online hand-eye check has seen the mount&apos;s translation (the arm must rotate between keyframes); without it that translation is taken on trust.</source>
         <translation>Ningún objetivo hasta que la comprobación mano-ojo en línea haya visto la traslación del montaje (el brazo debe girar entre fotogramas clave); sin ella esa traslación se acepta sin verificar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="240"/>
+        <location filename="../app/sightline/option_texts.cpp" line="241"/>
         <source>Noise of a camera displacement measured in the map (sigma_x of the ML estimator).</source>
         <translation>Ruido de un desplazamiento de la cámara medido en el mapa (sigma_x del estimador ML).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="241"/>
+        <location filename="../app/sightline/option_texts.cpp" line="242"/>
         <source>Noise of a displacement measured by the arm or robot (sigma_y).</source>
         <translation>Ruido de un desplazamiento medido por el brazo o el robot (sigma_y).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="242"/>
+        <location filename="../app/sightline/option_texts.cpp" line="243"/>
         <source>ORB keypoints extracted per frame.</source>
         <translation>Puntos clave ORB extraídos por fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="243"/>
+        <location filename="../app/sightline/option_texts.cpp" line="244"/>
         <source>Observations reprojecting worse than this are dropped from the window.</source>
         <translation>Las observaciones que reproyectan peor que esto se eliminan de la ventana.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="244"/>
+        <location filename="../app/sightline/option_texts.cpp" line="245"/>
         <source>Observations with a smaller disparity (no usable depth) are left out.</source>
         <translation>Las observaciones con menor disparidad (sin profundidad utilizable) se dejan fuera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="245"/>
+        <location filename="../app/sightline/option_texts.cpp" line="246"/>
         <source>Occupied cells closer than this to the robot are ignored (robot body, noise).</source>
         <translation>Se ignoran las celdas ocupadas más cerca del robot que esto (cuerpo del robot, ruido).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="247"/>
+        <location filename="../app/sightline/option_texts.cpp" line="248"/>
         <source>Of the re-acquiring matches, at least this many lie on the button itself.</source>
         <translation>De las coincidencias de readquisición, al menos este número está sobre el propio botón.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="248"/>
+        <location filename="../app/sightline/option_texts.cpp" line="249"/>
         <source>Older estimates are not sent.</source>
         <translation>Las estimaciones más antiguas no se envían.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="249"/>
+        <location filename="../app/sightline/option_texts.cpp" line="250"/>
         <source>Older frames&apos; normals fade with exp(-age / this) in the average (data time); 0 = this frame&apos;s normal only.</source>
         <translation>Las normales de los fotogramas más antiguos se atenúan en la media con exp(-edad / este valor) (tiempo de los datos); 0 = solo la normal de este fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="250"/>
+        <location filename="../app/sightline/option_texts.cpp" line="251"/>
         <source>On close: how long the stop lines may take to go out before the sockets close.</source>
         <translation>Al cerrar: cuánto pueden tardar en salir las líneas de parada antes de que se cierren los sockets.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="251"/>
+        <location filename="../app/sightline/option_texts.cpp" line="252"/>
         <source>On the button: within this many radii of its centre.</source>
         <translation>Sobre el botón: dentro de este número de radios desde su centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="252"/>
+        <location filename="../app/sightline/option_texts.cpp" line="253"/>
         <source>Only frames tracked at least this confidently refresh the model.</source>
         <translation>Solo los fotogramas seguidos al menos con esta confianza renuevan el modelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="253"/>
+        <location filename="../app/sightline/option_texts.cpp" line="254"/>
         <source>Otherwise: the camera&apos;s optical centre this far ahead of the odometry base.</source>
         <translation>Si no: el centro óptico de la cámara esta distancia por delante de la base de la odometría.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="254"/>
+        <location filename="../app/sightline/option_texts.cpp" line="255"/>
         <source>Outlier removal: keep points with mean neighbour distance &lt;= mu + alpha sigma.</source>
         <translation>Eliminación de outliers: conservar los puntos con distancia media a los vecinos &lt;= mu + alpha sigma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="255"/>
+        <location filename="../app/sightline/option_texts.cpp" line="256"/>
         <source>Pairs weigh |measured displacement|^-e in the ML estimate: 1 = the map&apos;s error grows with the distance travelled, 0 = every pair equally noisy.</source>
         <translation>Los pares pesan |desplazamiento medido|^-e en la estimación ML: 1 = el error del mapa crece con la distancia recorrida, 0 = todos los pares igual de ruidosos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="256"/>
+        <location filename="../app/sightline/option_texts.cpp" line="257"/>
         <source>Pairs whose own ratio lies outside a factor of this from the estimate are dropped.</source>
         <translation>Se descartan los pares cuyo cociente propio se aparta de la estimación más de un factor igual a este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="257"/>
+        <location filename="../app/sightline/option_texts.cpp" line="258"/>
         <source>Pause between attempts to reopen a lost device.</source>
         <translation>Pausa entre intentos de volver a abrir un dispositivo perdido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="258"/>
+        <location filename="../app/sightline/option_texts.cpp" line="259"/>
         <source>Per-client queue length; a slow client loses its oldest messages (counted).</source>
         <translation>Longitud de la cola por cliente; un cliente lento pierde sus mensajes más antiguos (contados).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="259"/>
+        <location filename="../app/sightline/option_texts.cpp" line="260"/>
         <source>Per-segment plane RANSAC inlier distance.</source>
         <translation>Distancia de inliers del RANSAC de plano por segmento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="260"/>
+        <location filename="../app/sightline/option_texts.cpp" line="261"/>
         <source>Per-segment plane RANSAC iterations before the least-squares refit (0 = PCA only).</source>
         <translation>Iteraciones del RANSAC de plano por segmento antes del reajuste por mínimos cuadrados (0 = solo PCA).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="261"/>
+        <location filename="../app/sightline/option_texts.cpp" line="262"/>
         <source>Pixel format as a FOURCC, e.g. MJPG for high resolutions over USB 2; empty keeps the camera&apos;s.</source>
         <translation>Formato de píxel como FOURCC, p. ej. MJPG para resoluciones altas por USB 2; vacío conserva el de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="262"/>
+        <location filename="../app/sightline/option_texts.cpp" line="263"/>
         <source>Pixels in a person box within this depth of the box&apos;s median depth are the person.</source>
         <translation>Los píxeles de un recuadro de persona dentro de esta profundidad respecto a la profundidad mediana del recuadro son la persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="263"/>
+        <location filename="../app/sightline/option_texts.cpp" line="264"/>
         <source>Place every kept position again with the newest metric scale (kept in map units).</source>
         <translation>Volver a situar cada posición conservada con la escala métrica más reciente (conservadas en unidades del mapa).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="264"/>
+        <location filename="../app/sightline/option_texts.cpp" line="265"/>
         <source>Plane RANSAC hypotheses of the panel normal.</source>
         <translation>Hipótesis RANSAC de plano para la normal del panel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="265"/>
+        <location filename="../app/sightline/option_texts.cpp" line="266"/>
         <source>Plane RANSAC hypotheses.</source>
         <translation>Hipótesis RANSAC de plano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="266"/>
+        <location filename="../app/sightline/option_texts.cpp" line="267"/>
         <source>Plane inlier distance.</source>
         <translation>Distancia de inliers del plano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="267"/>
+        <location filename="../app/sightline/option_texts.cpp" line="268"/>
         <source>Point-to-plane distance of an inlier while fitting the floor.</source>
         <translation>Distancia punto-plano de un inlier al ajustar el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="268"/>
+        <location filename="../app/sightline/option_texts.cpp" line="269"/>
         <source>Points are subsampled evenly to at most this many.</source>
         <translation>Los puntos se submuestrean uniformemente hasta este número como máximo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="269"/>
+        <location filename="../app/sightline/option_texts.cpp" line="270"/>
         <source>Points each ground hypothesis is scored on.</source>
         <translation>Puntos con los que se puntúa cada hipótesis de suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="270"/>
+        <location filename="../app/sightline/option_texts.cpp" line="271"/>
         <source>Points farther than this are not used for the fit.</source>
         <translation>Los puntos más lejanos que esto no se usan para el ajuste.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="271"/>
+        <location filename="../app/sightline/option_texts.cpp" line="272"/>
         <source>Points found in fewer of the frames that should see them are culled.</source>
         <translation>Se eliminan los puntos encontrados en menos fotogramas de los que deberían verlos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="272"/>
+        <location filename="../app/sightline/option_texts.cpp" line="273"/>
         <source>Points higher than this above the floor (ceiling, lamps) are ignored.</source>
         <translation>Se ignoran los puntos a más altura que esto sobre el suelo (techo, lámparas).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="273"/>
+        <location filename="../app/sightline/option_texts.cpp" line="274"/>
         <source>Points on the button&apos;s face that move the panel plane onto the face.</source>
         <translation>Puntos de la cara del botón que llevan el plano del panel a la cara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="274"/>
+        <location filename="../app/sightline/option_texts.cpp" line="275"/>
         <source>Points whose neighbourhood bends more (surface variation, 0 = flat) get no normal and stay unsegmented: edges between surfaces.</source>
         <translation>Los puntos cuyo entorno se curva más (variación de superficie, 0 = plano) no reciben normal y quedan sin segmentar: bordes entre superficies.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="275"/>
+        <location filename="../app/sightline/option_texts.cpp" line="276"/>
         <source>Prior standard deviation of the offset around zero; smaller trusts the calibration longer.</source>
         <translation>Desviación típica a priori del desplazamiento alrededor de cero; más pequeña confía más tiempo en la calibración.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="276"/>
+        <location filename="../app/sightline/option_texts.cpp" line="277"/>
         <source>Probability above which a cell is occupied (map.yaml occupied_thresh).</source>
         <translation>Probabilidad por encima de la cual una celda está ocupada (map.yaml occupied_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="277"/>
+        <location filename="../app/sightline/option_texts.cpp" line="278"/>
         <source>Probability below which a cell is free (map.yaml free_thresh).</source>
         <translation>Probabilidad por debajo de la cual una celda está libre (map.yaml free_thresh).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="279"/>
+        <location filename="../app/sightline/option_texts.cpp" line="280"/>
         <source>Process every stride-th frame read, from the first (1 = all): a keyframe-rate sequence from a full-rate recording.</source>
         <translation>Procesa uno de cada stride fotogramas leídos, desde el primero (1 = todos): una secuencia a ritmo de fotogramas clave a partir de una grabación a frecuencia completa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="280"/>
+        <location filename="../app/sightline/option_texts.cpp" line="281"/>
         <source>Publish the targets through the arm-target server (button.arm.*); --serve HOST:PORT.</source>
         <translation>Publicar los objetivos mediante el servidor de objetivos del brazo (button.arm.*); --serve HOST:PORT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="281"/>
+        <location filename="../app/sightline/option_texts.cpp" line="282"/>
         <source>Published eq. 13: depth-to-colour sensor offset along x.</source>
         <translation>Publicación ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de x.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="282"/>
+        <location filename="../app/sightline/option_texts.cpp" line="283"/>
         <source>Published eq. 13: depth-to-colour sensor offset along y.</source>
         <translation>Publicación ec. 13: desplazamiento entre los sensores de profundidad y de color a lo largo de y.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="283"/>
+        <location filename="../app/sightline/option_texts.cpp" line="284"/>
         <source>Published eq. 6: expected inlier ratio w; iterations = log(1-p) / log(1-w^3).</source>
         <translation>Publicación ec. 6: proporción de inliers esperada w; iteraciones = log(1-p) / log(1-w^3).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="284"/>
+        <location filename="../app/sightline/option_texts.cpp" line="285"/>
         <source>Published eq. 6: wanted probability p of drawing one all-inlier sample.</source>
         <translation>Publicación ec. 6: probabilidad p deseada de extraer una muestra solo de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="285"/>
+        <location filename="../app/sightline/option_texts.cpp" line="286"/>
         <source>Pyramid level Shi-Tomasi corners are detected on (0 = full resolution).</source>
         <translation>Nivel de la pirámide en el que se detectan las esquinas de Shi-Tomasi (0 = resolución completa).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="286"/>
+        <location filename="../app/sightline/option_texts.cpp" line="287"/>
         <source>Pyramid level of the row search for features without a disparity guess.</source>
         <translation>Nivel de la pirámide de la búsqueda por filas para características sin estimación de disparidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="287"/>
+        <location filename="../app/sightline/option_texts.cpp" line="288"/>
         <source>Pyramid levels of the second tracking attempt (reaches about 2^levels further).</source>
         <translation>Niveles de la pirámide del segundo intento de seguimiento (llega unas 2^levels veces más lejos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="288"/>
+        <location filename="../app/sightline/option_texts.cpp" line="289"/>
         <source>Pyramid levels.</source>
         <translation>Niveles de la pirámide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="289"/>
+        <location filename="../app/sightline/option_texts.cpp" line="290"/>
         <source>RANSAC inlier distance of the essential matrix and the homography.</source>
         <translation>Distancia de inliers de RANSAC de la matriz esencial y de la homografía.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="290"/>
+        <location filename="../app/sightline/option_texts.cpp" line="291"/>
         <source>RANSAC plane hypotheses (half of them sampled within one voxel).</source>
         <translation>Hipótesis RANSAC de plano (la mitad muestreadas dentro de un vóxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="293"/>
+        <location filename="../app/sightline/option_texts.cpp" line="294"/>
         <source>ROS bag: largest time between the two tf samples a pose at a frame&apos;s stamp is interpolated between; frames in a longer gap get no pose.</source>
         <translation>Bag de ROS: tiempo máximo entre las dos muestras tf entre las que se interpola una pose en la marca de tiempo de un frame; los frames en un hueco más largo no tienen pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="296"/>
+        <location filename="../app/sightline/option_texts.cpp" line="297"/>
         <source>ROS bag: the arm&apos;s base tf frame; the pose of end_effector_frame in it is the arm&apos;s pose when there is no arm_poses.txt.</source>
         <translation>Bag de ROS: el frame tf de la base del brazo; la pose de end_effector_frame en él es la pose del brazo cuando no hay arm_poses.txt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="297"/>
+        <location filename="../app/sightline/option_texts.cpp" line="298"/>
         <source>ROS bag: the arm&apos;s end-effector tf frame.</source>
         <translation>Bag de ROS: el frame tf del efector final del brazo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="302"/>
+        <location filename="../app/sightline/option_texts.cpp" line="303"/>
         <source>ROS bag: the platform&apos;s tf frame whose pose in odom_frame is the odometry.</source>
         <translation>Bag de ROS: el frame tf de la plataforma cuya pose en odom_frame es la odometría.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="305"/>
+        <location filename="../app/sightline/option_texts.cpp" line="306"/>
         <source>ROS bag: the tf frame of the odometry; without an odometry topic, the pose of base_frame in it on /tf is the platform&apos;s odometry.</source>
         <translation>Bag de ROS: el frame tf de la odometría; sin topic de odometría, la pose de base_frame en él en /tf es la odometría de la plataforma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="306"/>
+        <location filename="../app/sightline/option_texts.cpp" line="307"/>
         <source>Random generator seed.</source>
         <translation>Semilla del generador aleatorio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="307"/>
+        <location filename="../app/sightline/option_texts.cpp" line="308"/>
         <source>Random generator seed; each scan starts from it, so results are reproducible.</source>
         <translation>Semilla del generador aleatorio; cada barrido parte de ella, de modo que los resultados son reproducibles.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="308"/>
+        <location filename="../app/sightline/option_texts.cpp" line="309"/>
         <source>Random seed of the plane RANSAC.</source>
         <translation>Semilla aleatoria del RANSAC de plano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="309"/>
+        <location filename="../app/sightline/option_texts.cpp" line="310"/>
         <source>Rate at which a replayed recording delivers frames; 0 follows its timestamps.</source>
         <translation>Frecuencia con la que una grabación reproducida entrega fotogramas; 0 sigue sus marcas de tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="310"/>
+        <location filename="../app/sightline/option_texts.cpp" line="311"/>
         <source>Ray angle a first map point needs.</source>
         <translation>Ángulo entre rayos que necesita un primer punto del mapa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="311"/>
+        <location filename="../app/sightline/option_texts.cpp" line="312"/>
         <source>Ray angle a new map point needs.</source>
         <translation>Ángulo entre rayos que necesita un punto nuevo del mapa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="312"/>
+        <location filename="../app/sightline/option_texts.cpp" line="313"/>
         <source>Rays stop at this range; 0 = at the occupancy image border.</source>
         <translation>Los rayos se detienen a este alcance; 0 = en el borde de la imagen de ocupación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="313"/>
+        <location filename="../app/sightline/option_texts.cpp" line="314"/>
         <source>Re-acquisition is refused when the other matches support a second similarity with this fraction of the inliers (another button of a repeated panel).</source>
         <translation>Se rechaza la readquisición cuando las demás coincidencias respaldan una segunda similitud con esta fracción de los inliers (otro botón de un panel con elementos repetidos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="314"/>
+        <location filename="../app/sightline/option_texts.cpp" line="315"/>
         <source>Recent keyframes a new keyframe triangulates new points with.</source>
         <translation>Fotogramas clave recientes con los que un fotograma clave nuevo triangula puntos nuevos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="315"/>
+        <location filename="../app/sightline/option_texts.cpp" line="316"/>
         <source>Rectify even when the rig says its images are rectified.</source>
         <translation>Rectificar incluso cuando el rig indica que sus imágenes ya están rectificadas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="316"/>
+        <location filename="../app/sightline/option_texts.cpp" line="317"/>
         <source>Refine every tracked position against the track&apos;s anchor (where it was first seen), its patch warped by the motion since, so tracks do not drift frame by frame.</source>
         <translation>Refinar cada posición seguida frente al anclaje de la pista (donde se vio por primera vez), con su parche deformado por el movimiento desde entonces, para que las pistas no deriven fotograma a fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="317"/>
+        <location filename="../app/sightline/option_texts.cpp" line="318"/>
         <source>Refine the 3D points with the motion (two-frame bundle adjustment); removes the depth bias of triangulation.</source>
         <translation>Refinar los puntos 3D con el movimiento (ajuste de haces de dos fotogramas); elimina el sesgo de profundidad de la triangulación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="318"/>
+        <location filename="../app/sightline/option_texts.cpp" line="319"/>
         <source>Refine the last frames&apos; poses and their tracks&apos; points together on the stereo reprojection error (sliding-window bundle adjustment), so per-frame errors do not add up.</source>
         <translation>Refinar juntas las poses de los últimos fotogramas y los puntos de sus pistas sobre el error de reproyección estéreo (ajuste de haces en ventana deslizante), para que los errores de cada fotograma no se sumen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="319"/>
+        <location filename="../app/sightline/option_texts.cpp" line="320"/>
         <source>Refined RMS reprojection error above this is rejected.</source>
         <translation>Se rechaza un error de reproyección RMS refinado por encima de este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="320"/>
+        <location filename="../app/sightline/option_texts.cpp" line="321"/>
         <source>Refinement rounds: refine, re-select inliers by the reprojection threshold, refine.</source>
         <translation>Rondas de refinamiento: refinar, volver a seleccionar los inliers con el umbral de reproyección, refinar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="322"/>
+        <location filename="../app/sightline/option_texts.cpp" line="323"/>
         <source>Region growing: largest RGB-N colour distance between neighbours (255 (n+1)/2).</source>
         <translation>Crecimiento de regiones: mayor distancia de color RGB-N entre vecinos (255 (n+1)/2).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="323"/>
+        <location filename="../app/sightline/option_texts.cpp" line="324"/>
         <source>Region-of-interest height; 0 keeps the camera&apos;s.</source>
         <translation>Altura de la región de interés; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="324"/>
+        <location filename="../app/sightline/option_texts.cpp" line="325"/>
         <source>Region-of-interest width; 0 keeps the camera&apos;s.</source>
         <translation>Anchura de la región de interés; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="325"/>
+        <location filename="../app/sightline/option_texts.cpp" line="326"/>
         <source>Register depth to the colour camera in the device when it supports it, so that depth and colour pixels correspond.</source>
         <translation>Registrar la profundidad en la cámara de color dentro del dispositivo cuando lo admite, para que los píxeles de profundidad y de color se correspondan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="326"/>
+        <location filename="../app/sightline/option_texts.cpp" line="327"/>
         <source>Reprojection error a first map point may have in either view.</source>
         <translation>Error de reproyección que puede tener un primer punto del mapa en cada vista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="327"/>
+        <location filename="../app/sightline/option_texts.cpp" line="328"/>
         <source>Reprojection error a new map point may have in either keyframe.</source>
         <translation>Error de reproyección que puede tener un punto nuevo del mapa en cada fotograma clave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="328"/>
+        <location filename="../app/sightline/option_texts.cpp" line="329"/>
         <source>Requested frame rate; 0 keeps the camera&apos;s.</source>
         <translation>Frecuencia de fotogramas solicitada; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="329"/>
+        <location filename="../app/sightline/option_texts.cpp" line="330"/>
         <source>Requested image height; 0 keeps the camera&apos;s.</source>
         <translation>Altura de imagen solicitada; 0 conserva la de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="330"/>
+        <location filename="../app/sightline/option_texts.cpp" line="331"/>
         <source>Requested image width; 0 keeps the camera&apos;s. V4L2 picks the nearest mode.</source>
         <translation>Anchura de imagen solicitada; 0 conserva la de la cámara. V4L2 elige el modo más cercano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="331"/>
+        <location filename="../app/sightline/option_texts.cpp" line="332"/>
         <source>Reset rule: a pose-source move larger than this between two frames resets the reference.</source>
         <translation>Regla de reinicio: un movimiento de la fuente de poses mayor que esto entre dos fotogramas reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="332"/>
+        <location filename="../app/sightline/option_texts.cpp" line="333"/>
         <source>Reset rule: a pose-source turn larger than this between two frames resets the reference.</source>
         <translation>Regla de reinicio: un giro de la fuente de poses mayor que esto entre dos fotogramas reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="333"/>
+        <location filename="../app/sightline/option_texts.cpp" line="334"/>
         <source>Reset rule: this many consecutive frames whose walls disagree by more than max_correction_deg reset the reference.</source>
         <translation>Regla de reinicio: este número de fotogramas consecutivos cuyas paredes discrepan más de max_correction_deg reinicia la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="334"/>
+        <location filename="../app/sightline/option_texts.cpp" line="335"/>
         <source>Residual beyond which a match is an outlier.</source>
         <translation>Residuo a partir del cual una coincidencia es un outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="335"/>
+        <location filename="../app/sightline/option_texts.cpp" line="336"/>
         <source>Reweighted Gauss-Newton iterations.</source>
         <translation>Iteraciones de Gauss-Newton reponderadas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="336"/>
+        <location filename="../app/sightline/option_texts.cpp" line="337"/>
         <source>Rigid samples tried at least before adaptive termination may stop.</source>
         <translation>Muestras rígidas que se prueban como mínimo antes de que la terminación adaptativa pueda parar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="337"/>
+        <location filename="../app/sightline/option_texts.cpp" line="338"/>
         <source>Roughness triangulation in plane coordinates: the cells&apos; grid or 2D Delaunay.</source>
         <translation>Triangulación de la rugosidad en coordenadas del plano: la rejilla de celdas o Delaunay 2D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="338"/>
+        <location filename="../app/sightline/option_texts.cpp" line="339"/>
         <source>Roughness uses the segment&apos;s points within this range (all when none is).</source>
         <translation>La rugosidad usa los puntos del segmento dentro de este alcance (todos si no hay ninguno).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="339"/>
+        <location filename="../app/sightline/option_texts.cpp" line="340"/>
         <source>Roughness: points are averaged in plane cells of this size, then triangulated.</source>
         <translation>Rugosidad: los puntos se promedian en celdas del plano de este tamaño y luego se triangulan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="340"/>
+        <location filename="../app/sightline/option_texts.cpp" line="341"/>
         <source>Row search: mean absolute difference above this means no match.</source>
         <translation>Búsqueda por filas: una diferencia absoluta media por encima de este valor significa que no hay coincidencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="341"/>
+        <location filename="../app/sightline/option_texts.cpp" line="342"/>
         <source>Run mapping on its own thread (live); off = inline after each keyframe, deterministic.</source>
         <translation>Ejecutar el mapeo en su propio hilo (en vivo); desactivado = en línea tras cada fotograma clave, determinista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="342"/>
+        <location filename="../app/sightline/option_texts.cpp" line="343"/>
         <source>SAD window side of the row search, at its level.</source>
         <translation>Lado de la ventana SAD de la búsqueda por filas, en su nivel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="343"/>
+        <location filename="../app/sightline/option_texts.cpp" line="344"/>
         <source>SIFT contrast threshold.</source>
         <translation>Umbral de contraste de SIFT.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="344"/>
+        <location filename="../app/sightline/option_texts.cpp" line="345"/>
         <source>SIFT contrast threshold; lower finds more keypoints on plain buttons.</source>
         <translation>Umbral de contraste de SIFT; más bajo encuentra más puntos clave en botones lisos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="345"/>
+        <location filename="../app/sightline/option_texts.cpp" line="346"/>
         <source>SIFT keypoints up to this far outside the region belong to the button model.</source>
         <translation>Los puntos clave SIFT hasta esta distancia fuera de la región pertenecen al modelo del botón.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="346"/>
+        <location filename="../app/sightline/option_texts.cpp" line="347"/>
         <source>SIFT on a larger region runs on its crop scaled down so the region&apos;s radius is this (fewer, coarser features, much faster on close-up photos); 0 = never.</source>
         <translation>En una región mayor, SIFT trabaja sobre el recorte reducido para que el radio de la región sea este valor (menos características y más gruesas, mucho más rápido en fotos de cerca); 0 = nunca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="347"/>
+        <location filename="../app/sightline/option_texts.cpp" line="348"/>
         <source>Scale between pyramid levels.</source>
         <translation>Escala entre niveles de la pirámide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="349"/>
+        <location filename="../app/sightline/option_texts.cpp" line="350"/>
         <source>Scored cloud written per frame.</source>
         <translation>Nube puntuada escrita por fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="350"/>
+        <location filename="../app/sightline/option_texts.cpp" line="351"/>
         <source>Search window around a map point&apos;s predicted position.</source>
         <translation>Ventana de búsqueda alrededor de la posición predicha de un punto del mapa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="351"/>
+        <location filename="../app/sightline/option_texts.cpp" line="352"/>
         <source>Serve the targets to the arm over TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 by default. The same as button.run.serve. Switching it keeps the run (map, button, STOP); switching it off sends the arm a stop line.</source>
         <translation>Servir los objetivos al brazo por TCP (button.arm.bind_address, port, token); 127.0.0.1:5757 por defecto. Equivale a button.run.serve. Cambiarlo conserva la ejecución (mapa, botón, PARAR); desactivarlo envía al brazo una línea de parada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="352"/>
+        <location filename="../app/sightline/option_texts.cpp" line="353"/>
         <source>Shi-Tomasi gradient window.</source>
         <translation>Ventana del gradiente de Shi-Tomasi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="353"/>
+        <location filename="../app/sightline/option_texts.cpp" line="354"/>
         <source>Shi-Tomasi: smallest minimum eigenvalue of a corner (cv::cornerMinEigenVal units).</source>
         <translation>Shi-Tomasi: menor valor propio mínimo de una esquina (unidades de cv::cornerMinEigenVal).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="354"/>
+        <location filename="../app/sightline/option_texts.cpp" line="355"/>
         <source>Shorter lines are dropped.</source>
         <translation>Se descartan las líneas más cortas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="355"/>
+        <location filename="../app/sightline/option_texts.cpp" line="356"/>
         <source>Side of the aligned patch (odd).</source>
         <translation>Lado del parche alineado (impar).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="356"/>
+        <location filename="../app/sightline/option_texts.cpp" line="357"/>
         <source>Side of the detection grid&apos;s buckets; each holds at most its share of max_features.</source>
         <translation>Lado de las celdas (buckets) de la rejilla de detección; cada una contiene como máximo su cuota de max_features.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="357"/>
+        <location filename="../app/sightline/option_texts.cpp" line="358"/>
         <source>Similarity RANSAC inlier distance.</source>
         <translation>Distancia de inliers del RANSAC de similitud.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="358"/>
+        <location filename="../app/sightline/option_texts.cpp" line="359"/>
         <source>Size change since the last refresh that triggers the next.</source>
         <translation>Cambio de tamaño desde la última renovación que desencadena la siguiente.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="359"/>
+        <location filename="../app/sightline/option_texts.cpp" line="360"/>
         <source>Smaller estimates are not applied: within the spread the estimate shows on a rig without offset (the simulator: +-0.03 px).</source>
         <translation>No se aplican estimaciones menores: quedan dentro de la dispersión que muestra la estimación en un rig sin desplazamiento (el simulador: +-0.03 px).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="360"/>
+        <location filename="../app/sightline/option_texts.cpp" line="361"/>
         <source>Smaller regions stay unsegmented and unscored.</source>
         <translation>Las regiones más pequeñas quedan sin segmentar y sin puntuar.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="361"/>
+        <location filename="../app/sightline/option_texts.cpp" line="362"/>
         <source>Smallest 1-sigma stated for one frame&apos;s normal (the map points&apos; errors are correlated, so the fit&apos;s own figure is optimistic).</source>
         <translation>Menor 1 sigma declarado para la normal de un fotograma (los errores de los puntos del mapa están correlacionados, así que el valor propio del ajuste es optimista).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="362"/>
+        <location filename="../app/sightline/option_texts.cpp" line="363"/>
         <source>Smallest Hough circle radius.</source>
         <translation>Radio mínimo de los círculos de Hough.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="363"/>
+        <location filename="../app/sightline/option_texts.cpp" line="364"/>
         <source>Smallest approach_sigma_deg a target states: the average of frames that share one map does not beat the map&apos;s own bias (on the simulated approach with the SLAM&apos;s map, up to 4.3 deg against per-frame fits of 0.5 deg).</source>
         <translation>Menor approach_sigma_deg que declara un objetivo: la media de fotogramas que comparten un mapa no supera el sesgo del propio mapa (en la aproximación simulada con el mapa del SLAM, hasta 4.3 deg frente a ajustes por fotograma de 0.5 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="364"/>
+        <location filename="../app/sightline/option_texts.cpp" line="365"/>
         <source>Smallest button region.</source>
         <translation>Región del botón más pequeña.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="365"/>
+        <location filename="../app/sightline/option_texts.cpp" line="366"/>
         <source>Split a piece while a point lies farther than this from its chord; merge pieces that fit one line within it (cells, like RANSAC&apos;s err_max).</source>
         <translation>Dividir un tramo mientras un punto esté más lejos que esto de su cuerda; fusionar los tramos que encajan en una línea dentro de este valor (celdas, como err_max de RANSAC).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="367"/>
+        <location filename="../app/sightline/option_texts.cpp" line="368"/>
         <source>Start again at the end (timestamps keep increasing) instead of ending the stream.</source>
         <translation>Volver a empezar al final (las marcas de tiempo siguen creciendo) en lugar de terminar el stream.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="368"/>
+        <location filename="../app/sightline/option_texts.cpp" line="369"/>
         <source>Step B2: ... and at most this far apart (no lines across the room).</source>
         <translation>Paso B2: ... y como máximo así de separados (sin líneas que crucen la habitación).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="369"/>
+        <location filename="../app/sightline/option_texts.cpp" line="370"/>
         <source>Step B2: the two sampled points must be at least this far apart (no short lines).</source>
         <translation>Paso B2: los dos puntos muestreados deben estar al menos así de separados (sin líneas cortas).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="373"/>
+        <location filename="../app/sightline/option_texts.cpp" line="374"/>
         <source>Stereo calibration (OpenCV stereo YAML as `sightline-cli calibrate stereo` writes) used instead of the source&apos;s; needed for live pairs (aravis://L,R) opened without one.</source>
         <translation>Calibración estéreo (YAML estéreo de OpenCV tal como la escribe `sightline-cli calibrate stereo`) usada en lugar de la de la fuente; necesaria para pares en vivo (aravis://L,R) abiertos sin ella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="374"/>
+        <location filename="../app/sightline/option_texts.cpp" line="375"/>
         <source>Stereo calibration of the pair (OpenCV stereo YAML: M1 D1 M2 D2 R T, image_width/height, as `sightline-cli calibrate stereo` writes); the stereo odometry needs it. Also as aravis://LEFT,RIGHT?calibration_file=FILE.</source>
         <translation>Calibración estéreo del par (YAML estéreo de OpenCV: M1 D1 M2 D2 R T, image_width/height, tal como la escribe `sightline-cli calibrate stereo`); la odometría estéreo la necesita. También como aravis://LEFT,RIGHT?calibration_file=FILE.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="375"/>
+        <location filename="../app/sightline/option_texts.cpp" line="376"/>
         <source>Stop when the update is smaller (radians or metres).</source>
         <translation>Parar cuando la actualización es menor (radianes o metros).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="376"/>
+        <location filename="../app/sightline/option_texts.cpp" line="377"/>
         <source>Stream colour.</source>
         <translation>Transmitir color.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="377"/>
+        <location filename="../app/sightline/option_texts.cpp" line="378"/>
         <source>Stream depth.</source>
         <translation>Transmitir profundidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="378"/>
+        <location filename="../app/sightline/option_texts.cpp" line="379"/>
         <source>Stream height for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Altura del stream de profundidad y color; 0 conserva el modo predeterminado del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="379"/>
+        <location filename="../app/sightline/option_texts.cpp" line="380"/>
         <source>Stream rate; 0 keeps the device&apos;s default mode.</source>
         <translation>Frecuencia del stream; 0 conserva el modo predeterminado del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="380"/>
+        <location filename="../app/sightline/option_texts.cpp" line="381"/>
         <source>Stream width for depth and colour; 0 keeps the device&apos;s default mode.</source>
         <translation>Anchura del stream de profundidad y color; 0 conserva el modo predeterminado del dispositivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="381"/>
+        <location filename="../app/sightline/option_texts.cpp" line="382"/>
         <source>TCP port of the target server; 0 = any free port.</source>
         <translation>Puerto TCP del servidor de objetivos; 0 = cualquier puerto libre.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="382"/>
+        <location filename="../app/sightline/option_texts.cpp" line="383"/>
         <source>Take the camera&apos;s offset ahead of the odometry base from the recording&apos;s scene.yaml (simulator) when present.</source>
         <translation>Tomar el desplazamiento de la cámara por delante de la base de la odometría del scene.yaml de la grabación (simulador) cuando existe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="383"/>
+        <location filename="../app/sightline/option_texts.cpp" line="384"/>
         <source>The SIFT margin grows to this many region radii when that is larger.</source>
         <translation>El margen de SIFT crece hasta este número de radios de la región cuando es mayor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="384"/>
+        <location filename="../app/sightline/option_texts.cpp" line="385"/>
         <source>The approach direction is the normal of a plane through the map points within this distance of the located button (the panel around it).</source>
         <translation>La dirección de aproximación es la normal de un plano por los puntos del mapa a menos de esta distancia del botón localizado (el panel que lo rodea).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="385"/>
+        <location filename="../app/sightline/option_texts.cpp" line="386"/>
         <source>The arm&apos;s and the SLAM&apos;s displacement directions disagree by more than this (online hand-eye check; a wrong mount rotation): no target.</source>
         <translation>Las direcciones de desplazamiento del brazo y del SLAM discrepan más que esto (comprobación mano-ojo en línea; una rotación de montaje errónea): ningún objetivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="386"/>
+        <location filename="../app/sightline/option_texts.cpp" line="387"/>
         <source>The arm&apos;s clock minus the camera&apos;s (configured; arm stamp = frame stamp + this).</source>
         <translation>El reloj del brazo menos el de la cámara (configurado; marca del brazo = marca del fotograma + este valor).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="387"/>
+        <location filename="../app/sightline/option_texts.cpp" line="388"/>
         <source>The current frame becomes the keyframe when fewer keyframe tracks agree with the motion.</source>
         <translation>El fotograma actual se convierte en fotograma clave cuando menos pistas del fotograma clave concuerdan con el movimiento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="388"/>
+        <location filename="../app/sightline/option_texts.cpp" line="389"/>
         <source>The current frame becomes the keyframe when fewer of the keyframe&apos;s tracks survive.</source>
         <translation>El fotograma actual se convierte en fotograma clave cuando sobreviven menos pistas del fotograma clave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="389"/>
+        <location filename="../app/sightline/option_texts.cpp" line="390"/>
         <source>The depth colour map spans zero to this range.</source>
         <translation>El mapa de colores de profundidad abarca de cero a esta distancia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="390"/>
+        <location filename="../app/sightline/option_texts.cpp" line="391"/>
         <source>The estimated offset is clamped to +- this.</source>
         <translation>El desplazamiento estimado se limita a +- este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="391"/>
+        <location filename="../app/sightline/option_texts.cpp" line="392"/>
         <source>The floor is the lowest plane: at most this fraction of points may lie clearly below it (rejects table tops).</source>
         <translation>El suelo es el plano más bajo: como máximo esta fracción de los puntos puede quedar claramente por debajo (descarta tableros de mesa).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="392"/>
+        <location filename="../app/sightline/option_texts.cpp" line="393"/>
         <source>The floor must hold at least this fraction of the valid points.</source>
         <translation>El suelo debe contener al menos esta fracción de los puntos válidos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="393"/>
+        <location filename="../app/sightline/option_texts.cpp" line="394"/>
         <source>The gate grows to this many predicted button radii when that is larger.</source>
         <translation>El gate crece hasta este número de radios predichos del botón cuando es mayor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="394"/>
+        <location filename="../app/sightline/option_texts.cpp" line="395"/>
         <source>The gate widens by this per metre driven since the last correction (expected heading drift of the pose source).</source>
         <translation>El gate se ensancha este valor por cada metro recorrido desde la última corrección (deriva de rumbo esperada de la fuente de poses).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="395"/>
+        <location filename="../app/sightline/option_texts.cpp" line="396"/>
         <source>The homography is chosen when its share of the inliers exceeds this.</source>
         <translation>Se elige la homografía cuando su proporción de inliers supera este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="396"/>
+        <location filename="../app/sightline/option_texts.cpp" line="397"/>
         <source>The map grows by at least this much each time it must.</source>
         <translation>El mapa crece al menos esto cada vez que lo necesita.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="397"/>
+        <location filename="../app/sightline/option_texts.cpp" line="398"/>
         <source>The maximum-likelihood estimate is reported from this many pairs on.</source>
         <translation>La estimación de máxima verosimilitud se informa a partir de este número de pares.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="398"/>
+        <location filename="../app/sightline/option_texts.cpp" line="399"/>
         <source>The metric scale counts as converged with this many displacement pairs in the ML estimate at least ...</source>
         <translation>La escala métrica se considera convergida con al menos este número de pares de desplazamientos en la estimación ML ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="399"/>
+        <location filename="../app/sightline/option_texts.cpp" line="400"/>
         <source>The model never grows beyond this many keypoints.</source>
         <translation>El modelo nunca crece más allá de este número de puntos clave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="400"/>
+        <location filename="../app/sightline/option_texts.cpp" line="401"/>
         <source>The offset is measured between an anchor frame and the first later frame whose translation from it reaches this fraction of the common tracks&apos; median depth: with less parallax, tracking errors dominate the measurement.</source>
         <translation>El desplazamiento se mide entre un fotograma de anclaje y el primer fotograma posterior cuya traslación desde él alcanza esta fracción de la profundidad mediana de las pistas comunes: con menos paralaje, los errores de seguimiento dominan la medida.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="401"/>
+        <location filename="../app/sightline/option_texts.cpp" line="402"/>
         <source>The online hand-eye check compares keyframes at least this far apart (measured): the directions of shorter displacements drown in the noise.</source>
         <translation>La comprobación mano-ojo en línea compara fotogramas clave separados al menos esto (medido): las direcciones de desplazamientos más cortos se pierden en el ruido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="402"/>
+        <location filename="../app/sightline/option_texts.cpp" line="403"/>
         <source>The online hand-eye check sees the mount&apos;s translation only when the arm rotates at least this much between two keyframes.</source>
         <translation>La comprobación mano-ojo en línea solo ve la traslación del montaje cuando el brazo gira al menos esto entre dos fotogramas clave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="403"/>
+        <location filename="../app/sightline/option_texts.cpp" line="404"/>
         <source>The operator&apos;s tap is refused when the frame it was made on is older than this (data time) by the time the pipeline takes it.</source>
         <translation>Se rechaza el toque del operador cuando el fotograma en que se hizo es más antiguo que esto (tiempo de los datos) en el momento en que el pipeline lo toma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="404"/>
+        <location filename="../app/sightline/option_texts.cpp" line="405"/>
         <source>The operator&apos;s tap: X,Y in pixels, optionally @FRAME (frame index, default 0); confirmed at once. sightline-cli run button --tap X,Y[@FRAME] sets it.</source>
         <translation>El toque del operador: X,Y en píxeles, opcionalmente @FRAME (índice de fotograma, por defecto 0); confirmado de inmediato. sightline-cli run button --tap X,Y[@FRAME] lo establece.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="405"/>
+        <location filename="../app/sightline/option_texts.cpp" line="406"/>
         <source>The panel plane passes at most this far from the located button: of the surfaces around it (a side wall, a door frame) only the one holding the button gives the push direction.</source>
         <translation>El plano del panel pasa como mucho a esta distancia del botón localizado: de las superficies a su alrededor (una pared lateral, un marco de puerta) solo la que lleva el botón da la dirección de pulsación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="406"/>
+        <location filename="../app/sightline/option_texts.cpp" line="407"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>El tamaño solo a partir de los puntos clave propios del toque (no de los renovados, cuya escala deriva; el looming en button.triangulate.*) necesita al menos estas correspondencias coherentes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="407"/>
+        <location filename="../app/sightline/option_texts.cpp" line="408"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>El tamaño solo a partir de los puntos clave propios del toque (ButtonTrack::anchor_scale: los puntos clave que añade la renovación del seguidor arrastran el error de escala de cada renovación); false: el radio seguido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="408"/>
+        <location filename="../app/sightline/option_texts.cpp" line="409"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>El objetivo es la mediana por eje de este número de posiciones recientes en el sistema de la base (plano fiable, escala convergida); 0 = todas desde el toque, 1 = sin fusión.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="409"/>
+        <location filename="../app/sightline/option_texts.cpp" line="410"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>El gate de seguimiento nunca supera este valor: las correcciones mayores no se aplican.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="410"/>
+        <location filename="../app/sightline/option_texts.cpp" line="411"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>La ventana crece hasta este número de radios predichos del botón cuando es mayor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="411"/>
+        <location filename="../app/sightline/option_texts.cpp" line="412"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Tolerancia de accuracy.map_iou: una celda del mapa a menos de este número de celdas de una pared real cuenta como sobre ella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="412"/>
+        <location filename="../app/sightline/option_texts.cpp" line="413"/>
         <source>Top-view grid cell.</source>
         <translation>Celda de la rejilla de la vista cenital.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="413"/>
+        <location filename="../app/sightline/option_texts.cpp" line="414"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Puntos de la pista dibujados detrás del botón en la superposición.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="414"/>
+        <location filename="../app/sightline/option_texts.cpp" line="415"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Gate de seguimiento justo después de una corrección: las líneas más alejadas que esto de la dirección esperada ni votan ni corrigen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="415"/>
+        <location filename="../app/sightline/option_texts.cpp" line="416"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>El seguimiento se pierde cuando se encuentra menos de esta proporción de los puntos del mapa predichos en la imagen (la prueba de PTAM contra una pose errónea tras un salto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="416"/>
+        <location filename="../app/sightline/option_texts.cpp" line="417"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>La calidad del seguimiento es buena a partir de este número de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="417"/>
+        <location filename="../app/sightline/option_texts.cpp" line="418"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>La calidad del seguimiento es mala a partir de este número de inliers; con menos se pierde.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="418"/>
+        <location filename="../app/sightline/option_texts.cpp" line="419"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Puntos triangulados necesarios para aceptar la inicialización.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="419"/>
+        <location filename="../app/sightline/option_texts.cpp" line="420"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: cambio de una distancia entre pares que puede mostrar una muestra rígida, antes de sumar la incertidumbre de profundidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="420"/>
+        <location filename="../app/sightline/option_texts.cpp" line="421"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: rechazos por rigidez tras los cuales RANSAC falla (se conserva el último movimiento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="421"/>
+        <location filename="../app/sightline/option_texts.cpp" line="422"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: error de reproyección (RMS de ambas imágenes) de un inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="422"/>
+        <location filename="../app/sightline/option_texts.cpp" line="423"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: dejar de muestrear en cuanto esta fracción de los puntos es inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="423"/>
+        <location filename="../app/sightline/option_texts.cpp" line="424"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: muestras rígidas probadas antes de tomar el mejor conjunto de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="424"/>
+        <location filename="../app/sightline/option_texts.cpp" line="425"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Planos orientados hacia arriba que se buscan; el más bajo de los grandes es el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="425"/>
+        <location filename="../app/sightline/option_texts.cpp" line="426"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Límite superior de los log-odds de una celda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="426"/>
+        <location filename="../app/sightline/option_texts.cpp" line="427"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Usar uno de cada n píxeles de profundidad para la nube 3D; 1 los muestra todos (más lento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="427"/>
+        <location filename="../app/sightline/option_texts.cpp" line="428"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Usa, además de los rayos, el tamaño aparente (looming: el radio crece como 1 / profundidad mientras el brazo avanza una distancia medida).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="428"/>
+        <location filename="../app/sightline/option_texts.cpp" line="429"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Rayo de visión más próximo a ser paralelo al plano que este |cos|: ninguna posición.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="429"/>
+        <location filename="../app/sightline/option_texts.cpp" line="430"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Las líneas que votan dentro de este valor respecto a su mediana ponderada por longitud se promedian; las demás (una pared fusionada con una puerta retranqueada, una caja) se descartan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="430"/>
+        <location filename="../app/sightline/option_texts.cpp" line="431"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Longitud de pared votante que necesita un fotograma antes de poder fijar la dirección de referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="431"/>
+        <location filename="../app/sightline/option_texts.cpp" line="432"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Tamaño del vóxel para las hipótesis muestreadas localmente (encuentra un suelo que cubre poco de la vista).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="432"/>
+        <location filename="../app/sightline/option_texts.cpp" line="433"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Las líneas de pared más cortas que esto no votan la dirección.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Las líneas de pared con menos puntos de barrido no votan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confianza de seguimiento más débil: ningún objetivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Ponderar cada posición por 1 / su propia varianza (ajuste del plano y centro seguido, creciente con la distancia): los fotogramas cercanos de la aproximación cuentan más. Desactivado por defecto: medido peor en las aproximaciones simuladas (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Ponderar las observaciones por 1 / (|u - cx| / cx + 0.05) (libviso2), favoreciendo el centro, como hace el refinamiento de dos fotogramas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Ponderar las observaciones por 1 / (|u - cx| / cx + 0.05) (libviso2), favoreciendo el centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Peso de la dispersión de las posiciones fusionadas (1.4826 x desviación absoluta mediana respecto al objetivo fusionado) en la incertidumbre declarada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Qué sustituye a un movimiento rechazado: el último aceptado, o ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Cuando sobreviven menos pistas que esta fracción de la proporción que sobrevivió en el fotograma anterior (mala predicción del movimiento), las perdidas se vuelven a seguir con retrack_pyramid_levels; 0 = nunca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Si se establece, un cliente debe enviar {&quot;token&quot;: &quot;...&quot;} antes de recibir nada; obligatorio cuando bind_address no es una dirección de loopback.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <source>Width of the reduced copies of the two images compared in that search.</source>
+        <translation>Ancho de las copias reducidas de las dos imágenes que se comparan en esa búsqueda.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Ventana de la segunda pasada, tras una primera pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Ventana usada cuando la primera búsqueda encuentra demasiado pocos puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Con un token: se cierra una conexión que no lo ha presentado tras este tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Con menos de min_matches pero al menos estas correspondencias, una matriz esencial estimada con ellas guía un segundo emparejamiento a lo largo de las líneas epipolares (movimiento grande).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Con png: también overlay.avi (Motion-JPEG mediante el escritor integrado de OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Con serve: dejar de esperar clientes tras este tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Con serve: seguir sirviendo este tiempo tras el último fotograma para que salgan los objetivos en cola.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Con serve: esperar a este número de clientes conectados antes del primer fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Sin referencia: votan las líneas dentro de este valor respecto a la dirección mejor respaldada (módulo 90 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Workspace box, base x max.</source>
         <translation>Caja del espacio de trabajo, base x máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Workspace box, base x min.</source>
         <translation>Caja del espacio de trabajo, base x mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Workspace box, base y max.</source>
         <translation>Caja del espacio de trabajo, base y máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Workspace box, base y min.</source>
         <translation>Caja del espacio de trabajo, base y mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Workspace box, base z max.</source>
         <translation>Caja del espacio de trabajo, base z máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Workspace box, base z min.</source>
         <translation>Caja del espacio de trabajo, base z mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Escribir por fotograma los PNG de la proyección y de la vista cenital.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: una pared real es visible en un fotograma cuando al menos esta parte de ella está a la vista ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>Se descartan los mensajes arm_pose más próximos que 1/este valor en el tiempo del brazo (contados).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>Se olvidan los mensajes arm_pose más atrasados que esto respecto al más reciente.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); vacío = junto a la carpeta del sensor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Plataforma custom: un segmento elevado más que esto sobre el suelo puntúa 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Plataforma custom: se descartan los puntos más alejados del sensor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: se descartan los triángulos con un lado más largo que este número de celdas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
         <translation>depth: la parte superior de una persona está al menos a este múltiplo de la longitud de su huella sobre el suelo (un escritorio, una mesa o un sofá es más ancho que alto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
         <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando toca el borde de la imagen (un cuerpo cortado puntúa menos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
         <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando está entero a la vista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: si está activo, un grupo que llega a la fila superior de la imagen (su parte alta fuera de vista) no es una persona: menos personas falsas en el borde de la imagen, pero se pierden las personas tan cercanas que tienen la cabeza cortada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
         <translation>depth: cuando la imagen en color está registrada con la de profundidad, el detector de personas HOG de OpenCV también debe aceptar el recuadro de cada clúster (se descarta una silla o un escritorio del tamaño de una persona).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: emparejar por marcas de tiempo de las cámaras (cámaras con un reloj común, p. ej. PTP o un disparo compartido); host: emparejar por hora de llegada al host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la cámara funciona con su propio reloj; software: el host dispara cada fotograma (las dos cámaras de un par a la vez); hardware: un pulso externo en trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: uno de cada n píxeles en ambas direcciones (en lugar de la rejilla de vóxeles).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: los vecinos de la rejilla cuyas profundidades difieren más de esta fracción están separados.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: semianchura de la ventana de puntos de la rejilla a la que se ajusta cada normal.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vacío = junto a arm_poses (para arm_stream: junto a las imágenes); none = identidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (paso E): como máximo este número de líneas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: añadir círculos de Hough (botones redondos, anillos finos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: desenfoque de la segunda escala, multiplicado por blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: mitad del tamaño de la ventana alrededor del toque en la que se busca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: cociente entre el lado más largo y el más corto del recuadro girado de una región.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: las regiones se ordenan por (desplazamiento + sesgo) / radio, para que el contorno del botón gane a un símbolo sobre él.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: el centroide de la región está como máximo a este número de radios del toque.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: los dos pares de Canny son los umbrales multiplicados por 2/(1+s) y 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del recuento adaptativo: probabilidad de extraer un par solo de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: radio de vecindad del crecimiento de regiones.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vecinos del ajuste de normales.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vecinos de la eliminación de outliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: tamaño de hoja de la rejilla de vóxeles.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="508"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (paso B8): una hipótesis con más inliers que esto termina la búsqueda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="509"/>
+        <location filename="../app/sightline/option_texts.cpp" line="512"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (pasos B5, B6): una línea necesita esta fracción de los puntos restantes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="510"/>
+        <location filename="../app/sightline/option_texts.cpp" line="513"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (paso E): parar en cuanto esta fracción de los puntos está sobre líneas.</translation>
     </message>
@@ -4086,67 +4101,67 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Tipo de fotogramas leídos de una bag de ROS; auto elige RGB-D, luego estéreo, luego mono y luego nubes de puntos, según lo que permitan los topics de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="235"/>
+        <location filename="../app/sightline/option_texts.cpp" line="236"/>
         <source>New centre: the model centre through a RANSAC similarity of the matches, or the matched keypoints&apos; centroid (the published rule).</source>
         <translation>Nuevo centro: el centro del modelo mediante una similitud RANSAC de las coincidencias, o el centroide de los puntos clave emparejados (la regla de la publicación).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="246"/>
+        <location filename="../app/sightline/option_texts.cpp" line="247"/>
         <source>Occupied evidence: the polar scan&apos;s hits (visible surfaces, thin walls) or every occupied cell of the occupancy image (as published; depth noise behind walls stays).</source>
         <translation>Evidencia de ocupación: los impactos del barrido polar (superficies visibles, paredes finas) o cada celda ocupada de la imagen de ocupación (como se publicó; el ruido de profundidad detrás de las paredes permanece).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="278"/>
+        <location filename="../app/sightline/option_texts.cpp" line="279"/>
         <source>Process every k-th frame (the published subsampling sweep); --subsample K.</source>
         <translation>Procesar uno de cada k fotogramas (el barrido de submuestreo de la publicación); --subsample K.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="291"/>
+        <location filename="../app/sightline/option_texts.cpp" line="292"/>
         <source>ROS bag: ground truth is the pose of tf_child_frame in this tf frame; empty uses the bag&apos;s only transform chain on /tf.</source>
         <translation>Bag de ROS: la referencia es la pose de tf_child_frame en este frame tf; vacío usa la única cadena de transformaciones de la bag en /tf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="292"/>
+        <location filename="../app/sightline/option_texts.cpp" line="293"/>
         <source>ROS bag: largest stamp difference of a colour/depth or left/right pair; images without a partner are skipped.</source>
         <translation>Bag de ROS: mayor diferencia de marcas de tiempo de un par color/profundidad o izquierda/derecha; las imágenes sin pareja se omiten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="294"/>
+        <location filename="../app/sightline/option_texts.cpp" line="295"/>
         <source>ROS bag: the CameraInfo topic of the image topic; empty looks beside the image topic, then takes the bag&apos;s only CameraInfo topic.</source>
         <translation>Bag de ROS: el topic CameraInfo del topic de imagen; vacío busca junto al topic de imagen y luego toma el único topic CameraInfo de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="295"/>
+        <location filename="../app/sightline/option_texts.cpp" line="296"/>
         <source>ROS bag: the PointCloud2 topic read as point-cloud frames.</source>
         <translation>Bag de ROS: el topic PointCloud2 que se lee como nubes de puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="298"/>
+        <location filename="../app/sightline/option_texts.cpp" line="299"/>
         <source>ROS bag: the camera&apos;s tf frame whose pose in tf_parent_frame is the ground truth.</source>
         <translation>Bag de ROS: el frame tf de la cámara cuya pose en tf_parent_frame es la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="299"/>
+        <location filename="../app/sightline/option_texts.cpp" line="300"/>
         <source>ROS bag: the colour, left or mono image topic (Image or CompressedImage); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag de ROS: el topic de la imagen en color, izquierda o mono (Image o CompressedImage); vacío lo elige cuando la bag no deja dudas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="300"/>
+        <location filename="../app/sightline/option_texts.cpp" line="301"/>
         <source>ROS bag: the depth image topic (16UC1 millimetres or 32FC1 metres); empty picks it when the bag leaves no doubt.</source>
         <translation>Bag de ROS: el topic de la imagen de profundidad (16UC1 milímetros o 32FC1 metros); vacío lo elige cuando la bag no deja dudas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="301"/>
+        <location filename="../app/sightline/option_texts.cpp" line="302"/>
         <source>ROS bag: the nav_msgs/Odometry topic; empty takes the bag&apos;s only one.</source>
         <translation>Bag de ROS: el topic nav_msgs/Odometry; vacío toma el único de la bag.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="303"/>
+        <location filename="../app/sightline/option_texts.cpp" line="304"/>
         <source>ROS bag: the right camera&apos;s CameraInfo topic; its projection matrix P gives the stereo baseline.</source>
         <translation>Bag de ROS: el topic CameraInfo de la cámara derecha; su matriz de proyección P da la línea base estéreo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="304"/>
+        <location filename="../app/sightline/option_texts.cpp" line="305"/>
         <source>ROS bag: the right image topic of a stereo pair; empty picks the topic whose name says right beside one that says left.</source>
         <translation>Bag de ROS: el topic de la imagen derecha de un par estéreo; vacío elige el topic cuyo nombre dice right junto a uno que dice left.</translation>
     </message>
