@@ -16,11 +16,11 @@
 namespace sightline {
 
 struct TurnSearchOptions {
-  int width_px = 160;         // Columns of the reduced copies.
-  double max_yaw_deg = 60;    // Yaw searched in [-max, max] ...
+  int width_px = 160;            // Columns of the reduced copies.
+  double max_yaw_deg = 60;       // Yaw searched in [-max, max] ...
   double coarse_step_deg = 1.5;  // ... in these steps, then refined to a quarter of a step.
   double max_pitch_deg = 3;      // Pitch searched around the best yaw, in half steps.
-  double min_overlap = 0.2;   // A rotation must leave this fraction of the image seen by both.
+  double min_overlap = 0.2;      // A rotation must leave this fraction of the image seen by both.
   double min_correlation = 0.3;  // Weaker best matches give no answer.
 };
 

@@ -37,10 +37,9 @@ cv::Mat Turned(const cv::Mat& previous, const cv::Mat& fill, const RectifiedSter
                double yaw_deg, double pitch_deg) {
   Eigen::Matrix3d k;
   k << c.f, 0, c.cx, 0, c.f, c.cy, 0, 0, 1;
-  const Eigen::Matrix3d r =
-      (Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitY()) *
-       Eigen::AngleAxisd(pitch_deg * M_PI / 180, Eigen::Vector3d::UnitX()))
-          .toRotationMatrix();
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(pitch_deg * M_PI / 180, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
   const Eigen::Matrix3d h = k * r * k.inverse();
   cv::Mat hm(3, 3, CV_64F);
   for (int i = 0; i < 3; ++i) {
@@ -48,8 +47,8 @@ cv::Mat Turned(const cv::Mat& previous, const cv::Mat& fill, const RectifiedSter
   }
   cv::Mat warped, mask;
   cv::warpPerspective(previous, warped, hm, previous.size());
-  cv::warpPerspective(cv::Mat(previous.size(), CV_8UC1, cv::Scalar(255)), mask, hm,
-                      previous.size(), cv::INTER_NEAREST);
+  cv::warpPerspective(cv::Mat(previous.size(), CV_8UC1, cv::Scalar(255)), mask, hm, previous.size(),
+                      cv::INTER_NEAREST);
   cv::Mat out = fill.clone();
   warped.copyTo(out, mask);
   return out;
@@ -60,7 +59,8 @@ TEST(TurnSearch, FindsTurnsOfUpTo50DegreesPerFrame) {
   const cv::Mat previous = Texture(640, 480, 1), fill = Texture(640, 480, 2);
   for (const auto& [yaw, pitch] : std::vector<std::pair<double, double>>{
            {0, 0}, {8, 0}, {-23, 1.5}, {31, -2}, {-47, 0}, {50, 1}}) {
-    std::optional<TurnEstimate> t = FindTurn(previous, Turned(previous, fill, camera, yaw, pitch), camera);
+    std::optional<TurnEstimate> t =
+        FindTurn(previous, Turned(previous, fill, camera, yaw, pitch), camera);
     ASSERT_TRUE(t.has_value()) << yaw;
     // Within a reduced pixel (4 px, 0.7 deg at this focal length) and a fine step.
     EXPECT_NEAR(t->yaw_deg, yaw, 0.8) << yaw;
