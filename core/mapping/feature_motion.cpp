@@ -8,10 +8,11 @@ namespace sightline {
 FeatureMotion::FeatureMotion(int max_features, int min_inliers)
     : orb_(cv::ORB::create(max_features)), min_inliers_(min_inliers) {}
 
-FeatureFrame FeatureMotion::Detect(const cv::Mat& gray, const cv::Mat& depth_m) {
+FeatureFrame FeatureMotion::Detect(const cv::Mat& gray, const cv::Mat& depth_m,
+                                   const cv::Mat& mask) {
   FeatureFrame frame;
   frame.depth_m = depth_m;
-  orb_->detectAndCompute(gray, cv::noArray(), frame.keypoints, frame.descriptors);
+  orb_->detectAndCompute(gray, mask, frame.keypoints, frame.descriptors);  // Empty: everywhere.
   return frame;
 }
 

@@ -29,7 +29,8 @@ class FeatureMotion {
  public:
   FeatureMotion(int max_features, int min_inliers);
 
-  FeatureFrame Detect(const cv::Mat& gray, const cv::Mat& depth_m);
+  // Features where `mask` (CV_8UC1, optional) is non-zero.
+  FeatureFrame Detect(const cv::Mat& gray, const cv::Mat& depth_m, const cv::Mat& mask = {});
   // current_from_reference by PnP RANSAC on the reference's features lifted with its depth;
   // nullopt with fewer than min_inliers inliers. `camera` matches the images' size.
   std::optional<Eigen::Isometry3d> Estimate(const FeatureFrame& reference,

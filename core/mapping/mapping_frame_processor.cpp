@@ -126,8 +126,18 @@ StatusOr<bool> MappingFrameProcessor::SourcePose(const MappingInput& input,
   world_from_base->reset();
   if (active_pose_source_ == "recording") *world_from_base = input.odometry;
   if (active_pose_source_ != "rgbd") return true;
+  // People move: their boxes (scaled to the depth image) are left out of the alignment.
+  std::vector<cv::Rect> moving;
+  for (const PersonBox& p : result->people) {
+    if (p.image_size.width <= 0 || p.image_size.height <= 0) continue;
+    const double sx = static_cast<double>(input.depth_m.cols) / p.image_size.width;
+    const double sy = static_cast<double>(input.depth_m.rows) / p.image_size.height;
+    moving.emplace_back(
+        cv::Rect2d(p.box.x * sx, p.box.y * sy, p.box.width * sx, p.box.height * sy));
+  }
   const auto start = std::chrono::steady_clock::now();
-  StatusOr<RgbdOdometryStep> step = visual_odometry_.Track(input.stamp, input.depth_m, input.color);
+  StatusOr<RgbdOdometryStep> step =
+      visual_odometry_.Track(input.stamp, input.depth_m, input.color, moving);
   result->times.odometry_ms = MsSince(start);
   if (!step.ok()) return step.status();
   if (step->ok) {

@@ -250,7 +250,8 @@ void RgbdOdometry::Reset() {
 }
 
 StatusOr<RgbdOdometryStep> RgbdOdometry::Track(const FrameStamp& stamp, const cv::Mat& depth_m,
-                                               const cv::Mat& color) {
+                                               const cv::Mat& color,
+                                               const std::vector<cv::Rect>& moving) {
   Impl& s = *impl_;
   if (s.camera.width <= 0) return FailedPrecondition("rgbd odometry: Configure() was not called");
   if (!depth_m.empty() && depth_m.type() != CV_32FC1) {
@@ -274,6 +275,7 @@ StatusOr<RgbdOdometryStep> RgbdOdometry::Track(const FrameStamp& stamp, const cv
   cv::Mat depth = depth_m.clone();
   cv::patchNaNs(depth, 0.0);
   cv::Mat mask = (depth >= options_.min_depth_m) & (depth <= options_.max_depth_m);
+  for (const cv::Rect& box : moving) mask(box & cv::Rect(0, 0, mask.cols, mask.rows)).setTo(0);
   step.valid_fraction = static_cast<double>(cv::countNonZero(mask)) / mask.total();
   if (step.valid_fraction < options_.min_valid_fraction) {
     return fail(
@@ -301,7 +303,7 @@ StatusOr<RgbdOdometryStep> RgbdOdometry::Track(const FrameStamp& stamp, const cv
       gray, depth, mask, cv::Mat(), static_cast<int>(stamp.sequence_id));
   const double t = stamp.sensor_time_s;
   FeatureFrame current_features;
-  if (s.features) current_features = s.features->Detect(gray, depth);
+  if (s.features) current_features = s.features->Detect(gray, depth, mask);
 
   // The first usable frame, or the first after a gap: the reference, at the held pose.
   const double gap_s = t - s.last_time_s;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "core/common/camera.h"
 #include "core/common/frame.h"
@@ -41,8 +42,9 @@ struct RgbdOdometryOptions {
                                   // they agree (turns too fast for the pyramid alone).
   int max_features = 500;         // ORB features per frame for that guess.
   int min_feature_inliers = 25;   // PnP inliers the guess needs.
-  double keyframe_translation_m = 0.0;  // A frame becomes the reference when it moved this far
-  double keyframe_rotation_deg = 0.0;   // or turned this much from it; 0 and 0 = every frame.
+  double keyframe_translation_m = 0.1;  // A frame becomes the reference when it moved this far
+  double keyframe_rotation_deg = 5.0;   // or turned this much from it; 0 and 0 = every frame.
+                                        // Fewer references, less drift at high frame rates.
 
   bool IsValid(std::string* error) const;
   static OptionTable<RgbdOdometryOptions> Describe();
@@ -82,10 +84,11 @@ class RgbdOdometry {
   // invalid options or camera, naming the field.
   Status Configure(const PinholeCamera& camera);
   // One frame: depth CV_32FC1 metres (NaN or 0 = none), colour CV_8UC3 BGR or CV_8UC1 (resized to
-  // the depth's size; registered to it), optional for method icp. Decisions on time use
-  // `stamp.sensor_time_s` only.
+  // the depth's size; registered to it), optional for method icp. Pixels inside `moving` (depth
+  // pixels; e.g. people's boxes) are not used: the alignment assumes a static scene. Decisions
+  // on time use `stamp.sensor_time_s` only.
   StatusOr<RgbdOdometryStep> Track(const FrameStamp& stamp, const cv::Mat& depth_m,
-                                   const cv::Mat& color);
+                                   const cv::Mat& color, const std::vector<cv::Rect>& moving = {});
   // Forgets the reference, the velocity and the pose.
   void Reset();
 

@@ -22,9 +22,10 @@ double Median(std::vector<double> v) {
 // The corridor of CorridorAccuracy (100 m loop, 30 m x 20 m, four 90 deg left turns on 0.6 m
 // radii, 1 m/s at 5 Hz: 0.2 m and up to 19 deg between frames, 320x240 Kinect noise, two walking
 // people) mapped twice on the same frames: with the wheel odometry (2 deg/m heading drift, no
-// distance bias) and with RGB-D odometry instead. Measured here (docs/mapping.md): drift 0.22 %
-// of the path (0.24 % at worst) with RGB-D odometry, 0.08 % with the unbiased wheel odometry;
-// map IoU 0.934 against 0.990 (walls only 0.878 against 0.950).
+// distance bias) and with RGB-D odometry instead (the true person boxes masked out of its
+// alignment). Measured here (docs/mapping.md): position error 0.09 % of the path at worst with
+// RGB-D odometry, 0.13 % with the unbiased wheel odometry; map IoU 0.985 against 0.990 (walls
+// only 0.914 against 0.950).
 TEST(CorridorRgbdOdometry, LoopWithoutWheelOdometryKeepsTheMap) {
   sim::SimulationOptions simulation = testing::CorridorSimulation(100.0, 5.0, 1.0, 2.0);
   simulation.odometry.scale_error = 0.0;
@@ -61,10 +62,9 @@ TEST(CorridorRgbdOdometry, LoopWithoutWheelOdometryKeepsTheMap) {
     EXPECT_LT(with_rgbd.heading.max_deg, 1.0);
   }
   {
-    SCOPED_TRACE("the map stays within 0.1 IoU of the wheel odometry's");
-    EXPECT_GT(with_rgbd.map_all_obstacles.iou, with_wheels.map_all_obstacles.iou - 0.1);
-    EXPECT_GT(with_rgbd.map.iou, with_wheels.map.iou - 0.1);
-    EXPECT_GT(with_rgbd.map_all_obstacles.iou, 0.85);
+    SCOPED_TRACE("the map stays within 0.06 IoU of the wheel odometry's");
+    EXPECT_GT(with_rgbd.map_all_obstacles.iou, with_wheels.map_all_obstacles.iou - 0.06);
+    EXPECT_GT(with_rgbd.map.iou, with_wheels.map.iou - 0.06);
   }
 }
 

@@ -81,8 +81,8 @@ TEST(RgbdOdometry, SimulatedCorridorStraightAndTurn) {
 }
 
 // The first-to-last motion of the 9 fr1_desk frames (0.11 m, 9 deg in 0.27 s, hand-held)
-// against the motion capture, per method. Measured here (docs/mapping.md): rgbd 24 mm and
-// 1.7 deg, rgbd_icp 11 mm and 1.2 deg, icp 14 mm and 1.0 deg; the bounds leave room above that.
+// against the motion capture, per method. Measured here (docs/mapping.md): rgbd 29 mm and
+// 1.9 deg, rgbd_icp 13 mm and 1.2 deg, icp 13 mm and 1.1 deg; the bounds leave room above that.
 TEST(RgbdOdometry, TumFr1DeskAgainstMotionCapture) {
   SIGHTLINE_REQUIRE_DATA(path, "tum_fr1_desk");
   struct Case {
@@ -90,7 +90,7 @@ TEST(RgbdOdometry, TumFr1DeskAgainstMotionCapture) {
     double max_position_error_m, max_rotation_error_deg;
   };
   for (const Case& c :
-       {Case{"rgbd", 0.035, 2.5}, Case{"rgbd_icp", 0.02, 2.0}, Case{"icp", 0.025, 2.0}}) {
+       {Case{"rgbd", 0.04, 2.5}, Case{"rgbd_icp", 0.02, 2.0}, Case{"icp", 0.025, 2.0}}) {
     SCOPED_TRACE(c.method);
     StatusOr<std::unique_ptr<Source>> source = OpenDataset(path, SourceKind::kRgbd);
     ASSERT_TRUE(source.ok()) << source.status().ToString();
