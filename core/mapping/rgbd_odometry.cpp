@@ -330,20 +330,17 @@ StatusOr<RgbdOdometryStep> RgbdOdometry::Track(const FrameStamp& stamp, const cv
   }
   if (!(gap_s > 0)) return fail(Format("time %.6f s is not after the last tracked frame", t));
 
-  // Align the keyframe with this frame, starting from the constant-velocity prediction; when
-  // that fails (the motion changed: a turn begins or ends), from no motion since the last frame.
+  // Align the keyframe with this frame. Guesses in order: the features' motion (when enough of
+  // them agree on one: fast turns), the constant-velocity prediction, no motion since the last
+  // frame (the motion changed). The first that aligns plausibly is taken.
   s.odometry->prepareFrameCache(frame, cv::rgbd::OdometryFrame::CACHE_ALL);
-  // Guesses in order: the features' motion (when they agree on one), the constant-velocity
-  // prediction, no motion since the last frame. The first that aligns is taken.
   std::vector<Eigen::Isometry3d> guesses;
-  std::optional<Eigen::Isometry3d> feature_motion;
   if (s.features) {
     int inliers = 0;
     const PinholeCamera scaled = s.camera.Scaled(depth.cols, depth.rows);
     if (auto current_from_keyframe =
             s.features->Estimate(s.keyframe_features, current_features, scaled, &inliers)) {
-      feature_motion = current_from_keyframe->inverse();
-      guesses.push_back(*feature_motion);
+      guesses.push_back(current_from_keyframe->inverse());
     }
   }
   if (options_.constant_velocity && s.last_step_dt_s > 0) {
