@@ -11,7 +11,7 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(yaml-cpp REQUIRED)
 find_package(Ceres REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS
-  core imgproc imgcodecs features2d calib3d video flann videoio objdetect)
+  core imgproc imgcodecs features2d calib3d video flann videoio objdetect rgbd)
 
 find_package(Qt6 6.4 REQUIRED COMPONENTS
   Core Gui Widgets OpenGL OpenGLWidgets Concurrent Network Test LinguistTools)

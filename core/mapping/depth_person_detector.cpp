@@ -175,7 +175,8 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
            p.top >= o.depth_min_height_m && p.top <= o.depth_max_height_m &&
            (p.bottom <= o.depth_max_foot_m || p.box.br().y >= depth_m.rows - step) &&
            p.length_m >= o.depth_min_width_m && p.length_m <= o.depth_max_width_m &&
-           p.width_m >= o.depth_min_thickness_m;
+           p.width_m >= o.depth_min_thickness_m &&
+           p.top >= o.depth_min_height_to_length * p.length_m;
   };
 
   for (std::vector<int>& members : clusters) {

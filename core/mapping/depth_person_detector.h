@@ -13,12 +13,16 @@
 //     stands that much above everything one to two head radii around it (a person beside a bin
 //     or a wall) keeps the cells within half a person's width.
 //  4. A cluster (or part) is a person when its top lies in [depth_min_height_m,
-//     depth_max_height_m], its footprint in [depth_min_width_m, depth_max_width_m], its lowest
-//     point within depth_max_foot_m of the floor (it stands there), it has depth_min_points
-//     points, and nothing taller stands in its cells (a wall or a pillar that goes on upward).
+//     depth_max_height_m], its footprint in [depth_min_width_m, depth_max_width_m] and its top
+//     depth_min_height_to_length footprint lengths high (a desk is wider than tall), its
+//     lowest point within depth_max_foot_m of the floor (it stands there), it has
+//     depth_min_points points, and nothing taller stands in its cells (a wall or a pillar that
+//     goes on upward).
 //  5. Its box is the bounding box of its pixels.
 // Clusters touching the image's top rows count too: a person close to the camera has the head
-// cut off, and walls stay out by their length or their height where seen.
+// cut off, and walls stay out by their length or their height where seen. Depth alone cannot
+// tell a high-backed chair from a child; MappingFrameProcessor checks each box with HOG on the
+// colour image when it has one (mapping.people.depth_hog_check).
 #pragma once
 
 #include <Eigen/Core>

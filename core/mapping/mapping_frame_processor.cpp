@@ -13,9 +13,13 @@ bool MappingOptions::IsValid(std::string* error) const {
   if (extractor != "multi_line_ransac" && extractor != "split_and_merge") {
     return Invalid(error, "mapping.extractor must be multi_line_ransac or split_and_merge");
   }
-  return floor.IsValid(error) && occupancy.IsValid(error) && scan.IsValid(error) &&
-         ransac.IsValid(error) && split_merge.IsValid(error) && rotation.IsValid(error) &&
-         stitch.IsValid(error) && people.IsValid(error);
+  if (pose_source != "auto" && pose_source != "recording" && pose_source != "rgbd" &&
+      pose_source != "none") {
+    return Invalid(error, "mapping.pose.source must be auto, recording, rgbd or none");
+  }
+  return odometry.IsValid(error) && floor.IsValid(error) && occupancy.IsValid(error) &&
+         scan.IsValid(error) && ransac.IsValid(error) && split_merge.IsValid(error) &&
+         rotation.IsValid(error) && stitch.IsValid(error) && people.IsValid(error);
 }
 
 OptionTable<MappingOptions> MappingOptions::Describe() {
@@ -30,7 +34,14 @@ OptionTable<MappingOptions> MappingOptions::Describe() {
       .Nested(&O::split_merge, SplitAndMergeOptions::Describe())
       .Nested(&O::rotation, ManhattanRotationOptions::Describe())
       .Nested(&O::stitch, OccupancyGridMapOptions::Describe())
-      .Nested(&O::people, PersonDetectorOptions::Describe());
+      .Nested(&O::people, PersonDetectorOptions::Describe())
+      .Choice("mapping.pose.source", &O::pose_source, {"auto", "recording", "rgbd", "none"},
+              "Where the robot's translation comes from: the recording's odometry "
+              "(odometry.txt, a bag's odometry or tf, a live source's), RGB-D odometry on the "
+              "depth and colour frames, none (heading from the walls only), or auto (the "
+              "recording's odometry when it has one, else RGB-D odometry when the frames have "
+              "colour or the method is icp, else none).")
+      .Nested(&O::odometry, RgbdOdometryOptions::Describe());
 }
 
 namespace {
@@ -49,6 +60,7 @@ MappingFrameProcessor::MappingFrameProcessor(MappingOptions options)
       scanner_(options_.scan),
       depth_people_(options_.people),
       rotation_(options_.rotation),
+      visual_odometry_(options_.odometry),
       map_(options_.stitch) {
   if (options_.extractor == "split_and_merge") {
     extractor_ = std::make_unique<SplitAndMerge>(options_.split_merge);
@@ -64,12 +76,35 @@ StatusOr<std::vector<PersonBox>> MappingFrameProcessor::HogPeople(const cv::Mat&
   return detector_->Detect(color);
 }
 
+void MappingFrameProcessor::CheckWithHog(const cv::Mat& color, const cv::Size& depth_size,
+                                         std::vector<PersonBox>* people) {
+  if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
+  const double sx = static_cast<double>(color.cols) / depth_size.width;
+  const double sy = static_cast<double>(color.rows) / depth_size.height;
+  // A box within one depth sample of the border is cut off by it.
+  const double margin =
+      std::max(2.0, static_cast<double>(depth_size.width) / options_.people.depth_target_columns);
+  std::vector<PersonBox> kept;
+  for (const PersonBox& p : *people) {
+    const cv::Rect2d& b = p.box;
+    const bool cut = b.x < margin || b.y < margin || b.br().x > depth_size.width - margin ||
+                     b.br().y > depth_size.height - margin;
+    const double score =
+        detector_->Score(color, cv::Rect2d(b.x * sx, b.y * sy, b.width * sx, b.height * sy));
+    const double needed =
+        cut ? options_.people.depth_hog_min_score_cut : options_.people.depth_hog_min_score;
+    if (score >= needed) kept.push_back(p);
+  }
+  *people = std::move(kept);
+}
+
 Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCamera& camera) {
   configured_ = false;
   std::string error;
   if (!options_.IsValid(&error)) return InvalidArgument(error);
   SIGHTLINE_RETURN_IF_ERROR(occupancy_.Configure(floor, camera));
   SIGHTLINE_RETURN_IF_ERROR(depth_people_.Configure(floor, camera));
+  SIGHTLINE_RETURN_IF_ERROR(visual_odometry_.Configure(camera));
   SIGHTLINE_RETURN_IF_ERROR(scanner_.Configure(
       options_.occupancy.width_cells, options_.occupancy.height_cells,
       options_.occupancy.cell_size_m, occupancy_.fov_min_rad(), occupancy_.fov_max_rad()));
@@ -84,6 +119,9 @@ Status MappingFrameProcessor::Configure(const FloorPlane& floor, const PinholeCa
 void MappingFrameProcessor::Restart() {
   rotation_.Restart(0);
   odometry_.Reset();
+  visual_odometry_.Reset();
+  active_pose_source_.clear();
+  odometry_log_.clear();
   map_.Clear();
   pose_ = Pose2d();
   trajectory_.clear();
@@ -91,6 +129,50 @@ void MappingFrameProcessor::Restart() {
   camera_poses_.clear();
   reset_log_.clear();
   frames_ = 0;
+}
+
+StatusOr<bool> MappingFrameProcessor::SourcePose(const MappingInput& input,
+                                                 MappingFrameResult* result,
+                                                 std::optional<Pose2d>* world_from_base) {
+  if (active_pose_source_.empty()) {
+    const std::string& wanted = options_.pose_source;
+    // auto: the recording's odometry, else RGB-D odometry when the frames can feed it (colour,
+    // or depth alone for icp), else none.
+    const bool can_track = !input.color.empty() || options_.odometry.method == "icp";
+    active_pose_source_ = wanted != "auto"             ? wanted
+                          : input.odometry.has_value() ? "recording"
+                          : can_track                  ? "rgbd"
+                                                       : "none";
+  }
+  result->pose_source = active_pose_source_;
+  world_from_base->reset();
+  if (active_pose_source_ == "recording") *world_from_base = input.odometry;
+  if (active_pose_source_ != "rgbd") return true;
+  // People move: their boxes (scaled to the depth image) are left out of the alignment.
+  std::vector<cv::Rect> moving;
+  for (const PersonBox& p : result->people) {
+    if (p.image_size.width <= 0 || p.image_size.height <= 0) continue;
+    const double sx = static_cast<double>(input.depth_m.cols) / p.image_size.width;
+    const double sy = static_cast<double>(input.depth_m.rows) / p.image_size.height;
+    moving.emplace_back(
+        cv::Rect2d(p.box.x * sx, p.box.y * sy, p.box.width * sx, p.box.height * sy));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  StatusOr<RgbdOdometryStep> step =
+      visual_odometry_.Track(input.stamp, input.depth_m, input.color, moving);
+  result->times.odometry_ms = MsSince(start);
+  if (!step.ok()) return step.status();
+  if (step->ok) {
+    *world_from_base = FloorPoseOfCamera(base_from_camera_, step->world_from_camera);
+    return true;
+  }
+  result->odometry_failure = step->failure;
+  char text[64];
+  std::snprintf(text, sizeof(text),
+                "frame %lld (t = %.3f s): ", static_cast<long long>(input.stamp.sequence_id),
+                input.stamp.sensor_time_s);
+  odometry_log_.push_back(text + step->failure);
+  return false;
 }
 
 StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Process(
@@ -119,6 +201,16 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
     if (!found.ok()) return found.status();
     result->people = std::move(*found);
     result->people_source = use_depth ? "depth" : "hog";
+    // HOG as the second cue when the colour image is registered to the depth image (the same
+    // shape within 2 %).
+    if (use_depth && options_.people.depth_hog_check && !input.color.empty() &&
+        !input.depth_m.empty() &&
+        std::abs(static_cast<double>(input.color.cols) * input.depth_m.rows /
+                     (static_cast<double>(input.color.rows) * input.depth_m.cols) -
+                 1.0) < 0.02) {
+      if (!result->people.empty()) CheckWithHog(input.color, input.depth_m.size(), &result->people);
+      result->people_source = "depth+hog";
+    }
     times.people_ms = MsSince(start);
     if (timing) timing->Add("people", times.people_ms);
   } else {
@@ -146,13 +238,19 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
   result->lines = std::move(*lines);
   times.lines_ms = MsSince(start);
 
+  // Pose source: a failed RGB-D odometry step holds the position (no increment; the next
+  // tracked frame's increment spans the gap) and the frame is not stitched.
+  std::optional<Pose2d> source_pose;
+  StatusOr<bool> tracked = SourcePose(input, result.get(), &source_pose);
+  if (!tracked.ok()) return tracked.status();
+
   // Rotation and dead reckoning.
   start = std::chrono::steady_clock::now();
-  if (frames_ == 0 && input.odometry) {
-    pose_ = *input.odometry;  // The estimate lives in the pose source's world frame.
+  if (frames_ == 0 && source_pose) {
+    pose_ = *source_pose;  // The estimate lives in the pose source's world frame.
     rotation_.Restart(pose_.heading_rad);
   }
-  const OdometryIncrement step = odometry_.Update(input.odometry);
+  const OdometryIncrement step = *tracked ? odometry_.Update(source_pose) : OdometryIncrement();
   const double previous_heading = pose_.heading_rad;
   result->rotation = rotation_.Update(result->lines.lines, step);
   rotation_.Classify(result->rotation, &result->lines.lines);
@@ -180,7 +278,7 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
       result->map_cleared = true;
     }
   }
-  SIGHTLINE_RETURN_IF_ERROR(map_.Insert(result->occupancy, pose_, &result->scan));
+  if (*tracked) SIGHTLINE_RETURN_IF_ERROR(map_.Insert(result->occupancy, pose_, &result->scan));
   times.stitch_ms = MsSince(start);
 
   trajectory_.push_back(pose_);
@@ -204,6 +302,8 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
     result->status = "no depth";
   } else if (valid == 0) {
     result->status = "no valid depth";
+  } else if (!*tracked) {
+    result->status = "odometry failed";
   } else if (occ.person_pixels > occ.occupied_pixels && occ.person_pixels > valid / 4) {
     result->status = "view blocked by people";
   } else if (occ.floor_pixels == 0) {
@@ -218,6 +318,7 @@ StatusOr<std::shared_ptr<const MappingFrameResult>> MappingFrameProcessor::Proce
     timing->Add("occupancy", times.occupancy_ms);
     timing->Add("scan", times.scan_ms);
     timing->Add("lines", times.lines_ms);
+    if (result->pose_source == "rgbd") timing->Add("odometry", times.odometry_ms);
     timing->Add("rotation", times.rotation_ms);
     timing->Add("stitch", times.stitch_ms);
   }

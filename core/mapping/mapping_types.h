@@ -153,6 +153,7 @@ struct MappingStageTimes {
   double occupancy_ms = 0;
   double scan_ms = 0;
   double lines_ms = 0;
+  double odometry_ms = 0;  // RGB-D odometry (only with mapping.pose.source rgbd).
   double rotation_ms = 0;
   double stitch_ms = 0;
   double total_ms = 0;  // All of the above.
@@ -166,12 +167,15 @@ struct MappingStageTimes {
 struct MappingFrameResult {
   FrameStamp stamp;
   std::vector<PersonBox> people;  // Boxes used (image pixels).
-  std::string people_source;      // Where they came from: ground truth, depth, hog or none.
+  std::string people_source;  // Where they came from: ground truth, depth, depth+hog, hog or none.
   OccupancyImage occupancy;
   PolarScan scan;
   LineExtraction lines;  // Base frame; direction_class set.
   RotationEstimate rotation;
-  Pose2d pose;  // world_from_base estimate.
+  Pose2d pose;                   // world_from_base estimate.
+  std::string pose_source;       // What gave the translation: recording, rgbd or none.
+  std::string odometry_failure;  // Why the RGB-D odometry failed on this frame ("" = it did
+                                 // not, or did not run); the position was then held.
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
   bool reset = false;        // The reset rule fired (rotation.reset_reason says why).
   bool map_cleared = false;  // ... and the map was started anew.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/objdetect.hpp>
 #include <sstream>
@@ -40,6 +41,13 @@ bool PersonDetectorOptions::IsValid(std::string* error) const {
     return Invalid(error, "mapping.people.depth_min_thickness_m must be >= 0");
   }
   if (!(depth_max_foot_m > 0)) return Invalid(error, "mapping.people.depth_max_foot_m must be > 0");
+  if (!(depth_min_height_to_length >= 0 && depth_min_height_to_length <= 20)) {
+    return Invalid(error, "mapping.people.depth_min_height_to_length must lie in [0, 20]");
+  }
+  if (!std::isfinite(depth_hog_min_score) || !std::isfinite(depth_hog_min_score_cut)) {
+    return Invalid(error,
+                   "mapping.people.depth_hog_min_score and depth_hog_min_score_cut must be finite");
+  }
   if (depth_min_points < 1) return Invalid(error, "mapping.people.depth_min_points must be >= 1");
   if (!(depth_head_drop_m > 0))
     return Invalid(error, "mapping.people.depth_head_drop_m must be > 0");
@@ -82,6 +90,9 @@ OptionTable<PersonDetectorOptions> PersonDetectorOptions::Describe() {
               "thick.")
       .Double("depth_max_foot_m", &O::depth_max_foot_m, "m", 0.01, 2, 0.05,
               "depth: a person's lowest point lies at most this high above the floor.")
+      .Double("depth_min_height_to_length", &O::depth_min_height_to_length, "", 0, 20, 0.1,
+              "depth: a person's top lies at least this many footprint lengths above the floor "
+              "(a desk, a table or a sofa is wider than it is tall).")
       .Int("depth_min_points", &O::depth_min_points, "", 1, 100000, 10,
            "depth: sampled points a person needs.")
       .Double("depth_head_radius_m", &O::depth_head_radius_m, "m", 0.05, 2, 0.05,
@@ -93,7 +104,16 @@ OptionTable<PersonDetectorOptions> PersonDetectorOptions::Describe() {
       .Bool("depth_require_top", &O::depth_require_top,
             "depth: when on, a cluster reaching the image's top row (its top out of view) is not "
             "a person: fewer false people at the edge of view, but people near enough to have "
-            "their heads cut off are missed.");
+            "their heads cut off are missed.")
+      .Bool("depth_hog_check", &O::depth_hog_check,
+            "depth: when the colour image is registered to the depth image, OpenCV's HOG "
+            "people detector must also score each cluster's box (a chair or a desk of a "
+            "person's size is dropped).")
+      .Double("depth_hog_min_score", &O::depth_hog_min_score, "", -10, 10, 0.1,
+              "depth: the HOG score a cluster's box needs when the whole box is in view.")
+      .Double("depth_hog_min_score_cut", &O::depth_hog_min_score_cut, "", -10, 10, 0.1,
+              "depth: the HOG score a cluster's box needs when it touches the image's border "
+              "(a body cut off scores lower).");
 }
 
 struct HogPersonDetector::Impl {
@@ -143,6 +163,37 @@ StatusOr<std::vector<PersonBox>> HogPersonDetector::Detect(const cv::Mat& image)
     people.push_back(person);
   }
   return people;
+}
+
+double HogPersonDetector::Score(const cv::Mat& image, const cv::Rect2d& box) {
+  if (image.empty() || box.width < 1 || box.height < 1) {
+    return -std::numeric_limits<double>::infinity();
+  }
+  // The default people detector's 64 x 128 window holds a person about 96 px tall, centred.
+  const cv::Size win = impl_->hog.winSize;
+  const double body = 96.0;
+  double best = -std::numeric_limits<double>::infinity();
+  for (double grow : {0.9, 1.0, 1.12}) {
+    const double scale = body / (box.height * grow);  // Image pixels to window pixels.
+    // A region one window plus a cell margin around the box's centre, in the image.
+    const double w = (win.width + 16) / scale, h = (win.height + 16) / scale;
+    const cv::Point2d c(box.x + box.width / 2, box.y + box.height / 2);
+    const cv::Rect region(static_cast<int>(std::floor(c.x - w / 2)),
+                          static_cast<int>(std::floor(c.y - h / 2)), static_cast<int>(std::ceil(w)),
+                          static_cast<int>(std::ceil(h)));
+    const cv::Rect inside = region & cv::Rect(0, 0, image.cols, image.rows);
+    if (inside.empty()) continue;
+    cv::Mat padded;
+    cv::copyMakeBorder(image(inside), padded, inside.y - region.y, region.br().y - inside.br().y,
+                       inside.x - region.x, region.br().x - inside.br().x, cv::BORDER_REPLICATE);
+    cv::resize(padded, impl_->small, cv::Size(win.width + 16, win.height + 16), 0, 0,
+               cv::INTER_AREA);
+    std::vector<cv::Point> hits;
+    std::vector<double> weights;
+    impl_->hog.detect(impl_->small, hits, weights, -1e9, cv::Size(8, 8));
+    for (double s : weights) best = std::max(best, s);
+  }
+  return best;
 }
 
 // --- Ground-truth table ---------------------------------------------------------------------

@@ -31,15 +31,24 @@ struct PersonDetectorOptions {
                                         // curve; a wall's end is one cell thick [m].
   double depth_max_foot_m = 0.9;        // The lowest point lies at most this high: it stands
                                         // (legs hidden by a bin or lost in far noise) [m].
-  int depth_min_points = 40;            // Sampled points a person needs.
-  double depth_head_radius_m = 0.3;     // Heads of people side by side are this far apart [m] ...
-  double depth_head_drop_m = 0.2;       // ... with a dip this deep between them [m].
-  bool depth_require_top = false;       // On: a cluster reaching the image's top row (its top out
-                                        // of view) is not a person.
-  double hog_hit_threshold = 0.3;       // SVM score a HOG window needs.
-  int hog_max_columns = 320;     // The colour image is downscaled to at most this width first.
-  double hog_scale_step = 1.08;  // Pyramid step of detectMultiScale.
-  double hog_box_shrink = 0.1;   // HOG boxes are padded; shrink each side by this fraction.
+  double depth_min_height_to_length = 1.5;  // Top at least this many footprint lengths high: a
+                                            // desk, a table or a sofa is wider than tall.
+  int depth_min_points = 40;                // Sampled points a person needs.
+  double depth_head_radius_m = 0.3;  // Heads of people side by side are this far apart [m] ...
+  double depth_head_drop_m = 0.2;    // ... with a dip this deep between them [m].
+  bool depth_require_top = false;    // On: a cluster reaching the image's top row (its top out
+                                     // of view) is not a person.
+  // With colour of the depth image's shape (registered), HOG must agree with each depth
+  // cluster: its best window score around the box at least depth_hog_min_score, or
+  // depth_hog_min_score_cut when the box touches the image's border (a body cut off scores
+  // lower). Chairs, desks and cabinets score below -1.4 on real frames.
+  bool depth_hog_check = true;
+  double depth_hog_min_score = -1.0;
+  double depth_hog_min_score_cut = -1.3;
+  double hog_hit_threshold = 0.3;  // SVM score a HOG window needs.
+  int hog_max_columns = 320;       // The colour image is downscaled to at most this width first.
+  double hog_scale_step = 1.08;    // Pyramid step of detectMultiScale.
+  double hog_box_shrink = 0.1;     // HOG boxes are padded; shrink each side by this fraction.
 
   bool IsValid(std::string* error) const;
   static OptionTable<PersonDetectorOptions> Describe();
@@ -60,6 +69,10 @@ class HogPersonDetector {
 
   // People in a BGR or grey image. An empty image gives no people.
   StatusOr<std::vector<PersonBox>> Detect(const cv::Mat& image);
+  // The best SVM score of windows framing `box` (a person's full body in `image`'s pixels) at
+  // a few places and sizes around it; the image's border is replicated where the window
+  // leaves it. -inf for an empty image or box.
+  double Score(const cv::Mat& image, const cv::Rect2d& box);
 
  private:
   struct Impl;

@@ -74,6 +74,26 @@ void AddCounts(const MappingRunView& run, RunResult* result) {
   result->counts.emplace_back("camera_height_m", run.state.floor->plane.CameraHeightM());
 }
 
+// Which pose source moved the robot, in how many frames, and how often the RGB-D odometry
+// failed: a log line ("pose source used: rgbd in 500 frame(s), 0 failed odometry step(s)
+// (mapping.pose.source=auto)"), a note for metrics.json and the CLI, and counts.
+void AddPoseSource(const MappingRunView& run, RunResult* result, std::vector<std::string>* log) {
+  const std::string asked = "(mapping.pose.source=" + run.state.options.pose_source + ")";
+  for (const auto& [source, frames] : run.record.pose_sources) {
+    std::string line =
+        "pose source used: " + source + " in " + std::to_string(frames) + " frame(s)";
+    if (source == "rgbd") {
+      line += ", " + std::to_string(run.chain.odometry_failures()) + " failed odometry step(s)";
+    }
+    log->push_back(line + " " + asked);
+    result->notes.push_back(line + " " + asked);
+    result->counts.emplace_back("frames_pose_" + source, frames);
+  }
+  if (run.record.pose_sources.count("rgbd") > 0) {
+    result->counts.emplace_back("odometry_failures", run.chain.odometry_failures());
+  }
+}
+
 // The true camera pose of each mapped frame (nullopt without one).
 std::vector<std::optional<Eigen::Isometry3d>> TruthOfFrames(const MappingRunView& run,
                                                             const Trajectory& gt) {
@@ -235,6 +255,7 @@ StatusOr<RunResult> FinishMappingRun(const MappingPipeline::State& state,
                   " frame(s), " + std::to_string(counts.second) +
                   " box(es) (mapping.people.source=" + state.options.people.source + ")");
   }
+  AddPoseSource(run, &result, &log);
   log.push_back(state.floor_log);
   log.insert(log.end(), state.record.frame_log.begin(), state.record.frame_log.end());
 

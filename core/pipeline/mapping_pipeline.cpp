@@ -57,17 +57,20 @@ namespace {
 // The statistics of one mapped frame.
 std::vector<std::pair<std::string, double>> FrameStatistics(const MappingFrameResult& r) {
   const MappingStageTimes& t = r.times;
+  const bool rgbd = r.pose_source == "rgbd";
   std::vector<std::pair<std::string, double>> stats;
   if (t.people_ms > 0) stats.emplace_back("mapping/people_ms", t.people_ms);
   stats.insert(stats.end(), {{"mapping/occupancy_ms", t.occupancy_ms},
                              {"mapping/scan_ms", t.scan_ms},
-                             {"mapping/lines_ms", t.lines_ms},
-                             {"mapping/rotation_ms", t.rotation_ms},
+                             {"mapping/lines_ms", t.lines_ms}});
+  if (rgbd) stats.emplace_back("mapping/odometry_ms", t.odometry_ms);
+  stats.insert(stats.end(), {{"mapping/rotation_ms", t.rotation_ms},
                              {"mapping/stitch_ms", t.stitch_ms},
                              {"mapping/scan_points", static_cast<double>(r.scan.points.size())},
                              {"mapping/lines", static_cast<double>(r.lines.lines.size())},
                              {"mapping/heading_deg", RadToDeg(r.pose.heading_rad)},
                              {"mapping/reset", r.reset ? 1.0 : 0.0}});
+  if (rgbd) stats.emplace_back("mapping/odometry_failed", r.odometry_failure.empty() ? 0.0 : 1.0);
   return stats;
 }
 
@@ -79,12 +82,15 @@ const StatisticTable& MappingStatistics() {
       {"mapping/occupancy_ms", "ms", "Occupancy image from the depth frame."},
       {"mapping/scan_ms", "ms", "Polar scan of the occupancy image."},
       {"mapping/lines_ms", "ms", "Wall line extraction."},
+      {"mapping/odometry_ms", "ms", "RGB-D odometry (only when it is the pose source)."},
       {"mapping/rotation_ms", "ms", "Manhattan rotation and dead reckoning."},
       {"mapping/stitch_ms", "ms", "Stitching the frame into the global map."},
       {"mapping/scan_points", "count", "Scan points (nearest occupied cell per ray)."},
       {"mapping/lines", "count", "Wall lines found."},
       {"mapping/heading_deg", "deg", "Estimated heading of the robot."},
       {"mapping/reset", "", "1 when the Manhattan reference was reset on this frame."},
+      {"mapping/odometry_failed", "",
+       "1 when the RGB-D odometry failed on this frame (the pose was held, the frame not mapped)."},
   };
   return kTable;
 }
@@ -92,11 +98,14 @@ const StatisticTable& MappingStatistics() {
 void MappingRunRecord::Add(const MappingFrameResult& r, const std::vector<std::string>& reset_log) {
   const FrameStamp& stamp = r.stamp;
   ++statuses[r.status];
+  ++pose_sources[r.pose_source];
   std::pair<int, int>& people = people_sources[r.people_source];
   ++people.first;
   people.second += static_cast<int>(r.people.size());
-  if (r.status != "ok") {
-    frame_log.push_back("frame " + std::to_string(stamp.sequence_id) + ": " + r.status);
+  if (r.status != "ok" || !r.odometry_failure.empty()) {
+    frame_log.push_back(
+        "frame " + std::to_string(stamp.sequence_id) + ": " + r.status +
+        (r.odometry_failure.empty() ? "" : " (odometry: " + r.odometry_failure + ")"));
   }
   if (r.reset && !reset_log.empty()) frame_log.push_back("reset at " + reset_log.back());
   for (size_t i = 0; i < r.lines.lines.size(); ++i) {
@@ -113,7 +122,7 @@ void MappingRunRecord::Add(const MappingFrameResult& r, const std::vector<std::s
 }
 
 Status MappingPipeline::State::StartRun(bool keep_floor) {
-  StatusOr<MappingRecording> loaded = LoadMappingRecording(*source, run);
+  StatusOr<MappingRecording> loaded = LoadMappingRecording(*source, run, options.pose_source);
   if (!loaded.ok()) return loaded.status();
   std::optional<FloorCalibration> next_floor;
   std::string next_log;
@@ -143,7 +152,9 @@ Status MappingPipeline::State::StartRun(bool keep_floor) {
 
 Status MappingPipeline::State::StartChain() {
   record.Clear();
-  chain = std::make_unique<MappingFrameProcessor>(options);
+  MappingOptions chain_options = options;
+  chain_options.pose_source = recording.pose_source;  // The recording's odometry, if it is used.
+  chain = std::make_unique<MappingFrameProcessor>(chain_options);
   Status configured = chain->Configure(floor->plane, recording.camera);
   if (!configured.ok()) ForgetFloor();  // The next frames calibrate a usable one.
   return configured;

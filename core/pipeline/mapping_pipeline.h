@@ -3,12 +3,14 @@
 //
 // Reads an RGB-D dataset (a TUM folder or a recording with an rgbd/ sensor folder). From the
 // recording's top folder it also uses, when present: odometry.txt (wheel odometry, the dead
-// reckoning pose source), people.csv (ground-truth person boxes), walls.csv (true wall faces,
+// reckoning pose source unless mapping.pose.source asks for RGB-D odometry or none; without it
+// auto uses RGB-D odometry), people.csv (ground-truth person boxes), walls.csv (true wall faces,
 // for accuracy) and scene.yaml (the camera's offset ahead of the odometry base).
 //
 // Finish writes trajectory.txt (TUM, camera poses), lines.csv, map.pgm + map.yaml (ROS map_server),
 // map.png, floor.yaml (the floor calibration used), mapping_log.txt (per-frame status and every
-// reset), and metrics.json with timing for occupancy, scan, lines, rotation, stitch and, with
+// reset, the pose source used), and metrics.json with timing for occupancy, scan, lines, odometry
+// (RGB-D), rotation, stitch, the pose source as a note and counts, and, with
 // ground truth: accuracy.heading_error_deg_mean, heading_error_deg_max, ate_rmse_m, and with
 // walls.csv also wall_angle_error_deg_median, wall_recall and map_iou (map_precision,
 // map_recall).

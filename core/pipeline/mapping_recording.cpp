@@ -41,7 +41,8 @@ std::string MappingRecordingRoot(const std::string& path) {
 }
 
 StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
-                                                const MappingRunOptions& run) {
+                                                const MappingRunOptions& run,
+                                                const std::string& pose_source) {
   const SourceInfo& info = source.info;
   MappingRecording recording;
   if (info.rgbd) {
@@ -53,24 +54,40 @@ StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
   }
   recording.root = MappingRecordingRoot(info.path);
   const std::string& root = recording.root;
+  std::string found;  // The recording's odometry, for the log.
   if (const std::string path = JoinPath(root, "odometry.txt"); FileExists(path)) {
     StatusOr<Trajectory> read = ReadTumTrajectory(path);
     if (!read.ok()) return read.status();
     recording.odometry = std::move(*read);
-    recording.log_lines.push_back("pose source: wheel odometry " + path);
+    found = "wheel odometry " + path;
   } else if (source.odometry) {
     recording.odometry = *source.odometry;
-    recording.log_lines.push_back("pose source: the recording's odometry (" +
-                                  std::to_string(source.odometry->size()) + " poses)");
+    found = "the recording's odometry (" + std::to_string(source.odometry->size()) + " poses)";
   } else if (source.live_odometry) {
     recording.live_odometry = source.live_odometry;
-    recording.log_lines.push_back(
-        "pose source: the live source's odometry at each frame (ros:// tf odom_frame -> "
-        "base_frame)");
+    found = "the live source's odometry at each frame (ros:// tf odom_frame -> base_frame)";
+  }
+  const std::string asked = " (mapping.pose.source=" + pose_source + ")";
+  if (!found.empty() && (pose_source == "auto" || pose_source == "recording")) {
+    recording.pose_source = "recording";
+    recording.log_lines.push_back("pose source: " + found);
+  } else if (pose_source == "recording") {
+    return FailedPrecondition(
+        "mapping.pose.source=recording, but " + root +
+        " has no odometry.txt and the source carries no odometry; use auto or rgbd");
   } else {
-    recording.log_lines.push_back(
-        "pose source: none (no odometry.txt, no odometry in the recording); heading from walls "
-        "only");
+    recording.odometry.reset();
+    recording.live_odometry = nullptr;
+    recording.pose_source = pose_source;
+    const std::string unused = found.empty() ? "" : "; not used: " + found;
+    if (pose_source == "none") {
+      recording.log_lines.push_back("pose source: none" + asked + "; heading from walls only" +
+                                    unused);
+    } else {
+      recording.log_lines.push_back(
+          "pose source: RGB-D odometry on the frames" + asked +
+          (found.empty() ? "; no odometry.txt, no odometry in the recording" : unused));
+    }
   }
   if (const std::string path = JoinPath(root, "people.csv"); FileExists(path)) {
     StatusOr<PersonBoxTable> read = PersonBoxTable::Read(path);

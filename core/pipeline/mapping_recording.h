@@ -31,7 +31,10 @@ struct MappingRecording {
   std::optional<PersonBoxTable> people;        // Ground-truth person boxes.
   std::optional<std::vector<TrueWall>> walls;  // True wall faces, for accuracy.
   double camera_forward_m = 0;                 // Optical centre ahead of the odometry base [m].
-  std::vector<std::string> log_lines;          // What was found, for the run's log.
+  // The pose source the mapping chain is given: "recording" when the odometry above is used,
+  // else mapping.pose.source as asked (auto: RGB-D odometry when the frames have colour).
+  std::string pose_source = "auto";
+  std::vector<std::string> log_lines;  // What was found, for the run's log.
 
   // One frame's mapping input: depth, colour, the odometry pose (moved to the camera) within
   // `tolerance_s` of the frame, and the frame's person boxes.
@@ -43,9 +46,11 @@ std::string MappingRecordingRoot(const std::string& dataset_path);
 
 // Loads the extras of the recording the source was opened from. The odometry is the folder's
 // odometry.txt, else the one the source carries (a ROS bag's Odometry topic or tf), else for a
-// live source its odometry frame by frame (ros:// tf). Errors name the
-// bad file.
+// live source its odometry frame by frame (ros:// tf); it is kept only when `pose_source`
+// (mapping.pose.source) uses it: auto or recording. The log says which pose source the run
+// has. Errors name the bad file, or say that pose_source recording found no odometry.
 StatusOr<MappingRecording> LoadMappingRecording(const PipelineSource& source,
-                                                const MappingRunOptions& run);
+                                                const MappingRunOptions& run,
+                                                const std::string& pose_source = "auto");
 
 }  // namespace sightline

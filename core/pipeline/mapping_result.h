@@ -31,8 +31,9 @@ struct MappingRequests {
 };
 
 // The statistics every mapping frame publishes: "mapping/<stage>_ms" per stage of the chain
-// (people, occupancy, scan, lines, rotation, stitch: the CLI's timing stages),
-// "mapping/scan_points", "mapping/lines", "mapping/heading_deg" and "mapping/reset".
+// (people, occupancy, scan, lines, odometry, rotation, stitch: the CLI's timing stages),
+// "mapping/scan_points", "mapping/lines", "mapping/heading_deg", "mapping/reset" and, with RGB-D
+// odometry, "mapping/odometry_failed".
 const StatisticTable& MappingStatistics();
 
 }  // namespace sightline

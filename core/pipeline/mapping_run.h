@@ -33,7 +33,8 @@ struct MappingRunRecord {
   std::map<std::string, int> statuses;  // Frames per chain status ("ok", "no walls", ...).
   // Per source of the person boxes used (ground truth, depth, hog, none): frames and boxes.
   std::map<std::string, std::pair<int, int>> people_sources;
-  StatisticsLog stats;  // Every mapped frame's statistics.
+  std::map<std::string, int> pose_sources;  // Frames per pose source (recording, rgbd, none).
+  StatisticsLog stats;                      // Every mapped frame's statistics.
 
   // Adds one mapped frame; `reset_log` is the chain's log of resets.
   void Add(const MappingFrameResult& r, const std::vector<std::string>& reset_log);

@@ -77,7 +77,8 @@ std::vector<std::pair<std::string, double>> StatValues(const FrameStats& s,
       {"vo/window_rms_px", s.window_rms_px},
       {"vo/translation_m", s.translation_m},
       {"vo/rotation_deg", s.rotation_deg},
-      {"vo/gated", s.gated ? 1 : 0}};
+      {"vo/gated", s.gated ? 1 : 0},
+      {"vo/turn_searched", s.turn_searched ? 1 : 0}};
   for (const StageField& f : kStages) {
     if (ran.Summary(f.stage).count > 0)
       v.emplace_back(std::string("vo/") + f.stage + "_ms", s.*f.ms);

@@ -20,6 +20,9 @@ const StatisticTable& StereoVoStatistics() {
       {"vo/translation_m", "m", "Length of the applied motion."},
       {"vo/rotation_deg", "deg", "Angle of the applied motion."},
       {"vo/gated", "", "1 when the estimate was rejected (or failed) and a fallback applied."},
+      {"vo/turn_searched", "",
+       "1 when tracks were started from the rotation the image's global shift gives (a sharp "
+       "turn)."},
       {"vo/rectify_ms", "ms", "Rectifying the pair."},
       {"vo/pyramid_ms", "ms", "Building the left image pyramid."},
       {"vo/tracking_ms", "ms", "KLT tracking from the previous left image."},

@@ -44,6 +44,15 @@ bool FeatureTrackerOptions::IsValid(std::string* error) const {
     return Invalid(error, "stereo.tracking.retrack_pyramid_levels must lie in [0, 8]");
   }
   if (refine_window_px < 0) return Invalid(error, "stereo.tracking.refine_window_px must be >= 0");
+  if (!(turn_search_fraction >= 0 && turn_search_fraction <= 1)) {
+    return Invalid(error, "stereo.tracking.turn_search_fraction must lie in [0, 1]");
+  }
+  if (turn_search_width_px < 32 || turn_search_width_px > 1024) {
+    return Invalid(error, "stereo.tracking.turn_search_width_px must lie in [32, 1024]");
+  }
+  if (!(turn_search_max_deg >= 1 && turn_search_max_deg <= 85)) {
+    return Invalid(error, "stereo.tracking.turn_search_max_deg must lie in [1, 85]");
+  }
   if (!(refill_fraction > 0 && refill_fraction <= 1)) {
     return Invalid(error, "stereo.tracking.refill_fraction must lie in (0, 1]");
   }
@@ -74,6 +83,16 @@ OptionTable<FeatureTrackerOptions> FeatureTrackerOptions::Describe() {
               "retrack_pyramid_levels; 0 = never.")
       .Int("retrack_pyramid_levels", &O::retrack_pyramid_levels, "levels", 0, 8, 1,
            "Pyramid levels of the second tracking attempt (reaches about 2^levels further).")
+      .Double("turn_search_fraction", &O::turn_search_fraction, "", 0, 1, 0.05,
+              "When even after that fewer tracks survive than this fraction of the share that "
+              "usually survives (a slow average over the last frames; a sharp turn, or a turn at "
+              "a low frame rate), the camera's rotation is searched by comparing the two images "
+              "and the points are tracked again from where it puts them; the better attempt is "
+              "kept. 0 = never.")
+      .Int("turn_search_width_px", &O::turn_search_width_px, "px", 32, 1024, 16,
+           "Width of the reduced copies of the two images compared in that search.")
+      .Double("turn_search_max_deg", &O::turn_search_max_deg, "deg", 1, 85, 5,
+              "Largest turn between two frames that search looks for.")
       .Int("max_iterations", &O::max_iterations, "", 1, 200, 1, "KLT iterations per level.")
       .Double("epsilon_px", &O::epsilon_px, "px", 1e-4, 1, 0.001,
               "KLT stops when its update is smaller than this.")

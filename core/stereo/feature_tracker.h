@@ -30,8 +30,17 @@ struct FeatureTrackerOptions {
   // 2^levels times further; 0 = never.
   double retrack_fraction = 0.6;
   int retrack_pyramid_levels = 5;  // Pyramid levels of that second attempt.
-  int max_iterations = 20;         // KLT iterations per level.
-  double epsilon_px = 0.01;        // KLT stops when the update is smaller [px].
+  // When still fewer than turn_search_fraction times the usual share (StereoOdometry keeps a
+  // slow average of the tracked fraction) of the points track (a sharp
+  // turn, or a turn at a low frame rate, moves the image by more than the pyramid reaches), the
+  // camera's rotation is searched on copies of the two images turn_search_width_px wide
+  // (core/stereo/turn_search.h, yaw within turn_search_max_deg) and the points are tracked
+  // again from where it puts them; the attempt that tracks more points is kept. 0 = never.
+  double turn_search_fraction = 0.5;
+  int turn_search_width_px = 160;
+  double turn_search_max_deg = 60;
+  int max_iterations = 20;   // KLT iterations per level.
+  double epsilon_px = 0.01;  // KLT stops when the update is smaller [px].
   double max_forward_backward_px =
       0.5;                   // Tracked back to the start within this [px]; 0 = no check.
   int border_px = 8;         // Features closer to the image border are dropped [px].

@@ -1,10 +1,12 @@
 #include "core/stereo/stereo_odometry.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "core/stereo/option_check.h"
+#include "core/stereo/turn_search.h"
 
 namespace sightline {
 
@@ -112,6 +114,7 @@ void StereoOdometry::Reset() {
   previous_left_ = ImagePyramid();
   features_.clear();
   tracked_fraction_ = 1.0;
+  usual_tracked_fraction_ = 1.0;
   has_previous_ = false;
   previous_time_s_ = 0;
   last_motion_ = Eigen::Isometry3d::Identity();
@@ -218,10 +221,11 @@ void StereoOdometry::TrackFeatures(FrameState* s) {
   // fast motion and subsampled input.
   std::vector<cv::Point2f> predicted;
   std::vector<float> predicted_disparity;
-  const Eigen::Isometry3d motion = PredictMotion(s->dt, &predicted, &predicted_disparity);
+  Eigen::Isometry3d motion = PredictMotion(s->dt, &predicted, &predicted_disparity);
   if (has_previous_) {
     stats.retracked = tracker_.Track(previous_left_, s->left_pyramid, previous_points, predicted,
                                      &tracked, &tracked_ok, tracked_fraction_);
+    SearchTurn(previous_points, s, &motion, &predicted_disparity, &tracked, &tracked_ok);
   }
   AlignToAnchors(motion, tracked_ok, &tracked, s);
   for (size_t i = 0; i < tracked_ok.size(); ++i) {
@@ -234,6 +238,9 @@ void StereoOdometry::TrackFeatures(FrameState* s) {
   stats.tracked = static_cast<int>(s->points.size());
   if (!previous_points.empty()) {
     tracked_fraction_ = static_cast<double>(s->points.size()) / previous_points.size();
+    usual_tracked_fraction_ = frame_number_ <= 1
+                                  ? tracked_fraction_
+                                  : 0.8 * usual_tracked_fraction_ + 0.2 * tracked_fraction_;
   }
   Record(s->timing, "tracking", s->clock.Lap(), &stats.tracking_ms);
 }
@@ -246,7 +253,16 @@ Eigen::Isometry3d StereoOdometry::PredictMotion(double dt, std::vector<cv::Point
   const Eigen::AngleAxisd aa(last_motion_.rotation());
   motion.linear() = Eigen::AngleAxisd(aa.angle() * scale, aa.axis()).toRotationMatrix();
   motion.translation() = last_motion_.translation() * scale;
+  PredictPoints(motion, predicted, predicted_disparity);
+  return motion;
+}
+
+void StereoOdometry::PredictPoints(const Eigen::Isometry3d& motion,
+                                   std::vector<cv::Point2f>* predicted,
+                                   std::vector<float>* predicted_disparity) const {
   const RectifiedStereoCamera& c = rectifier_.camera();
+  predicted->clear();
+  predicted_disparity->clear();
   predicted->reserve(features_.size());
   for (const Feature& f : features_) {
     const Eigen::Vector3d y = motion * c.Triangulate(f.left.x, f.left.y, f.left.x - f.right.x);
@@ -262,7 +278,41 @@ Eigen::Isometry3d StereoOdometry::PredictMotion(double dt, std::vector<cv::Point
     predicted->push_back(p);
     predicted_disparity->push_back(d);
   }
-  return motion;
+}
+
+void StereoOdometry::SearchTurn(const std::vector<cv::Point2f>& previous_points, FrameState* s,
+                                Eigen::Isometry3d* motion, std::vector<float>* predicted_disparity,
+                                std::vector<cv::Point2f>* tracked,
+                                std::vector<unsigned char>* tracked_ok) {
+  const FeatureTrackerOptions& o = options_.tracking;
+  const auto count = [](const std::vector<unsigned char>& ok) {
+    return static_cast<int>(std::count(ok.begin(), ok.end(), 1));
+  };
+  const int ok_count = count(*tracked_ok);
+  if (!(o.turn_search_fraction > 0) || previous_points.empty() ||
+      ok_count >= o.turn_search_fraction * usual_tracked_fraction_ * previous_points.size()) {
+    return;
+  }
+  TurnSearchOptions search;
+  search.width_px = o.turn_search_width_px;
+  search.max_yaw_deg = o.turn_search_max_deg;
+  const std::optional<TurnEstimate> turn =
+      FindTurn(previous_left_.image, s->left_pyramid.image, rectifier_.camera(), search);
+  if (!turn) return;
+  Eigen::Isometry3d turned = *motion;
+  turned.linear() = turn->current_from_previous;
+  std::vector<cv::Point2f> predicted, again;
+  std::vector<float> disparity;
+  std::vector<unsigned char> again_ok;
+  PredictPoints(turned, &predicted, &disparity);
+  tracker_.Track(previous_left_, s->left_pyramid, previous_points, predicted, &again, &again_ok,
+                 tracked_fraction_);
+  if (count(again_ok) <= ok_count) return;
+  *motion = turned;
+  *predicted_disparity = std::move(disparity);
+  *tracked = std::move(again);
+  *tracked_ok = std::move(again_ok);
+  s->result->stats.turn_searched = true;
 }
 
 void StereoOdometry::AlignToAnchors(const Eigen::Isometry3d& predicted_motion,

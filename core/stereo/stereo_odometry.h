@@ -100,6 +100,14 @@ class StereoOdometry {
   // history); returns the predicted current_from_previous.
   Eigen::Isometry3d PredictMotion(double dt, std::vector<cv::Point2f>* predicted,
                                   std::vector<float>* predicted_disparity) const;
+  // Where the features land under `motion` (current_from_previous).
+  void PredictPoints(const Eigen::Isometry3d& motion, std::vector<cv::Point2f>* predicted,
+                     std::vector<float>* predicted_disparity) const;
+  // When few points tracked: tracks them again from the rotation the image's global shift
+  // gives, keeping the attempt that tracks more (stereo.tracking.turn_search_*).
+  void SearchTurn(const std::vector<cv::Point2f>& previous_points, FrameState* s,
+                  Eigen::Isometry3d* motion, std::vector<float>* predicted_disparity,
+                  std::vector<cv::Point2f>* tracked, std::vector<unsigned char>* tracked_ok);
   // Refines the tracked positions against their anchors; fills s->alignment.
   void AlignToAnchors(const Eigen::Isometry3d& predicted_motion,
                       const std::vector<unsigned char>& tracked_ok,
@@ -148,6 +156,9 @@ class StereoOdometry {
   ImagePyramid previous_left_;
   std::vector<Feature> features_;
   double tracked_fraction_ = 1.0;  // Fraction of the features tracked into the last frame.
+  // Its slow average (one fifth per frame): the turn search compares against it, so that one
+  // poorly tracked frame (the turn's first) does not hide the next.
+  double usual_tracked_fraction_ = 1.0;
   double previous_time_s_ = 0;
   Eigen::Isometry3d last_motion_ = Eigen::Isometry3d::Identity();  // Last applied motion ...
   double last_motion_dt_s_ = 0;                                    // ... and its time span.

@@ -33,6 +33,8 @@ struct TrackedFeature {
 struct FrameStats {
   int tracked = 0;                 // Features tracked from the previous left image.
   bool retracked = false;          // Lost tracks were tracked again with more pyramid levels.
+  bool turn_searched = false;      // Tracks were started from the image's global shift instead
+                                   // (stereo.tracking.turn_search_fraction).
   int anchored = 0;                // Tracked positions refined against their anchors.
   int new_features = 0;            // Detected this frame (and matched in the right image).
   int stereo_matches = 0;          // Features matched in the right image (tracked + new).

@@ -126,6 +126,58 @@ TEST_F(MappingCli, FloorCalibrationFileIsWrittenAndUsed) {
                        "floor: " + out + "/floor.yaml"));
 }
 
+// The same drive without odometry.txt: the translation comes from RGB-D odometry on the frames
+// (asked for, or by auto), the log and metrics.json say so and time it, and the trajectory and
+// map are as good as with the wheel odometry. Asking for the recording's odometry is an error.
+TEST_F(MappingCli, WithoutOdometryTxtRgbdOdometryGivesTheTranslation) {
+  namespace fs = std::filesystem;
+  const std::string copy = testing::TempDir("mapping_cli_no_odometry") + "/corridor";
+  fs::copy(*dir_, copy, fs::copy_options::recursive);
+  ASSERT_TRUE(fs::remove(copy + "/odometry.txt"));
+  const std::string out_wheel = testing::TempDir("mapping_cli_wheel_run");
+  const std::string out_rgbd = testing::TempDir("mapping_cli_rgbd_run");
+  const std::string out_auto = testing::TempDir("mapping_cli_auto_run");
+  const auto wheel = Cli("run mapping " + *dir_ + " --out " + out_wheel);
+  const auto rgbd =
+      Cli("run mapping " + copy + " --out " + out_rgbd + " --set mapping.pose.source=rgbd");
+  const auto automatic = Cli("run mapping " + copy + " --out " + out_auto);
+  ASSERT_EQ(wheel.exit_code, 0) << wheel.out;
+  ASSERT_EQ(rgbd.exit_code, 0) << rgbd.out;
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.out;
+  EXPECT_TRUE(Contains(rgbd.out,
+                       "pose source used: rgbd in 100 frame(s), 0 failed odometry "
+                       "step(s) (mapping.pose.source=rgbd)"))
+      << rgbd.out;
+  const std::string log = testing::ReadTextFile(out_rgbd + "/mapping_log.txt");
+  EXPECT_TRUE(Contains(log, "pose source: RGB-D odometry on the frames")) << log;
+  EXPECT_TRUE(Contains(log, "pose source used: rgbd in 100 frame(s)")) << log;
+  const std::string auto_log = testing::ReadTextFile(out_auto + "/mapping_log.txt");
+  EXPECT_TRUE(Contains(auto_log, "pose source used: rgbd in 100 frame(s)")) << auto_log;
+  const std::string wheel_log = testing::ReadTextFile(out_wheel + "/mapping_log.txt");
+  EXPECT_TRUE(Contains(wheel_log, "pose source used: recording in 100 frame(s)")) << wheel_log;
+
+  const std::string a = testing::ReadTextFile(out_wheel + "/metrics.json");
+  const std::string b = testing::ReadTextFile(out_rgbd + "/metrics.json");
+  EXPECT_TRUE(Contains(b, "\"odometry\": {")) << b;  // timing_ms.odometry
+  EXPECT_FALSE(Contains(a, "\"odometry\": {")) << a;
+  EXPECT_EQ(testing::JsonNumber(b, "counts", "odometry_failures"), 0.0) << b;
+  EXPECT_EQ(testing::JsonNumber(b, "counts", "frames_pose_rgbd"), 100.0) << b;
+  const auto value = [](const std::string& m, const char* key) {
+    return testing::JsonNumber(m, "accuracy", key);
+  };
+  ASSERT_TRUE(value(a, "ate_rmse_m") && value(b, "ate_rmse_m") && value(b, "map_iou")) << b;
+  // 20 m with a turn: without any translation the ATE would be metres.
+  EXPECT_LT(*value(b, "ate_rmse_m"), 0.1);
+  EXPECT_LT(*value(b, "ate_rmse_m"), *value(a, "ate_rmse_m") + 0.05);
+  EXPECT_GT(*value(b, "map_iou"), *value(a, "map_iou") - 0.06);
+
+  const auto missing =
+      Cli("run mapping " + copy + " --out " + testing::TempDir("mapping_cli_recording_run") +
+          " --set mapping.pose.source=recording");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_TRUE(Contains(missing.out, "mapping.pose.source=recording, but")) << missing.out;
+}
+
 TEST(MappingCliErrors, ClearMessages) {
   const auto help = Cli("floor --help");
   EXPECT_EQ(help.exit_code, 0);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 
 #include "app/sightline/builtin_presenters.h"
 #include "app/sightline/main_window.h"
@@ -151,6 +152,28 @@ TEST(GuiPipelines, CommandLineProfileAndSetReachThePipelinesOptionsAllOrNothing)
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.message().find("/nonexistent/profile.yaml"), std::string::npos);
   EXPECT_EQ(FormatOptionValue(*panel->options().Get("button.arm.port")), "6002");
+}
+
+// The mapping pipeline's pose source and its RGB-D odometry options are in its tuning panel
+// (built from Describe()), and --set reaches them.
+TEST(GuiPipelines, MappingsPoseSourceIsInItsTuningPanel) {
+  MainWindow window;
+  for (PipelinePresenter* p : MakeBuiltinPresenters()) window.AddPipeline(p);
+  auto* panel = window.findChild<ParameterPanel*>();
+  ASSERT_NE(panel, nullptr);
+  ASSERT_TRUE(window.ActivatePipelineByWord("mapping"));
+  auto* source = qobject_cast<QComboBox*>(panel->InputFor("mapping.pose.source"));
+  ASSERT_NE(source, nullptr);
+  QStringList choices;
+  for (int i = 0; i < source->count(); ++i) choices << source->itemText(i);
+  EXPECT_EQ(choices, QStringList({"auto", "recording", "rgbd", "none"}));
+  EXPECT_EQ(source->currentText(), "auto");
+  for (const char* key : {"mapping.pose.rgbd.method", "mapping.pose.rgbd.keyframe_translation_m",
+                          "mapping.pose.rgbd.max_gap_s", "mapping.pose.rgbd.feature_guess"}) {
+    EXPECT_NE(panel->InputFor(key), nullptr) << key;
+  }
+  ASSERT_TRUE(window.ApplyOptionArguments({}, {"mapping.pose.source=rgbd"}).ok());
+  EXPECT_EQ(FormatOptionValue(*panel->options().Get("mapping.pose.source")), "rgbd");
 }
 
 }  // namespace

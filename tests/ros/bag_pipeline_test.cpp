@@ -73,6 +73,13 @@ TEST_P(BagPipelines, GiveTheFiguresOfTheTumFolder) {
       EXPECT_NEAR(b.at(key), value, 2 * truth_deg) << key;
       continue;
     }
+    if (key == "accuracy/ate_rmse_m") {
+      // Mapping's RGB-D odometry gives the positions (no odometry in either); they agree to
+      // 1e-5 m (below), but the ATE is against ground truth samples up to 10 ms apart while the
+      // hand-held camera moves about 0.4 m/s (measured: 0.23 mm apart).
+      EXPECT_NEAR(b.at(key), value, 1e-3) << key;
+      continue;
+    }
     // Depth PNG / 5000 and the bag's float metres round differently in the last float bits.
     EXPECT_NEAR(b.at(key), value, 1e-5 * std::max(1.0, std::abs(value))) << key;
   }

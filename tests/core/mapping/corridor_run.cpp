@@ -76,6 +76,27 @@ std::vector<TrueWall> TrueObstacleOutlines(const sim::Scene& scene, double min_h
   return outlines;
 }
 
+namespace {
+
+// Position errors of `estimate` against the truth, both anchored at their first pose.
+void MeasureDrift(const std::vector<Pose2d>& estimate,
+                  const std::vector<Eigen::Vector2d>& true_positions,
+                  const std::vector<double>& true_heading, CorridorScore* score) {
+  const Pose2d true_first{true_positions[0].x(), true_positions[0].y(), true_heading[0]};
+  const Eigen::Isometry3d truth_from_estimate =
+      true_first.ToIsometry() * estimate[0].ToIsometry().inverse();
+  for (size_t k = 0; k < estimate.size(); ++k) {
+    if (k > 0) score->path_m += (true_positions[k] - true_positions[k - 1]).norm();
+    const Eigen::Vector3d p =
+        truth_from_estimate * Eigen::Vector3d(estimate[k].x, estimate[k].y, 0);
+    const double e = (p.head<2>() - true_positions[k]).norm();
+    score->position_error_max_m = std::max(score->position_error_max_m, e);
+    score->position_error_final_m = e;
+  }
+}
+
+}  // namespace
+
 StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& simulation,
                                                  const std::vector<MappingOptions>& configs,
                                                  int floor_frames) {
@@ -116,6 +137,7 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
     input.stamp.sequence_id = k;
     input.stamp.sensor_time_s = simulator.TimeOf(k);
     input.depth_m = frame.depth_m;
+    input.color = frame.color;
     Pose2d odo = Pose2d::FromIsometry(odometry.poses().at(k).world_from_sensor);
     odo.x += camera_forward_m * std::cos(odo.heading_rad);
     odo.y += camera_forward_m * std::sin(odo.heading_rad);
@@ -165,6 +187,7 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count());
       score.statuses.push_back((*r)->status);
+      if ((*r)->pose_source == "rgbd") score.odometry_ms.push_back((*r)->times.odometry_ms);
       // People found against the true boxes.
       std::vector<cv::Rect2d> detections;
       for (const PersonBox& b : (*r)->people) {
@@ -246,6 +269,8 @@ StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& s
     score.map_all_obstacles =
         CompareMapWithWalls(p.map(), obstacles, truth_from_estimate, kMapToleranceCells);
     score.resets = static_cast<int>(p.reset_log().size());
+    score.odometry_failures = p.odometry_failures();
+    MeasureDrift(p.trajectory(), true_positions, true_heading, &score);
     score.frames = simulator.frames();
   }
   return scores;

@@ -27,6 +27,13 @@ struct CorridorScore {
                                     // recessed doors, boxes, bins (TrueObstacleOutlines).
   int resets = 0;
   int frames = 0;
+  // The base's position against the truth, both trajectories anchored at their first pose (no
+  // best fit: this is the drift): the path driven, the final and the largest error [m].
+  double path_m = 0;
+  double position_error_final_m = 0;
+  double position_error_max_m = 0;
+  int odometry_failures = 0;          // Frames whose RGB-D odometry step failed.
+  std::vector<double> odometry_ms;    // Per frame, when the RGB-D odometry ran.
   std::vector<double> frame_ms;       // Per-frame mapping time (occupancy .. stitch).
   std::vector<std::string> statuses;  // Per frame.
   // Detected people (boxes the chain used with id -1) against the true ones that are in view
@@ -53,8 +60,9 @@ sim::SimulationOptions CorridorSimulation(double metres, double rate_hz, double 
 std::vector<TrueWall> TrueObstacleOutlines(const sim::Scene& scene, double min_height_m,
                                            double max_height_m);
 
-// Renders every frame once and feeds it to one MappingFrameProcessor per entry of `configs`;
-// the floor is calibrated from the first `floor_frames` frames. Fails on any error.
+// Renders every frame once and feeds it (depth, colour, the wheel odometry, the true person
+// boxes) to one MappingFrameProcessor per entry of `configs`; the floor is calibrated from the
+// first `floor_frames` frames. Fails on any error.
 StatusOr<std::vector<CorridorScore>> RunCorridor(const sim::SimulationOptions& simulation,
                                                  const std::vector<MappingOptions>& configs,
                                                  int floor_frames = 3);

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/mapping/pose2d.h"
+#include "core/sim/simulator.h"
+#include "tests/core/mapping/corridor_run.h"
 #include "tests/core/mapping/synthetic_scene.h"
 
 namespace sightline {
@@ -164,6 +167,108 @@ TEST_F(MappingFrameProcessorTest, MapImageEveryNFrames) {
   }
 }
 
+// The simulator's corridor (colour and depth, 1 m/s at 5 Hz) through the chain with the pose
+// from RGB-D odometry; `spoil(k, &input)` may break frames.
+class MappingPoseSourceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    StatusOr<sim::Simulator> made =
+        sim::Simulator::Create(testing::CorridorSimulation(3.0, 5.0, 1.0, 2.0));
+    ASSERT_TRUE(made.ok()) << made.status().ToString();
+    simulator_ = std::make_unique<sim::Simulator>(std::move(*made));
+    sim::SimulatedRgbd frame;
+    ASSERT_TRUE(simulator_->RenderRgbd(0, &frame).ok());
+    std::vector<Eigen::Vector3f> points;
+    AppendDepthPoints(frame.depth_m, simulator_->rgbd_camera(), 6.0, 1, &points);
+    StatusOr<FloorFitResult> floor = FloorPlaneEstimator().Fit(points);
+    ASSERT_TRUE(floor.ok()) << floor.status().ToString();
+    floor_ = floor->plane;
+  }
+  MappingInput Frame(int k, bool with_odometry = true) const {
+    sim::SimulatedRgbd frame;
+    EXPECT_TRUE(simulator_->RenderRgbd(k, &frame).ok());
+    MappingInput input;
+    input.stamp.sequence_id = k;
+    input.stamp.sensor_time_s = simulator_->TimeOf(k);
+    input.depth_m = frame.depth_m;
+    input.color = frame.color;
+    input.people = std::vector<PersonBox>();
+    if (with_odometry) input.odometry = Pose2d{0.2 * k, 0, 0};  // Wheel odometry.
+    return input;
+  }
+  std::unique_ptr<sim::Simulator> simulator_;
+  FloorPlane floor_;
+};
+
+TEST_F(MappingPoseSourceTest, FailedOdometryStepsHoldThePoseAndSkipTheMap) {
+  MappingOptions options;
+  options.pose_source = "rgbd";
+  MappingFrameProcessor processor(options);
+  ASSERT_TRUE(processor.Configure(floor_, simulator_->rgbd_camera()).ok());
+  TimingStats timing;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int k = 0; k < simulator_->frames(); ++k) {
+    MappingInput input = Frame(k);
+    if (k == 4) input.color.setTo(cv::Scalar(0, 0, 0));  // A black frame.
+    if (k == 5) input.depth_m.setTo(cv::Scalar(0));      // No depth at all.
+    if (k == 6) {                                        // A few valid pixels only.
+      cv::Mat sparse(input.depth_m.size(), CV_32FC1, cv::Scalar(nan));
+      input.depth_m(cv::Rect(150, 200, 10, 10)).copyTo(sparse(cv::Rect(150, 200, 10, 10)));
+      input.depth_m = sparse;
+    }
+    const int map_frames = processor.map().frames();
+    StatusOr<std::shared_ptr<const MappingFrameResult>> r = processor.Process(input, &timing);
+    ASSERT_TRUE(r.ok()) << r.status().ToString();
+    const MappingFrameResult& result = **r;
+    EXPECT_EQ(result.pose_source, "rgbd");
+    if (k >= 4 && k <= 6) {
+      EXPECT_FALSE(result.odometry_failure.empty()) << "frame " << k;
+      EXPECT_EQ(result.status, k == 5 ? "no valid depth" : "odometry failed") << "frame " << k;
+      EXPECT_EQ(processor.map().frames(), map_frames) << "frame " << k << " was stitched";
+      EXPECT_NEAR(result.pose.x, processor.trajectory()[3].x, 1e-9) << "frame " << k;
+    } else {
+      EXPECT_TRUE(result.odometry_failure.empty())
+          << "frame " << k << ": " << result.odometry_failure;
+      EXPECT_EQ(processor.map().frames(), map_frames + 1) << "frame " << k;
+      // The odometry's x is the distance driven along the corridor (0.2 m per frame).
+      EXPECT_NEAR(result.pose.x, 0.2 * k, 0.03) << "frame " << k;
+    }
+  }
+  EXPECT_EQ(processor.active_pose_source(), "rgbd");
+  EXPECT_EQ(processor.odometry_failures(), 3);
+  ASSERT_EQ(processor.odometry_log().size(), 3u);
+  EXPECT_NE(processor.odometry_log()[0].find("frame 4"), std::string::npos);
+  EXPECT_NE(processor.odometry_log()[0].find("blank colour image"), std::string::npos)
+      << processor.odometry_log()[0];
+  EXPECT_EQ(timing.Summary("odometry").count, static_cast<size_t>(simulator_->frames()));
+}
+
+TEST_F(MappingPoseSourceTest, AutoPicksTheRecordingsOdometryElseRgbdElseNone) {
+  struct Case {
+    std::string wanted;
+    bool odometry, color;
+    const char* active;
+  };
+  for (const Case& c : {Case{"auto", true, true, "recording"}, Case{"auto", false, true, "rgbd"},
+                        Case{"auto", false, false, "none"}, Case{"rgbd", true, true, "rgbd"},
+                        Case{"none", true, true, "none"}}) {
+    MappingOptions options;
+    options.pose_source = c.wanted;
+    MappingFrameProcessor processor(options);
+    ASSERT_TRUE(processor.Configure(floor_, simulator_->rgbd_camera()).ok());
+    EXPECT_EQ(processor.active_pose_source(), "");
+    for (int k = 0; k < 3; ++k) {
+      MappingInput input = Frame(k, c.odometry);
+      if (!c.color) input.color = cv::Mat();
+      ASSERT_TRUE(processor.Process(input).ok());
+    }
+    EXPECT_EQ(processor.active_pose_source(), c.active) << c.wanted;
+    // Only "none" stands still; both pose sources see the 0.4 m driven.
+    const double expected_x = std::string(c.active) == "none" ? 0.0 : 0.4;
+    EXPECT_NEAR(processor.trajectory().back().x, expected_x, 0.03) << c.wanted;
+  }
+}
+
 TEST(MappingOptions, KeysAndValidation) {
   const auto specs = MappingOptions::Describe().Specs();
   auto has = [&](const std::string& key) {
@@ -176,7 +281,8 @@ TEST(MappingOptions, KeysAndValidation) {
        {"mapping.extractor", "mapping.floor.epsilon_m", "mapping.occupancy.cell_size_m",
         "mapping.scan.resolution_deg", "mapping.ransac.max_iterations",
         "mapping.ransac.error_threshold_cells", "mapping.split_merge.max_gap_m",
-        "mapping.rotation.enabled", "mapping.stitch.resolution_m", "mapping.people.source"}) {
+        "mapping.rotation.enabled", "mapping.stitch.resolution_m", "mapping.people.source",
+        "mapping.pose.source", "mapping.pose.rgbd.method", "mapping.pose.rgbd.max_gap_s"}) {
     EXPECT_TRUE(has(key)) << key;
   }
   MappingOptions bad;
@@ -184,6 +290,10 @@ TEST(MappingOptions, KeysAndValidation) {
   std::string error;
   EXPECT_FALSE(bad.IsValid(&error));
   EXPECT_NE(error.find("mapping.extractor"), std::string::npos);
+  bad = MappingOptions();
+  bad.pose_source = "gps";
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("mapping.pose.source"), std::string::npos);
   EXPECT_TRUE(MappingOptions().IsValid(&error)) << error;
 }
 

@@ -61,7 +61,8 @@ TEST(StereoVoPipeline, RunsHeadlessOnKittiThroughTheRegistry) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "frame,time_s,tracked,retracked,anchored,new_features,stereo_matches,correspondences,"
             "inliers,ransac_iterations,rigidity_failures,residual_px,disparity_offset_px,"
-            "window_points,window_rms_px,translation_m,rotation_deg,gated,rectify_ms,pyramid_ms,"
+            "window_points,window_rms_px,translation_m,rotation_deg,gated,turn_searched,"
+            "rectify_ms,pyramid_ms,"
             "tracking_ms,detection_ms,matching_ms,ransac_ms,refine_ms,window_ms,total_ms,status");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), kFrames + 1);
   const std::string trajectory = ReadAll(request.out_dir + "/trajectory.txt");
