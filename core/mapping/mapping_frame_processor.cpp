@@ -79,8 +79,6 @@ StatusOr<std::vector<PersonBox>> MappingFrameProcessor::HogPeople(const cv::Mat&
 void MappingFrameProcessor::CheckWithHog(const cv::Mat& color, const cv::Size& depth_size,
                                          std::vector<PersonBox>* people) {
   if (!detector_) detector_ = std::make_unique<HogPersonDetector>(options_.people);
-  const double sx = static_cast<double>(color.cols) / depth_size.width;
-  const double sy = static_cast<double>(color.rows) / depth_size.height;
   // A box within one depth sample of the border is cut off by it.
   const double margin =
       std::max(2.0, static_cast<double>(depth_size.width) / options_.people.depth_target_columns);
@@ -89,8 +87,9 @@ void MappingFrameProcessor::CheckWithHog(const cv::Mat& color, const cv::Size& d
     const cv::Rect2d& b = p.box;
     const bool cut = b.x < margin || b.y < margin || b.br().x > depth_size.width - margin ||
                      b.br().y > depth_size.height - margin;
+    const cv::Point2d s = p.ScaleTo(color.size());
     const double score =
-        detector_->Score(color, cv::Rect2d(b.x * sx, b.y * sy, b.width * sx, b.height * sy));
+        detector_->Score(color, cv::Rect2d(b.x * s.x, b.y * s.y, b.width * s.x, b.height * s.y));
     const double needed =
         cut ? options_.people.depth_hog_min_score_cut : options_.people.depth_hog_min_score;
     if (score >= needed) kept.push_back(p);
@@ -152,10 +151,9 @@ StatusOr<bool> MappingFrameProcessor::SourcePose(const MappingInput& input,
   std::vector<cv::Rect> moving;
   for (const PersonBox& p : result->people) {
     if (p.image_size.width <= 0 || p.image_size.height <= 0) continue;
-    const double sx = static_cast<double>(input.depth_m.cols) / p.image_size.width;
-    const double sy = static_cast<double>(input.depth_m.rows) / p.image_size.height;
+    const cv::Point2d s = p.ScaleTo(input.depth_m.size());
     moving.emplace_back(
-        cv::Rect2d(p.box.x * sx, p.box.y * sy, p.box.width * sx, p.box.height * sy));
+        cv::Rect2d(p.box.x * s.x, p.box.y * s.y, p.box.width * s.x, p.box.height * s.y));
   }
   const auto start = std::chrono::steady_clock::now();
   StatusOr<RgbdOdometryStep> step =

@@ -23,6 +23,12 @@ struct PersonBox {
   cv::Rect2d box;       // Pixels of the image it was found in.
   cv::Size image_size;  // Size of that image (boxes are scaled to the depth image).
   double score = 1;     // Detector confidence (1 for ground truth).
+
+  // Factors (x, y) that take `box` into an image of `size`; 1 along an axis of unknown size.
+  cv::Point2d ScaleTo(const cv::Size& size) const {
+    return {image_size.width > 0 ? static_cast<double>(size.width) / image_size.width : 1.0,
+            image_size.height > 0 ? static_cast<double>(size.height) / image_size.height : 1.0};
+  }
 };
 
 // The label of one occupancy cell (the values stored in OccupancyImage::cells).

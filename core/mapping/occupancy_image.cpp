@@ -157,12 +157,8 @@ StatusOr<OccupancyImage> OccupancyImageBuilder::Build(const cv::Mat& depth_m,
     std::vector<float> depths;
     for (size_t k = 0; k < people.size() && k < 255; ++k) {
       const PersonBox& person = people[k];
-      const double sx = person.image_size.width > 0
-                            ? static_cast<double>(depth_m.cols) / person.image_size.width
-                            : 1.0;
-      const double sy = person.image_size.height > 0
-                            ? static_cast<double>(depth_m.rows) / person.image_size.height
-                            : 1.0;
+      const cv::Point2d scale = person.ScaleTo(depth_m.size());
+      const double sx = scale.x, sy = scale.y;
       const int u0 = std::max(0, static_cast<int>(std::floor(person.box.x * sx)) / step_);
       const int v0 = std::max(0, static_cast<int>(std::floor(person.box.y * sy)) / step_);
       const int u1 =
