@@ -256,6 +256,12 @@ int64_t ArmServer::PublishTarget(const ArmTarget& target) {
       ++stats_.suppressed;
       return -1;
     }
+    // The arm reads these lines: a target it would refuse (or misread) never goes out.
+    if (!target.position_m.allFinite() || !target.approach.allFinite() ||
+        !(std::abs(target.approach.norm() - 1) < 1e-6)) {
+      ++stats_.malformed;
+      return -1;
+    }
     ++stats_.targets;
     seq = seq_++;
     auto line = std::make_shared<const std::string>(TargetLine(seq, NowS(), target));

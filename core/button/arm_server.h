@@ -61,6 +61,7 @@ struct ArmServerStats {
   int64_t targets = 0;             // Targets published.
   int64_t stops = 0;               // Stops published (SendStopAndClose included).
   int64_t suppressed = 0;          // Targets refused while stopped or closing.
+  int64_t malformed = 0;           // Targets refused: position not finite, approach not unit.
   int64_t heartbeats = 0;          // Heartbeats published.
   int64_t sent_lines = 0;          // Lines fully written to clients.
   int64_t sent_stops = 0;          // Stop lines fully written to clients.

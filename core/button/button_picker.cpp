@@ -299,6 +299,7 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
       if (at->plane_sound && slam.scale_converged) CombineWithArm(slam, *at, &out);
       safety.uncertainty_m = out.uncertainty_m;
       safety.approach_sigma_deg = out.approach_sigma_deg;
+      safety.approach_in_base = out.approach_in_base;
       safety.target_in_base = out.button_in_base;
     }
   }

@@ -139,6 +139,7 @@ StatusOr<PanelNormal> EstimatePanelNormal(const std::vector<Eigen::Vector3d>& po
 
 void NormalAverage::Reset() {
   frames_ = 0;
+  skipped_ = 0;
   sum_normal_.setZero();
   sum_weight_ = sum_weight_sigma_ = sum_weight_dev2_ = 0;
 }
@@ -149,10 +150,17 @@ void NormalAverage::Decay(double stamp_s) {
   const double k = options_.smoothing_s > 0
                        ? std::exp(-(stamp_s - last_stamp_s_) / options_.smoothing_s)
                        : (stamp_s > last_stamp_s_ ? 0.0 : 1.0);
+  // The sums now hold the average at `stamp_s`: a skipped frame does not fade them twice.
+  last_stamp_s_ = stamp_s;
   sum_normal_ *= k;
   sum_weight_ *= k;
   sum_weight_sigma_ *= k;
   sum_weight_dev2_ *= k;
+  // Faded to nothing (a long gap): the old frames no longer say anything about the direction.
+  const double floor_w = 1.0 / std::pow(options_.min_sigma_deg * M_PI / 180.0, 2);
+  if (!(sum_weight_ > kFadedFraction * floor_w) || !(sum_normal_.norm() > 1e-6 * sum_weight_)) {
+    Reset();
+  }
 }
 
 bool NormalAverage::Add(double stamp_s, const Eigen::Vector3d& normal, double sigma_rad) {
@@ -160,11 +168,23 @@ bool NormalAverage::Add(double stamp_s, const Eigen::Vector3d& normal, double si
   const Eigen::Vector3d n = normal.normalized();
   Decay(stamp_s);
   double dev = 0;
-  if (frames_ > 0 && sum_weight_ > 0) {
+  if (frames_ > 0) {
     dev = std::acos(std::clamp(n.dot(this->normal()), -1.0, 1.0));
     const double allowed = options_.outlier_sigmas * std::hypot(sigma_rad, sigma_rad_inner());
-    if (frames_ >= 3 && dev > allowed) return false;
+    if (frames_ >= 3 && !(dev <= allowed)) {
+      // Skipped frames that go on for longer than the smoothing time are no longer outliers:
+      // the average was wrong (it started on a poor map), and starts again from this frame.
+      if (skipped_ == 0) first_skipped_s_ = stamp_s;
+      ++skipped_;
+      const double patience_s = std::max(options_.smoothing_s, 0.0);
+      if (skipped_ < kMinSkippedToRestart || stamp_s - first_skipped_s_ < patience_s) {
+        return false;
+      }
+      Reset();
+      dev = 0;
+    }
   }
+  skipped_ = 0;
   const double w = 1.0 / (sigma_rad * sigma_rad);
   sum_normal_ += w * n;
   sum_weight_ += w;
@@ -175,7 +195,11 @@ bool NormalAverage::Add(double stamp_s, const Eigen::Vector3d& normal, double si
   return true;
 }
 
-Eigen::Vector3d NormalAverage::normal() const { return sum_normal_.normalized(); }
+Eigen::Vector3d NormalAverage::normal() const {
+  const double norm = sum_normal_.norm();
+  if (frames_ == 0 || !(norm > 0)) return Eigen::Vector3d::Constant(std::nan(""));
+  return sum_normal_ / norm;
+}
 
 double NormalAverage::sigma_rad() const {
   if (frames_ == 0 || !(sum_weight_ > 0)) return std::numeric_limits<double>::infinity();

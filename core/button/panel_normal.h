@@ -51,7 +51,9 @@ StatusOr<PanelNormal> EstimatePanelNormal(const std::vector<Eigen::Vector3d>& po
 // The data-time average of per-frame normals given in one fixed frame (e.g. the arm's base):
 // each frame weighs 1/sigma^2, and older frames fade with exp(-age / smoothing_s). The average's
 // sigma is the weighted mean of the frames' sigmas (they share one map: it does not shrink with
-// their number), widened by their spread about the average.
+// their number), widened by their spread about the average. A frame far off the average is
+// skipped; when frames are skipped for longer than the smoothing time (and at least
+// kMinSkippedToRestart of them), the average starts again from the latest.
 class NormalAverage {
  public:
   explicit NormalAverage(PanelNormalOptions options = {}) : options_(options) {}
@@ -60,17 +62,23 @@ class NormalAverage {
   bool Add(double stamp_s, const Eigen::Vector3d& normal, double sigma_rad);
   bool empty() const { return frames_ == 0; }
   int frames() const { return frames_; }
-  Eigen::Vector3d normal() const;  // Unit; undefined when empty.
+  Eigen::Vector3d normal() const;  // Unit; NaN when empty.
   double sigma_rad() const;        // Infinite when empty.
   void Reset();
 
  private:
+  static constexpr int kMinSkippedToRestart = 3;
+  // Sums faded below this share of one frame at the floor sigma are dropped.
+  static constexpr double kFadedFraction = 1e-9;
+
   void Decay(double stamp_s);
   double sigma_rad_inner() const;  // Weighted mean of the frames' sigmas.
 
   PanelNormalOptions options_;
   int frames_ = 0;
   double last_stamp_s_ = 0;
+  int skipped_ = 0;             // Frames skipped in a row.
+  double first_skipped_s_ = 0;  // Data time of the first of them.
   Eigen::Vector3d sum_normal_ = Eigen::Vector3d::Zero();
   double sum_weight_ = 0, sum_weight_sigma_ = 0, sum_weight_dev2_ = 0;
 };

@@ -133,6 +133,9 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
                   s.approach_sigma_deg, o.max_approach_sigma_deg);
     return Refuse(GateReason::kApproachUncertain, text);
   }
+  if (!s.approach_in_base.allFinite() || !(std::abs(s.approach_in_base.norm() - 1) < 1e-6)) {
+    return Refuse(GateReason::kApproachUncertain, "approach direction not a unit vector");
+  }
   if (!(s.hand_eye_deg <= o.max_hand_eye_deg)) {
     std::snprintf(text, sizeof(text),
                   "hand-eye inconsistent: the arm's and the SLAM's motion differ by %.1f deg "

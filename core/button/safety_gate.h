@@ -47,6 +47,8 @@ struct SafetyState {
   // 1-sigma angular uncertainty of the approach direction (the panel normal) [deg]; infinite
   // when no normal is known.
   double approach_sigma_deg = std::numeric_limits<double>::infinity();
+  // The approach direction sent with the target: a finite unit vector, or no target.
+  Eigen::Vector3d approach_in_base = Eigen::Vector3d::Constant(std::nan(""));
   Eigen::Vector3d target_in_base = Eigen::Vector3d::Zero();
   double hand_eye_deg = 0;                    // Mount rotation error the online check sees.
   bool hand_eye_translation_verified = true;  // The check saw the mount's translation.

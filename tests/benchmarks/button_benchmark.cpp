@@ -252,6 +252,7 @@ void BM_TapToFirstTarget(benchmark::State& state) {
     s.plane_sound = at.ok() && at->plane_sound;
     s.uncertainty_m = at.ok() ? at->uncertainty_m : 1;
     s.approach_sigma_deg = 1;  // The panel normal is not what this benchmark measures.
+    s.approach_in_base = Eigen::Vector3d::UnitX();
     s.target_in_base = {0.5, 0, 0.3};
     if (CheckSafety(s, {}).send) {
       ArmTarget target;

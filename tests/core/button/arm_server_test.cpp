@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <regex>
 #include <thread>
 
 #include "core/button/arm_client.h"
+#include "core/button/server_lines.h"
 
 namespace sightline {
 namespace {
@@ -149,6 +151,29 @@ TEST(ArmServer, StopSuppressesTargetsUntilResume) {
   EXPECT_GE(server->PublishTarget(Target()), 0);
   EXPECT_NE(NextMessage(client).find("\"type\":\"target\""), std::string::npos);
   EXPECT_EQ(server->Stats().suppressed, 1);
+}
+
+TEST(ArmServer, ATargetTheArmWouldRefuseNeverGoesOut) {
+  ArmServerOptions o;
+  o.heartbeat_s = 0;
+  auto server = StartServer(o);
+  ArmClient client = Connect(*server);
+  ASSERT_TRUE(WaitForClients(*server, 1));
+  ArmTarget zero = Target();
+  zero.approach.setZero();
+  ArmTarget tiny = Target();
+  tiny.approach = {1e-200, 0, 0};
+  ArmTarget nan = Target();
+  nan.position_m.y() = std::nan("");
+  for (const ArmTarget& bad : {zero, tiny, nan}) EXPECT_EQ(server->PublishTarget(bad), -1);
+  EXPECT_EQ(client.ReadLine(100).status().code(), StatusCode::kOutOfRange);
+  EXPECT_GE(server->PublishTarget(Target()), 0);
+  const std::string line = NextMessage(client);
+  EXPECT_NE(line.find("\"type\":\"target\""), std::string::npos);
+  StatusOr<ServerLine> parsed = ParseServerLine(line);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_EQ(server->Stats().malformed, 3);
+  EXPECT_EQ(server->Stats().targets, 1);
 }
 
 TEST(ArmServer, ADeadClientDoesNotStallPublishingOrOthers) {

@@ -137,5 +137,65 @@ TEST(NormalAverage, WeighsBySigmaSkipsOutliersAndFadesInDataTime) {
   EXPECT_EQ(fading.frames(), 1);
 }
 
+// An average of three frames along x at 0, 0.1 and 0.2 s, 2 s smoothing.
+NormalAverage ThreeFramesAlongX() {
+  PanelNormalOptions o;
+  o.smoothing_s = 2.0;
+  NormalAverage avg(o);
+  for (int i = 0; i < 3; ++i) avg.Add(0.1 * i, Eigen::Vector3d::UnitX(), 0.01);
+  return avg;
+}
+
+TEST(NormalAverage, SkippedFramesDoNotFadeTheAverageTwice) {
+  NormalAverage avg = ThreeFramesAlongX();
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  // 1.5 s of far-off frames at 100 Hz: all skipped, shorter than the smoothing time.
+  for (int i = 1; i <= 150; ++i) {
+    EXPECT_FALSE(avg.Add(0.2 + 0.01 * i, Eigen::Vector3d::UnitY(), 0.01)) << i;
+    ASSERT_TRUE(avg.normal().allFinite()) << i;
+    ASSERT_NEAR(avg.normal().norm(), 1.0, 1e-9) << i;
+  }
+  // The three frames faded once, by exp(-1.6 / 2): a new frame 1.1 deg off moves the average
+  // by about a third of that, not all the way.
+  const Eigen::Vector3d tilted = Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitZ()) * x;
+  ASSERT_TRUE(avg.Add(1.8, tilted, 0.01));
+  const double moved = AngleDeg(avg.normal(), x) / AngleDeg(tilted, x);
+  EXPECT_GT(moved, 0.2);
+  EXPECT_LT(moved, 0.45);
+}
+
+TEST(NormalAverage, ANormalSkippedForLongerThanTheSmoothingTimeBecomesTheAverage) {
+  PanelNormalOptions o;
+  o.smoothing_s = 2.0;
+  NormalAverage avg(o);
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d other = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * x;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(avg.Add(0.1 * i, x, 0.01));
+  // Ten seconds of a consistent other normal at 10 Hz (the map improved): skipped for two
+  // seconds, then taken; the average is a unit vector on every frame.
+  int skipped = 0;
+  for (int i = 1; i <= 100; ++i) {
+    if (!avg.Add(0.2 + 0.1 * i, other, 0.01)) ++skipped;
+    ASSERT_TRUE(avg.normal().allFinite()) << i;
+    ASSERT_NEAR(avg.normal().norm(), 1.0, 1e-9) << i;
+    EXPECT_LT(avg.sigma_rad(), 1.0) << i;
+  }
+  EXPECT_GE(skipped, 19);
+  EXPECT_LE(skipped, 21);
+  EXPECT_LT(AngleDeg(avg.normal(), other), 0.01);
+}
+
+TEST(NormalAverage, AnHourLongGapLeavesAUnitNormal) {
+  NormalAverage avg = ThreeFramesAlongX();
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d y = Eigen::Vector3d::UnitY();
+  EXPECT_TRUE(avg.Add(3600.0, y, 0.01));
+  EXPECT_EQ(avg.frames(), 1);
+  EXPECT_LT(AngleDeg(avg.normal(), y), 1e-6);
+  EXPECT_TRUE(std::isfinite(avg.sigma_rad()));
+  EXPECT_EQ(ThreeFramesAlongX().frames(), 3);
+  EXPECT_FALSE(NormalAverage().normal().allFinite());
+}
+
 }  // namespace
 }  // namespace sightline

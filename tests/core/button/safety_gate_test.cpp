@@ -21,6 +21,7 @@ SafetyState Good() {
   s.plane_sound = true;
   s.uncertainty_m = 0.003;
   s.approach_sigma_deg = 1.5;
+  s.approach_in_base = {1, 0, 0};
   s.target_in_base = {0.5, 0.0, 0.3};
   return s;
 }
@@ -53,6 +54,15 @@ TEST(SafetyGate, EachFailingRuleStopsTheTarget) {
        GateReason::kApproachUncertain},
       {"approach unknown",
        [](SafetyState& s) { s.approach_sigma_deg = std::numeric_limits<double>::infinity(); },
+       GateReason::kApproachUncertain},
+      {"approach zero", [](SafetyState& s) { s.approach_in_base.setZero(); },
+       GateReason::kApproachUncertain},
+      {"approach tiny",
+       [](SafetyState& s) {
+         s.approach_in_base = {1e-300, 0, 0};
+       },
+       GateReason::kApproachUncertain},
+      {"approach nan", [](SafetyState& s) { s.approach_in_base.x() = std::nan(""); },
        GateReason::kApproachUncertain},
       {"outside x", [](SafetyState& s) { s.target_in_base.x() = 2.0; },
        GateReason::kOutsideWorkspace},
