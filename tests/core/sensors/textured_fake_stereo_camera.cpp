@@ -9,8 +9,9 @@
 // Frames: both fake cameras run at the same frame period, and Aravis starts each frame on a
 // multiple of that period, so a left and a right frame of one instant carry timestamps a few
 // milliseconds apart at most (what the stereo source pairs by, sensors.aravis.stereo.*). Each
-// buffer shows the scene at (tick - first tick) x period, the tick being its timestamp rounded
-// to the period, so both images of a pair show the same instant. A moving rig stops at the
+// buffer shows the scene at (tick - first tick) x period, the tick being the frame-grid instant
+// its timestamp (taken late, when the camera's thread wakes) belongs to, so both images of a
+// pair show the same instant. A moving rig stops at the
 // motion's last frame; a static rig repeats its frames (same pose, fresh image noise). When no
 // camera has streamed for a second (a client closed the cameras) the motion restarts at frame 0
 // with the next frame served.
@@ -160,10 +161,13 @@ class StereoServer {
     if (buffer == nullptr) return;
     const uint64_t stamp_ns = arv_buffer_get_timestamp(buffer);
     const int64_t period_ns = static_cast<int64_t>(std::max<uint32_t>(period_us, 1)) * 1000;
-    // Aravis starts frames on multiples of the period (of the clock the timestamps use); only
-    // the first frame after acquisition starts comes early, so rounding names one tick for a
-    // left and a right frame of the same instant.
-    const int64_t tick = (static_cast<int64_t>(stamp_ns) + period_ns / 2) / period_ns;
+    // Aravis starts frames on multiples of the period (of the clock the timestamps use) and
+    // stamps each when its thread wakes: late, by as much as the machine's load delays it
+    // (rounding to the nearest tick named two ticks for one instant once both cameras woke
+    // about half a period late, on a loaded 2-core machine). The tick is the last one at or
+    // before the stamp, allowing an eighth of a period early: one tick for a left and a right
+    // frame of the same instant unless a camera wakes more than 7/8 of a period late.
+    const int64_t tick = (static_cast<int64_t>(stamp_ns) + period_ns / 8) / period_ns;
     int frame = 0;
     {
       std::lock_guard<std::mutex> lock(mutex_);
