@@ -193,8 +193,12 @@ std::optional<Candidate> CompactHull(const std::vector<cv::Point>& contour, doub
 // Button-like regions of the edge map, in working-image pixels: the convex hull of every
 // contour that is compact and surrounds its own centre.
 std::vector<Candidate> Candidates(const cv::Mat& grey, const ButtonDetectorOptions& o) {
-  cv::Mat blurred = grey;
-  if (o.blur_sigma_px > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), o.blur_sigma_px);
+  cv::Mat blurred;  // A new image: `grey` may be the caller's.
+  if (o.blur_sigma_px > 0) {
+    cv::GaussianBlur(grey, blurred, cv::Size(0, 0), o.blur_sigma_px);
+  } else {
+    blurred = grey;
+  }
   cv::Mat edges;
   cv::Canny(blurred, edges, o.canny_low, o.canny_high);
   if (o.close_px > 0) {
@@ -287,9 +291,13 @@ const Candidate* Choose(const std::vector<Candidate>& candidates, cv::Point2d ta
 // Multiscale candidates in `window` of the working image, in working-image pixels: the
 // convex hulls of compact contours of the edges at two blurs and two Canny pairs, and Hough
 // circles whose rim lies on edges.
-std::vector<Candidate> MultiScaleCandidates(const cv::Mat& work, cv::Rect window,
+//
+// The scales blur `work`'s window in place, one after the other: the second scale sees the
+// first's blur (its sigma is in effect sqrt(1 + second_blur^2) times blur_sigma_px) and the
+// circles the second's; the window's surroundings stay unblurred. `work` is the detector's own.
+std::vector<Candidate> MultiScaleCandidates(cv::Mat& work, cv::Rect window,
                                             const ButtonDetectorOptions& o) {
-  const cv::Mat grey = work(window);
+  cv::Mat grey = work(window);
   const double max_area = o.max_area_fraction * work.cols * work.rows;
   const double s = o.canny_spread;
   const double factors[2] = {2 / (1 + s), 2 * s / (1 + s)};
@@ -299,7 +307,7 @@ std::vector<Candidate> MultiScaleCandidates(const cv::Mat& work, cv::Rect window
                                         : cv::Mat();
   const cv::Point offset = window.tl();
   for (double sigma : {o.blur_sigma_px, o.blur_sigma_px * o.second_blur}) {
-    cv::Mat blurred = grey;
+    cv::Mat blurred = grey;  // In place (see above).
     if (sigma > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), sigma);
     for (double f : factors) {
       cv::Mat edges;
@@ -411,9 +419,12 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
     return InvalidArgument(text);
   }
   const double scale = double(options_.working_size_px) / std::max(image.cols, image.rows);
-  cv::Mat work = grey;
+  // The detector's own working image (it is blurred in place): never the caller's pixels.
+  cv::Mat work;
   if (scale != 1.0) {
     cv::resize(grey, work, cv::Size(), scale, scale, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
+  } else {
+    work = grey.clone();
   }
   std::vector<Candidate> candidates;
   const Candidate* best = nullptr;

@@ -94,6 +94,24 @@ TEST(ButtonDetector, TapOnASimulatedPanelSelectsTheButtonNotThePlate) {
   EXPECT_GE(taps, 12 * 2 * 10);
 }
 
+TEST(ButtonDetector, TheCallersImageIsNeverTouched) {
+  // A grey frame at the working size is searched without a resized copy: the detector must
+  // still blur its own pixels, not the caller's (the tracker describes the frame afterwards).
+  cv::Mat panel;
+  cv::cvtColor(DrawnPanel(), panel, cv::COLOR_BGR2GRAY);
+  for (const char* method : {"multiscale", "seed"}) {
+    for (int working : {640, 480}) {
+      ButtonDetectorOptions o;
+      o.method = method;
+      o.working_size_px = working;
+      const cv::Mat before = panel.clone();
+      ASSERT_TRUE(ButtonDetector(o).Detect(panel, {200, 140}).ok()) << method;
+      ASSERT_TRUE(ButtonDetector(o).FindRegion(panel, {280, 220}).ok()) << method;
+      EXPECT_EQ(cv::norm(panel, before, cv::NORM_INF), 0) << method << " at " << working;
+    }
+  }
+}
+
 TEST(ButtonDetector, TapOnBlankWallIsNoButtonHere) {
   ButtonDetector detector;
   auto model = detector.Detect(DrawnPanel(), {520, 400});
