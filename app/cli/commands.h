@@ -18,6 +18,7 @@ int CalibrateCommand(const std::vector<std::string>& args);
 int ArmListenCommand(const std::vector<std::string>& args);
 int ArmSimCommand(const std::vector<std::string>& args);
 int RecordCommand(const std::vector<std::string>& args);
+int TrainButtonClassifierCommand(const std::vector<std::string>& args);
 
 // Prints "sightline-cli: <message>" to stderr and returns 1.
 int Fail(const std::string& message);

@@ -22,5 +22,8 @@ int main(int argc, char** argv) {
   if (command == "arm-listen") return sightline::cli::ArmListenCommand(args);
   if (command == "arm-sim") return sightline::cli::ArmSimCommand(args);
   if (command == "record") return sightline::cli::RecordCommand(args);
+  if (command == "train-button-classifier") {
+    return sightline::cli::TrainButtonClassifierCommand(args);
+  }
   return sightline::cli::Fail("unknown command '" + command + "' (see sightline-cli --help)");
 }

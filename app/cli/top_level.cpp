@@ -32,6 +32,8 @@ const char kUsage[] =
     "                             a simulated arm that presses the button Sightline targets\n"
     "  record SOURCE --out DIR [--seconds S] [--frames N]\n"
     "                             record a sensor or replayed recording (TUM, EuRoC, images)\n"
+    "  train-button-classifier LABELS.csv PHOTO_DIR --out FILE\n"
+    "                             train the button-or-label model on labelled panel photos\n"
     "\n"
     "Run 'sightline-cli COMMAND --help' for a command's details;\n"
     "'sightline-cli --version' prints the version and the git commit it was built from.\n";

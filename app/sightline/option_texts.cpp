@@ -407,6 +407,7 @@ const char* const kOptionTexts[] = {
     QT_TRANSLATE_NOOP("sightline::OptionText", "TCP port of the target server; 0 = any free port."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "Take the camera's offset ahead of the odometry base from the recording's scene.yaml (simulator) when present."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The SIFT margin grows to this many region radii when that is larger."),
+    QT_TRANSLATE_NOOP("sightline::OptionText", "The appearance model's probability that the region at the tap is a button and not a printed label or sign beside one; below it: no button here. 0 = off."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The approach direction is the normal of a plane through the map points within this distance of the located button (the panel around it)."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The arm's and the SLAM's displacement directions disagree by more than this (online hand-eye check; a wrong mount rotation): no target."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The arm's clock minus the camera's (configured; arm stamp = frame stamp + this)."),

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/button/option_check.h"
+#include "core/button/region_classifier.h"
 
 namespace sightline {
 
@@ -72,6 +73,9 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
   if (!(sift_contrast > 0 && sift_contrast < 1)) {
     return Invalid(error, "button.detect.sift_contrast must lie in (0, 1)");
   }
+  if (!(min_button_probability >= 0 && min_button_probability < 1)) {
+    return Invalid(error, "button.detect.min_button_probability must lie in [0, 1)");
+  }
   return true;
 }
 
@@ -132,7 +136,10 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
       .Int("min_keypoints", &O::min_keypoints, "", 1, 1000, 1,
            "Fewer SIFT keypoints on the region: the button cannot be tracked.")
       .Double("sift_contrast", &O::sift_contrast, "", 0.001, 0.5, 0.005,
-              "SIFT contrast threshold; lower finds more keypoints on plain buttons.");
+              "SIFT contrast threshold; lower finds more keypoints on plain buttons.")
+      .Double("min_button_probability", &O::min_button_probability, "", 0, 0.99, 0.05,
+              "The appearance model's probability that the region at the tap is a button and "
+              "not a printed label or sign beside one; below it: no button here. 0 = off.");
 }
 
 cv::Mat ToGrey(const cv::Mat& image) {
@@ -458,6 +465,18 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
     model.contour.emplace_back(int(std::lround(p.x / scale)), int(std::lround(p.y / scale)));
   }
   model.box = cv::boundingRect(model.contour);
+  if (options_.min_button_probability > 0) {
+    const RegionClassifier& classifier = RegionClassifier::BuiltIn();
+    model.button_probability = classifier.ButtonProbability(RegionFeatures(grey, model.box));
+    if (model.button_probability < options_.min_button_probability) {
+      char text[160];
+      std::snprintf(text, sizeof(text),
+                    "no button here: the region at the tap looks like a printed label or sign "
+                    "(button probability %.2f, below %.2f)",
+                    model.button_probability, options_.min_button_probability);
+      return NotFound(text);
+    }
+  }
   return model;
 }
 

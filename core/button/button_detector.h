@@ -61,6 +61,9 @@ struct ButtonDetectorOptions {
                                       // region's radius is this [px] (0 = never scaled).
   int min_keypoints = 3;              // Fewer SIFT keypoints: the button cannot be tracked.
   double sift_contrast = 0.01;  // SIFT contrast threshold (lower finds more on plain buttons).
+  // The region classifier's probability that the selected region is a button, not a printed
+  // label (region_classifier.h); lower: "no button here". 0 = not used.
+  double min_button_probability = 0;
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonDetectorOptions> Describe();

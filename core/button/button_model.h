@@ -20,6 +20,7 @@ struct ButtonModel {
   std::vector<cv::KeyPoint> keypoints;  // SIFT keypoints on and around the region.
   cv::Mat descriptors;                  // CV_32F, one row per keypoint.
   cv::Size image_size;                  // Size of the still frame.
+  double button_probability = 1;        // The region classifier's, when it was asked.
 
   // Radius of a disc of the region's area, pixels.
   double RadiusPx() const;

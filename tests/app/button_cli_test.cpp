@@ -269,5 +269,39 @@ TEST_F(ButtonCli, ATapOnTheBlankWallIsNoButton) {
   EXPECT_NE(none.out.find("--tap"), std::string::npos) << none.out;
 }
 
+// train-button-classifier: a bad labels file is named with its line; on two labelled photos
+// it writes a trained model in the built-in model's form.
+TEST(TrainButtonClassifierCli, NamesABadLabelsLineAndWritesATrainedModel) {
+  const std::string dir = testing::TempDir("train_button_cli");
+  {
+    std::ofstream bad(dir + "/bad.csv");
+    bad << "# comment\n1.jpg,button,10,20,30,40,1\n1.jpg,button,10,x,30,40,2\n";
+  }
+  testing::ProcessResult r = testing::RunProcess(kCli + " train-button-classifier " + dir +
+                                                 "/bad.csv " + dir + " --out " + dir + "/m.inc");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("bad.csv line 3"), std::string::npos) << r.out;
+  r = testing::RunProcess(kCli + " train-button-classifier " + dir + "/none.csv " + dir +
+                          " --out " + dir + "/m.inc");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("none.csv"), std::string::npos) << r.out;
+  SIGHTLINE_REQUIRE_DATA(photos, "button_panels/test_panels");
+  {
+    std::ifstream all(SIGHTLINE_BUTTON_LABELS);
+    std::ofstream two(dir + "/two.csv");
+    std::string line;
+    while (std::getline(all, line)) {
+      if (line.rfind("33.jpg,", 0) == 0 || line.rfind("10.jpg,", 0) == 0) two << line << "\n";
+    }
+  }
+  r = testing::RunProcess(kCli + " train-button-classifier " + dir + "/two.csv " + photos +
+                          " --out " + dir + "/m.inc");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("2 photos"), std::string::npos) << r.out;
+  const std::string model = testing::ReadTextFile(dir + "/m.inc");
+  EXPECT_NE(model.find("kRegionModelTrained = true"), std::string::npos);
+  EXPECT_NE(model.find("kRegionWeights[] = {"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sightline

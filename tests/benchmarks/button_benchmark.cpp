@@ -149,12 +149,14 @@ const RealTaps& RealPanelTaps() {
   return real;
 }
 
-void RealPanels(benchmark::State& state, const std::string& method, bool features) {
+void RealPanels(benchmark::State& state, const std::string& method, bool features,
+                double min_button_probability = 0) {
   cv::setNumThreads(1);
   const RealTaps& real = RealPanelTaps();
   if (real.taps.empty()) return state.SkipWithError("real panel photos or labels not found");
   ButtonDetectorOptions options;
   options.method = method;
+  options.min_button_probability = min_button_probability;
   const ButtonDetector detector(options);
   size_t i = 0;
   int found = 0;
@@ -185,10 +187,15 @@ void RealPanels(benchmark::State& state, const std::string& method, bool feature
 void BM_RealPanelRegion(benchmark::State& state) { RealPanels(state, "multiscale", false); }
 void BM_RealPanelDetect(benchmark::State& state) { RealPanels(state, "multiscale", true); }
 void BM_RealPanelRegionSeed(benchmark::State& state) { RealPanels(state, "seed", false); }
+// With the region classifier (button or printed label) asked at p >= 0.3.
+void BM_RealPanelRegionClassified(benchmark::State& state) {
+  RealPanels(state, "multiscale", false, 0.3);
+}
 // Each run covers every tap at least once (the labels hold about 390).
 BENCHMARK(BM_RealPanelRegion)->Unit(benchmark::kMillisecond)->Iterations(400);
 BENCHMARK(BM_RealPanelDetect)->Unit(benchmark::kMillisecond)->Iterations(400);
 BENCHMARK(BM_RealPanelRegionSeed)->Unit(benchmark::kMillisecond)->Iterations(400);
+BENCHMARK(BM_RealPanelRegionClassified)->Unit(benchmark::kMillisecond)->Iterations(400);
 
 // 300 map points around the button from the exact depth, 20 % outliers.
 std::vector<Eigen::Vector3d> MapPoints(const Approach& a, size_t f) {
