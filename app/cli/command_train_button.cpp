@@ -71,10 +71,10 @@ int TrainButtonClassifierCommand(const std::vector<std::string>& argv) {
       << model->ToSource();
   out.close();
   if (!out) return Fail("train-button-classifier: cannot write " + out_path);
-  std::printf("%d photos, %d button regions, %zu regions at labels; %d of %zu right on the "
-              "training samples at p = 0.5; wrote %s\n",
-              photos, buttons, features.size() - buttons, right, features.size(),
-              out_path.c_str());
+  std::printf(
+      "%d photos, %d button regions, %zu regions at labels; %d of %zu right on the "
+      "training samples at p = 0.5; wrote %s\n",
+      photos, buttons, features.size() - buttons, right, features.size(), out_path.c_str());
   return 0;
 }
 

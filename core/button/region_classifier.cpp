@@ -118,8 +118,7 @@ StatusOr<RegionClassifier> RegionClassifier::Train(const std::vector<Eigen::Vect
     const Eigen::VectorXd p = (1.0 / (1.0 + (-z.array()).exp())).matrix();
     const Eigen::VectorXd r = weight.cwiseProduct(p - y);
     const Eigen::VectorXd grad = x.transpose() * r + penalty.cwiseProduct(w);
-    const Eigen::VectorXd curvature =
-        weight.array() * p.array() * (1 - p.array()) + 1e-12;
+    const Eigen::VectorXd curvature = weight.array() * p.array() * (1 - p.array()) + 1e-12;
     Eigen::MatrixXd h = x.transpose() * curvature.asDiagonal() * x;
     h.diagonal() += penalty;
     const Eigen::VectorXd step = h.ldlt().solve(grad);
@@ -133,8 +132,7 @@ StatusOr<RegionClassifier> RegionClassifier::Train(const std::vector<Eigen::Vect
 
 double RegionClassifier::ButtonProbability(const Eigen::VectorXd& features) const {
   if (empty() || features.size() != weights_.size()) return 1.0;
-  const double z =
-      weights_.dot((features - mean_).cwiseProduct(inv_scale_)) + bias_;
+  const double z = weights_.dot((features - mean_).cwiseProduct(inv_scale_)) + bias_;
   return 1.0 / (1.0 + std::exp(-z));
 }
 

@@ -21,7 +21,7 @@ inline constexpr int kRegionFeatureSize = 9 * 36 + 3;
 Eigen::VectorXd RegionFeatures(const cv::Mat& grey, const cv::Rect& box);
 
 struct RegionTrainOptions {
-  double l2 = 15.0;    // Ridge penalty on the standardised weights.
+  double l2 = 15.0;     // Ridge penalty on the standardised weights.
   int iterations = 30;  // Newton steps (the loss is convex; fewer suffice).
 };
 

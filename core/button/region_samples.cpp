@@ -4,8 +4,7 @@
 
 namespace sightline {
 
-TapOutcome JudgeTap(const PanelLabel& tapped, cv::Point2d tap,
-                    const StatusOr<ButtonModel>& region,
+TapOutcome JudgeTap(const PanelLabel& tapped, cv::Point2d tap, const StatusOr<ButtonModel>& region,
                     const std::vector<const PanelLabel*>& photo_labels) {
   const bool found = region.ok();
   const cv::Point2d c = found ? region->center : cv::Point2d(-1, -1);
@@ -26,8 +25,7 @@ TapOutcome JudgeTap(const PanelLabel& tapped, cv::Point2d tap,
 }
 
 std::vector<RegionSample> SampleRegions(const ButtonDetectorOptions& options, const cv::Mat& photo,
-                                        const std::vector<const PanelLabel*>& labels,
-                                        bool jitter) {
+                                        const std::vector<const PanelLabel*>& labels, bool jitter) {
   ButtonDetectorOptions plain = options;
   plain.min_button_probability = 0;
   const ButtonDetector detector(plain);
@@ -38,8 +36,8 @@ std::vector<RegionSample> SampleRegions(const ButtonDetectorOptions& options, co
     std::vector<cv::Point2d> taps = {l->tap};
     if (jitter) {
       const double dx = 0.125 * l->box.width, dy = 0.125 * l->box.height;
-      for (const cv::Point2d d : {cv::Point2d(dx, 0), cv::Point2d(-dx, 0), cv::Point2d(0, dy),
-                                  cv::Point2d(0, -dy)}) {
+      for (const cv::Point2d d :
+           {cv::Point2d(dx, 0), cv::Point2d(-dx, 0), cv::Point2d(0, dy), cv::Point2d(0, -dy)}) {
         taps.push_back(l->tap + d);
       }
     }

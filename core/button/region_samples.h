@@ -23,8 +23,7 @@ struct RegionSample {
 // non-button sample when it selects a region that is not a button holding the tap. Regions are
 // found with `options` (its classifier switched off).
 std::vector<RegionSample> SampleRegions(const ButtonDetectorOptions& options, const cv::Mat& photo,
-                                        const std::vector<const PanelLabel*>& labels,
-                                        bool jitter);
+                                        const std::vector<const PanelLabel*>& labels, bool jitter);
 
 // What a tap at `tap` on a button or label (`tapped`, one of `photo_labels`) gives, by the
 // real-panel rules: right when the region's centroid lies in that button's box and in no other
@@ -32,8 +31,7 @@ std::vector<RegionSample> SampleRegions(const ButtonDetectorOptions& options, co
 // nothing is selected or a button whose box holds the tap.
 enum class TapOutcome { kRight, kNeighbour, kLabel, kElsewhere, kNone, kLabelSelected, kLabelOk };
 
-TapOutcome JudgeTap(const PanelLabel& tapped, cv::Point2d tap,
-                    const StatusOr<ButtonModel>& region,
+TapOutcome JudgeTap(const PanelLabel& tapped, cv::Point2d tap, const StatusOr<ButtonModel>& region,
                     const std::vector<const PanelLabel*>& photo_labels);
 
 }  // namespace sightline

@@ -62,8 +62,7 @@ TEST(PanelLabels, ABadLineIsNamedWithItsFieldAndLine) {
            {"1.jpg,button\n", "line 1: expected"}}) {
     StatusOr<std::vector<PanelLabel>> bad = write(text);
     EXPECT_EQ(bad.status().code(), StatusCode::kInvalidArgument) << text;
-    EXPECT_NE(bad.status().message().find(expected), std::string::npos)
-        << bad.status().message();
+    EXPECT_NE(bad.status().message().find(expected), std::string::npos) << bad.status().message();
   }
   EXPECT_EQ(ReadPanelLabels(dir + "/none.csv").status().code(), StatusCode::kNotFound);
 }
