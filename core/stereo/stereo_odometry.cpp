@@ -115,6 +115,7 @@ void StereoOdometry::Reset() {
   features_.clear();
   tracked_fraction_ = 1.0;
   usual_tracked_fraction_ = 1.0;
+  turn_axis_.Reset();
   has_previous_ = false;
   previous_time_s_ = 0;
   last_motion_ = Eigen::Isometry3d::Identity();
@@ -296,8 +297,8 @@ void StereoOdometry::SearchTurn(const std::vector<cv::Point2f>& previous_points,
   TurnSearchOptions search;
   search.width_px = o.turn_search_width_px;
   search.max_yaw_deg = o.turn_search_max_deg;
-  const std::optional<TurnEstimate> turn =
-      FindTurn(previous_left_.image, s->left_pyramid.image, rectifier_.camera(), search);
+  const std::optional<TurnEstimate> turn = FindTurn(previous_left_.image, s->left_pyramid.image,
+                                                    rectifier_.camera(), search, turn_axis_.axis());
   if (!turn) return;
   Eigen::Isometry3d turned = *motion;
   turned.linear() = turn->current_from_previous;
@@ -409,6 +410,7 @@ bool StereoOdometry::EstimateMotion(FrameState* s) {
   world_from_camera_ = world_from_current;
   last_motion_ = result.current_from_previous;
   last_motion_dt_s_ = s->dt;
+  turn_axis_.Add(result.current_from_previous.linear());
   if (options_.keyframe.enabled && new_keyframe) has_keyframe_ = false;  // Set later.
   return true;
 }

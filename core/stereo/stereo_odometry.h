@@ -28,6 +28,7 @@
 #include "core/stereo/stereo_matcher.h"
 #include "core/stereo/stereo_types.h"
 #include "core/stereo/track_anchor.h"
+#include "core/stereo/turn_search.h"
 #include "core/stereo/window_bundle_adjuster.h"
 
 namespace sightline {
@@ -159,6 +160,7 @@ class StereoOdometry {
   // Its slow average (one fifth per frame): the turn search compares against it, so that one
   // poorly tracked frame (the turn's first) does not hide the next.
   double usual_tracked_fraction_ = 1.0;
+  TurnAxis turn_axis_;  // The axis the camera turns about (the turn search's yaw).
   double previous_time_s_ = 0;
   Eigen::Isometry3d last_motion_ = Eigen::Isometry3d::Identity();  // Last applied motion ...
   double last_motion_dt_s_ = 0;                                    // ... and its time span.
