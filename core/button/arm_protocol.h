@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +24,11 @@ struct ArmTarget {
   double approach_sigma_deg = 0;                         // 1-sigma of `approach` [deg].
   std::vector<int64_t> source_frames;                    // Frame ids the estimate used.
 };
+
+// True for a finite vector of unit length (to 1e-6): the only `approach` a target may carry.
+inline bool IsUnitVector(const Eigen::Vector3d& v) {
+  return v.allFinite() && std::abs(v.norm() - 1) < 1e-6;
+}
 
 // One JSON line (with the trailing '\n') per message; `seq` counts all messages of a server.
 // `stamp` and `frame_stamp` are written with six decimals (microseconds).

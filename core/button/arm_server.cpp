@@ -257,8 +257,7 @@ int64_t ArmServer::PublishTarget(const ArmTarget& target) {
       return -1;
     }
     // The arm reads these lines: a target it would refuse (or misread) never goes out.
-    if (!target.position_m.allFinite() || !target.approach.allFinite() ||
-        !(std::abs(target.approach.norm() - 1) < 1e-6)) {
+    if (!target.position_m.allFinite() || !IsUnitVector(target.approach)) {
       ++stats_.malformed;
       return -1;
     }

@@ -176,8 +176,7 @@ bool NormalAverage::Add(double stamp_s, const Eigen::Vector3d& normal, double si
       // the average was wrong (it started on a poor map), and starts again from this frame.
       if (skipped_ == 0) first_skipped_s_ = stamp_s;
       ++skipped_;
-      const double patience_s = std::max(options_.smoothing_s, 0.0);
-      if (skipped_ < kMinSkippedToRestart || stamp_s - first_skipped_s_ < patience_s) {
+      if (skipped_ < kMinSkippedToRestart || stamp_s - first_skipped_s_ < options_.smoothing_s) {
         return false;
       }
       Reset();

@@ -23,9 +23,8 @@ cv::Mat SquarePatch(const cv::Mat& grey, const cv::Rect& box) {
   const cv::Rect square(int(std::lround(cx - 0.5 * side)), int(std::lround(cy - 0.5 * side)),
                         int(std::lround(side)), int(std::lround(side)));
   const cv::Rect inside = square & cv::Rect(0, 0, grey.cols, grey.rows);
-  cv::Mat patch;
   if (inside.empty()) return cv::Mat(kPatch, kPatch, CV_8UC1, cv::Scalar(0));
-  cv::Mat crop;
+  cv::Mat crop, patch;
   cv::copyMakeBorder(grey(inside), crop, inside.y - square.y, square.br().y - inside.br().y,
                      inside.x - square.x, square.br().x - inside.br().x, cv::BORDER_REPLICATE);
   cv::resize(crop, patch, cv::Size(kPatch, kPatch), 0, 0, cv::INTER_AREA);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/button/arm_protocol.h"
 #include "core/button/option_check.h"
 
 namespace sightline {
@@ -133,7 +134,7 @@ GateVerdict CheckSafety(const SafetyState& s, const SafetyGateOptions& o) {
                   s.approach_sigma_deg, o.max_approach_sigma_deg);
     return Refuse(GateReason::kApproachUncertain, text);
   }
-  if (!s.approach_in_base.allFinite() || !(std::abs(s.approach_in_base.norm() - 1) < 1e-6)) {
+  if (!IsUnitVector(s.approach_in_base)) {
     return Refuse(GateReason::kApproachUncertain, "approach direction not a unit vector");
   }
   if (!(s.hand_eye_deg <= o.max_hand_eye_deg)) {
