@@ -2491,117 +2491,117 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Schritt C: die dominante Fläche der gewählten Linie neu finden, indem ihre Richtung so weit in beide Richtungen geschwenkt wird, dann darauf neu anpassen (0 = wie veröffentlicht: die Linie aus Schritt B6 unverändert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Wandlinien-Extraktor: das Mehrlinien-RANSAC der Veröffentlichung oder Split-and-Merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>When even after that fewer tracks survive than this fraction of the share that usually survives (a slow average over the last frames; a sharp turn, or a turn at a low frame rate), the camera&apos;s rotation is searched by comparing the two images and the points are tracked again from where it puts them; the better attempt is kept. 0 = never.</source>
         <translation>Wenn selbst danach weniger Spuren überleben als dieser Anteil des üblicherweise überlebenden Anteils (ein langsamer Mittelwert über die letzten Bilder; eine scharfe Kurve oder eine Kurve bei niedriger Bildrate), wird die Drehung der Kamera durch Vergleich der beiden Bilder gesucht und die Punkte werden von dort aus erneut verfolgt; der bessere Versuch wird behalten. 0 = nie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, clusters of a person&apos;s size standing on the floor in the depth image (depth), OpenCV&apos;s HOG detector on the colour image, auto (ground truth when present, else depth) or none.</source>
         <translation>Woher die Personenboxen kommen: die Ground Truth des Datensatzes, Cluster von Personengröße, die im Tiefenbild auf dem Boden stehen (depth), OpenCVs HOG-Detektor im Farbbild, auto (Ground Truth, wenn vorhanden, sonst depth) oder none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Breite des Belegungsbilds (veröffentlicht: 400); der Roboter sitzt unten in der Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>depth: a head is the highest point within this radius; people side by side are split at their heads.</source>
         <translation>depth: Ein Kopf ist der höchste Punkt innerhalb dieses Radius; nebeneinander stehende Personen werden an ihren Köpfen getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>depth: a person&apos;s footprint is at least this long.</source>
         <translation>depth: Die Grundfläche einer Person ist mindestens so lang.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>depth: a person&apos;s footprint is at most this long (walls are longer); wider clusters are split at their heads.</source>
         <translation>depth: Die Grundfläche einer Person ist höchstens so lang (Wände sind länger); breitere Cluster werden an ihren Köpfen getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>depth: a person&apos;s lowest point lies at most this high above the floor.</source>
         <translation>depth: Der tiefste Punkt einer Person liegt höchstens so hoch über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>depth: a person&apos;s top lies at least this high above the floor.</source>
         <translation>depth: Der höchste Punkt einer Person liegt mindestens so hoch über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: Der höchste Punkt einer Person liegt höchstens so hoch (Wände und Säulen reichen höher).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: Zwischen zwei Köpfen sinken die Höhen mindestens um so viel ab (Hals, Schultern); die abgeschnittene Oberkante einer Wand ist flach und wird nicht getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: Zelle des Bodenrasters, in dem Punkte zu Clustern zusammengefasst werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: Weiter entfernte Punkte werden nicht betrachtet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="508"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: Abgetastete Punkte, die eine Person braucht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="511"/>
+        <location filename="../app/sightline/option_texts.cpp" line="512"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: Das Tiefenbild wird auf etwa so viele Spalten abgetastet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="512"/>
+        <location filename="../app/sightline/option_texts.cpp" line="513"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: Die kürzere Seite der Grundfläche einer Person ist mindestens so lang (Beine, Arme und die Rundung des Rumpfs); das Ende einer Wand am Bildrand ist eine Zelle dick.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="516"/>
+        <location filename="../app/sightline/option_texts.cpp" line="517"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: Ein Punkt innerhalb dieser Höhe über der Bodenebene ist Boden (veröffentlichter Wert 3.5, gelesen als 3.5 cm: großzügig, damit kein Bodenpixel als belegt markiert wird).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="517"/>
+        <location filename="../app/sightline/option_texts.cpp" line="518"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: Inlier-Abstand in Belegungszellen (veröffentlicht: 5 Pixel); Meter = Zellen x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="522"/>
+        <location filename="../app/sightline/option_texts.cpp" line="523"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: Pfad über das organisierte Pixelraster (schnell); pcl: der Pfad der Veröffentlichung mit Voxelgitter, Ausreißerentfernung und k-d-Baum.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="525"/>
+        <location filename="../app/sightline/option_texts.cpp" line="526"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: Hypothesen pro Linie (veröffentlicht: 250); begrenzt auch die adaptive Anzahl.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="541"/>
+        <location filename="../app/sightline/option_texts.cpp" line="542"/>
         <source>rgbd, rgbd_icp: a colour frame whose brightness varies less than this is not tracked (a black or blank frame).</source>
         <translation>rgbd, rgbd_icp: ein Farbbild, dessen Helligkeit weniger als dies schwankt, wird nicht verfolgt (ein schwarzes oder leeres Bild).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="542"/>
+        <location filename="../app/sightline/option_texts.cpp" line="543"/>
         <source>rgbd, rgbd_icp: start the alignment from ORB features matched with PnP RANSAC when they agree (fast turns at low frame rates).</source>
         <translation>rgbd, rgbd_icp: die Ausrichtung bei ORB-Merkmalen beginnen, die mit PnP-RANSAC zugeordnet sind, wenn diese übereinstimmen (schnelle Drehungen bei niedriger Bildrate).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="543"/>
+        <location filename="../app/sightline/option_texts.cpp" line="544"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: 5 m Reichweite, 3 cm Stufe; icub: 1.75 m, 5 cm (der Humanoide der Veröffentlichung); custom: range_cut_m und max_step_m.</translation>
     </message>
@@ -3802,441 +3802,446 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <source>The position&apos;s panel plane is fitted robustly to the map points within this many tracked button radii and moved onto the face by its points&apos; median offset; 0 = the plane within radius_px (or the face&apos;s own).</source>
+        <translation>Die Ebene der Position wird robust an die Kartenpunkte innerhalb so vieler verfolgter Tastenradien angepasst und um den Median-Abstand ihrer Punkte auf die Tastenfläche verschoben; 0 = die Ebene innerhalb von radius_px (oder die eigene der Fläche).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>Die Größe allein aus den eigenen Schlüsselpunkten des Tippens (nicht den aufgefrischten, deren Maßstab driftet; das Looming in button.triangulate.*) braucht so viele konsistente Zuordnungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>Die Größe nur aus den eigenen Schlüsselpunkten des Tippens (ButtonTrack::anchor_scale: die vom Auffrischen des Trackers hinzugefügten Schlüsselpunkte tragen den Maßstabsfehler jedes Auffrischens weiter); false: der verfolgte Radius.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>Das Ziel ist der achsweise Median so vieler jüngster Positionen im Basissystem (verlässliche Ebene, konvergierte Skala); 0 = jede seit dem Antippen, 1 = keine Fusion.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>Das Tracking-Gate überschreitet nie diesen Wert: Größere Korrekturen werden nicht angewandt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>Das Fenster wächst auf so viele vorhergesagte Knopfradien, wenn das größer ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Toleranz von accuracy.map_iou: Eine Kartenzelle innerhalb so vieler Zellen einer wahren Wand zählt als darauf liegend.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Top-view grid cell.</source>
         <translation>Rasterzelle der Draufsicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Auf dem Overlay hinter dem Knopf gezeichnete Trackpunkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Tracking-Gate direkt nach einer Korrektur: Linien, die weiter als dies von der erwarteten Richtung abweichen, stimmen weder ab noch korrigieren sie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>Das Tracking ist verloren, wenn weniger als dieser Anteil der im Bild vorhergesagten Kartenpunkte gefunden wird (der Test von PTAM gegen eine falsche Pose nach einem Sprung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern gut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>Die Tracking-Qualität ist ab so vielen Inliern schlecht; weniger gilt als verloren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Triangulierte Punkte, die zum Akzeptieren der Initialisierung nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: Änderung eines paarweisen Abstands, die eine starre Stichprobe zeigen darf, bevor die Tiefenunsicherheit addiert wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: Starrheitsablehnungen, nach denen RANSAC scheitert (die letzte Bewegung bleibt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: Reprojektionsfehler (RMS beider Bilder) eines Inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: das Ziehen beenden, sobald dieser Anteil der Punkte Inlier ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: versuchte starre Stichproben, bevor die beste Inlier-Menge übernommen wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Gesuchte nach oben gerichtete Ebenen; die niedrigste große ist der Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Obere Begrenzung der Log-Odds einer Zelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Jedes n-te Tiefenpixel für die 3D-Wolke verwenden; 1 zeigt alle (langsamer).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Neben den Strahlen die scheinbare Größe nutzen (Looming: der Radius wächst mit 1 / Tiefe, während der Arm um eine gemessene Strecke vorfährt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Sehstrahl paralleler zur Ebene als dieses |cos|: keine Position.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Abstimmende Linien innerhalb dieses Werts um ihren längengewichteten Median werden gemittelt; andere (eine mit einer Türnische verschmolzene Wand, eine Kiste) werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Abstimmende Wandlänge, die ein Bild braucht, bevor es die Referenzrichtung setzen darf.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Voxelgröße für lokal gezogene Hypothesen (findet einen Boden, der wenig vom Bild bedeckt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Wandlinien, die kürzer als dies sind, stimmen nicht über die Richtung ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Wandlinien mit weniger Scanpunkten stimmen nicht ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Geringere Tracking-Sicherheit: kein Ziel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Jede Position mit 1 / ihrer eigenen Varianz gewichten (Ebenenanpassung und verfolgte Mitte, mit dem Abstand wachsend): Die nahen Bilder der Anfahrt zählen am meisten. Standardmäßig aus: bei den simulierten Anfahrten schlechter gemessen (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt, wie es die Zwei-Bild-Verfeinerung tut.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Beobachtungen mit 1 / (|u - cx| / cx + 0.05) gewichten (libviso2), was die Bildmitte bevorzugt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Gewicht der Streuung der fusionierten Positionen (1.4826 x mittlere absolute Abweichung vom fusionierten Ziel) in der angegebenen Unsicherheit.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Was eine verworfene Bewegung ersetzt: die letzte akzeptierte oder keine.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Wenn weniger Tracks überleben als dieser Anteil des im vorigen Bild überlebenden Anteils (schlechte Bewegungsvorhersage), werden die verlorenen mit retrack_pyramid_levels erneut verfolgt; 0 = nie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Wenn gesetzt, muss ein Client {&quot;token&quot;: &quot;...&quot;} senden, bevor er etwas erhält; erforderlich, wenn bind_address keine Loopback-Adresse ist.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>Where the robot&apos;s translation comes from: the recording&apos;s odometry (odometry.txt, a bag&apos;s odometry or tf, a live source&apos;s), RGB-D odometry on the depth and colour frames, none (heading from the walls only), or auto (the recording&apos;s odometry when it has one, else RGB-D odometry when the frames have colour or the method is icp, else none).</source>
         <translation>Woher die Translation des Roboters kommt: die Odometrie der Aufnahme (odometry.txt, Odometrie oder tf einer Bag-Datei, die einer Live-Quelle), RGB-D-Odometrie auf den Tiefen- und Farbbildern, none (Kurs nur aus den Wänden) oder auto (die Odometrie der Aufnahme, wenn sie eine hat, sonst RGB-D-Odometrie, wenn die Bilder Farbe haben oder die Methode icp ist, sonst none).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>Width of the reduced copies of the two images compared in that search.</source>
         <translation>Breite der verkleinerten Kopien der beiden Bilder, die bei dieser Suche verglichen werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Fenster des zweiten Durchgangs, nach einer ersten Pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Fenster, das verwendet wird, wenn die erste Suche zu wenige Punkte findet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Mit einem Token: Eine Verbindung, die es nach dieser Zeit nicht vorgelegt hat, wird geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Bei weniger als min_matches, aber mindestens so vielen Zuordnungen leitet eine daraus geschätzte Essentielle Matrix eine zweite Zuordnung entlang der Epipolarlinien (große Bewegung).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Mit png: auch overlay.avi (Motion-JPEG über den eingebauten Writer von OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Mit serve: das Warten auf Clients nach dieser Zeit aufgeben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Mit serve: nach dem letzten Bild noch so lange weiter bereitstellen, damit wartende Ziele hinausgehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Mit serve: vor dem ersten Bild auf so viele verbundene Clients warten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Ohne Referenz: Linien innerhalb dieses Werts um die am besten gestützte Richtung (modulo 90 deg) stimmen ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>Workspace box, base x max.</source>
         <translation>Arbeitsraumquader, Basis x max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>Workspace box, base x min.</source>
         <translation>Arbeitsraumquader, Basis x min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>Workspace box, base y max.</source>
         <translation>Arbeitsraumquader, Basis y max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>Workspace box, base y min.</source>
         <translation>Arbeitsraumquader, Basis y min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>Workspace box, base z max.</source>
         <translation>Arbeitsraumquader, Basis z max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>Workspace box, base z min.</source>
         <translation>Arbeitsraumquader, Basis z min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Die Projektions- und Draufsicht-PNGs pro Bild schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: Eine wahre Wand ist in einem Bild sichtbar, wenn mindestens so viel von ihr im Blickfeld liegt ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>arm_pose-Nachrichten, die in der Zeit des Arms näher als 1/dieser Wert beieinanderliegen, werden verworfen (gezählt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>arm_pose-Nachrichten, die weiter als dies hinter der neuesten liegen, werden vergessen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); leer = neben dem Sensorordner.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Plattform custom: Ein Segment, das mehr als dies über den Boden erhöht ist, erhält den Wert 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Plattform custom: Weiter vom Sensor entfernte Punkte werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: Dreiecke mit einer Kante, die länger als so viele Zellen ist, werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
         <translation>depth: Die Oberkante einer Person liegt mindestens so viele Grundflächenlängen über dem Boden (ein Schreibtisch, ein Tisch oder ein Sofa ist breiter als hoch).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="509"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
         <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er den Bildrand berührt (ein abgeschnittener Körper wird niedriger bewertet).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="510"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
         <translation>depth: die HOG-Bewertung, die der Rahmen eines Clusters braucht, wenn er ganz im Bild liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="513"/>
+        <location filename="../app/sightline/option_texts.cpp" line="514"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: Wenn an, ist ein Cluster, der die oberste Bildzeile erreicht (seine Oberkante liegt außerhalb des Bildes), keine Person: weniger falsche Personen am Bildrand, aber Personen, die so nah sind, dass ihr Kopf abgeschnitten ist, werden übersehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="514"/>
+        <location filename="../app/sightline/option_texts.cpp" line="515"/>
         <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
         <translation>depth: Ist das Farbbild zum Tiefenbild registriert, muss auch OpenCVs HOG-Personendetektor den Rahmen jedes Clusters bestätigen (ein Stuhl oder Schreibtisch von Personengröße fällt weg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="515"/>
+        <location filename="../app/sightline/option_texts.cpp" line="516"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: Paare nach Kamerazeitstempeln bilden (Kameras mit gemeinsamer Uhr, z. B. PTP oder gemeinsamer Trigger); host: Paare nach Ankunftszeit am Host bilden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="518"/>
+        <location filename="../app/sightline/option_texts.cpp" line="519"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: Die Kamera läuft mit eigenem Takt; software: Der Host triggert jedes Bild (beide Kameras eines Paars gemeinsam); hardware: ein externer Impuls auf trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="519"/>
+        <location filename="../app/sightline/option_texts.cpp" line="520"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: jedes n-te Pixel in beiden Richtungen (anstelle des Voxelgitters).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="520"/>
+        <location filename="../app/sightline/option_texts.cpp" line="521"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: Rasternachbarn, deren Tiefen sich um mehr als diesen Anteil unterscheiden, sind getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="521"/>
+        <location filename="../app/sightline/option_texts.cpp" line="522"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: halbe Breite des Fensters der Rasterpunkte, an die jede Normale angepasst wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="523"/>
+        <location filename="../app/sightline/option_texts.cpp" line="524"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); leer = neben arm_poses (für arm_stream: neben den Bildern); none = Identität.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="524"/>
+        <location filename="../app/sightline/option_texts.cpp" line="525"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (Schritt E): höchstens so viele Linien.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="526"/>
+        <location filename="../app/sightline/option_texts.cpp" line="527"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: Hough-Kreise hinzufügen (runde Knöpfe, dünne Ringe).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="527"/>
+        <location filename="../app/sightline/option_texts.cpp" line="528"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: Unschärfe der zweiten Skala, mal blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="528"/>
+        <location filename="../app/sightline/option_texts.cpp" line="529"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: halbe Größe des Fensters um die Tippstelle, das durchsucht wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="529"/>
+        <location filename="../app/sightline/option_texts.cpp" line="530"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: längste durch kürzeste Seite des gedrehten Rahmens einer Region.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="530"/>
+        <location filename="../app/sightline/option_texts.cpp" line="531"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: Regionen werden nach (Versatz + Bias) / Radius gereiht, sodass der Umriss des Knopfs gegen ein Symbol darauf gewinnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="531"/>
+        <location filename="../app/sightline/option_texts.cpp" line="532"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: Der Schwerpunkt der Region liegt höchstens so viele Radien von der Tippstelle entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="532"/>
+        <location filename="../app/sightline/option_texts.cpp" line="533"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: Die beiden Canny-Paare sind die Schwellen mal 2/(1+s) und 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="533"/>
+        <location filename="../app/sightline/option_texts.cpp" line="534"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p der adaptiven Anzahl: Wahrscheinlichkeit, ein Paar nur aus Inliern zu ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="534"/>
+        <location filename="../app/sightline/option_texts.cpp" line="535"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: Nachbarradius des Regionenwachstums.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="535"/>
+        <location filename="../app/sightline/option_texts.cpp" line="536"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: Nachbarn der Normalenanpassung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="536"/>
+        <location filename="../app/sightline/option_texts.cpp" line="537"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: Nachbarn der Ausreißerentfernung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="537"/>
+        <location filename="../app/sightline/option_texts.cpp" line="538"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: Blattgröße des Voxelgitters.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="538"/>
+        <location filename="../app/sightline/option_texts.cpp" line="539"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (Schritt B8): Eine Hypothese mit mehr Inliern als diesem Anteil beendet die Suche.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="539"/>
+        <location filename="../app/sightline/option_texts.cpp" line="540"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (Schritte B5, B6): Eine Linie braucht diesen Anteil der verbleibenden Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="540"/>
+        <location filename="../app/sightline/option_texts.cpp" line="541"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (Schritt E): aufhören, sobald dieser Anteil der Punkte auf Linien liegt.</translation>
     </message>

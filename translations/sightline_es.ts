@@ -2491,117 +2491,117 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Paso C: volver a encontrar la superficie dominante de la línea elegida girando su dirección esto hacia cada lado, y luego reajustar sobre ella (0 = como se publicó: la línea del paso B6 tal cual).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Extractor de líneas de pared: el RANSAC multilínea de la publicación o split-and-merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>When even after that fewer tracks survive than this fraction of the share that usually survives (a slow average over the last frames; a sharp turn, or a turn at a low frame rate), the camera&apos;s rotation is searched by comparing the two images and the points are tracked again from where it puts them; the better attempt is kept. 0 = never.</source>
         <translation>Si aun después sobreviven menos pistas que esta fracción de la parte que suele sobrevivir (un promedio lento de los últimos fotogramas; un giro cerrado o un giro a baja frecuencia de imagen), se busca la rotación de la cámara comparando las dos imágenes y los puntos se siguen de nuevo desde donde ella los coloca; se conserva el mejor intento. 0 = nunca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, clusters of a person&apos;s size standing on the floor in the depth image (depth), OpenCV&apos;s HOG detector on the colour image, auto (ground truth when present, else depth) or none.</source>
         <translation>De dónde vienen los recuadros de personas: la verdad de referencia del conjunto de datos, grupos de puntos del tamaño de una persona de pie sobre el suelo en la imagen de profundidad (depth), el detector HOG de OpenCV en la imagen en color, auto (verdad de referencia si existe, si no depth) o none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Anchura de la imagen de ocupación (publicado: 400); el robot está en el centro del borde inferior.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>depth: a head is the highest point within this radius; people side by side are split at their heads.</source>
         <translation>depth: una cabeza es el punto más alto dentro de este radio; las personas una al lado de otra se separan por sus cabezas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>depth: a person&apos;s footprint is at least this long.</source>
         <translation>depth: la huella de una persona mide al menos esto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>depth: a person&apos;s footprint is at most this long (walls are longer); wider clusters are split at their heads.</source>
         <translation>depth: la huella de una persona mide como mucho esto (las paredes son más largas); los grupos más anchos se separan por sus cabezas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>depth: a person&apos;s lowest point lies at most this high above the floor.</source>
         <translation>depth: el punto más bajo de una persona está como mucho a esta altura sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>depth: a person&apos;s top lies at least this high above the floor.</source>
         <translation>depth: el punto más alto de una persona está al menos a esta altura sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: el punto más alto de una persona está como mucho a esta altura (las paredes y columnas suben más).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: entre dos cabezas las alturas bajan al menos esto (cuello, hombros); el borde superior cortado de una pared es plano y no se separa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: celda de la rejilla del suelo en la que se agrupan los puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: los puntos más lejanos no se consideran.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="508"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: puntos muestreados que necesita una persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="511"/>
+        <location filename="../app/sightline/option_texts.cpp" line="512"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: la imagen de profundidad se muestrea a unas tantas columnas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="512"/>
+        <location filename="../app/sightline/option_texts.cpp" line="513"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: el lado más corto de la huella de una persona mide al menos esto (piernas, brazos y la curva del torso); el extremo de una pared visto en el borde de la imagen tiene una celda de grosor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="516"/>
+        <location filename="../app/sightline/option_texts.cpp" line="517"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto dentro de esta altura respecto al plano del suelo es suelo (valor publicado 3.5, leído como 3.5 cm: generoso para que ningún píxel del suelo se marque como ocupado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="517"/>
+        <location filename="../app/sightline/option_texts.cpp" line="518"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distancia de inliers en celdas de ocupación (publicado: 5 píxeles); metros = celdas x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="522"/>
+        <location filename="../app/sightline/option_texts.cpp" line="523"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: camino por la rejilla de píxeles organizada (rápido); pcl: el camino de la publicación con rejilla de vóxeles, eliminación de outliers y árbol k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="525"/>
+        <location filename="../app/sightline/option_texts.cpp" line="526"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: hipótesis por línea (publicado: 250); también limita el recuento adaptativo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="541"/>
+        <location filename="../app/sightline/option_texts.cpp" line="542"/>
         <source>rgbd, rgbd_icp: a colour frame whose brightness varies less than this is not tracked (a black or blank frame).</source>
         <translation>rgbd, rgbd_icp: una imagen en color cuyo brillo varía menos que esto no se sigue (un fotograma negro o vacío).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="542"/>
+        <location filename="../app/sightline/option_texts.cpp" line="543"/>
         <source>rgbd, rgbd_icp: start the alignment from ORB features matched with PnP RANSAC when they agree (fast turns at low frame rates).</source>
         <translation>rgbd, rgbd_icp: iniciar la alineación desde características ORB emparejadas con PnP RANSAC cuando concuerdan (giros rápidos a baja frecuencia de imagen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="543"/>
+        <location filename="../app/sightline/option_texts.cpp" line="544"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: alcance de 5 m, escalón de 3 cm; icub: 1.75 m, 5 cm (el humanoide de la publicación); custom: range_cut_m y max_step_m.</translation>
     </message>
@@ -3802,441 +3802,446 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <source>The position&apos;s panel plane is fitted robustly to the map points within this many tracked button radii and moved onto the face by its points&apos; median offset; 0 = the plane within radius_px (or the face&apos;s own).</source>
+        <translation>El plano de la posición se ajusta de forma robusta a los puntos del mapa dentro de este número de radios del botón seguido y se desplaza a la cara del botón según la mediana de los desvíos de sus puntos; 0 = el plano dentro de radius_px (o el de la propia cara).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>El tamaño solo a partir de los puntos clave propios del toque (no de los renovados, cuya escala deriva; el looming en button.triangulate.*) necesita al menos estas correspondencias coherentes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>El tamaño solo a partir de los puntos clave propios del toque (ButtonTrack::anchor_scale: los puntos clave que añade la renovación del seguidor arrastran el error de escala de cada renovación); false: el radio seguido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>El objetivo es la mediana por eje de este número de posiciones recientes en el sistema de la base (plano fiable, escala convergida); 0 = todas desde el toque, 1 = sin fusión.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>El gate de seguimiento nunca supera este valor: las correcciones mayores no se aplican.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>La ventana crece hasta este número de radios predichos del botón cuando es mayor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Tolerancia de accuracy.map_iou: una celda del mapa a menos de este número de celdas de una pared real cuenta como sobre ella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Top-view grid cell.</source>
         <translation>Celda de la rejilla de la vista cenital.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Puntos de la pista dibujados detrás del botón en la superposición.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Gate de seguimiento justo después de una corrección: las líneas más alejadas que esto de la dirección esperada ni votan ni corrigen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>El seguimiento se pierde cuando se encuentra menos de esta proporción de los puntos del mapa predichos en la imagen (la prueba de PTAM contra una pose errónea tras un salto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>La calidad del seguimiento es buena a partir de este número de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>La calidad del seguimiento es mala a partir de este número de inliers; con menos se pierde.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Puntos triangulados necesarios para aceptar la inicialización.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: cambio de una distancia entre pares que puede mostrar una muestra rígida, antes de sumar la incertidumbre de profundidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: rechazos por rigidez tras los cuales RANSAC falla (se conserva el último movimiento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: error de reproyección (RMS de ambas imágenes) de un inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: dejar de muestrear en cuanto esta fracción de los puntos es inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: muestras rígidas probadas antes de tomar el mejor conjunto de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Planos orientados hacia arriba que se buscan; el más bajo de los grandes es el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Límite superior de los log-odds de una celda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Usar uno de cada n píxeles de profundidad para la nube 3D; 1 los muestra todos (más lento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Usa, además de los rayos, el tamaño aparente (looming: el radio crece como 1 / profundidad mientras el brazo avanza una distancia medida).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Rayo de visión más próximo a ser paralelo al plano que este |cos|: ninguna posición.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Las líneas que votan dentro de este valor respecto a su mediana ponderada por longitud se promedian; las demás (una pared fusionada con una puerta retranqueada, una caja) se descartan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Longitud de pared votante que necesita un fotograma antes de poder fijar la dirección de referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Tamaño del vóxel para las hipótesis muestreadas localmente (encuentra un suelo que cubre poco de la vista).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Las líneas de pared más cortas que esto no votan la dirección.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Las líneas de pared con menos puntos de barrido no votan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confianza de seguimiento más débil: ningún objetivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Ponderar cada posición por 1 / su propia varianza (ajuste del plano y centro seguido, creciente con la distancia): los fotogramas cercanos de la aproximación cuentan más. Desactivado por defecto: medido peor en las aproximaciones simuladas (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Ponderar las observaciones por 1 / (|u - cx| / cx + 0.05) (libviso2), favoreciendo el centro, como hace el refinamiento de dos fotogramas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Ponderar las observaciones por 1 / (|u - cx| / cx + 0.05) (libviso2), favoreciendo el centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Peso de la dispersión de las posiciones fusionadas (1.4826 x desviación absoluta mediana respecto al objetivo fusionado) en la incertidumbre declarada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Qué sustituye a un movimiento rechazado: el último aceptado, o ninguno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Cuando sobreviven menos pistas que esta fracción de la proporción que sobrevivió en el fotograma anterior (mala predicción del movimiento), las perdidas se vuelven a seguir con retrack_pyramid_levels; 0 = nunca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Si se establece, un cliente debe enviar {&quot;token&quot;: &quot;...&quot;} antes de recibir nada; obligatorio cuando bind_address no es una dirección de loopback.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>Where the robot&apos;s translation comes from: the recording&apos;s odometry (odometry.txt, a bag&apos;s odometry or tf, a live source&apos;s), RGB-D odometry on the depth and colour frames, none (heading from the walls only), or auto (the recording&apos;s odometry when it has one, else RGB-D odometry when the frames have colour or the method is icp, else none).</source>
         <translation>De dónde procede la traslación del robot: la odometría de la grabación (odometry.txt, la odometría o tf de un bag, la de una fuente en vivo), odometría RGB-D sobre los fotogramas de profundidad y color, none (rumbo solo a partir de las paredes) o auto (la odometría de la grabación cuando la tiene, si no odometría RGB-D cuando los fotogramas tienen color o el método es icp, si no none).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>Width of the reduced copies of the two images compared in that search.</source>
         <translation>Ancho de las copias reducidas de las dos imágenes que se comparan en esa búsqueda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Ventana de la segunda pasada, tras una primera pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Ventana usada cuando la primera búsqueda encuentra demasiado pocos puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Con un token: se cierra una conexión que no lo ha presentado tras este tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Con menos de min_matches pero al menos estas correspondencias, una matriz esencial estimada con ellas guía un segundo emparejamiento a lo largo de las líneas epipolares (movimiento grande).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Con png: también overlay.avi (Motion-JPEG mediante el escritor integrado de OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Con serve: dejar de esperar clientes tras este tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Con serve: seguir sirviendo este tiempo tras el último fotograma para que salgan los objetivos en cola.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Con serve: esperar a este número de clientes conectados antes del primer fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Sin referencia: votan las líneas dentro de este valor respecto a la dirección mejor respaldada (módulo 90 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>Workspace box, base x max.</source>
         <translation>Caja del espacio de trabajo, base x máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>Workspace box, base x min.</source>
         <translation>Caja del espacio de trabajo, base x mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>Workspace box, base y max.</source>
         <translation>Caja del espacio de trabajo, base y máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>Workspace box, base y min.</source>
         <translation>Caja del espacio de trabajo, base y mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>Workspace box, base z max.</source>
         <translation>Caja del espacio de trabajo, base z máx.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>Workspace box, base z min.</source>
         <translation>Caja del espacio de trabajo, base z mín.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Escribir por fotograma los PNG de la proyección y de la vista cenital.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: una pared real es visible en un fotograma cuando al menos esta parte de ella está a la vista ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>Se descartan los mensajes arm_pose más próximos que 1/este valor en el tiempo del brazo (contados).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>Se olvidan los mensajes arm_pose más atrasados que esto respecto al más reciente.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); vacío = junto a la carpeta del sensor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Plataforma custom: un segmento elevado más que esto sobre el suelo puntúa 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Plataforma custom: se descartan los puntos más alejados del sensor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: se descartan los triángulos con un lado más largo que este número de celdas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
         <translation>depth: la parte superior de una persona está al menos a este múltiplo de la longitud de su huella sobre el suelo (un escritorio, una mesa o un sofá es más ancho que alto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="509"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
         <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando toca el borde de la imagen (un cuerpo cortado puntúa menos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="510"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
         <translation>depth: la puntuación HOG que necesita el recuadro de un clúster cuando está entero a la vista.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="513"/>
+        <location filename="../app/sightline/option_texts.cpp" line="514"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: si está activo, un grupo que llega a la fila superior de la imagen (su parte alta fuera de vista) no es una persona: menos personas falsas en el borde de la imagen, pero se pierden las personas tan cercanas que tienen la cabeza cortada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="514"/>
+        <location filename="../app/sightline/option_texts.cpp" line="515"/>
         <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
         <translation>depth: cuando la imagen en color está registrada con la de profundidad, el detector de personas HOG de OpenCV también debe aceptar el recuadro de cada clúster (se descarta una silla o un escritorio del tamaño de una persona).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="515"/>
+        <location filename="../app/sightline/option_texts.cpp" line="516"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: emparejar por marcas de tiempo de las cámaras (cámaras con un reloj común, p. ej. PTP o un disparo compartido); host: emparejar por hora de llegada al host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="518"/>
+        <location filename="../app/sightline/option_texts.cpp" line="519"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la cámara funciona con su propio reloj; software: el host dispara cada fotograma (las dos cámaras de un par a la vez); hardware: un pulso externo en trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="519"/>
+        <location filename="../app/sightline/option_texts.cpp" line="520"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: uno de cada n píxeles en ambas direcciones (en lugar de la rejilla de vóxeles).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="520"/>
+        <location filename="../app/sightline/option_texts.cpp" line="521"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: los vecinos de la rejilla cuyas profundidades difieren más de esta fracción están separados.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="521"/>
+        <location filename="../app/sightline/option_texts.cpp" line="522"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: semianchura de la ventana de puntos de la rejilla a la que se ajusta cada normal.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="523"/>
+        <location filename="../app/sightline/option_texts.cpp" line="524"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vacío = junto a arm_poses (para arm_stream: junto a las imágenes); none = identidad.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="524"/>
+        <location filename="../app/sightline/option_texts.cpp" line="525"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (paso E): como máximo este número de líneas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="526"/>
+        <location filename="../app/sightline/option_texts.cpp" line="527"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: añadir círculos de Hough (botones redondos, anillos finos).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="527"/>
+        <location filename="../app/sightline/option_texts.cpp" line="528"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: desenfoque de la segunda escala, multiplicado por blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="528"/>
+        <location filename="../app/sightline/option_texts.cpp" line="529"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: mitad del tamaño de la ventana alrededor del toque en la que se busca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="529"/>
+        <location filename="../app/sightline/option_texts.cpp" line="530"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: cociente entre el lado más largo y el más corto del recuadro girado de una región.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="530"/>
+        <location filename="../app/sightline/option_texts.cpp" line="531"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: las regiones se ordenan por (desplazamiento + sesgo) / radio, para que el contorno del botón gane a un símbolo sobre él.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="531"/>
+        <location filename="../app/sightline/option_texts.cpp" line="532"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: el centroide de la región está como máximo a este número de radios del toque.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="532"/>
+        <location filename="../app/sightline/option_texts.cpp" line="533"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: los dos pares de Canny son los umbrales multiplicados por 2/(1+s) y 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="533"/>
+        <location filename="../app/sightline/option_texts.cpp" line="534"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del recuento adaptativo: probabilidad de extraer un par solo de inliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="534"/>
+        <location filename="../app/sightline/option_texts.cpp" line="535"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: radio de vecindad del crecimiento de regiones.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="535"/>
+        <location filename="../app/sightline/option_texts.cpp" line="536"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vecinos del ajuste de normales.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="536"/>
+        <location filename="../app/sightline/option_texts.cpp" line="537"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vecinos de la eliminación de outliers.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="537"/>
+        <location filename="../app/sightline/option_texts.cpp" line="538"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: tamaño de hoja de la rejilla de vóxeles.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="538"/>
+        <location filename="../app/sightline/option_texts.cpp" line="539"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (paso B8): una hipótesis con más inliers que esto termina la búsqueda.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="539"/>
+        <location filename="../app/sightline/option_texts.cpp" line="540"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (pasos B5, B6): una línea necesita esta fracción de los puntos restantes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="540"/>
+        <location filename="../app/sightline/option_texts.cpp" line="541"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (paso E): parar en cuanto esta fracción de los puntos está sobre líneas.</translation>
     </message>

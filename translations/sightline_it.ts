@@ -2491,117 +2491,117 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Passo C: ritrovare la superficie dominante della linea scelta ruotandone la direzione di tanto da entrambi i lati, poi rifare il fit su di essa (0 = come pubblicato: la linea del passo B6 così com&apos;è).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="461"/>
+        <location filename="../app/sightline/option_texts.cpp" line="462"/>
         <source>Wall-line extractor: the published multi-line RANSAC or split-and-merge.</source>
         <translation>Estrattore delle linee di muro: il RANSAC multi-linea della pubblicazione o split-and-merge.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="468"/>
+        <location filename="../app/sightline/option_texts.cpp" line="469"/>
         <source>When even after that fewer tracks survive than this fraction of the share that usually survives (a slow average over the last frames; a sharp turn, or a turn at a low frame rate), the camera&apos;s rotation is searched by comparing the two images and the points are tracked again from where it puts them; the better attempt is kept. 0 = never.</source>
         <translation>Se anche dopo sopravvivono meno tracce di questa frazione della quota che di solito sopravvive (una media lenta sugli ultimi fotogrammi; una curva stretta o una curva a bassa frequenza di fotogrammi), la rotazione della telecamera viene cercata confrontando le due immagini e i punti vengono tracciati di nuovo da dove essa li pone; si tiene il tentativo migliore. 0 = mai.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="471"/>
+        <location filename="../app/sightline/option_texts.cpp" line="472"/>
         <source>Where person boxes come from: the dataset&apos;s ground truth, clusters of a person&apos;s size standing on the floor in the depth image (depth), OpenCV&apos;s HOG detector on the colour image, auto (ground truth when present, else depth) or none.</source>
         <translation>Da dove vengono i riquadri delle persone: la verità di riferimento del dataset, gruppi di punti delle dimensioni di una persona in piedi sul pavimento nell&apos;immagine di profondità (depth), il rilevatore HOG di OpenCV sull&apos;immagine a colori, auto (verità di riferimento se presente, altrimenti depth) o none.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="473"/>
+        <location filename="../app/sightline/option_texts.cpp" line="474"/>
         <source>Width of the occupancy image (published: 400); the robot sits at its bottom centre.</source>
         <translation>Larghezza dell&apos;immagine di occupazione (pubblicato: 400); il robot si trova al centro del bordo inferiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="498"/>
+        <location filename="../app/sightline/option_texts.cpp" line="499"/>
         <source>depth: a head is the highest point within this radius; people side by side are split at their heads.</source>
         <translation>depth: una testa è il punto più alto entro questo raggio; le persone affiancate vengono separate in corrispondenza delle teste.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="499"/>
+        <location filename="../app/sightline/option_texts.cpp" line="500"/>
         <source>depth: a person&apos;s footprint is at least this long.</source>
         <translation>depth: l&apos;impronta di una persona è lunga almeno tanto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="500"/>
+        <location filename="../app/sightline/option_texts.cpp" line="501"/>
         <source>depth: a person&apos;s footprint is at most this long (walls are longer); wider clusters are split at their heads.</source>
         <translation>depth: l&apos;impronta di una persona è lunga al massimo tanto (le pareti sono più lunghe); i gruppi più larghi vengono separati in corrispondenza delle teste.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="501"/>
+        <location filename="../app/sightline/option_texts.cpp" line="502"/>
         <source>depth: a person&apos;s lowest point lies at most this high above the floor.</source>
         <translation>depth: il punto più basso di una persona si trova al massimo a questa altezza dal pavimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="502"/>
+        <location filename="../app/sightline/option_texts.cpp" line="503"/>
         <source>depth: a person&apos;s top lies at least this high above the floor.</source>
         <translation>depth: il punto più alto di una persona si trova almeno a questa altezza dal pavimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="504"/>
+        <location filename="../app/sightline/option_texts.cpp" line="505"/>
         <source>depth: a person&apos;s top lies at most this high (walls and pillars go higher).</source>
         <translation>depth: il punto più alto di una persona si trova al massimo a questa altezza (pareti e colonne salgono di più).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="505"/>
+        <location filename="../app/sightline/option_texts.cpp" line="506"/>
         <source>depth: between two heads the tops dip at least this much (neck, shoulders); the cut-off top of a wall is flat and is not split.</source>
         <translation>depth: tra due teste le altezze scendono almeno di tanto (collo, spalle); il bordo superiore tagliato di una parete è piatto e non viene separato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="506"/>
+        <location filename="../app/sightline/option_texts.cpp" line="507"/>
         <source>depth: floor grid cell in which points are clustered.</source>
         <translation>depth: cella della griglia sul pavimento in cui i punti vengono raggruppati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="507"/>
+        <location filename="../app/sightline/option_texts.cpp" line="508"/>
         <source>depth: points farther away are not looked at.</source>
         <translation>depth: i punti più lontani non vengono considerati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="508"/>
+        <location filename="../app/sightline/option_texts.cpp" line="509"/>
         <source>depth: sampled points a person needs.</source>
         <translation>depth: punti campionati necessari per una persona.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="511"/>
+        <location filename="../app/sightline/option_texts.cpp" line="512"/>
         <source>depth: the depth image is sampled to about this many columns.</source>
         <translation>depth: l&apos;immagine di profondità viene campionata a circa questo numero di colonne.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="512"/>
+        <location filename="../app/sightline/option_texts.cpp" line="513"/>
         <source>depth: the shorter side of a person&apos;s footprint is at least this (legs, arms and the torso&apos;s curve); the end of a wall seen at the edge of view is one cell thick.</source>
         <translation>depth: il lato più corto dell&apos;impronta di una persona è almeno tanto (gambe, braccia e la curva del busto); l&apos;estremità di una parete vista al bordo dell&apos;immagine è spessa una cella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="516"/>
+        <location filename="../app/sightline/option_texts.cpp" line="517"/>
         <source>epsilon_floor: a point within this height of the floor plane is floor (published value 3.5, read as 3.5 cm: generous so that no floor pixel is labelled occupied).</source>
         <translation>epsilon_floor: un punto entro questa altezza dal piano del pavimento è pavimento (valore pubblicato 3.5, letto come 3.5 cm: generoso, affinché nessun pixel del pavimento sia marcato come occupato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="517"/>
+        <location filename="../app/sightline/option_texts.cpp" line="518"/>
         <source>err_max: inlier distance in occupancy cells (published: 5 pixels); metres = cells x mapping.occupancy.cell_size_m.</source>
         <translation>err_max: distanza degli inlier in celle di occupazione (pubblicato: 5 pixel); metri = celle x mapping.occupancy.cell_size_m.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="522"/>
+        <location filename="../app/sightline/option_texts.cpp" line="523"/>
         <source>grid: organized pixel-grid path (fast); pcl: the published voxel grid, outlier removal and k-d tree path.</source>
         <translation>grid: percorso sulla griglia di pixel organizzata (veloce); pcl: il percorso della pubblicazione con griglia di voxel, rimozione degli outlier e albero k-d.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="525"/>
+        <location filename="../app/sightline/option_texts.cpp" line="526"/>
         <source>j_max: hypotheses per line (published: 250); also caps the adaptive count.</source>
         <translation>j_max: ipotesi per linea (pubblicato: 250); limita anche il conteggio adattivo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="541"/>
+        <location filename="../app/sightline/option_texts.cpp" line="542"/>
         <source>rgbd, rgbd_icp: a colour frame whose brightness varies less than this is not tracked (a black or blank frame).</source>
         <translation>rgbd, rgbd_icp: un&apos;immagine a colori la cui luminosità varia meno di questo valore non viene tracciata (un fotogramma nero o vuoto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="542"/>
+        <location filename="../app/sightline/option_texts.cpp" line="543"/>
         <source>rgbd, rgbd_icp: start the alignment from ORB features matched with PnP RANSAC when they agree (fast turns at low frame rates).</source>
         <translation>rgbd, rgbd_icp: avvia l&apos;allineamento dalle feature ORB associate con PnP RANSAC quando concordano (curve rapide a basso frame rate).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="543"/>
+        <location filename="../app/sightline/option_texts.cpp" line="544"/>
         <source>wheelchair: 5 m range, 3 cm step; icub: 1.75 m, 5 cm (the published humanoid); custom: range_cut_m and max_step_m.</source>
         <translation>wheelchair: portata 5 m, gradino 3 cm; icub: 1.75 m, 5 cm (l&apos;umanoide della pubblicazione); custom: range_cut_m e max_step_m.</translation>
     </message>
@@ -3802,441 +3802,446 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="433"/>
+        <source>The position&apos;s panel plane is fitted robustly to the map points within this many tracked button radii and moved onto the face by its points&apos; median offset; 0 = the plane within radius_px (or the face&apos;s own).</source>
+        <translation>Il piano della posizione è stimato in modo robusto sui punti della mappa entro questo numero di raggi del pulsante tracciato e spostato sulla faccia del pulsante della mediana degli scarti dei suoi punti; 0 = il piano entro radius_px (o quello della faccia stessa).</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="434"/>
         <source>The size from the tap&apos;s own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches.</source>
         <translation>La dimensione dai soli punti chiave del tocco (non da quelli aggiornati, la cui scala deriva; il looming in button.triangulate.*) richiede almeno tante corrispondenze coerenti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="434"/>
+        <location filename="../app/sightline/option_texts.cpp" line="435"/>
         <source>The size from the tap&apos;s own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker&apos;s refresh adds carry each refresh&apos;s scale error on); false: the tracked radius.</source>
         <translation>La dimensione dai soli punti chiave del tocco (ButtonTrack::anchor_scale: i punti chiave aggiunti dall&apos;aggiornamento del tracker portano avanti l&apos;errore di scala di ogni aggiornamento); false: il raggio tracciato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="435"/>
+        <location filename="../app/sightline/option_texts.cpp" line="436"/>
         <source>The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion.</source>
         <translation>Il target è la mediana per asse di questo numero di posizioni recenti nel sistema della base (piano affidabile, scala convergente); 0 = tutte dal tocco, 1 = nessuna fusione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="436"/>
+        <location filename="../app/sightline/option_texts.cpp" line="437"/>
         <source>The tracking gate never exceeds this: larger corrections are not applied.</source>
         <translation>Il gate di tracking non supera mai questo valore: le correzioni maggiori non vengono applicate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="437"/>
+        <location filename="../app/sightline/option_texts.cpp" line="438"/>
         <source>The window grows to this many predicted button radii when that is larger.</source>
         <translation>La finestra cresce fino a questo numero di raggi previsti del pulsante, se è maggiore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="438"/>
+        <location filename="../app/sightline/option_texts.cpp" line="439"/>
         <source>Tolerance of accuracy.map_iou: a map cell within this many cells of a true wall counts as on it.</source>
         <translation>Tolleranza di accuracy.map_iou: una cella della mappa entro questo numero di celle da un muro vero conta come sopra di esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="439"/>
+        <location filename="../app/sightline/option_texts.cpp" line="440"/>
         <source>Top-view grid cell.</source>
         <translation>Cella della griglia della vista dall&apos;alto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="440"/>
+        <location filename="../app/sightline/option_texts.cpp" line="441"/>
         <source>Track points drawn behind the button on the overlay.</source>
         <translation>Punti della traccia disegnati dietro il pulsante nell&apos;overlay.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="441"/>
+        <location filename="../app/sightline/option_texts.cpp" line="442"/>
         <source>Tracking gate right after a correction: lines farther than this from the expected direction neither vote nor correct.</source>
         <translation>Gate di tracking subito dopo una correzione: le linee più lontane di così dalla direzione attesa non votano né correggono.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="442"/>
+        <location filename="../app/sightline/option_texts.cpp" line="443"/>
         <source>Tracking is lost when fewer than this share of the map points predicted in the image are found (PTAM&apos;s test against a wrong pose after a jump).</source>
         <translation>Il tracking è perso quando si trova meno di questa quota dei punti della mappa previsti nell&apos;immagine (il test di PTAM contro una posa errata dopo un salto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="443"/>
+        <location filename="../app/sightline/option_texts.cpp" line="444"/>
         <source>Tracking quality is good from this many inliers.</source>
         <translation>La qualità del tracking è buona da questo numero di inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="444"/>
+        <location filename="../app/sightline/option_texts.cpp" line="445"/>
         <source>Tracking quality is poor from this many inliers; fewer is lost.</source>
         <translation>La qualità del tracking è scarsa da questo numero di inlier; con meno è perso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="445"/>
+        <location filename="../app/sightline/option_texts.cpp" line="446"/>
         <source>Triangulated points needed to accept the initialisation.</source>
         <translation>Punti triangolati necessari per accettare l&apos;inizializzazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="446"/>
+        <location filename="../app/sightline/option_texts.cpp" line="447"/>
         <source>UMBRAL1: change of a pairwise distance a rigid sample may show, before depth uncertainty is added.</source>
         <translation>UMBRAL1: variazione di una distanza tra coppie di punti che un campione rigido può mostrare, prima di aggiungere l&apos;incertezza di profondità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="447"/>
+        <location filename="../app/sightline/option_texts.cpp" line="448"/>
         <source>UMBRAL2: rigidity rejections after which RANSAC fails (the last motion is kept).</source>
         <translation>UMBRAL2: rifiuti per rigidità dopo i quali RANSAC fallisce (si mantiene l&apos;ultimo moto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="448"/>
+        <location filename="../app/sightline/option_texts.cpp" line="449"/>
         <source>UMBRAL3: reprojection error (RMS of both images) of an inlier.</source>
         <translation>UMBRAL3: errore di riproiezione (RMS di entrambe le immagini) di un inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="449"/>
+        <location filename="../app/sightline/option_texts.cpp" line="450"/>
         <source>UMBRAL4: stop sampling once this fraction of the points is inlier.</source>
         <translation>UMBRAL4: smettere di campionare non appena questa frazione dei punti è inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="450"/>
+        <location filename="../app/sightline/option_texts.cpp" line="451"/>
         <source>UMBRAL5: rigid samples tried before the best inlier set is taken.</source>
         <translation>UMBRAL5: campioni rigidi provati prima di adottare il miglior insieme di inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="451"/>
+        <location filename="../app/sightline/option_texts.cpp" line="452"/>
         <source>Up-facing planes searched; the lowest large one is the ground.</source>
         <translation>Piani rivolti verso l&apos;alto cercati; il più basso tra quelli grandi è il suolo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="452"/>
+        <location filename="../app/sightline/option_texts.cpp" line="453"/>
         <source>Upper clamp of a cell&apos;s log-odds.</source>
         <translation>Limite superiore dei log-odds di una cella.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="453"/>
+        <location filename="../app/sightline/option_texts.cpp" line="454"/>
         <source>Use every n-th depth pixel for the 3D cloud; 1 shows all (slower).</source>
         <translation>Usare un pixel di profondità ogni n per la nuvola 3D; 1 li mostra tutti (più lento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="454"/>
+        <location filename="../app/sightline/option_texts.cpp" line="455"/>
         <source>Use the apparent size (looming: the radius grows as 1 / depth while the arm moves forward by a measured distance) besides the rays.</source>
         <translation>Usa, oltre ai raggi, la dimensione apparente (looming: il raggio cresce come 1 / profondità mentre il braccio avanza di una distanza misurata).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="455"/>
+        <location filename="../app/sightline/option_texts.cpp" line="456"/>
         <source>Viewing ray closer to parallel with the plane than this |cos|: no position.</source>
         <translation>Raggio visivo più vicino al parallelo con il piano di questo |cos|: nessuna posizione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="456"/>
+        <location filename="../app/sightline/option_texts.cpp" line="457"/>
         <source>Voting lines within this of their length-weighted median are averaged; others (a wall merged with a recessed door, a box) are dropped.</source>
         <translation>Le linee votanti entro questo valore dalla loro mediana pesata per lunghezza vengono mediate; le altre (un muro fuso con una porta arretrata, una scatola) vengono scartate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="457"/>
+        <location filename="../app/sightline/option_texts.cpp" line="458"/>
         <source>Voting wall length a frame needs before it may set the reference direction.</source>
         <translation>Lunghezza di muri votanti di cui un fotogramma ha bisogno prima di poter fissare la direzione di riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="458"/>
+        <location filename="../app/sightline/option_texts.cpp" line="459"/>
         <source>Voxel size for locally sampled hypotheses (finds a floor that covers little of the view).</source>
         <translation>Dimensione del voxel per le ipotesi campionate localmente (trova un pavimento che copre poco della vista).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="459"/>
+        <location filename="../app/sightline/option_texts.cpp" line="460"/>
         <source>Wall lines shorter than this do not vote for the direction.</source>
         <translation>Le linee di muro più corte di così non votano per la direzione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="460"/>
+        <location filename="../app/sightline/option_texts.cpp" line="461"/>
         <source>Wall lines with fewer scan points do not vote.</source>
         <translation>Le linee di muro con meno punti di scansione non votano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="462"/>
+        <location filename="../app/sightline/option_texts.cpp" line="463"/>
         <source>Weaker tracking confidence: no target.</source>
         <translation>Confidenza di tracking più debole: nessun target.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="463"/>
+        <location filename="../app/sightline/option_texts.cpp" line="464"/>
         <source>Weigh each position by 1 / its own variance (plane fit and tracked centre, growing with the distance): the near frames of the approach count most. Off by default: measured worse on the simulated approaches (docs/button.md).</source>
         <translation>Pesare ogni posizione per 1 / la sua varianza (fit del piano e centro tracciato, crescente con la distanza): i fotogrammi vicini dell&apos;avvicinamento contano di più. Disattivato per impostazione predefinita: misurato peggiore sugli avvicinamenti simulati (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="464"/>
+        <location filename="../app/sightline/option_texts.cpp" line="465"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre, as the two-frame refinement does.</source>
         <translation>Pesare le osservazioni per 1 / (|u - cx| / cx + 0.05) (libviso2), favorendo il centro, come fa il raffinamento a due fotogrammi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="465"/>
+        <location filename="../app/sightline/option_texts.cpp" line="466"/>
         <source>Weight observations by 1 / (|u - cx| / cx + 0.05) (libviso2), favouring the centre.</source>
         <translation>Pesare le osservazioni per 1 / (|u - cx| / cx + 0.05) (libviso2), favorendo il centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="466"/>
+        <location filename="../app/sightline/option_texts.cpp" line="467"/>
         <source>Weight of the fused positions&apos; spread (1.4826 x median absolute deviation from the fused target) in the stated uncertainty.</source>
         <translation>Peso della dispersione delle posizioni fuse (1.4826 x deviazione assoluta mediana dal target fuso) nell&apos;incertezza dichiarata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="467"/>
+        <location filename="../app/sightline/option_texts.cpp" line="468"/>
         <source>What replaces a rejected motion: the last accepted one, or none.</source>
         <translation>Che cosa sostituisce un moto rifiutato: l&apos;ultimo accettato o nessuno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="469"/>
+        <location filename="../app/sightline/option_texts.cpp" line="470"/>
         <source>When fewer tracks survive than this fraction of the share that survived in the previous frame (poor motion prediction), the lost ones are tracked again with retrack_pyramid_levels; 0 = never.</source>
         <translation>Quando sopravvivono meno tracce di questa frazione della quota sopravvissuta nel fotogramma precedente (cattiva previsione del moto), quelle perse vengono tracciate di nuovo con retrack_pyramid_levels; 0 = mai.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="470"/>
+        <location filename="../app/sightline/option_texts.cpp" line="471"/>
         <source>When set, a client must send {&quot;token&quot;: &quot;...&quot;} before it receives anything; required when bind_address is not a loopback address.</source>
         <translation>Se impostato, un client deve inviare {&quot;token&quot;: &quot;...&quot;} prima di ricevere qualcosa; obbligatorio quando bind_address non è un indirizzo di loopback.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="472"/>
+        <location filename="../app/sightline/option_texts.cpp" line="473"/>
         <source>Where the robot&apos;s translation comes from: the recording&apos;s odometry (odometry.txt, a bag&apos;s odometry or tf, a live source&apos;s), RGB-D odometry on the depth and colour frames, none (heading from the walls only), or auto (the recording&apos;s odometry when it has one, else RGB-D odometry when the frames have colour or the method is icp, else none).</source>
         <translation>Da dove proviene la traslazione del robot: l&apos;odometria della registrazione (odometry.txt, odometria o tf di un bag, quella di una sorgente dal vivo), odometria RGB-D sui fotogrammi di profondità e colore, none (direzione solo dalle pareti) o auto (l&apos;odometria della registrazione quando c&apos;è, altrimenti odometria RGB-D quando i fotogrammi hanno colore o il metodo è icp, altrimenti none).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="474"/>
+        <location filename="../app/sightline/option_texts.cpp" line="475"/>
         <source>Width of the reduced copies of the two images compared in that search.</source>
         <translation>Larghezza delle copie ridotte delle due immagini confrontate in quella ricerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="475"/>
+        <location filename="../app/sightline/option_texts.cpp" line="476"/>
         <source>Window of the second pass, after a first pose.</source>
         <translation>Finestra del secondo passaggio, dopo una prima posa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="476"/>
+        <location filename="../app/sightline/option_texts.cpp" line="477"/>
         <source>Window used when the first search finds too few points.</source>
         <translation>Finestra usata quando la prima ricerca trova troppo pochi punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="477"/>
+        <location filename="../app/sightline/option_texts.cpp" line="478"/>
         <source>With a token: a connection that has not presented it after this long is closed.</source>
         <translation>Con un token: una connessione che non lo ha presentato dopo questo tempo viene chiusa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="478"/>
+        <location filename="../app/sightline/option_texts.cpp" line="479"/>
         <source>With fewer than min_matches but this many matches, an essential matrix from them guides a second matching along epipolar lines (large motion).</source>
         <translation>Con meno di min_matches ma almeno tante corrispondenze, una matrice essenziale stimata da esse guida un secondo abbinamento lungo le rette epipolari (moto ampio).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="479"/>
+        <location filename="../app/sightline/option_texts.cpp" line="480"/>
         <source>With png: also overlay.avi (Motion-JPEG through OpenCV&apos;s built-in writer).</source>
         <translation>Con png: anche overlay.avi (Motion-JPEG tramite il writer integrato di OpenCV).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="480"/>
+        <location filename="../app/sightline/option_texts.cpp" line="481"/>
         <source>With serve: give up waiting for clients after this long.</source>
         <translation>Con serve: smettere di attendere i client dopo questo tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="481"/>
+        <location filename="../app/sightline/option_texts.cpp" line="482"/>
         <source>With serve: keep serving this long after the last frame so queued targets go out.</source>
         <translation>Con serve: continuare a servire per questo tempo dopo l&apos;ultimo fotogramma, così i target in coda vengono inviati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="482"/>
+        <location filename="../app/sightline/option_texts.cpp" line="483"/>
         <source>With serve: wait for this many connected clients before the first frame.</source>
         <translation>Con serve: attendere questo numero di client connessi prima del primo fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="483"/>
+        <location filename="../app/sightline/option_texts.cpp" line="484"/>
         <source>Without a reference: lines within this of the best-supported direction (modulo 90 deg) vote.</source>
         <translation>Senza riferimento: votano le linee entro questo valore dalla direzione meglio supportata (modulo 90 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="484"/>
+        <location filename="../app/sightline/option_texts.cpp" line="485"/>
         <source>Workspace box, base x max.</source>
         <translation>Box dello spazio di lavoro, base x max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="485"/>
+        <location filename="../app/sightline/option_texts.cpp" line="486"/>
         <source>Workspace box, base x min.</source>
         <translation>Box dello spazio di lavoro, base x min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="486"/>
+        <location filename="../app/sightline/option_texts.cpp" line="487"/>
         <source>Workspace box, base y max.</source>
         <translation>Box dello spazio di lavoro, base y max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="487"/>
+        <location filename="../app/sightline/option_texts.cpp" line="488"/>
         <source>Workspace box, base y min.</source>
         <translation>Box dello spazio di lavoro, base y min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="488"/>
+        <location filename="../app/sightline/option_texts.cpp" line="489"/>
         <source>Workspace box, base z max.</source>
         <translation>Box dello spazio di lavoro, base z max.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="489"/>
+        <location filename="../app/sightline/option_texts.cpp" line="490"/>
         <source>Workspace box, base z min.</source>
         <translation>Box dello spazio di lavoro, base z min.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="490"/>
+        <location filename="../app/sightline/option_texts.cpp" line="491"/>
         <source>Write the projection and top-view PNGs per frame.</source>
         <translation>Scrivere per fotogramma i PNG della proiezione e della vista dall&apos;alto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="491"/>
+        <location filename="../app/sightline/option_texts.cpp" line="492"/>
         <source>accuracy.wall_recall: a true wall is visible in a frame when at least this much of it is in view ...</source>
         <translation>accuracy.wall_recall: un muro vero è visibile in un fotogramma quando almeno questa parte di esso è inquadrata ...</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="492"/>
+        <location filename="../app/sightline/option_texts.cpp" line="493"/>
         <source>arm_pose messages closer than 1/this in the arm&apos;s time are dropped (counted).</source>
         <translation>I messaggi arm_pose più vicini di 1/questo valore nel tempo del braccio vengono scartati (contati).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="493"/>
+        <location filename="../app/sightline/option_texts.cpp" line="494"/>
         <source>arm_pose messages older than this behind the newest are forgotten.</source>
         <translation>I messaggi arm_pose più indietro di così rispetto al più recente vengono dimenticati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="494"/>
+        <location filename="../app/sightline/option_texts.cpp" line="495"/>
         <source>arm_poses.txt (base_from_end_effector, TUM); empty = beside the sensor folder.</source>
         <translation>arm_poses.txt (base_from_end_effector, TUM); vuoto = accanto alla cartella del sensore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="495"/>
+        <location filename="../app/sightline/option_texts.cpp" line="496"/>
         <source>custom platform: a segment raised more than this above the ground scores 0.</source>
         <translation>Piattaforma custom: un segmento rialzato più di così sopra il suolo ha punteggio 0.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="496"/>
+        <location filename="../app/sightline/option_texts.cpp" line="497"/>
         <source>custom platform: points farther from the sensor are dropped.</source>
         <translation>Piattaforma custom: i punti più lontani dal sensore vengono scartati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="497"/>
+        <location filename="../app/sightline/option_texts.cpp" line="498"/>
         <source>delaunay: triangles with an edge longer than this many cells are dropped.</source>
         <translation>delaunay: i triangoli con un lato più lungo di questo numero di celle vengono scartati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="503"/>
+        <location filename="../app/sightline/option_texts.cpp" line="504"/>
         <source>depth: a person&apos;s top lies at least this many footprint lengths above the floor (a desk, a table or a sofa is wider than it is tall).</source>
         <translation>depth: la sommità di una persona è almeno a questo multiplo della lunghezza dell&apos;impronta sopra il pavimento (una scrivania, un tavolo o un divano è più largo che alto).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="509"/>
+        <location filename="../app/sightline/option_texts.cpp" line="510"/>
         <source>depth: the HOG score a cluster&apos;s box needs when it touches the image&apos;s border (a body cut off scores lower).</source>
         <translation>depth: il punteggio HOG che il riquadro di un cluster deve raggiungere quando tocca il bordo dell&apos;immagine (un corpo tagliato ottiene un punteggio più basso).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="510"/>
+        <location filename="../app/sightline/option_texts.cpp" line="511"/>
         <source>depth: the HOG score a cluster&apos;s box needs when the whole box is in view.</source>
         <translation>depth: il punteggio HOG che il riquadro di un cluster deve raggiungere quando è interamente visibile.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="513"/>
+        <location filename="../app/sightline/option_texts.cpp" line="514"/>
         <source>depth: when on, a cluster reaching the image&apos;s top row (its top out of view) is not a person: fewer false people at the edge of view, but people near enough to have their heads cut off are missed.</source>
         <translation>depth: se attivo, un gruppo che raggiunge la prima riga dell&apos;immagine (con la sommità fuori vista) non è una persona: meno persone false al bordo dell&apos;immagine, ma le persone tanto vicine da avere la testa tagliata vengono perse.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="514"/>
+        <location filename="../app/sightline/option_texts.cpp" line="515"/>
         <source>depth: when the colour image is registered to the depth image, OpenCV&apos;s HOG people detector must also score each cluster&apos;s box (a chair or a desk of a person&apos;s size is dropped).</source>
         <translation>depth: se l&apos;immagine a colori è registrata sull&apos;immagine di profondità, anche il rilevatore di persone HOG di OpenCV deve confermare il riquadro di ogni cluster (una sedia o una scrivania delle dimensioni di una persona viene scartata).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="515"/>
+        <location filename="../app/sightline/option_texts.cpp" line="516"/>
         <source>device: pair by camera timestamps (cameras on a common clock, e.g. PTP or a shared trigger); host: pair by arrival time at the host.</source>
         <translation>device: accoppiare per timestamp delle telecamere (telecamere con un orologio comune, ad es. PTP o un trigger condiviso); host: accoppiare per ora di arrivo all&apos;host.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="518"/>
+        <location filename="../app/sightline/option_texts.cpp" line="519"/>
         <source>free: the camera runs on its own clock; software: the host triggers each frame (both cameras of a pair together); hardware: an external pulse on trigger_line.</source>
         <translation>free: la telecamera funziona con il proprio orologio; software: l&apos;host attiva ogni fotogramma (entrambe le telecamere di una coppia insieme); hardware: un impulso esterno su trigger_line.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="519"/>
+        <location filename="../app/sightline/option_texts.cpp" line="520"/>
         <source>grid: every n-th pixel in both directions (stands in for the voxel grid).</source>
         <translation>grid: un pixel ogni n in entrambe le direzioni (al posto della griglia di voxel).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="520"/>
+        <location filename="../app/sightline/option_texts.cpp" line="521"/>
         <source>grid: grid neighbours whose depths differ by more than this fraction are apart.</source>
         <translation>grid: i vicini nella griglia le cui profondità differiscono di più di questa frazione sono separati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="521"/>
+        <location filename="../app/sightline/option_texts.cpp" line="522"/>
         <source>grid: half-width of the window of grid points each normal is fitted to.</source>
         <translation>grid: semi-larghezza della finestra di punti della griglia a cui si adatta ogni normale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="523"/>
+        <location filename="../app/sightline/option_texts.cpp" line="524"/>
         <source>hand_eye.yaml (end_effector_from_camera); empty = beside arm_poses (for arm_stream: beside the images); none = identity.</source>
         <translation>hand_eye.yaml (end_effector_from_camera); vuoto = accanto a arm_poses (per arm_stream: accanto alle immagini); none = identità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="524"/>
+        <location filename="../app/sightline/option_texts.cpp" line="525"/>
         <source>i_max (step E): at most this many lines.</source>
         <translation>i_max (passo E): al massimo questo numero di linee.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="526"/>
+        <location filename="../app/sightline/option_texts.cpp" line="527"/>
         <source>multiscale: add Hough circles (round buttons, thin rings).</source>
         <translation>multiscale: aggiungere cerchi di Hough (pulsanti rotondi, anelli sottili).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="527"/>
+        <location filename="../app/sightline/option_texts.cpp" line="528"/>
         <source>multiscale: blur of the second scale, times blur_sigma_px.</source>
         <translation>multiscale: sfocatura della seconda scala, moltiplicata per blur_sigma_px.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="528"/>
+        <location filename="../app/sightline/option_texts.cpp" line="529"/>
         <source>multiscale: half size of the window around the tap that is searched.</source>
         <translation>multiscale: metà della dimensione della finestra attorno al tocco in cui si cerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="529"/>
+        <location filename="../app/sightline/option_texts.cpp" line="530"/>
         <source>multiscale: longest over shortest side of a region&apos;s rotated box.</source>
         <translation>multiscale: rapporto tra il lato più lungo e quello più corto del riquadro ruotato di una regione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="530"/>
+        <location filename="../app/sightline/option_texts.cpp" line="531"/>
         <source>multiscale: regions are ranked by (offset + bias) / radius, so the button&apos;s outline wins over a glyph on it.</source>
         <translation>multiscale: le regioni sono ordinate per (offset + bias) / raggio, così il contorno del pulsante prevale su un simbolo sopra di esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="531"/>
+        <location filename="../app/sightline/option_texts.cpp" line="532"/>
         <source>multiscale: the region&apos;s centroid lies at most this many radii from the tap.</source>
         <translation>multiscale: il baricentro della regione si trova al massimo a questo numero di raggi dal tocco.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="532"/>
+        <location filename="../app/sightline/option_texts.cpp" line="533"/>
         <source>multiscale: the two Canny pairs are the thresholds times 2/(1+s) and 2s/(1+s).</source>
         <translation>multiscale: le due coppie di Canny sono le soglie moltiplicate per 2/(1+s) e 2s/(1+s).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="533"/>
+        <location filename="../app/sightline/option_texts.cpp" line="534"/>
         <source>p of the adaptive count: probability of drawing one all-inlier pair.</source>
         <translation>p del conteggio adattivo: probabilità di estrarre una coppia di soli inlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="534"/>
+        <location filename="../app/sightline/option_texts.cpp" line="535"/>
         <source>pcl: neighbour radius of the region growing.</source>
         <translation>pcl: raggio dei vicini della crescita per regioni.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="535"/>
+        <location filename="../app/sightline/option_texts.cpp" line="536"/>
         <source>pcl: neighbours of the normal fit.</source>
         <translation>pcl: vicini del fit delle normali.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="536"/>
+        <location filename="../app/sightline/option_texts.cpp" line="537"/>
         <source>pcl: neighbours of the outlier removal.</source>
         <translation>pcl: vicini della rimozione degli outlier.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="537"/>
+        <location filename="../app/sightline/option_texts.cpp" line="538"/>
         <source>pcl: voxel grid leaf size.</source>
         <translation>pcl: dimensione delle foglie della griglia di voxel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="538"/>
+        <location filename="../app/sightline/option_texts.cpp" line="539"/>
         <source>ratio_max (step B8): a hypothesis with more inliers than this ends the search.</source>
         <translation>ratio_max (passo B8): un&apos;ipotesi con più inlier di così termina la ricerca.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="539"/>
+        <location filename="../app/sightline/option_texts.cpp" line="540"/>
         <source>ratio_min (steps B5, B6): a line needs this fraction of the remaining points.</source>
         <translation>ratio_min (passi B5, B6): una linea richiede questa frazione dei punti rimanenti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="540"/>
+        <location filename="../app/sightline/option_texts.cpp" line="541"/>
         <source>ratio_scan_max (step E): stop once this fraction of the points lies on lines.</source>
         <translation>ratio_scan_max (passo E): fermarsi quando questa frazione dei punti si trova su linee.</translation>
     </message>

@@ -430,6 +430,7 @@ const char* const kOptionTexts[] = {
     QT_TRANSLATE_NOOP("sightline::OptionText", "The operator's tap is refused when the frame it was made on is older than this (data time) by the time the pipeline takes it."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The operator's tap: X,Y in pixels, optionally @FRAME (frame index, default 0); confirmed at once. sightline-cli run button --tap X,Y[@FRAME] sets it."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The panel plane passes at most this far from the located button: of the surfaces around it (a side wall, a door frame) only the one holding the button gives the push direction."),
+    QT_TRANSLATE_NOOP("sightline::OptionText", "The position's panel plane is fitted robustly to the map points within this many tracked button radii and moved onto the face by its points' median offset; 0 = the plane within radius_px (or the face's own)."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The size from the tap's own keypoints alone (not the refreshed ones, whose scale drifts; the looming in button.triangulate.*) needs this many consistent matches."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The size from the tap's own keypoints only (ButtonTrack::anchor_scale: the keypoints the tracker's refresh adds carry each refresh's scale error on); false: the tracked radius."),
     QT_TRANSLATE_NOOP("sightline::OptionText", "The target is the per-axis median of this many recent base-frame positions (sound plane, converged scale); 0 = every one since the tap, 1 = no fusion."),

@@ -17,6 +17,8 @@ bool ButtonLocatorOptions::IsValid(std::string* error) const {
   if (!(radius_px > 0)) return Invalid(error, "button.locate.radius_px must be > 0");
   if (min_points < 3) return Invalid(error, "button.locate.min_points must be >= 3");
   if (min_face_points < 1) return Invalid(error, "button.locate.min_face_points must be >= 1");
+  if (!(panel_radii >= 0 && panel_radii <= 100))
+    return Invalid(error, "button.locate.panel_radii must lie in [0, 100]");
   if (!(max_face_offset_m > 0))
     return Invalid(error, "button.locate.max_face_offset_m must be > 0");
   if (good_points < min_points)
@@ -42,6 +44,10 @@ OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
               "first; 0 = always use radius_px.")
       .Double("radius_px", &O::radius_px, "px", 1, 2000, 1,
               "Map points projecting within this distance of the button centre are used.")
+      .Double("panel_radii", &O::panel_radii, "radii", 0, 100, 0.5,
+              "The position's panel plane is fitted robustly to the map points within this many "
+              "tracked button radii and moved onto the face by its points' median offset; 0 = "
+              "the plane within radius_px (or the face's own).")
       .Int("min_points", &O::min_points, "", 3, 1000, 1, "Fewer points: no 3D position.")
       .Int("min_face_points", &O::min_face_points, "", 1, 1000, 1,
            "Points on the button's face that move the panel plane onto the face.")
@@ -119,6 +125,53 @@ std::vector<int> RansacPlane(const std::vector<Eigen::Vector3d>& points, const E
   return best;
 }
 
+// The median of `values` (reordered); 0 when empty.
+double Median(std::vector<double>* values) {
+  if (values->empty()) return 0;
+  const auto mid = values->begin() + values->size() / 2;
+  std::nth_element(values->begin(), mid, values->end());
+  return *mid;
+}
+
+// The panel plane over `points`: RANSAC's inliers, then least squares on the points within 2.5
+// robust sigmas (1.4826 x the median absolute distance) until the set settles. A monocular map
+// near the button is noisy by a centimetre (the button lies where the approach gives no
+// parallax), so many points fitted loosely place the plane better than a tight slab of a few.
+// False when fewer than `min_points` points are left.
+bool RobustPanelPlane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& ray,
+                      const ButtonLocatorOptions& o, int min_points, Plane* plane, double* sigma,
+                      int* used) {
+  if (int(points.size()) < min_points) return false;
+  std::vector<Eigen::Vector3d> kept;
+  for (int i : RansacPlane(points, ray, o)) kept.push_back(points[i]);
+  Plane fit = FitPlane(kept);
+  double robust_sigma = 0;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    std::vector<double> distance;
+    distance.reserve(points.size());
+    for (const Eigen::Vector3d& x : points) distance.push_back(fit.Distance(x));
+    std::vector<double> sorted = distance;
+    robust_sigma = std::max(1e-6, 1.4826 * Median(&sorted));
+    std::vector<Eigen::Vector3d> next;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (distance[i] <= 2.5 * robust_sigma) next.push_back(points[i]);
+    }
+    if (int(next.size()) < min_points) return false;
+    const bool settled = next.size() == kept.size();
+    kept = std::move(next);
+    fit = FitPlane(kept);
+    if (settled) break;
+  }
+  if (fit.normal.dot(ray) > 0) {  // Toward the camera: the face's offsets are then positive.
+    fit.normal = -fit.normal;
+    fit.offset = -fit.offset;
+  }
+  *plane = fit;
+  *sigma = robust_sigma;
+  *used = int(kept.size());
+  return true;
+}
+
 }  // namespace
 
 StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const {
@@ -186,6 +239,37 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
     }
   }
 
+  // The position: the panel over panel_radii tracked radii, moved onto the face by the median
+  // offset of the face's points (each is as noisy as the rest: their median, not a plane of
+  // their own). The fit above still judges whether the panel around the button is sound.
+  double offset_sigma = out.plane_rms_m / std::sqrt(double(out.inliers));
+  Plane panel;
+  double panel_sigma = 0;
+  int panel_used = 0;
+  if (options_.panel_radii > 0 && input.button_radius_px > 0 &&
+      RobustPanelPlane(within(options_.panel_radii * input.button_radius_px), ray, options_,
+                       options_.good_points, &panel, &panel_sigma, &panel_used)) {
+    plane = panel;
+    offset_sigma = panel_sigma / std::sqrt(double(panel_used));
+    out.on_button = false;
+    face_sigma = 0;
+    if (int(face.size()) >= options_.min_face_points) {
+      std::vector<double> offset;
+      offset.reserve(face.size());
+      for (const auto& x : face) offset.push_back(plane.normal.dot(x) + plane.offset);
+      const double shift = Median(&offset);
+      std::vector<double> spread;
+      spread.reserve(offset.size());
+      for (double d : offset) spread.push_back(std::abs(d - shift));
+      if (std::abs(shift) <= options_.max_face_offset_m) {
+        plane.offset -= shift;
+        out.on_button = true;
+        // The median's sigma: 1.2533 sigma / sqrt(n) for normal errors.
+        face_sigma = 1.2533 * 1.4826 * Median(&spread) / std::sqrt(double(offset.size()));
+      }
+    }
+  }
+
   const double denom = plane.normal.dot(ray);
   out.incidence_cos = std::abs(denom);
   if (out.incidence_cos < options_.min_incidence_cos) {
@@ -202,8 +286,7 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   out.normal_in_camera = denom < 0 ? plane.normal : -plane.normal;
   out.approach_in_camera = -out.normal_in_camera;
   // Depth error from the fit, spread along the ray by the incidence, plus the scale error.
-  const double fit_sigma =
-      std::hypot(out.plane_rms_m / std::sqrt(double(out.inliers)), face_sigma) / out.incidence_cos;
+  const double fit_sigma = std::hypot(offset_sigma, face_sigma) / out.incidence_cos;
   const double scale_sigma = input.scale_sigma_rel * out.button_in_camera.norm();
   out.uncertainty_m = std::hypot(fit_sigma, scale_sigma);
   out.plane_sound = out.inliers >= options_.good_points &&

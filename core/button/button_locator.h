@@ -1,7 +1,9 @@
 // The button's 3D position from the map (the seed's interaction phase): map points whose
 // projection lies near the tracked button centre, a plane through them (RANSAC, then least
-// squares on the inliers), the viewing ray through the button centre intersected with that
-// plane, and the plane normal as the approach direction.
+// squares on the inliers) that judges whether the panel there is sound, the panel plane over a
+// wider disc (panel_radii tracked radii, a robust fit) moved onto the button's face by its
+// points' median offset, the viewing ray through the button centre intersected with that plane,
+// and the plane normal as the approach direction.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -20,6 +22,9 @@ struct ButtonLocatorOptions {
                                       // the button's face; 0 = ignore the face.
   double radius_px = 60;              // The panel around the button: points projecting within
                                       // this of the centre [px].
+  double panel_radii = 6;             // The position's plane: a robust fit to the map points
+                                      // within this many tracked radii, moved onto the face by
+                                      // the face points' median offset; 0 = the plane above.
   int min_points = 3;                 // Fewer points near the button: no position.
   int good_points = 6;                // Points for a sound fit (fewer: plane_sound = false); this
                                       // many on the face: the face's own plane is fitted.

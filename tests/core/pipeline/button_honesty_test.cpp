@@ -113,30 +113,32 @@ void ExpectWithin(int seed, double final_mm, double approach_deg) {
   EXPECT_GE(m.at("position_within_2_sigma"), 0.9) << "seed " << seed;
 }
 
-// The goal's final error is not met yet (measured 2026-11-27, final error / approach max: seed
-// 1 1.33 mm / 0.74 deg, 2 6.35 / 1.06, 3 3.88 / 0.48, 4 2.20 / 0.72, 5 10.1 / 2.90; held out
-// 6 1.69 / 0.98, 7 3.98 / 0.98): the error lies along the push, from the depth the map gives the
-// button (the true scale and the true centre leave 4.5-15.5 mm,
-// accuracy.final_error_mm_true_scale_true_centre; docs/button.md). The arm's triangulation
-// (button.triangulate.enabled) does not meet it either. The approach part (< 5 deg) is met since
-// the panel plane takes the map points within 45 cm of the button (before, within 20 cm: seeds
-// 4, 5 and 7 at 7.7, 6.6 and 8.2 deg) and is asserted below.
+// The goal's final error is not met on every seed yet (measured 2026-11-27 with the panel plane
+// over six button radii, final error / approach max: seed 1 2.73 mm / 1.81 deg, 2 1.42 / 0.53,
+// 3 1.67 / 0.64, 4 2.78 / 0.96, 5 2.63 / 0.68; held out 6 6.20 / 1.54, 7 3.43 / 1.43): the error
+// lies along the push, from the depth the map gives the button's face (its points are a
+// centimetre off: the button lies where the approach gives no parallax; docs/button.md). The
+// approach part (< 5 deg) is met since the panel plane takes the map points within 45 cm of the
+// button (before, within 20 cm: seeds 4, 5 and 7 at 7.7, 6.6 and 8.2 deg) and is asserted below.
 TEST(ButtonHonesty, DISABLED_FinalErrorUnderThreeMillimetresAndApproachUnderFiveDegrees) {
   for (int seed : {1, 2, 3, 4, 5, 6, 7}) ExpectWithin(seed, 3.0, 5.0);
 }
 
 // What holds today, so that nothing gets worse: the final error within its measured bound with
-// a margin, the approach within the goal's 5 deg, and the stated position uncertainty covering
-// the true error on every seed.
+// a margin (seeds 1-5 at most 2.78 mm; before the panel plane over six button radii 1.33-8.72
+// mm), the approach within the goal's 5 deg, and the stated position uncertainty covering the
+// true error on every seed.
 TEST(ButtonHonesty, FiguresOnFiveSeedsStayWithinTheirMeasuredBounds) {
-  for (int seed : {1, 2, 3, 4, 5}) ExpectWithin(seed, 12.0, 5.0);
+  for (int seed : {1, 2, 3, 4, 5}) ExpectWithin(seed, 4.0, 5.0);
 }
 
 // Seeds 6 and 7 were held out of the position's estimation. The panel plane's 45 cm was chosen on
 // seeds 1-7 (0.35 and 0.6 m gave 3.22 and 3.15 deg at worst there); seeds 11 and 12, not run
 // before the choice, gave 0.67 and 0.62 deg (9 and 10: 0.80 and 1.44).
+// The panel plane over six button radii was chosen on seeds 1-10 (6.20 and 3.43 mm here; before
+// 1.69 and 3.98 mm).
 TEST(ButtonHonesty, HeldOutSeedsStayWithinTheSameBounds) {
-  for (int seed : {6, 7}) ExpectWithin(seed, 12.0, 5.0);
+  for (int seed : {6, 7}) ExpectWithin(seed, 8.0, 5.0);
 }
 
 // The button triangulated from the arm's poses and combined with the map's position
