@@ -223,49 +223,40 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
   for (const auto& x : inliers) sum2 += std::pow(plane.Distance(x), 2);
   out.inliers = int(inliers.size());
   out.plane_rms_m = std::sqrt(sum2 / out.inliers);
-  out.on_button = face_alone;
-  double face_sigma = 0;
-  if (!face_alone && int(face.size()) >= options_.min_face_points) {
-    std::vector<double> signed_distance;
-    signed_distance.reserve(face.size());
-    for (const auto& x : face) signed_distance.push_back(plane.normal.dot(x) + plane.offset);
-    std::nth_element(signed_distance.begin(), signed_distance.begin() + signed_distance.size() / 2,
-                     signed_distance.end());
-    const double shift = signed_distance[signed_distance.size() / 2];
-    if (std::abs(shift) <= options_.max_face_offset_m) {
-      plane.offset -= shift;
-      out.on_button = true;
-      face_sigma = out.plane_rms_m / std::sqrt(double(face.size()));
-    }
-  }
-
-  // The position: the panel over panel_radii tracked radii, moved onto the face by the median
-  // offset of the face's points (each is as noisy as the rest: their median, not a plane of
-  // their own). The fit above still judges whether the panel around the button is sound.
+  // The position's plane: the panel over panel_radii tracked radii (each face point is as noisy
+  // as the rest: their median moves it onto the face, they make no plane of their own); else the
+  // fit above. That fit still judges whether the panel around the button is sound.
   double offset_sigma = out.plane_rms_m / std::sqrt(double(out.inliers));
   Plane panel;
   double panel_sigma = 0;
   int panel_used = 0;
-  if (options_.panel_radii > 0 && input.button_radius_px > 0 &&
+  const bool wide =
+      options_.panel_radii > 0 && input.button_radius_px > 0 &&
       RobustPanelPlane(within(options_.panel_radii * input.button_radius_px), ray, options_,
-                       options_.good_points, &panel, &panel_sigma, &panel_used)) {
+                       options_.good_points, &panel, &panel_sigma, &panel_used);
+  if (wide) {
     plane = panel;
     offset_sigma = panel_sigma / std::sqrt(double(panel_used));
-    out.on_button = false;
-    face_sigma = 0;
-    if (int(face.size()) >= options_.min_face_points) {
-      std::vector<double> offset;
-      offset.reserve(face.size());
-      for (const auto& x : face) offset.push_back(plane.normal.dot(x) + plane.offset);
-      const double shift = Median(&offset);
-      std::vector<double> spread;
-      spread.reserve(offset.size());
-      for (double d : offset) spread.push_back(std::abs(d - shift));
-      if (std::abs(shift) <= options_.max_face_offset_m) {
-        plane.offset -= shift;
-        out.on_button = true;
+  }
+  out.on_button = face_alone && !wide;
+  double face_sigma = 0;
+  if ((wide || !face_alone) && int(face.size()) >= options_.min_face_points) {
+    std::vector<double> offset;
+    offset.reserve(face.size());
+    for (const auto& x : face) offset.push_back(plane.normal.dot(x) + plane.offset);
+    const double shift = Median(&offset);
+    if (std::abs(shift) <= options_.max_face_offset_m) {
+      plane.offset -= shift;
+      out.on_button = true;
+      const double n = double(offset.size());
+      if (wide) {
+        std::vector<double> spread;
+        spread.reserve(offset.size());
+        for (double d : offset) spread.push_back(std::abs(d - shift));
         // The median's sigma: 1.2533 sigma / sqrt(n) for normal errors.
-        face_sigma = 1.2533 * 1.4826 * Median(&spread) / std::sqrt(double(offset.size()));
+        face_sigma = 1.2533 * 1.4826 * Median(&spread) / std::sqrt(n);
+      } else {
+        face_sigma = out.plane_rms_m / std::sqrt(n);
       }
     }
   }
