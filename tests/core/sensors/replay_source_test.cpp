@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <thread>
 
 #include "core/io/dataset.h"
 #include "core/sensors/driver_registry.h"
@@ -84,11 +85,15 @@ TEST(ReplaySource, ASlowConsumerLosesTheOldestFramesAndTheyAreCounted) {
   SIGHTLINE_REQUIRE_DATA(tum, "tum_fr1_desk");
   ReplaySource camera(tum, Options(500, false, 2));
   ASSERT_TRUE(camera.Open().ok());
-  // Grab nothing until the whole recording has been captured (bounded wait).
+  // Grab nothing until the whole recording has been captured and queued (bounded wait): a frame
+  // is counted as received before it is queued, so wait for the queue's seventh drop too.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (camera.stats().frames_received < 9 && std::chrono::steady_clock::now() < deadline) {
+  while ((camera.stats().frames_received < 9 || camera.stats().frames_dropped < 7) &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   ASSERT_EQ(camera.stats().frames_received, 9u);
+  ASSERT_EQ(camera.stats().frames_dropped, 7u);
   ASSERT_TRUE(camera.Grab().ok());
   EXPECT_EQ(std::get<RgbdFrame>(*camera.Retrieve()).stamp.sequence_id, 7) << "the newest two";
   ASSERT_TRUE(camera.Grab().ok());
