@@ -21,6 +21,8 @@ bool ButtonLocatorOptions::IsValid(std::string* error) const {
     return Invalid(error, "button.locate.panel_radii must lie in [0, 100]");
   if (!(max_face_offset_m > 0))
     return Invalid(error, "button.locate.max_face_offset_m must be > 0");
+  if (!(face_clip_sigmas >= 0 && face_clip_sigmas <= 100))
+    return Invalid(error, "button.locate.face_clip_sigmas must lie in [0, 100]");
   if (good_points < min_points)
     return Invalid(error, "button.locate.good_points must be >= min_points");
   if (ransac_iterations < 1) return Invalid(error, "button.locate.ransac_iterations must be >= 1");
@@ -53,6 +55,10 @@ OptionTable<ButtonLocatorOptions> ButtonLocatorOptions::Describe() {
            "Points on the button's face that move the panel plane onto the face.")
       .Double("max_face_offset_m", &O::max_face_offset_m, "m", 0.001, 0.2, 0.001,
               "Larger median offset of the face points from the panel plane is not applied.")
+      .Double("face_clip_sigmas", &O::face_clip_sigmas, "sigmas", 0, 100, 0.1,
+              "The face's offset from the panel plane is the median of its points within this "
+              "many robust sigmas of that median, until the set settles (points triangulated "
+              "with little parallax leave a one-sided tail); 0 = the median of all.")
       .Int("good_points", &O::good_points, "", 3, 1000, 1,
            "Fewer points than this: the plane is not sound (no target is sent).")
       .Int("ransac_iterations", &O::ransac_iterations, "", 1, 100000, 10,
@@ -131,6 +137,34 @@ double Median(std::vector<double>* values) {
   const auto mid = values->begin() + values->size() / 2;
   std::nth_element(values->begin(), mid, values->end());
   return *mid;
+}
+
+// The median of the `values` within `clip` robust sigmas (1.4826 x their median absolute
+// deviation) of it, repeated until the kept set settles; `clip` 0 = the plain
+// median. Monocular map points seen with little parallax scatter far to one side of a surface,
+// which drags the plain median of a few dozen points by millimetres.
+double ClippedMedian(const std::vector<double>& values, double clip) {
+  std::vector<double> all = values;
+  double centre = Median(&all);
+  size_t kept_before = values.size();
+  for (int iteration = 0; clip > 0 && iteration < 20; ++iteration) {
+    std::vector<double> deviation;
+    deviation.reserve(values.size());
+    for (double v : values) deviation.push_back(std::abs(v - centre));
+    const double bound = clip * 1.4826 * Median(&deviation);
+    std::vector<double> kept;
+    kept.reserve(values.size());
+    for (double v : values) {
+      if (std::abs(v - centre) <= bound) kept.push_back(v);
+    }
+    if (kept.size() < 3) break;
+    const double next = Median(&kept);
+    const bool settled = kept.size() == kept_before && next == centre;
+    kept_before = kept.size();
+    centre = next;
+    if (settled) break;
+  }
+  return centre;
 }
 
 // The panel plane over `points`: RANSAC's inliers, then least squares on the points within 2.5
@@ -244,7 +278,7 @@ StatusOr<ButtonLocation> ButtonLocator::Locate(const LocatorInput& input) const 
     std::vector<double> offset;
     offset.reserve(face.size());
     for (const auto& x : face) offset.push_back(plane.normal.dot(x) + plane.offset);
-    const double shift = Median(&offset);
+    const double shift = ClippedMedian(offset, options_.face_clip_sigmas);
     if (std::abs(shift) <= options_.max_face_offset_m) {
       plane.offset -= shift;
       out.on_button = true;

@@ -31,6 +31,9 @@ struct ButtonLocatorOptions {
   int min_face_points = 3;            // Else this many face points move the panel plane onto the
                                       // face (median offset; buttons stand out of their plate).
   double max_face_offset_m = 0.03;    // Larger median face offsets are not applied [m].
+  double face_clip_sigmas = 2.5;      // The face offset: the median of the points within this
+                                      // many robust sigmas of it, until they settle; 0 = the
+                                      // median of all (a tail of bad points drags it).
   int ransac_iterations = 200;        // Plane RANSAC hypotheses.
   double ransac_threshold_m = 0.004;  // Plane inlier distance [m].
   double max_plane_rms_m = 0.004;     // Inlier RMS above this: plane not sound [m].

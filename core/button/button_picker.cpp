@@ -11,6 +11,9 @@ namespace sightline {
 
 bool ButtonFuseOptions::IsValid(std::string* error) const {
   if (window < 0) return button_internal::Invalid(error, "button.fuse.window must be >= 0");
+  if (!(weigh_below_m >= 0 && weigh_below_m <= 1)) {
+    return button_internal::Invalid(error, "button.fuse.weigh_below_m must lie in [0, 1] m");
+  }
   return true;
 }
 
@@ -23,9 +26,12 @@ OptionTable<ButtonFuseOptions> ButtonFuseOptions::Describe() {
       .Bool("rescale", &O::rescale,
             "Place every kept position again with the newest metric scale (kept in map units).")
       .Bool("weighted", &O::weighted,
-            "Weigh each position by 1 / its own variance (plane fit and tracked centre, growing "
-            "with the distance): the near frames of the approach count most. Off by default: "
-            "measured worse on the simulated approaches (docs/button.md).");
+            "Always weigh each position by 1 / its own variance (plane fit, tracked centre and "
+            "scale, growing with the distance): the near frames of the approach count most.")
+      .Double("weigh_below_m", &O::weigh_below_m, "m", 0, 1, 0.0005,
+              "Weigh them so once one position states a 1-sigma of at most this (the arm has "
+              "come close; far positions then carry the newest scale's error times their "
+              "distance); 0 = only with weighted (docs/button.md).");
 }
 
 bool ButtonUncertaintyOptions::IsValid(std::string* error) const {
@@ -191,7 +197,7 @@ void ButtonPicker::FuseWith(const SlamView& slam, const ButtonLocation& at,
   fused_.push_back(e);
   const ButtonFuseOptions& o = options_.fuse;
   const FusedPosition fused =
-      FusePositions(fused_, o.window, o.rescale ? slam.lambda : 0.0, o.weighted);
+      FusePositions(fused_, o.window, o.rescale ? slam.lambda : 0.0, o.weighted, o.weigh_below_m);
   out->button_in_base = fused.in_base;
   out->fused_estimates = fused.estimates;
   fused_spread_m_ = fused.spread_m;

@@ -34,6 +34,7 @@ struct ButtonFuseOptions {
   int window = 0;  // Recent estimates in the median; 0 = every one since the tap, 1 = no fusion.
   bool rescale = true;    // Place every kept estimate again with the newest scale.
   bool weighted = false;  // Weigh the estimates by 1 / their own variance (near frames most).
+  double weigh_below_m = 0.003;  // ... and so from the first estimate this sure on [m]; 0 = off.
 
   bool IsValid(std::string* error) const;
   static OptionTable<ButtonFuseOptions> Describe();

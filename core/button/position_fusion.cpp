@@ -24,19 +24,28 @@ double WeightedMedian(std::vector<std::pair<double, double>> values) {
 }  // namespace
 
 FusedPosition FusePositions(const std::vector<FusedEstimate>& estimates, int window, double lambda,
-                            bool weighted) {
+                            bool weighted, double weigh_below_m) {
   FusedPosition out;
   const size_t n = window > 0 ? std::min(estimates.size(), size_t(window)) : estimates.size();
   if (n == 0) return out;
   std::vector<Eigen::Vector3d> positions;
-  std::vector<double> weights;
+  std::vector<double> sigmas;
   for (size_t i = estimates.size() - n; i < estimates.size(); ++i) {
     const FusedEstimate& e = estimates[i];
     const double l = lambda > 0 ? lambda : e.lambda;
     positions.push_back(e.base_from_camera * (e.in_camera_map / l));
-    const double sigma = e.sigma_m * e.lambda / l;
-    weights.push_back(weighted && sigma > 0 ? 1.0 / (sigma * sigma) : 1.0);
+    sigmas.push_back(e.sigma_m * e.lambda / l);
   }
+  // Weighing pays once the arm has come close enough that its estimates are sure to a few
+  // millimetres: far ones, each placed again with the newest scale, then carry that scale's error
+  // times their distance and a map refined since. Before, the near estimates are hardly better
+  // than the rest and the plain median of all is the safer guide.
+  bool weigh = weighted;
+  for (double sigma : sigmas)
+    weigh = weigh || (weigh_below_m > 0 && sigma > 0 && sigma <= weigh_below_m);
+  std::vector<double> weights;
+  for (double sigma : sigmas) weights.push_back(weigh && sigma > 0 ? 1.0 / (sigma * sigma) : 1.0);
+  out.weighted = weigh;
   for (int k = 0; k < 3; ++k) {
     std::vector<std::pair<double, double>> axis;
     for (size_t i = 0; i < n; ++i) axis.emplace_back(positions[i][k], weights[i]);

@@ -25,12 +25,14 @@ struct FusedPosition {
   Eigen::Vector3d in_base = Eigen::Vector3d::Constant(std::nan(""));
   double spread_m = 0;  // 1.4826 x the weighted median distance of the estimates from it.
   int estimates = 0;
+  bool weighted = false;  // The estimates were weighed by their own variance.
 };
 
 // The last `window` estimates (0 = all) placed in the base frame with the scale `lambda` (map
 // units per metre; 0 = each with its own), fused by the per-axis weighted median with weights
-// 1 / sigma^2 (`weighted`; else all equal).
+// 1 / sigma^2 when `weighted` or when one of them states a sigma of at most `weigh_below_m`
+// (> 0); else all count the same.
 FusedPosition FusePositions(const std::vector<FusedEstimate>& estimates, int window, double lambda,
-                            bool weighted);
+                            bool weighted, double weigh_below_m = 0);
 
 }  // namespace sightline

@@ -68,7 +68,9 @@ std::optional<Eigen::Vector3d> RelocatedTarget(const ButtonRunLog& log, double l
     estimates.push_back(e);
   }
   if (estimates.empty()) return std::nullopt;
-  return FusePositions(estimates, picker.fuse.window, lambda, picker.fuse.weighted).in_base;
+  return FusePositions(estimates, picker.fuse.window, lambda, picker.fuse.weighted,
+                       picker.fuse.weigh_below_m)
+      .in_base;
 }
 
 // The scale of the sent targets' last map against the recording's true camera poses (map units

@@ -103,12 +103,14 @@ Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& 
   // anchor_radius_px: the radius from the tap's own keypoints (ButtonTrack::anchor_scale); the
   // host timings stay the last columns.
   // *_m: metres (empty as nan without a metric scale); *_map_units: the SLAM's map frame,
-  // unscaled (metric_scale = 0: tracking only, no arm motion).
+  // unscaled (metric_scale = 0: tracking only, no arm motion). approach_*: the push direction
+  // in the arm's base frame and its 1-sigma (nan before the first panel normal).
   out << "frame,time_s,state,gate,u_px,v_px,radius_px,confidence,cam_x_m,cam_y_m,cam_z_m,"
          "base_x_m,base_y_m,base_z_m,uncertainty_m,plane_sound,target_sent,slam_tracking,"
          "scale_converged,scale_ml,metric_scale,button_x_map_units,button_y_map_units,"
          "button_z_map_units,camera_x_map_units,camera_y_map_units,camera_z_map_units,"
-         "anchor_radius_px,tracking_ms,slam_ms\n";
+         "anchor_radius_px,approach_x,approach_y,approach_z,approach_sigma_deg,tracking_ms,"
+         "slam_ms\n";
   const double nan = std::nan("");
   char line[768];
   for (const ButtonRunRow& r : rows) {
@@ -118,20 +120,24 @@ Status WriteButtonCsv(const std::vector<ButtonRunRow>& rows, const std::string& 
         p.location && r.metric ? p.location->button_in_camera : Eigen::Vector3d::Constant(nan);
     const Eigen::Vector3d base = r.metric ? p.button_in_base : Eigen::Vector3d::Constant(nan);
     const double uncertainty = p.location && r.metric ? p.location->uncertainty_m : nan;
+    const bool has_approach = r.metric && p.approach_in_base.allFinite();
+    const Eigen::Vector3d approach =
+        has_approach ? p.approach_in_base : Eigen::Vector3d::Constant(nan);
+    const double approach_sigma = has_approach ? p.approach_sigma_deg : nan;
     const Eigen::Vector3d& b = r.button_in_map;
     const Eigen::Vector3d& c = r.camera_in_map;
     std::snprintf(line, sizeof(line),
                   "%lld,%.6f,%s,%s,%.2f,%.2f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%d,%d,"
                   "%d,%.6g,%d,"
-                  "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.3f,%.3f\n",
+                  "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.6f,%.6f,%.6f,%.3f,%.3f,%.3f\n",
                   static_cast<long long>(p.frame_id), p.stamp_s, PickerStateKey(p.state),
                   GateReasonKey(p.verdict.reason), found ? p.track.center.x : nan,
                   found ? p.track.center.y : nan, found ? p.track.radius_px : nan,
                   p.track.confidence, cam.x(), cam.y(), cam.z(), base.x(), base.y(), base.z(),
                   uncertainty, p.location && p.location->plane_sound ? 1 : 0, p.target ? 1 : 0,
                   r.slam_tracking ? 1 : 0, r.scale_converged ? 1 : 0, r.lambda_ml, r.metric ? 1 : 0,
-                  b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), AnchorRadiusPx(p.track), p.tracking_ms,
-                  r.slam_ms);
+                  b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), AnchorRadiusPx(p.track), approach.x(),
+                  approach.y(), approach.z(), approach_sigma, p.tracking_ms, r.slam_ms);
     out << line;
   }
   out.flush();
