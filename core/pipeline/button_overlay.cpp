@@ -92,6 +92,7 @@ ButtonOverlayWriter::ButtonOverlayWriter(ButtonOverlayOptions options)
     : options_(options), temp_dir_(MakeTempDir()) {}
 
 ButtonOverlayWriter::~ButtonOverlayWriter() {
+  video_.release();
   std::error_code ec;
   if (!temp_dir_.empty()) fs::remove_all(temp_dir_, ec);
 }
@@ -105,12 +106,29 @@ Status ButtonOverlayWriter::Add(const cv::Mat& image, int64_t frame_id, const Bu
   char name[64];
   std::snprintf(name, sizeof(name), "frame_%06lld.png", static_cast<long long>(frame_id));
   const std::string path = (fs::path(temp_dir_) / name).string();
-  if (!cv::imwrite(path, DrawButtonOverlay(image, track, trail_, caption))) {
-    return Unavailable("cannot write the overlay frame " + path);
-  }
+  const cv::Mat drawn = DrawButtonOverlay(image, track, trail_, caption);
+  if (!cv::imwrite(path, drawn)) return Unavailable("cannot write the overlay frame " + path);
   names_.push_back(name);
   ++frames_;
+  if (options_.video) AddToVideo(drawn);
   return Status::Ok();
+}
+
+void ButtonOverlayWriter::AddToVideo(const cv::Mat& drawn) {
+  if (!video_note_.empty()) return;
+  if (!video_.isOpened()) {
+    const std::string path = (fs::path(temp_dir_) / "overlay.avi").string();
+    video_size_ = drawn.size();
+    if (!video_.open(path, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                     options_.video_fps, video_size_)) {
+      video_note_ = "overlay.avi not written: OpenCV's MJPEG writer did not open " + path;
+      return;
+    }
+  }
+  cv::Mat frame = drawn;
+  if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
+  if (frame.size() != video_size_) cv::resize(frame, frame, video_size_);
+  video_.write(frame);
 }
 
 Status ButtonOverlayWriter::Finish(const std::string& out_dir, std::vector<std::string>* outputs,
@@ -131,30 +149,19 @@ Status ButtonOverlayWriter::Finish(const std::string& out_dir, std::vector<std::
     }
   }
   outputs->push_back("overlay/");
-  if (options_.video) return WriteVideo(out_dir, outputs, notes);
-  return Status::Ok();
-}
-
-Status ButtonOverlayWriter::WriteVideo(const std::string& out_dir,
-                                       std::vector<std::string>* outputs,
-                                       std::vector<std::string>* notes) const {
-  const fs::path dir = fs::path(out_dir) / "overlay";
-  const cv::Mat first = cv::imread((dir / names_.front()).string(), cv::IMREAD_COLOR);
-  const std::string path = (fs::path(out_dir) / "overlay.avi").string();
-  cv::VideoWriter video;
-  if (first.empty() ||
-      !video.open(path, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
-                  options_.video_fps, first.size())) {
-    notes->push_back("overlay.avi not written: OpenCV's MJPEG writer did not open " + path +
-                     " (the PNG sequence is in overlay/)");
+  if (!options_.video) return Status::Ok();
+  if (!video_.isOpened()) {
+    notes->push_back(video_note_ + " (the PNG sequence is in overlay/)");
     return Status::Ok();
   }
-  for (const std::string& name : names_) {
-    cv::Mat frame = cv::imread((dir / name).string(), cv::IMREAD_COLOR);
-    if (frame.size() != first.size()) cv::resize(frame, frame, first.size());
-    video.write(frame);
+  video_.release();
+  const fs::path from = fs::path(temp_dir_) / "overlay.avi", to = fs::path(out_dir) / "overlay.avi";
+  fs::rename(from, to, ec);
+  if (ec) {  // Another file system: copy.
+    ec.clear();
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
+    if (ec) return Unavailable("cannot write " + to.string() + ": " + ec.message());
   }
-  video.release();
   outputs->push_back("overlay.avi");
   return Status::Ok();
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <deque>
 #include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,10 @@ cv::Mat DrawButtonOverlay(const cv::Mat& image, const ButtonTrack& track,
                           const std::deque<cv::Point2d>& trail,
                           const std::vector<std::string>& caption);
 
-// Writes the overlay frames into a private temporary folder while the run goes on (the output
-// folder is known only at the end) and moves them into place on Finish. Not thread-safe.
+// Writes the overlay frames (and the video, frame by frame) into a private temporary folder while
+// the run goes on (the output folder is known only at the end) and moves them into place on
+// Finish, which therefore takes no longer after a long live run than after a short one. Not
+// thread-safe.
 class ButtonOverlayWriter {
  public:
   explicit ButtonOverlayWriter(ButtonOverlayOptions options);
@@ -44,20 +47,23 @@ class ButtonOverlayWriter {
   Status Add(const cv::Mat& image, int64_t frame_id, const ButtonTrack& track,
              const std::vector<std::string>& caption);
   int64_t frames() const { return frames_; }
-  // Moves the PNGs to out_dir/overlay/ and writes out_dir/overlay.avi; `outputs` gets the
+  // Moves the PNGs to out_dir/overlay/ and the video to out_dir/overlay.avi; `outputs` gets the
   // names written, `notes` says why the video is missing when it is.
   Status Finish(const std::string& out_dir, std::vector<std::string>* outputs,
                 std::vector<std::string>* notes);
 
  private:
-  Status WriteVideo(const std::string& out_dir, std::vector<std::string>* outputs,
-                    std::vector<std::string>* notes) const;
+  // Appends `drawn` to the video in the temporary folder, opening it on the first frame.
+  void AddToVideo(const cv::Mat& drawn);
 
   ButtonOverlayOptions options_;
   std::string temp_dir_;
   std::vector<std::string> names_;  // PNG file names, in order.
   std::deque<cv::Point2d> trail_;
   int64_t frames_ = 0;
+  cv::VideoWriter video_;
+  cv::Size video_size_;
+  std::string video_note_;  // Why there is no video (the writer did not open).
 };
 
 }  // namespace sightline

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <sstream>
 #include <thread>
 
@@ -178,11 +180,25 @@ TEST_F(ButtonTrackingOnly, PlainFramesAreTrackedAndLocatedUpToScaleWithoutATarge
 
   // The overlay: one PNG per row of button.csv.
   int pngs = 0;
+  std::string first_png;
   for (const fs::directory_entry& e : fs::directory_iterator(out + "/overlay")) {
-    pngs += e.path().extension() == ".png" ? 1 : 0;
+    if (e.path().extension() != ".png") continue;
+    ++pngs;
+    if (first_png.empty() || e.path().filename().string() < first_png) {
+      first_png = e.path().filename().string();
+    }
   }
   EXPECT_EQ(pngs, static_cast<int>(csv.rows));
   EXPECT_NE(std::find(report->result.outputs.begin(), report->result.outputs.end(), "overlay/"),
+            report->result.outputs.end());
+  // The video, written frame by frame during the run: the same frames, in place at the end.
+  cv::VideoCapture video(out + "/overlay.avi", cv::CAP_OPENCV_MJPEG);
+  ASSERT_TRUE(video.isOpened());
+  EXPECT_EQ(static_cast<int>(video.get(cv::CAP_PROP_FRAME_COUNT)), pngs);
+  cv::Mat first;
+  ASSERT_TRUE(video.read(first));
+  EXPECT_EQ(first.cols, cv::imread(out + "/overlay/" + first_png).cols);
+  EXPECT_NE(std::find(report->result.outputs.begin(), report->result.outputs.end(), "overlay.avi"),
             report->result.outputs.end());
 }
 
