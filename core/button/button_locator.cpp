@@ -146,7 +146,7 @@ double Median(std::vector<double>* values) {
 double ClippedMedian(const std::vector<double>& values, double clip) {
   std::vector<double> all = values;
   double centre = Median(&all);
-  size_t kept_before = values.size();
+  // The kept set follows from the centre: the same centre again means it has settled.
   for (int iteration = 0; clip > 0 && iteration < 20; ++iteration) {
     std::vector<double> deviation;
     deviation.reserve(values.size());
@@ -159,10 +159,8 @@ double ClippedMedian(const std::vector<double>& values, double clip) {
     }
     if (kept.size() < 3) break;
     const double next = Median(&kept);
-    const bool settled = kept.size() == kept_before && next == centre;
-    kept_before = kept.size();
+    if (next == centre) break;
     centre = next;
-    if (settled) break;
   }
   return centre;
 }

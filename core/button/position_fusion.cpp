@@ -40,9 +40,10 @@ FusedPosition FusePositions(const std::vector<FusedEstimate>& estimates, int win
   // millimetres: far ones, each placed again with the newest scale, then carry that scale's error
   // times their distance and a map refined since. Before, the near estimates are hardly better
   // than the rest and the plain median of all is the safer guide.
-  bool weigh = weighted;
-  for (double sigma : sigmas)
-    weigh = weigh || (weigh_below_m > 0 && sigma > 0 && sigma <= weigh_below_m);
+  const bool weigh = weighted || (weigh_below_m > 0 &&
+                                  std::any_of(sigmas.begin(), sigmas.end(), [&](double sigma) {
+                                    return sigma > 0 && sigma <= weigh_below_m;
+                                  }));
   std::vector<double> weights;
   for (double sigma : sigmas) weights.push_back(weigh && sigma > 0 ? 1.0 / (sigma * sigma) : 1.0);
   out.weighted = weigh;

@@ -86,6 +86,17 @@ std::string MakeTempDir() {
   return "";
 }
 
+// Moves `from` to `to` (a copy when they lie on different file systems).
+Status MoveFile(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::rename(from, to, ec);
+  if (!ec) return Status::Ok();
+  ec.clear();
+  fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
+  if (ec) return Unavailable("cannot write " + to.string() + ": " + ec.message());
+  return Status::Ok();
+}
+
 }  // namespace
 
 ButtonOverlayWriter::ButtonOverlayWriter(ButtonOverlayOptions options)
@@ -125,8 +136,7 @@ void ButtonOverlayWriter::AddToVideo(const cv::Mat& drawn) {
       return;
     }
   }
-  cv::Mat frame = drawn;
-  if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
+  cv::Mat frame = drawn;  // BGR (DrawButtonOverlay).
   if (frame.size() != video_size_) cv::resize(frame, frame, video_size_);
   video_.write(frame);
 }
@@ -140,13 +150,7 @@ Status ButtonOverlayWriter::Finish(const std::string& out_dir, std::vector<std::
   fs::create_directories(dir, ec);
   if (ec) return Unavailable("cannot create " + dir.string() + ": " + ec.message());
   for (const std::string& name : names_) {
-    const fs::path from = fs::path(temp_dir_) / name, to = dir / name;
-    fs::rename(from, to, ec);
-    if (ec) {  // Another file system: copy.
-      ec.clear();
-      fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
-      if (ec) return Unavailable("cannot write " + to.string() + ": " + ec.message());
-    }
+    SIGHTLINE_RETURN_IF_ERROR(MoveFile(fs::path(temp_dir_) / name, dir / name));
   }
   outputs->push_back("overlay/");
   if (!options_.video) return Status::Ok();
@@ -155,13 +159,8 @@ Status ButtonOverlayWriter::Finish(const std::string& out_dir, std::vector<std::
     return Status::Ok();
   }
   video_.release();
-  const fs::path from = fs::path(temp_dir_) / "overlay.avi", to = fs::path(out_dir) / "overlay.avi";
-  fs::rename(from, to, ec);
-  if (ec) {  // Another file system: copy.
-    ec.clear();
-    fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
-    if (ec) return Unavailable("cannot write " + to.string() + ": " + ec.message());
-  }
+  SIGHTLINE_RETURN_IF_ERROR(
+      MoveFile(fs::path(temp_dir_) / "overlay.avi", fs::path(out_dir) / "overlay.avi"));
   outputs->push_back("overlay.avi");
   return Status::Ok();
 }
