@@ -272,8 +272,16 @@ TEST_F(ArmSimSession, PressesThePublishedTargetOverTcp) {
   ASSERT_TRUE(result.ok()) << result.status().ToString();
   EXPECT_EQ(result->end_reason, "finished");
   EXPECT_GT(result->poses_sent, 100);
-  // The server took the stream: every pose, none refused (wall-clock stamps, in order).
-  EXPECT_EQ(server_->Stats().poses_received + server_->Stats().poses_over_rate, result->poses_sent);
+  // The server took the stream: every pose, none refused (wall-clock stamps, in order). The
+  // server reads the last lines after the arm has hung up: wait for them (bounded).
+  const auto taken = [&] {
+    const auto stats = server_->Stats();
+    return stats.poses_received + stats.poses_over_rate;
+  };
+  for (int i = 0; i < 2500 && taken() < result->poses_sent; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  EXPECT_EQ(taken(), result->poses_sent);
   EXPECT_EQ(server_->Stats().poses_refused, 0) << server_->Stats().last_pose_error;
   EXPECT_NEAR(last_pose_s_.load(), WallClockS(), 60);
   EXPECT_EQ(result->outcome.nearest_button, 5);
