@@ -112,7 +112,7 @@ Status ButtonPicker::Tap(const cv::Mat& still, cv::Point2d tap, int64_t frame_id
   tracker_.reset();
   button_in_world_.reset();
   fused_.clear();
-  panel_normal_.Reset();
+  ResetApproach();
   arm_views_.clear();
   state_ = PickerState::kConfirm;
   return Status::Ok();
@@ -129,7 +129,7 @@ void ButtonPicker::Cancel() {
   tracker_.reset();
   button_in_world_.reset();
   fused_.clear();
-  panel_normal_.Reset();
+  ResetApproach();
   arm_views_.clear();
   if (!stopped_) state_ = PickerState::kIdle;
 }
@@ -203,6 +203,33 @@ void ButtonPicker::FuseWith(const SlamView& slam, const ButtonLocation& at,
   fused_spread_m_ = fused.spread_m;
 }
 
+void ButtonPicker::ResetApproach() {
+  panel_normal_.Reset();
+  arm_plane_.Reset();
+  arm_normal_.Reset();
+}
+
+void ButtonPicker::AddArmPlane(const SlamView& slam, const cv::Mat& image,
+                               const Eigen::Isometry3d& base_from_camera, PickerFrame* out) {
+  if (!options_.normal.arm_motion) return;
+  ArmPlaneView view;
+  view.image = image;
+  view.camera = slam.camera;
+  view.base_from_camera = base_from_camera;
+  view.button_px = {out->track.center.x, out->track.center.y};
+  const double focal = 0.5 * (slam.camera.fx + slam.camera.fy);
+  // The panel around the button at its last located depth; the whole picture before.
+  view.region_radius_px = last_depth_m_ > 0 ? options_.normal.radius_m * focal / last_depth_m_ : 0;
+  if (slam.tracking && slam.scale_converged && button_in_world_) {
+    view.button_in_camera = slam.camera_from_world * *button_in_world_;
+  }
+  StatusOr<PanelNormal> arm = arm_plane_.Add(view);
+  if (arm.ok()) {
+    arm_normal_.Add(out->stamp_s, base_from_camera.linear() * arm->normal_in_camera,
+                    arm->sigma_rad);
+  }
+}
+
 void ButtonPicker::UpdateApproach(const SlamView& slam, const ButtonLocation& at,
                                   const Eigen::Isometry3d& base_from_camera, PickerFrame* out) {
   std::vector<Eigen::Vector3d> in_camera;
@@ -216,10 +243,11 @@ void ButtonPicker::UpdateApproach(const SlamView& slam, const ButtonLocation& at
     panel_normal_.Add(out->stamp_s, base_from_camera.linear() * normal->normal_in_camera,
                       normal->sigma_rad);
   }
-  if (panel_normal_.empty()) return;
-  out->approach_in_base = -panel_normal_.normal();
+  const NormalAverage& used = !arm_normal_.empty() ? arm_normal_ : panel_normal_;
+  if (used.empty()) return;
+  out->approach_in_base = -used.normal();
   // The mount's rotation turns the normal into the base frame: its sigma adds.
-  const double sigma_rad = std::hypot(panel_normal_.sigma_rad(), HandEyeSigmaRad(slam));
+  const double sigma_rad = std::hypot(used.sigma_rad(), HandEyeSigmaRad(slam));
   out->approach_sigma_deg =
       std::max(sigma_rad * 180.0 / M_PI, options_.normal.stated_min_sigma_deg);
 }
@@ -279,6 +307,7 @@ PickerFrame ButtonPicker::Process(int64_t frame_id, double stamp_s, const cv::Ma
     arm_views_.push_back(
         ArmView{base_from_camera, Eigen::Vector2d(t.center.x, t.center.y), radius_px});
   }
+  if (safety.tracking && slam.arm_pose) AddArmPlane(slam, image, base_from_camera, &out);
   if (safety.tracking && slam.tracking && slam.map_points_in_world) {
     LocatorInput in;
     in.camera = slam.camera;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/button/arm_plane_normal.h"
 #include "core/button/arm_protocol.h"
 #include "core/button/arm_triangulation.h"
 #include "core/button/button_detector.h"
@@ -82,6 +84,9 @@ struct SlamView {
   double hand_eye_deg = 0;
   bool hand_eye_translation_observable = false;
   double hand_eye_translation_m = 0;
+  // The caller's base_from_camera is the arm's pose times the mount (metric), whether or not the
+  // SLAM tracks or has a scale yet; false in tracking-only runs.
+  bool arm_pose = false;
 };
 
 // One picker per button; constructible many times.
@@ -95,7 +100,10 @@ struct SlamView {
 class ButtonPicker {
  public:
   explicit ButtonPicker(ButtonPickerOptions options = {})
-      : options_(std::move(options)), panel_normal_(options_.normal) {}
+      : options_(std::move(options)),
+        panel_normal_(options_.normal),
+        arm_plane_(options_.normal),
+        arm_normal_(ArmNormalAveraging(options_.normal)) {}
 
   // Finds the button at the tap on the still frame; asks for confirmation. NotFound = "no
   // button here"; InvalidArgument for bad input. Ignored (FailedPrecondition) while stopped.
@@ -129,9 +137,22 @@ class ButtonPicker {
   // 1-sigma of the mount's rotation: stated (button.uncertainty.hand_eye_sigma_deg) and seen by
   // the online check (SlamView::hand_eye_deg) [rad].
   double HandEyeSigmaRad(const SlamView& slam) const;
-  // Adds this frame's panel normal to the average; sets out->approach_in_base and its sigma.
+  // Feeds the tracked frame to the plane from the arm's motion (every tracked frame with an arm
+  // pose, located or not: its tracks run from frame to frame) and averages its normals.
+  void AddArmPlane(const SlamView& slam, const cv::Mat& image,
+                   const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
+  // Adds this frame's map normal to its average; sets out->approach_in_base and its sigma from
+  // the arm motion's average when it has one, else from the map's.
   void UpdateApproach(const SlamView& slam, const ButtonLocation& at,
                       const Eigen::Isometry3d& base_from_camera, PickerFrame* out);
+  void ResetApproach();
+  // The arm plane's normals fade over a minute, not seconds: the panel and the arm's base stay
+  // put, and the approach (straight at the panel) adds none, so the sideways moves' must last.
+  static PanelNormalOptions ArmNormalAveraging(PanelNormalOptions o) {
+    o.smoothing_s = std::max(o.smoothing_s, kArmNormalSmoothingS);
+    return o;
+  }
+  static constexpr double kArmNormalSmoothingS = 60;
   // Triangulates the button from the arm's poses of the tracked frames (out->arm_in_base) and,
   // with button.triangulate.enabled, combines it with the map's fused position by their
   // variances (out->button_in_base, out->uncertainty_m; the mount's terms added after).
@@ -148,6 +169,8 @@ class ButtonPicker {
   std::vector<FusedEstimate> fused_;                // Since the tap.
   double fused_spread_m_ = 0;                       // Of the last fusion.
   NormalAverage panel_normal_;                      // Base frame, since the tap (data time).
+  ArmPlaneNormal arm_plane_;                        // Tracks the panel for the arm's plane.
+  NormalAverage arm_normal_;                        // Its normals, base frame, since the tap.
   std::vector<ArmView> arm_views_;                  // Tracked frames with an arm pose.
 };
 

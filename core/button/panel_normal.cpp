@@ -28,6 +28,13 @@ bool PanelNormalOptions::IsValid(std::string* error) const {
   }
   if (!(smoothing_s >= 0)) return Invalid(error, "button.normal.smoothing_s must be >= 0");
   if (!(outlier_sigmas > 0)) return Invalid(error, "button.normal.outlier_sigmas must be > 0");
+  if (!(arm_min_parallax_deg > 0 && arm_min_parallax_deg < 90)) {
+    return Invalid(error, "button.normal.arm_min_parallax_deg must lie in (0, 90)");
+  }
+  if (arm_max_corners < min_points) {
+    return Invalid(error, "button.normal.arm_max_corners must be >= button.normal.min_points");
+  }
+  if (!(arm_inlier_px > 0)) return Invalid(error, "button.normal.arm_inlier_px must be > 0");
   return true;
 }
 
@@ -58,7 +65,19 @@ OptionTable<PanelNormalOptions> PanelNormalOptions::Describe() {
               "Older frames' normals fade with exp(-age / this) in the average (data time); "
               "0 = this frame's normal only.")
       .Double("outlier_sigmas", &O::outlier_sigmas, "", 0.5, 100, 0.5,
-              "A frame's normal this many sigmas off the average is skipped.");
+              "A frame's normal this many sigmas off the average is skipped.")
+      .Bool("arm_motion", &O::arm_motion,
+            "Take the approach from the plane that the arm's own motion shows (corners around "
+            "the button tracked from an anchor frame, the views' poses from the arm) rather than "
+            "from the SLAM's map, whenever that plane is found.")
+      .Double("arm_min_parallax_deg", &O::arm_min_parallax_deg, "deg", 0.1, 45, 0.5,
+              "The arm's motion since the anchor frame, as an angle seen from the panel, before "
+              "its plane is used.")
+      .Int("arm_max_corners", &O::arm_max_corners, "", 3, 5000, 10,
+           "Corners tracked around the button for the plane from the arm's motion.")
+      .Double("arm_inlier_px", &O::arm_inlier_px, "px", 0.1, 20, 0.1,
+              "A tracked corner within this of where the plane's homography puts it is on the "
+              "panel.");
 }
 
 namespace {

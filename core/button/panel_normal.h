@@ -1,4 +1,5 @@
-// The panel's normal for the approach direction: a robust plane through the SLAM map points
+// The panel's normal for the approach direction. Preferred: the plane from the arm's motion
+// (arm_plane_normal.h). Otherwise: a robust plane through the SLAM map points
 // around the located button (the plate and the wall around it, up to 45 cm away: the wider the
 // surface, the less a map's depth errors tilt it), passing near the located button (so that a
 // side wall or a door frame cannot give the push direction), oriented toward the camera, with
@@ -27,6 +28,12 @@ struct PanelNormalOptions {
   double smoothing_s = 2.0;           // Time constant of the data-time average [s]; 0 = none.
   double outlier_sigmas = 4;          // A frame this many sigmas off the average is skipped.
   uint64_t seed = 7;                  // RANSAC random seed (deterministic runs).
+  // The plane from the arm's motion (arm_plane_normal.h), preferred to the map's when it has
+  // one: corners tracked around the button, their homography given the arm's poses.
+  bool arm_motion = true;
+  double arm_min_parallax_deg = 3.0;  // Arm motion since the anchor, seen from the panel [deg].
+  int arm_max_corners = 300;          // Corners tracked around the button.
+  double arm_inlier_px = 1.5;         // Inlier distance of a track to the plane's transfer [px].
 
   bool IsValid(std::string* error) const;
   static OptionTable<PanelNormalOptions> Describe();
