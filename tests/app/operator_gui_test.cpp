@@ -382,8 +382,8 @@ TEST_F(OperatorGui, TheLiveLoopThroughTheWindowPressesTheTappedButton) {
       o.approach_error_deg);
   EXPECT_EQ(result->end_reason, "finished");
   EXPECT_EQ(o.nearest_button, 5);
-  EXPECT_LT(o.lateral_mm, 9.0);  // On the button's axis (radius 18 mm).
-  EXPECT_LT(o.approach_error_deg, 10.0);
+  EXPECT_LT(o.lateral_mm, 9.0);          // On the button's axis (radius 18 mm).
+  EXPECT_LT(o.approach_error_deg, 5.0);  // The goal; 0.1-0.2 deg from the arm's motion.
   EXPECT_GT(arm.counts().count("targets") ? arm.counts().at("targets") : 0, 10);
   EXPECT_EQ(arm.counts().count("malformed"), 0u);
 }
