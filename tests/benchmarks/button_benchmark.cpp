@@ -20,6 +20,7 @@
 #include <random>
 #include <sstream>
 
+#include "core/button/arm_plane_normal.h"
 #include "core/button/arm_server.h"
 #include "core/button/button_detector.h"
 #include "core/button/button_locator.h"
@@ -95,6 +96,38 @@ void Track(benchmark::State& state, bool window) {
   }
   state.counters["lost_frames"] = lost;
 }
+
+// One frame of the plane from the arm's motion (KLT both ways over up to 300 corners, the
+// plane's fit when the parallax allows; an anchor now and then) on the simulated approach, with
+// the true camera poses standing for the arm's.
+void BM_ArmPlaneFrame(benchmark::State& state) {
+  cv::setNumThreads(1);
+  const Approach& a = Panel();
+  if (a.frames.size() < 2) {
+    state.SkipWithError("panel simulation failed");
+    return;
+  }
+  ArmPlaneNormal plane;
+  size_t f = 0;
+  int planes = 0;
+  for (auto _ : state) {
+    ArmPlaneView view;
+    view.image = a.frames[f].image;
+    view.camera = a.camera;
+    view.base_from_camera = a.frames[f].world_from_camera;
+    const cv::Point2d px = a.Project(f);
+    view.button_px = {px.x, px.y};
+    view.region_radius_px =
+        0.45 * a.camera.fx / (a.frames[f].world_from_camera.inverse() * a.button_in_world).z();
+    planes += plane.Add(view).ok() ? 1 : 0;
+    if (++f == a.frames.size()) {
+      f = 0;
+      plane.Reset();
+    }
+  }
+  state.counters["planes"] = planes;
+}
+BENCHMARK(BM_ArmPlaneFrame)->Unit(benchmark::kMillisecond);
 
 void BM_TrackPredictedWindow(benchmark::State& state) { Track(state, true); }
 void BM_TrackWholeImage(benchmark::State& state) { Track(state, false); }
