@@ -666,7 +666,6 @@ void ButtonPipeline::RunPicker(const MonoSlamResult& r, SlamView view, int64_t i
   }
   if (!base) view.tracking = false;  // No arm pose: no base frame for this image.
   view.arm_pose = !out->tracking_only && base.has_value();
-  view.arm_pose = !out->tracking_only && base.has_value();
   out->picker = picker_->Process(FrameId(r.stamp, index), r.stamp.sensor_time_s, r.image, view,
                                  base.value_or(Eigen::Isometry3d::Identity()), SendTimeS(r.stamp));
   if (out->tracking_only) {
