@@ -300,6 +300,8 @@ ArmServerStats ArmServer::Stats() const {
 
 void ArmServer::Heartbeat() {
   std::lock_guard<std::mutex> lock(mutex_);
+  // closing_ is set under this lock right after the final stop: nothing follows that stop.
+  if (closing_.load()) return;
   ++stats_.heartbeats;
   // Made under the same lock as stops: a heartbeat never says "enabled" after a stop.
   auto line = std::make_shared<const std::string>(HeartbeatLine(seq_++, NowS(), !stopped_.load()));

@@ -345,6 +345,34 @@ TEST(ArmServerAttack, EveryWayOutSendsAStopLine) {
   EXPECT_EQ(server->Stats().sent_stops, 1);
 }
 
+// Heartbeats due at every wake of the I/O thread: the final stop is still the last line the
+// client reads before the socket closes (a heartbeat queued after it would tell the arm the
+// server is alive after it said goodbye).
+TEST(ArmServerAttack, TheFinalStopIsTheLastLineWhileHeartbeatsAreDue) {
+  ArmServerOptions o;
+  o.heartbeat_s = 0.001;
+  for (int round = 0; round < 20; ++round) {
+    auto server = StartServer(o);
+    ASSERT_TRUE(server);
+    ArmClient client = Connect(*server, "");
+    ASSERT_TRUE(Eventually([&] { return server->Stats().authorised == 1; }));
+    ASSERT_TRUE(Is(Next(client), "heartbeat"));
+    server->SendStopAndClose("quit");
+    std::vector<std::string> lines;
+    while (true) {
+      StatusOr<std::string> line = client.ReadLine(2000);
+      if (!line.ok()) {
+        EXPECT_EQ(line.status().code(), StatusCode::kUnavailable) << line.status().ToString();
+        break;
+      }
+      lines.push_back(*line);
+    }
+    ASSERT_FALSE(lines.empty()) << "round " << round;
+    EXPECT_TRUE(Is(lines.back(), "stop")) << "round " << round << ": " << lines.back();
+    EXPECT_NE(lines.back().find("\"reason\":\"quit\""), std::string::npos) << lines.back();
+  }
+}
+
 TEST(ArmServerAttack, AClientThatJoinsWhileStoppedIsToldAtOnce) {
   ArmServerOptions o;
   o.heartbeat_s = 0;
