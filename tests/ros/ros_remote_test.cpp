@@ -9,6 +9,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <signal.h>
 #include <std_msgs/Empty.h>
 #include <std_msgs/String.h>
 
@@ -382,6 +383,20 @@ TEST(RosRemote, StopSentWithoutAMasterReachesTheNodeWhenTheMasterComesBack) {
   ASSERT_TRUE(WaitFor([&] { return !node.stops().empty(); }, 10));
   EXPECT_EQ(node.stops().back(), "operator, master gone");
   remote.Disconnect();
+}
+
+// The fixture behind the master-gone tests: a roscore that cannot shut down (here frozen with
+// SIGSTOP, on a loaded machine slow) is killed with its rosmaster and rosout, which roslaunch
+// starts in sessions of their own; otherwise the master would go on answering after Stop().
+TEST(RoscoreFixture, AStuckRoscoreLeavesNoMasterAnswering) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  ASSERT_TRUE(testing::MasterAnswers(master.port()));
+  ASSERT_EQ(kill(master.pid(), SIGSTOP), 0);
+  master.Stop();
+  EXPECT_FALSE(testing::MasterAnswers(master.port()));
+  EXPECT_EQ(master.Start(60, master.port()), "");  // The port is free for a new master.
 }
 
 // A map that claims more cells than its bytes hold is refused and counted, not decoded; the next

@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "tests/support/test_data.h"
 
@@ -38,6 +39,35 @@ std::string Tail(const std::string& path) {
 
 // Reaps `pid` if it exited; true when it is gone.
 bool Reaped(pid_t pid, int* status) { return waitpid(pid, status, WNOHANG) == pid; }
+
+// Every process below `root` (children, their children, ...), read from /proc/PID/stat.
+// roslaunch starts rosmaster and rosout in sessions of their own (setsid), so killing roscore's
+// process group does not reach them.
+std::vector<pid_t> Descendants(pid_t root) {
+  std::vector<std::pair<pid_t, pid_t>> parent_of;  // (pid, ppid)
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.empty() || !std::all_of(name.begin(), name.end(), ::isdigit)) continue;
+    std::ifstream in(entry.path() / "stat");
+    std::string stat;
+    if (!std::getline(in, stat)) continue;
+    // "pid (comm) state ppid ...": comm may hold spaces and parentheses; the last ')' ends it.
+    const size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 1));
+    std::string state;
+    pid_t ppid = 0;
+    if (rest >> state >> ppid) parent_of.emplace_back(pid_t(std::stoi(name)), ppid);
+  }
+  std::vector<pid_t> found{root};
+  for (size_t i = 0; i < found.size(); ++i) {
+    for (const auto& [pid, ppid] : parent_of) {
+      if (ppid == found[i]) found.push_back(pid);
+    }
+  }
+  found.erase(found.begin());
+  return found;
+}
 
 }  // namespace
 
@@ -120,15 +150,27 @@ std::string RoscoreFixture::Start(double timeout_s, int port) {
 
 void RoscoreFixture::Stop() {
   if (pid_ <= 0) return;
+  const std::vector<pid_t> children = Descendants(pid_);  // rosmaster, rosout.
   kill(-pid_, SIGINT);  // roscore shuts rosout and rosmaster down on SIGINT.
   int status = 0;
   const double end = NowS() + 10;
-  while (NowS() < end && !Reaped(pid_, &status)) {
+  bool reaped = false;
+  while (NowS() < end && !(reaped = Reaped(pid_, &status))) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
-  kill(-pid_, SIGKILL);  // Whatever of the group is left.
-  waitpid(pid_, &status, WNOHANG);
+  if (!reaped) {
+    // roscore did not finish its shutdown in time: killed alone, it would leave the master
+    // answering. Its children go first, while they are still its own (live or zombie, their
+    // pids are not reused before roscore reaps them), then roscore.
+    for (const pid_t child : children) kill(child, SIGKILL);
+    kill(-pid_, SIGKILL);
+    waitpid(pid_, &status, 0);
+  }
   pid_ = -1;
+  const double gone = NowS() + 5;
+  while (NowS() < gone && MasterAnswers(port_)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
 }
 
 bool ChildProcess::Start(const std::string& command, const std::string& log_path) {

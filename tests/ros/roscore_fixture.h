@@ -1,6 +1,6 @@
 // A private ROS master for tests: `roscore -p PORT` on a free loopback port with ROS_HOME and
-// ROS_LOG_DIR in a temporary folder, waited for until it answers, and killed (with its children
-// rosmaster and rosout: its whole process group) by pid. No test depends on a global master.
+// ROS_LOG_DIR in a temporary folder, waited for until it answers, and stopped by pid (with its
+// children rosmaster and rosout, killed if roscore is slow to). No test depends on a global master.
 #pragma once
 
 #include <sys/types.h>
@@ -20,10 +20,13 @@ class RoscoreFixture {
   // it failed (with the end of roscore's log). `port` 0 takes a free one; a given port restarts a
   // master where a stopped one was (its clients see the same URI come back).
   std::string Start(double timeout_s = 60, int port = 0);
-  // Kills the master's process group and reaps it. Safe to call twice.
+  // Stops roscore (SIGINT; after 10 s SIGKILL to it and to its rosmaster and rosout, which live
+  // in sessions of their own), reaps it and waits until the port no longer answers. Safe to call
+  // twice.
   void Stop();
 
   int port() const { return port_; }
+  pid_t pid() const { return pid_; }  // roscore's; -1 when stopped.
   std::string uri() const;
   const std::string& folder() const { return folder_; }
   // "env ROS_MASTER_URI=... ROS_HOME=... ROS_LOG_DIR=... ROS_IP=127.0.0.1 " to put before a
