@@ -117,8 +117,8 @@ void BM_ArmPlaneFrame(benchmark::State& state) {
     view.base_from_camera = a.frames[f].world_from_camera;
     const cv::Point2d px = a.Project(f);
     view.button_px = {px.x, px.y};
-    view.region_radius_px =
-        0.45 * a.camera.fx / (a.frames[f].world_from_camera.inverse() * a.button_in_world).z();
+    view.region_radius_px = PanelNormalOptions().radius_m * a.camera.fx /
+                            (a.frames[f].world_from_camera.inverse() * a.button_in_world).z();
     planes += plane.Add(view).ok() ? 1 : 0;
     if (++f == a.frames.size()) {
       f = 0;

@@ -62,7 +62,7 @@ PlaneRun RunPlan(int seed, double from_s, double to_s, double step_s, double noi
     }
     const Eigen::Vector3d in_camera = base_from_camera.inverse() * button->center;
     view.button_px = camera.Project(in_camera);
-    view.region_radius_px = 0.45 * camera.fx / in_camera.z();
+    view.region_radius_px = PanelNormalOptions().radius_m * camera.fx / in_camera.z();
     view.button_in_camera = in_camera;
     StatusOr<PanelNormal> normal = plane.Add(view);
     if (!normal.ok()) {
