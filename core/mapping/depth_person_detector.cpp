@@ -51,10 +51,25 @@ struct Part {
   float top = -1e9f, bottom = 1e9f;
   double length_m = 0, width_m = 0;  // Footprint along its principal axes.
   double range_m = 0;                // Of its footprint's centre from the camera.
+  Eigen::Vector2d centre{0, 0};      // Footprint's centre (forward, left) [m].
   cv::Rect box;
 };
 
 }  // namespace
+
+cv::Rect2d DepthPersonDetector::BodyBox(const PinholeCamera& cam, const Eigen::Vector2d& centre,
+                                        double height_m, const cv::Rect2d& box) const {
+  // The footprint's centre on the floor and the head above it, in the camera's frame.
+  const Eigen::Vector3d feet = centre.x() * forward_ + centre.y() * left_ - floor_.d * up_;
+  const Eigen::Vector3d head = feet + height_m * up_;
+  if (!(feet.z() > 0.05 && head.z() > 0.05)) return {};
+  const double v_feet = cam.fy * feet.y() / feet.z() + cam.cy;
+  const double v_head = cam.fy * head.y() / head.z() + cam.cy;
+  // Only a body wholly in view: HOG on rows padded beyond the image's edge scores worse than on
+  // the part in view.
+  if (!(v_head >= 0 && v_feet <= cam.height && v_feet > v_head)) return {};
+  return cv::Rect2d(box.x, v_head, box.width, v_feet - v_head);
+}
 
 StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& depth_m) {
   if (!configured_) return FailedPrecondition("depth person detector: Configure() was not called");
@@ -165,6 +180,7 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
     }
     p.length_m = a1 - a0 + cell;
     p.range_m = mean.norm();
+    p.centre = mean;
     p.width_m = b1 - b0 + cell;
     p.box = cv::Rect(u0, v0, u1 - u0 + step, v1 - v0 + step);
     return p;
@@ -271,6 +287,7 @@ StatusOr<std::vector<PersonBox>> DepthPersonDetector::Detect(const cv::Mat& dept
       person.box = cv::Rect2d(p.box) & cv::Rect2d(0, 0, depth_m.cols, depth_m.rows);
       person.image_size = depth_m.size();
       person.score = 1;
+      if (p.box.y >= step) person.body = BodyBox(cam, p.centre, p.top, person.box);
       people.push_back(person);
     }
   }

@@ -50,7 +50,8 @@ class DepthPersonDetector {
   // Fails on invalid options, plane or camera, or a camera looking straight down.
   Status Configure(const FloorPlane& floor, const PinholeCamera& camera);
   // People in a metric depth image (CV_32FC1, NaN or <= 0 = invalid) of the configured camera
-  // (or a scaled copy of it). Boxes are in that image's pixels, id -1, score 1.
+  // (or a scaled copy of it). Boxes are in that image's pixels, id -1, score 1; `body` spans the
+  // floor to the top of the head when both are in view (empty otherwise).
   StatusOr<std::vector<PersonBox>> Detect(const cv::Mat& depth_m);
 
  private:
@@ -59,6 +60,11 @@ class DepthPersonDetector {
     float top = -1e9f, bottom = 1e9f;
     int u0 = 1 << 30, v0 = 1 << 30, u1 = -1, v1 = -1;
   };
+  // The image box from the floor under `centre` (forward, left) to height_m above it, over the
+  // columns of `box`; empty when it leaves the image's rows.
+  cv::Rect2d BodyBox(const PinholeCamera& cam, const Eigen::Vector2d& centre, double height_m,
+                     const cv::Rect2d& box) const;
+
   PersonDetectorOptions options_;
   bool configured_ = false;
   FloorPlane floor_;

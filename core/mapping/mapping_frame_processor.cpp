@@ -87,9 +87,13 @@ void MappingFrameProcessor::CheckWithHog(const cv::Mat& color, const cv::Size& d
     const cv::Rect2d& b = p.box;
     const bool cut = b.x < margin || b.y < margin || b.br().x > depth_size.width - margin ||
                      b.br().y > depth_size.height - margin;
+    // Where the depth cluster's head and feet are in view, HOG is asked about the whole body
+    // from the floor to the head (the cluster's box misses what the depth lost: far legs, an
+    // arm), otherwise about the part in view.
+    const cv::Rect2d& asked = p.body.empty() ? b : p.body;
     const cv::Point2d s = p.ScaleTo(color.size());
-    const double score =
-        detector_->Score(color, cv::Rect2d(b.x * s.x, b.y * s.y, b.width * s.x, b.height * s.y));
+    const double score = detector_->Score(
+        color, cv::Rect2d(asked.x * s.x, asked.y * s.y, asked.width * s.x, asked.height * s.y));
     const double needed =
         cut ? options_.people.depth_hog_min_score_cut : options_.people.depth_hog_min_score;
     if (score >= needed) kept.push_back(p);

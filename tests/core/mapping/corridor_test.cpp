@@ -161,10 +161,9 @@ TEST(CorridorPeople, DepthDetectorFindsThePeopleAndKeepsTheMap) {
   ASSERT_GT(visible, 100);
   EXPECT_GE(static_cast<double>(found) / visible, 0.9) << found << " of " << visible;
   EXPECT_LE(false_detections, 0.2 * detections) << false_detections << " of " << detections;
-  // HOG on the colour as a second cue: the rendered people score lower than real ones (cut by
-  // the image's border: -1.5 to 1.3), so it costs some recall here and removes most false
-  // detections (the ends of walls score -2.6 to -1.2).
-  EXPECT_GE(static_cast<double>(hog_found) / visible, 0.85) << hog_found << " of " << visible;
+  // HOG on the colour as a second cue, asked about the whole body where the head is in view: it
+  // keeps the recall and removes most false detections (the ends of walls and door recesses).
+  EXPECT_GE(static_cast<double>(hog_found) / visible, 0.9) << hog_found << " of " << visible;
   EXPECT_LE(hog_false, 0.08 * hog_detections) << hog_false << " of " << hog_detections;
   EXPECT_LT(hog_false, false_detections / 2);
 }

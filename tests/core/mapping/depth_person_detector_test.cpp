@@ -56,6 +56,12 @@ class DepthPeople : public ::testing::Test {
     EXPECT_TRUE(people.ok()) << people.status().ToString();
     return people.ok() ? *people : std::vector<PersonBox>();
   }
+  // A 1.75 m walker at (x, y) in the depth sensor's noise.
+  std::vector<PersonBox> DetectWalker(double x, double y) {
+    std::vector<SyntheticWall> walls;
+    AddWalker(x, y, 1.75, &walls);
+    return Detect(walls, 1.425e-3);
+  }
   // Pixel column of a floor point straight ahead at lateral offset y (left positive).
   double Column(double x, double y) const { return camera_.cx - camera_.fx * y / x; }
   SyntheticView view_;
@@ -65,9 +71,7 @@ class DepthPeople : public ::testing::Test {
 TEST_F(DepthPeople, AWalkingPersonIsFoundWhereItStands) {
   for (double x : {2.0, 3.5, 5.0}) {
     for (double y : {-0.8, 0.0, 0.6}) {
-      std::vector<SyntheticWall> walls;
-      AddWalker(x, y, 1.75, &walls);
-      const std::vector<PersonBox> people = Detect(walls, 1.425e-3);
+      const std::vector<PersonBox> people = DetectWalker(x, y);
       ASSERT_EQ(people.size(), 1u) << "at " << x << ", " << y;
       // Between the body's outline and the outline with both arms.
       const cv::Rect2d& box = people[0].box;
@@ -75,6 +79,36 @@ TEST_F(DepthPeople, AWalkingPersonIsFoundWhereItStands) {
       EXPECT_GE(box.width, camera_.fx * 0.38 / x - 4) << "at " << x << ", " << y;
       EXPECT_LE(box.width, camera_.fx * 0.6 / (x - 0.3) + 4) << "at " << x << ", " << y;
       EXPECT_EQ(people[0].image_size, cv::Size(320, 240));
+    }
+  }
+}
+
+// The whole body from the floor to the head, for HOG to score at the right size: known when the
+// head and the feet are in view, empty when the head is cut off by the image's top (the camera
+// 1 m up sees a 1.75 m person 2 m away only up to the shoulders).
+TEST_F(DepthPeople, TheBodyBoxSpansTheFloorToTheHeadWhenBothAreInView) {
+  // Image row of a point `forward` m ahead and `up` m above the floor.
+  const auto row = [&](double forward, double up) {
+    const double c = std::cos(view_.pitch_down_rad), s = std::sin(view_.pitch_down_rad);
+    const double dz = up - view_.height_m;
+    const double z = forward * c - dz * s, y = -forward * s - dz * c;
+    return camera_.cy + camera_.fy * y / z;
+  };
+  for (double x : {2.0, 3.5, 5.0}) {
+    for (double y : {-0.8, 0.0, 0.6}) {
+      const std::vector<PersonBox> people = DetectWalker(x, y);
+      ASSERT_EQ(people.size(), 1u) << "at " << x << ", " << y;
+      const cv::Rect2d& body = people[0].body;
+      if (row(x, 1.75) < 0 || row(x, 0.0) > camera_.height) {
+        EXPECT_TRUE(body.empty()) << "at " << x << ", " << y;
+        continue;
+      }
+      ASSERT_FALSE(body.empty()) << "at " << x << ", " << y;
+      // The head's top and the feet within 4 px (5 cm cells, the footprint's centre).
+      EXPECT_NEAR(body.y, row(x, 1.75), 4) << "at " << x << ", " << y;
+      EXPECT_NEAR(body.br().y, row(x, 0.0), 4) << "at " << x << ", " << y;
+      EXPECT_NEAR(body.x, people[0].box.x, 1e-9);
+      EXPECT_NEAR(body.width, people[0].box.width, 1e-9);
     }
   }
 }
