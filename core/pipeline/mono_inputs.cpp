@@ -65,7 +65,12 @@ std::string FindBeside(const std::string& path, const std::string& name) {
 
 StatusOr<OpenedMono> OpenMono(const std::string& path) {
   StatusOr<std::unique_ptr<Source>> opened = OpenDataset(path, SourceKind::kMono);
-  if (!opened.ok()) opened = OpenDataset(path, SourceKind::kStereo);
+  for (SourceKind kind : {SourceKind::kStereo, SourceKind::kRgbd}) {
+    if (opened.ok()) break;
+    if (StatusOr<std::unique_ptr<Source>> other = OpenDataset(path, kind); other.ok()) {
+      opened = std::move(other);
+    }
+  }
   if (!opened.ok()) return opened.status();
   OpenedMono out;
   out.source = std::move(*opened);
@@ -97,6 +102,12 @@ std::optional<MonoFrame> MonoFrameOf(const Frame& frame) {
     mono.image = s->left;
     return mono;
   }
+  if (const RgbdFrame* r = std::get_if<RgbdFrame>(&frame); r != nullptr && !r->color.empty()) {
+    MonoFrame mono;
+    mono.stamp = r->stamp;
+    mono.image = r->color;
+    return mono;
+  }
   return std::nullopt;
 }
 
@@ -107,7 +118,11 @@ StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::stri
   StatusOr<Frame> frame = source.Retrieve();
   if (!frame.ok()) return frame.status();
   std::optional<MonoFrame> mono = MonoFrameOf(*frame);
-  if (!mono) return InvalidArgument(path + " gives neither mono nor stereo frames");
+  if (!mono) {
+    return InvalidArgument(path +
+                           " gives no mono images, stereo pairs or colour images (RGB-D without "
+                           "colour?)");
+  }
   return mono;
 }
 

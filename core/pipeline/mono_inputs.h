@@ -35,7 +35,8 @@ struct MonoSlamRunOptions {
   static OptionTable<MonoSlamRunOptions> Describe();
 };
 
-// The mono images of `path`, or the left images of a stereo recording, with the camera.
+// The mono images of `path`, or the left images of a stereo recording, or the colour images of
+// an RGB-D recording, with the camera.
 struct OpenedMono {
   std::unique_ptr<Source> source;
   PinholeCamera camera;
@@ -43,10 +44,11 @@ struct OpenedMono {
 };
 StatusOr<OpenedMono> OpenMono(const std::string& path);
 
-// A mono frame, or a stereo frame's left image as one; nullopt for other kinds.
+// A mono frame, or a stereo frame's left image or an RGB-D frame's colour image as one; nullopt
+// for other kinds (and RGB-D frames without colour).
 std::optional<MonoFrame> MonoFrameOf(const Frame& frame);
 
-// The next frame as a mono frame (a stereo frame's left image); nullopt at the end.
+// The next frame as a mono frame (MonoFrameOf); nullopt at the end.
 StatusOr<std::optional<MonoFrame>> NextMonoFrame(Source& source, const std::string& path);
 
 // `name` in the folder `path` or its parent; "" when in neither.

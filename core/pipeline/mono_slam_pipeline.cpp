@@ -183,7 +183,8 @@ StatusOr<std::shared_ptr<const MonoSlamFrameResult>> MonoSlamPipeline::ProcessMo
   out->metric_source = metric_source_;
   const std::optional<MonoFrame> mono = MonoFrameOf(frame);
   if (!mono) {
-    out->status = FailedPrecondition("monocular SLAM needs mono images (or a stereo left)");
+    out->status = FailedPrecondition(
+        "monocular SLAM needs mono images (or a stereo pair's left, or an RGB-D frame's colour)");
     return std::shared_ptr<const MonoSlamFrameResult>(out);
   }
   if (commands_) {
@@ -367,7 +368,7 @@ PipelineInfo MonoSlamPipelineInfo(const std::shared_ptr<MonoSlamCommands>& comma
   info.name = "mono-slam";
   info.title = "Monocular SLAM (PTAM point cloud)";
   info.summary = "monocular SLAM (PTAM-style keyframes and bundle adjustment) with metric scale";
-  info.accepts = {SourceKind::kMono, SourceKind::kStereo};
+  info.accepts = {SourceKind::kMono, SourceKind::kStereo, SourceKind::kRgbd};
   info.declare_options = [](OptionSet* set) {
     SIGHTLINE_RETURN_IF_ERROR(set->Declare(MonoSlamOptions::Describe()));
     return set->Declare(MonoSlamRunOptions::Describe());

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -39,6 +41,58 @@ TEST(MonoSlamCli, RunWritesTrajectoryMapKeyframesScaleAndMetrics) {
   EXPECT_GT(std::count(keyframes.begin(), keyframes.end(), '\n'), 5);
   const std::string trajectory = testing::ReadTextFile(out + "/trajectory.txt");
   EXPECT_GT(std::count(trajectory.begin(), trajectory.end(), '\n'), 40);
+}
+
+// metrics.json's number after `key` ("key": value), NaN when absent.
+double MetricOf(const std::string& metrics, const std::string& key) {
+  const size_t at = metrics.find("\"" + key + "\":");
+  if (at == std::string::npos) return std::nan("");
+  return std::atof(metrics.c_str() + at + key.size() + 3);
+}
+
+// Rows of frames.csv (without its header) and how many of them were tracked.
+void CountFrames(const std::string& csv_path, int* rows, int* tracked) {
+  std::istringstream csv(testing::ReadTextFile(csv_path));
+  std::string line;
+  std::getline(csv, line);  // frame,time_s,quality,tracked,...
+  *rows = *tracked = 0;
+  while (std::getline(csv, line)) {
+    ++*rows;
+    std::istringstream fields(line);
+    std::string field;
+    for (int i = 0; i < 4 && std::getline(fields, field, ','); ++i) {
+    }
+    *tracked += field == "1";
+  }
+}
+
+// An RGB-D recording's colour images are a monocular sequence: a simulated orbit recorded as
+// RGB-D is tracked as its mono images are (0.09 % of the path), and the real office
+// recording's 9 colour frames are read and initialised on.
+TEST(MonoSlamCli, RunsOnTheColourImagesOfAnRgbdRecording) {
+  const std::string sim = testing::TempDir("mono_slam_cli_rgbd_orbit");
+  ASSERT_EQ(testing::RunProcess(kCli + " simulate terrain --out " + sim +
+                                " --set sim.motion.kind=orbit --set sim.sensors=rgbd --set "
+                                "sim.frames=150 --quiet")
+                .exit_code,
+            0);
+  const std::string out = testing::TempDir("mono_slam_cli_rgbd_orbit_run");
+  testing::ProcessResult r =
+      testing::RunProcess(kCli + " run mono-slam " + sim + "/rgbd --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  int rows = 0, tracked = 0;
+  CountFrames(out + "/frames.csv", &rows, &tracked);
+  EXPECT_EQ(rows, 150);
+  EXPECT_GE(tracked, 0.9 * rows);
+  EXPECT_LT(MetricOf(testing::ReadTextFile(out + "/metrics.json"), "ate_rmse_pct_of_path"), 0.5);
+
+  SIGHTLINE_REQUIRE_DATA(tum, "tum_fr1_desk");
+  const std::string real = testing::TempDir("mono_slam_cli_tum_colour");
+  r = testing::RunProcess(kCli + " run mono-slam " + tum + " --out " + real);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  CountFrames(real + "/frames.csv", &rows, &tracked);
+  EXPECT_EQ(rows, 9);
+  EXPECT_GE(tracked, 1);  // The clip is 0.27 s long: initialised on its 8th frame.
 }
 
 TEST(MonoSlamCli, FailuresAreOneLine) {
