@@ -1766,549 +1766,544 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Ein Bild bleibt im Fenster, wenn sich die Kamera seit dem vorigen verbliebenen Bild um diesen Anteil der Mediantiefe seiner Punkte bewegt hat (0 = jedes Bild bleibt); sonst ersetzt es das nächste Bild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <location filename="../app/sightline/option_texts.cpp" line="38"/>
         <source>A frame this far from every keyframe (relative to the mean depth) becomes one.</source>
         <translation>Ein Bild, das so weit von jedem Schlüsselbild entfernt ist (relativ zur mittleren Tiefe), wird zum Schlüsselbild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="38"/>
+        <location filename="../app/sightline/option_texts.cpp" line="39"/>
         <source>A frame tracking fewer than this share of the last keyframe&apos;s points becomes one.</source>
         <translation>Ein Bild, das weniger als diesen Anteil der Punkte des letzten Schlüsselbilds verfolgt, wird zum Schlüsselbild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="40"/>
+        <location filename="../app/sightline/option_texts.cpp" line="41"/>
         <source>A frame with fewer matches than this with the newest candidate becomes a candidate too (the oldest leaves a full ring); at low frame rates every frame does.</source>
         <translation>Ein Bild mit weniger Zuordnungen als diesen zum neuesten Kandidaten wird ebenfalls Kandidat (bei vollem Ring fällt der älteste heraus); bei niedriger Bildrate wird es jedes Bild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="41"/>
+        <location filename="../app/sightline/option_texts.cpp" line="42"/>
         <source>A frame&apos;s normal this many sigmas off the average is skipped.</source>
         <translation>Ein Bild, dessen Normale so viele Sigma vom Mittel abweicht, wird übersprungen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="42"/>
+        <location filename="../app/sightline/option_texts.cpp" line="43"/>
         <source>A frame&apos;s walls count only when their summed vote weight (length x fit quality) reaches this.</source>
         <translation>Die Wände eines Bildes zählen nur, wenn ihr summiertes Stimmgewicht (Länge x Fitqualität) diesen Wert erreicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="43"/>
+        <location filename="../app/sightline/option_texts.cpp" line="44"/>
         <source>A ground candidate holds at least this fraction of the points.</source>
         <translation>Ein Bodenkandidat enthält mindestens diesen Anteil der Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="44"/>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
         <source>A ground plane&apos;s normal lies at most this far from the expected up direction.</source>
         <translation>Die Normale einer Bodenebene weicht höchstens so weit von der erwarteten Aufwärtsrichtung ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A ground point&apos;s own normal lies at most this far from the plane&apos;s.</source>
         <translation>Die eigene Normale eines Bodenpunkts weicht höchstens so weit von der der Ebene ab.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="46"/>
+        <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A ground-truth or odometry pose belongs to a frame when this close in time.</source>
         <translation>Eine Ground-Truth- oder Odometriepose gehört zu einem Bild, wenn sie zeitlich so nah liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="47"/>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
         <source>A ground-truth pose belongs to a frame when this close in time.</source>
         <translation>Eine Ground-Truth-Pose gehört zu einem Bild, wenn sie zeitlich so nah liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="49"/>
+        <location filename="../app/sightline/option_texts.cpp" line="50"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Eine Linie, die so nah an einer Manhattan-Achse liegt, gilt als parallel (0) oder senkrecht (1) zur Referenz.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="51"/>
+        <location filename="../app/sightline/option_texts.cpp" line="52"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Eine Pose gehört zu einem Bild, wenn sie zeitlich so nah liegt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="53"/>
+        <location filename="../app/sightline/option_texts.cpp" line="54"/>
         <source>A segment&apos;s raised height is this quantile of its heights above the ground.</source>
         <translation>Die erhöhte Höhe eines Segments ist dieses Quantil seiner Höhen über dem Boden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="54"/>
+        <location filename="../app/sightline/option_texts.cpp" line="55"/>
         <source>A sloped segment whose plane meets the ground within this distance of its lowest points is connected to the ground (a ramp), not raised.</source>
         <translation>Ein geneigtes Segment, dessen Ebene den Boden innerhalb dieses Abstands von seinen tiefsten Punkten trifft, ist mit dem Boden verbunden (eine Rampe), nicht erhöht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="55"/>
+        <location filename="../app/sightline/option_texts.cpp" line="56"/>
         <source>A streaming device that delivers nothing for this long is treated as lost and reopened; 0 never does (e.g. waiting for rare hardware triggers).</source>
         <translation>Ein streamendes Gerät, das so lange nichts liefert, gilt als verloren und wird neu geöffnet; 0 tut das nie (z. B. beim Warten auf seltene Hardware-Trigger).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="56"/>
+        <location filename="../app/sightline/option_texts.cpp" line="57"/>
         <source>A track must return to its start within this when tracked backwards; 0 = no check.</source>
         <translation>Ein Track muss rückwärts verfolgt innerhalb dieses Werts zu seinem Start zurückkehren; 0 = keine Prüfung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="57"/>
+        <location filename="../app/sightline/option_texts.cpp" line="58"/>
         <source>A track seen from a direction differing more than this from its anchor&apos;s is anchored anew: the further aside, the more a wrongly fitted or assumed surface (the road taken as facing the camera) misleads the warp; 3 suits subsampled driving.</source>
         <translation>Ein Track, der aus einer Richtung gesehen wird, die mehr als dies von der seines Ankers abweicht, wird neu verankert: je weiter seitlich, desto mehr führt eine falsch angepasste oder angenommene Fläche (die Straße als der Kamera zugewandt) die Verzerrung in die Irre; 3 passt für unterabgetastete Fahrten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="58"/>
+        <location filename="../app/sightline/option_texts.cpp" line="59"/>
         <source>A track whose patch would be scaled by more than this fraction since its anchor (the camera came close) is anchored anew.</source>
         <translation>Ein Track, dessen Patch seit seinem Anker um mehr als diesen Anteil skaliert würde (die Kamera kam näher), wird neu verankert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="59"/>
+        <location filename="../app/sightline/option_texts.cpp" line="60"/>
         <source>A track&apos;s surface is fitted as a plane to the tracks within this radius at a similar depth, so the anchor&apos;s patch is warped as that plane; 0 = every patch is taken as facing the camera.</source>
         <translation>Die Fläche eines Tracks wird als Ebene an die Tracks in diesem Radius mit ähnlicher Tiefe angepasst, sodass der Patch des Ankers als diese Ebene verzerrt wird; 0 = jeder Patch gilt als der Kamera zugewandt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="61"/>
+        <location filename="../app/sightline/option_texts.cpp" line="62"/>
         <source>Accuracy: a segment is compared with the true region holding this fraction of its points.</source>
         <translation>Genauigkeit: Ein Segment wird mit der wahren Region verglichen, die diesen Anteil seiner Punkte enthält.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="62"/>
+        <location filename="../app/sightline/option_texts.cpp" line="63"/>
         <source>Adaptive termination: stop when an outlier-free sample was drawn with this probability given the best inlier fraction; 1 = always max_iterations.</source>
         <translation>Adaptiver Abbruch: aufhören, wenn mit dieser Wahrscheinlichkeit (bei der besten Inlier-Quote) eine ausreißerfreie Stichprobe gezogen wurde; 1 = immer max_iterations.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="63"/>
+        <location filename="../app/sightline/option_texts.cpp" line="64"/>
         <source>Add features of confidently tracked frames to the model when the button&apos;s apparent size has changed.</source>
         <translation>Merkmale sicher verfolgter Bilder dem Modell hinzufügen, wenn sich die scheinbare Größe des Knopfs geändert hat.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="64"/>
+        <location filename="../app/sightline/option_texts.cpp" line="65"/>
         <source>Added to the triangulation&apos;s stated 1-sigma: biases no residual shows (the tracked centre&apos;s offset on the button, the size&apos;s depth on a relief).</source>
         <translation>Wird zum angegebenen 1-Sigma der Triangulation addiert: systematische Fehler, die kein Residuum zeigt (Versatz des verfolgten Zentrums auf dem Taster, Tiefe der Größe auf einem Relief).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="65"/>
+        <location filename="../app/sightline/option_texts.cpp" line="66"/>
         <source>After a loss, search whole frames and re-acquire the button only on a confident match at a plausible size.</source>
         <translation>Nach einem Verlust ganze Bilder durchsuchen und den Knopf nur bei einer sicheren Übereinstimmung in plausibler Größe wiederfinden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="66"/>
+        <location filename="../app/sightline/option_texts.cpp" line="67"/>
         <source>Agreement of the voting lines modulo 90 deg (1 = perfect); below it the frame&apos;s walls are not used.</source>
         <translation>Übereinstimmung der abstimmenden Linien modulo 90 deg (1 = perfekt); darunter werden die Wände des Bildes nicht verwendet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="67"/>
+        <location filename="../app/sightline/option_texts.cpp" line="68"/>
         <source>Also estimate a constant offset of the tracked centre in the image (a detector&apos;s sub-pixel convention): it would tilt the rays of the approach against the sideways move&apos;s.</source>
         <translation>Zusätzlich einen konstanten Versatz des verfolgten Zentrums im Bild schätzen (Subpixel-Konvention eines Detektors): er würde die Strahlen der Annäherung gegen die der Seitwärtsbewegung neigen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="68"/>
+        <location filename="../app/sightline/option_texts.cpp" line="69"/>
         <source>Also list and open Aravis&apos; in-process simulated camera Fake_1 (demos and tests).</source>
         <translation>Auch Aravis&apos; prozessinterne simulierte Kamera Fake_1 auflisten und öffnen (Demos und Tests).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="69"/>
+        <location filename="../app/sightline/option_texts.cpp" line="70"/>
         <source>Also locate the button from the arm&apos;s metric camera poses alone (the tracked centre&apos;s rays and its apparent size, core/button/arm_triangulation.h) and combine that point with the map&apos;s by their variances. Off by default: on the simulated approach&apos;s seeds 1-5 the mean final error goes 4.77 -&gt; 3.68 mm and the worst 10.1 -&gt; 5.9 mm, but seeds 1 and 4 and the 12 cm sideways approach get worse (docs/button.md).</source>
         <translation>Den Taster zusätzlich allein aus den metrischen Kameraposen des Arms lokalisieren (Strahlen des verfolgten Zentrums und seine scheinbare Größe, core/button/arm_triangulation.h) und diesen Punkt mit dem der Karte nach ihren Varianzen kombinieren. Standardmäßig aus: auf den Seeds 1-5 der simulierten Annäherung sinkt der mittlere Endfehler von 4.77 -&gt; 3.68 mm und der größte von 10.1 -&gt; 5.9 mm, aber die Seeds 1 und 4 und die Annäherung mit 12 cm Seitwärtsbewegung werden schlechter (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="70"/>
+        <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Also project current points into the previous images (uses both depths).</source>
         <translation>Auch aktuelle Punkte in die vorigen Bilder projizieren (nutzt beide Tiefen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <location filename="../app/sightline/option_texts.cpp" line="73"/>
         <source>An aligned patch whose zero-mean normalised correlation with the warped anchor patch is lower failed (occlusion, reflection).</source>
         <translation>Ein ausgerichteter Patch, dessen mittelwertfreie normierte Korrelation mit dem verzerrten Anker-Patch geringer ist, gilt als gescheitert (Verdeckung, Reflexion).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="73"/>
+        <location filename="../app/sightline/option_texts.cpp" line="74"/>
         <source>An alignment that moves the tracked position further than this failed (the KLT position is kept and the track anchored anew).</source>
         <translation>Eine Ausrichtung, die die verfolgte Position weiter als dies verschiebt, gilt als gescheitert (die KLT-Position bleibt, und der Track wird neu verankert).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="74"/>
+        <location filename="../app/sightline/option_texts.cpp" line="75"/>
         <source>An anchor is used for at most this many frames; then the track is anchored anew.</source>
         <translation>Ein Anker wird höchstens für so viele Bilder verwendet; danach wird der Track neu verankert.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="75"/>
+        <location filename="../app/sightline/option_texts.cpp" line="76"/>
         <source>An arm_pose message with more joint positions is refused.</source>
         <translation>Eine arm_pose-Nachricht mit mehr Gelenkpositionen wird abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="76"/>
+        <location filename="../app/sightline/option_texts.cpp" line="77"/>
         <source>An arm_pose position farther than this from the base is refused.</source>
         <translation>Eine arm_pose-Position, die weiter als dies von der Basis entfernt ist, wird abgelehnt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="79"/>
+        <location filename="../app/sightline/option_texts.cpp" line="80"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Analoge Verstärkung; negativ behält die der Kamera. Werte außerhalb des Bereichs sind Fehler.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="81"/>
+        <location filename="../app/sightline/option_texts.cpp" line="82"/>
         <source>Ask the device to deliver depth and colour frames of the same instant.</source>
         <translation>Das Gerät bitten, Tiefen- und Farbbilder desselben Zeitpunkts zu liefern.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="82"/>
+        <location filename="../app/sightline/option_texts.cpp" line="83"/>
         <source>At low rates (mono.tracking.low_rate_interval_s), a frame tracking fewer than this share of the last keyframe&apos;s points becomes a keyframe within min_keyframe_gap too (0 = off).</source>
         <translation>Bei niedriger Rate (mono.tracking.low_rate_interval_s) wird ein Bild, das weniger als diesen Anteil der Punkte des letzten Schlüsselbilds verfolgt, auch innerhalb von min_keyframe_gap Schlüsselbild (0 = aus).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="83"/>
+        <location filename="../app/sightline/option_texts.cpp" line="84"/>
         <source>At low rates, a frame this far from every keyframe (relative to the mean depth) becomes a keyframe within min_keyframe_gap too.</source>
         <translation>Bei niedriger Rate wird ein Bild, das so weit von jedem Schlüsselbild entfernt ist (relativ zur mittleren Tiefe), auch innerhalb von min_keyframe_gap Schlüsselbild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="84"/>
+        <location filename="../app/sightline/option_texts.cpp" line="85"/>
         <source>At low rates, when the constant-velocity prediction tracks fewer inliers, the last pose (zero motion) is tried too and the better kept (0 = off).</source>
         <translation>Bei niedriger Rate: verfolgt die Vorhersage mit konstanter Geschwindigkeit weniger Inlier, wird auch die letzte Pose (keine Bewegung) versucht und die bessere behalten (0 = aus).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="85"/>
+        <location filename="../app/sightline/option_texts.cpp" line="86"/>
         <source>Authorised clients at most; further ones are closed.</source>
         <translation>Höchstens so viele autorisierte Clients; weitere werden geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="86"/>
+        <location filename="../app/sightline/option_texts.cpp" line="87"/>
         <source>Band of the refinement (offset histogram bin and refit band): narrower than err_max, so that a door recessed behind the wall face does not tilt the line.</source>
         <translation>Band der Verfeinerung (Histogrammklasse des Versatzes und Band der Neuanpassung): schmaler als err_max, damit eine hinter die Wandfläche zurückgesetzte Tür die Linie nicht kippt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="87"/>
+        <location filename="../app/sightline/option_texts.cpp" line="88"/>
         <source>Baseline over the median depth of the first points needed to accept (0.07 is a 4 deg ray angle sideways); a short baseline gives a distorted first map and a drifting scale.</source>
         <translation>Basislinie geteilt durch die Mediantiefe der ersten Punkte, die zum Akzeptieren nötig ist (0.07 entspricht einem seitlichen Strahlwinkel von 4 deg); eine kurze Basislinie ergibt eine verzerrte erste Karte und eine driftende Skala.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="88"/>
+        <location filename="../app/sightline/option_texts.cpp" line="89"/>
         <source>Best over second-best descriptor distance in a window; 1 = off.</source>
         <translation>Bester durch zweitbesten Deskriptorabstand in einem Fenster; 1 = aus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="89"/>
+        <location filename="../app/sightline/option_texts.cpp" line="90"/>
         <source>Camera pitched down by this: expected up = camera -y turned by pitch and roll.</source>
         <translation>Kamera um diesen Wert nach unten geneigt: erwartetes Oben = Kamera -y, um Nick- und Rollwinkel gedreht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="90"/>
+        <location filename="../app/sightline/option_texts.cpp" line="91"/>
         <source>Camera roll.</source>
         <translation>Rollwinkel der Kamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="91"/>
+        <location filename="../app/sightline/option_texts.cpp" line="92"/>
         <source>Candidate first frames kept (a ring of recent frames); each new frame is tried against every one, oldest first (the largest baseline).</source>
         <translation>Vorgehaltene Kandidaten für das erste Bild (ein Ring der letzten Bilder); jedes neue Bild wird gegen jeden versucht, der älteste zuerst (die längste Basislinie).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="92"/>
+        <location filename="../app/sightline/option_texts.cpp" line="93"/>
         <source>Canny lower threshold.</source>
         <translation>Untere Canny-Schwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="93"/>
+        <location filename="../app/sightline/option_texts.cpp" line="94"/>
         <source>Canny upper threshold.</source>
         <translation>Obere Canny-Schwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="94"/>
+        <location filename="../app/sightline/option_texts.cpp" line="95"/>
         <source>Cell edge of the global map.</source>
         <translation>Zellkante der globalen Karte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="95"/>
+        <location filename="../app/sightline/option_texts.cpp" line="96"/>
         <source>Cell of the keypoint grid used by window searches.</source>
         <translation>Zelle des Keypoint-Rasters, das die Fenstersuchen nutzen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="96"/>
+        <location filename="../app/sightline/option_texts.cpp" line="97"/>
         <source>Coarse search window of the zero-motion try.</source>
         <translation>Grobes Suchfenster des Versuchs ohne Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="97"/>
+        <location filename="../app/sightline/option_texts.cpp" line="98"/>
         <source>Collinear lines (angles this close, one fit within the threshold) are merged.</source>
         <translation>Kollineare Linien (Winkel so nah, eine Anpassung innerhalb der Schwelle) werden zusammengeführt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="98"/>
+        <location filename="../app/sightline/option_texts.cpp" line="99"/>
         <source>Compute SIFT only in a window around the predicted centre (fast).</source>
         <translation>SIFT nur in einem Fenster um die vorhergesagte Mitte berechnen (schnell).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="99"/>
+        <location filename="../app/sightline/option_texts.cpp" line="100"/>
         <source>Connections still owing the token at most; a new one closes the oldest.</source>
         <translation>Höchstens so viele Verbindungen, die das Token noch schuldig sind; eine neue schließt die älteste.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="100"/>
+        <location filename="../app/sightline/option_texts.cpp" line="101"/>
         <source>Consecutive frames of constant-motion fallback before the pose is held.</source>
         <translation>Aufeinanderfolgende Bilder mit Rückfall auf konstante Bewegung, bevor die Pose gehalten wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="101"/>
+        <location filename="../app/sightline/option_texts.cpp" line="102"/>
         <source>Consecutive scan points farther apart than this start a new run.</source>
         <translation>Aufeinanderfolgende Scanpunkte, die weiter als dies auseinanderliegen, beginnen einen neuen Abschnitt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="102"/>
+        <location filename="../app/sightline/option_texts.cpp" line="103"/>
         <source>Consistent matches needed to re-acquire a lost button.</source>
         <translation>Konsistente Übereinstimmungen, die zum Wiederfinden eines verlorenen Knopfs nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="104"/>
+        <location filename="../app/sightline/option_texts.cpp" line="105"/>
         <source>Correct the heading with the walls&apos; Manhattan directions; off = dead reckoning only.</source>
         <translation>Die Fahrtrichtung mit den Manhattan-Richtungen der Wände korrigieren; aus = nur Koppelnavigation.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="105"/>
+        <location filename="../app/sightline/option_texts.cpp" line="106"/>
         <source>Demosaic Bayer formats to BGR colour; off delivers the raw mosaic as grey.</source>
         <translation>Bayer-Formate zu BGR-Farbe demosaikieren; aus liefert das rohe Mosaik als Graubild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="106"/>
+        <location filename="../app/sightline/option_texts.cpp" line="107"/>
         <source>Depth beyond this is left out of the 3D cloud.</source>
         <translation>Tiefe jenseits dieses Werts bleibt aus der 3D-Wolke heraus.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <location filename="../app/sightline/option_texts.cpp" line="49"/>
         <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
         <translation>Eine Linie braucht mindestens so viele Punkte (2 = wie veröffentlicht; mehr verwirft Störobjekte).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="52"/>
+        <location filename="../app/sightline/option_texts.cpp" line="53"/>
         <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
         <translation>Eine Region, deren Schwerpunkt weiter von der Tippstelle entfernt ist und die sie nicht enthält, ist nicht der angetippte Knopf (veröffentlichte Methode).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="80"/>
+        <location filename="../app/sightline/option_texts.cpp" line="81"/>
         <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
         <translation>Winkel zwischen Scanstrahlen (veröffentlicht: res_scan = 0.2 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="107"/>
+        <location filename="../app/sightline/option_texts.cpp" line="108"/>
         <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
         <translation>Tiefenbilder werden auf etwa so viele Spalten abgetastet (veröffentlicht: 320 x 240).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="108"/>
+        <location filename="../app/sightline/option_texts.cpp" line="109"/>
         <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
         <translation>Tiefenpunkte, die eine Zelle braucht, um als belegt zu gelten (1 = wie veröffentlicht: jeder Nicht-Bodenpunkt).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="109"/>
+        <location filename="../app/sightline/option_texts.cpp" line="110"/>
         <source>Depth readings beyond this are treated as invalid downstream.</source>
         <translation>Tiefenwerte jenseits dieses Werts gelten nachgelagert als ungültig.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="110"/>
+        <location filename="../app/sightline/option_texts.cpp" line="111"/>
         <source>Depth readings beyond this count as invalid.</source>
         <translation>Tiefenwerte jenseits dieses Werts gelten als ungültig.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="113"/>
+        <location filename="../app/sightline/option_texts.cpp" line="114"/>
         <source>Depth sigmas (of both points at both times) added to the rigidity tolerance.</source>
         <translation>Tiefen-Sigmas (beider Punkte zu beiden Zeitpunkten), die zur Starrheitstoleranz addiert werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="114"/>
+        <location filename="../app/sightline/option_texts.cpp" line="115"/>
         <source>Descriptor matches with a keyframe needed to try relocalisation.</source>
         <translation>Deskriptor-Übereinstimmungen mit einem Schlüsselbild, die für einen Relokalisierungsversuch nötig sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="115"/>
+        <location filename="../app/sightline/option_texts.cpp" line="116"/>
         <source>Disparity noise giving the depth sigma Z^2 s / (f b).</source>
         <translation>Disparitätsrauschen, das das Tiefen-Sigma Z^2 s / (f b) ergibt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="116"/>
+        <location filename="../app/sightline/option_texts.cpp" line="117"/>
         <source>Displacement pairs between consecutive keyframes (poses refined by bundle adjustment) or between tracked frames scale_interval_frames apart.</source>
         <translation>Verschiebungspaare zwischen aufeinanderfolgenden Schlüsselbildern (Posen durch Bündelausgleichung verfeinert) oder zwischen verfolgten Bildern im Abstand scale_interval_frames.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="117"/>
+        <location filename="../app/sightline/option_texts.cpp" line="118"/>
         <source>Distance from the epipolar line allowed for a new-point match.</source>
         <translation>Zulässiger Abstand von der Epipolarlinie für eine Übereinstimmung neuer Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="118"/>
+        <location filename="../app/sightline/option_texts.cpp" line="119"/>
         <source>Distance gate: a match farther than this from the predicted centre is dropped.</source>
         <translation>Distanz-Gate: Eine Übereinstimmung, die weiter als dies von der vorhergesagten Mitte liegt, wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="119"/>
+        <location filename="../app/sightline/option_texts.cpp" line="120"/>
         <source>Draws per hypothesis to find a pair within the distance limits.</source>
         <translation>Ziehungen pro Hypothese, um ein Paar innerhalb der Abstandsgrenzen zu finden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="120"/>
+        <location filename="../app/sightline/option_texts.cpp" line="121"/>
         <source>Edge of one occupancy cell; RANSAC&apos;s 5-cell error scales with it.</source>
         <translation>Kante einer Belegungszelle; der 5-Zellen-Fehler von RANSAC skaliert damit.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="121"/>
+        <location filename="../app/sightline/option_texts.cpp" line="122"/>
         <source>Epipolar (row) constraint: largest row difference of a match.</source>
         <translation>Epipolare (Zeilen-)Bedingung: größter Zeilenunterschied einer Übereinstimmung.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="122"/>
+        <location filename="../app/sightline/option_texts.cpp" line="123"/>
         <source>Estimate a constant disparity offset of the rig (rectification or matcher bias) online from the motion, and add it to every disparity; an offset of a fraction of a pixel moves far points most and makes the translation too long or too short.</source>
         <translation>Einen konstanten Disparitätsversatz des Rigs (Verzerrung der Rektifizierung oder des Matchers) online aus der Bewegung schätzen und zu jeder Disparität addieren; ein Versatz von einem Bruchteil eines Pixels verschiebt ferne Punkte am stärksten und macht die Translation zu lang oder zu kurz.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="123"/>
+        <location filename="../app/sightline/option_texts.cpp" line="124"/>
         <source>Estimate each pose against the last keyframe&apos;s stereo observations of the tracks (after the frame-to-frame estimate), so per-frame errors do not accumulate.</source>
         <translation>Jede Pose gegen die Stereobeobachtungen der Tracks im letzten Schlüsselbild schätzen (nach der Bild-zu-Bild-Schätzung), damit sich Fehler einzelner Bilder nicht aufsummieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="124"/>
+        <location filename="../app/sightline/option_texts.cpp" line="125"/>
         <source>Exposure time; 0 keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Belichtungszeit; 0 behält die der Kamera. Werte außerhalb des Bereichs sind Fehler.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="125"/>
+        <location filename="../app/sightline/option_texts.cpp" line="126"/>
         <source>FAST corner threshold.</source>
         <translation>FAST-Eckenschwelle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="126"/>
+        <location filename="../app/sightline/option_texts.cpp" line="127"/>
         <source>FLANN leaf checks per query.</source>
         <translation>FLANN-Blattprüfungen pro Anfrage.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="127"/>
+        <location filename="../app/sightline/option_texts.cpp" line="128"/>
         <source>FLANN randomised kd-trees.</source>
         <translation>Randomisierte FLANN-kd-Bäume.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="128"/>
+        <location filename="../app/sightline/option_texts.cpp" line="129"/>
         <source>Faster estimated rotation is rejected.</source>
         <translation>Eine schneller geschätzte Rotation wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="129"/>
+        <location filename="../app/sightline/option_texts.cpp" line="130"/>
         <source>Faster estimated translation is rejected.</source>
         <translation>Eine schneller geschätzte Translation wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="130"/>
+        <location filename="../app/sightline/option_texts.cpp" line="131"/>
         <source>Features kept per frame, tracked plus new.</source>
         <translation>Pro Bild behaltene Merkmale, verfolgte plus neue.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="131"/>
+        <location filename="../app/sightline/option_texts.cpp" line="132"/>
         <source>Features this close to the border are dropped.</source>
         <translation>So nah am Rand liegende Merkmale werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="132"/>
+        <location filename="../app/sightline/option_texts.cpp" line="133"/>
         <source>Features within this many button radii of the centre are added.</source>
         <translation>Merkmale innerhalb so vieler Knopfradien um die Mitte werden hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="133"/>
+        <location filename="../app/sightline/option_texts.cpp" line="134"/>
         <source>Fewer SIFT keypoints on the region: the button cannot be tracked.</source>
         <translation>Weniger SIFT-Keypoints auf der Region: Der Knopf kann nicht verfolgt werden.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="134"/>
+        <location filename="../app/sightline/option_texts.cpp" line="135"/>
         <source>Fewer consistent matches: the button is lost.</source>
         <translation>Weniger konsistente Übereinstimmungen: Der Knopf ist verloren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="135"/>
+        <location filename="../app/sightline/option_texts.cpp" line="136"/>
         <source>Fewer inliers after refinement is rejected.</source>
         <translation>Weniger Inlier nach der Verfeinerung werden verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="136"/>
+        <location filename="../app/sightline/option_texts.cpp" line="137"/>
         <source>Fewer inliers than this fraction of the points: the plane is not sound.</source>
         <translation>Weniger Inlier als dieser Anteil der Punkte: Die Ebene ist nicht verlässlich.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="137"/>
+        <location filename="../app/sightline/option_texts.cpp" line="138"/>
         <source>Fewer inliers than this means the motion could not be estimated.</source>
         <translation>Weniger Inlier als dieser Wert bedeuten, dass die Bewegung nicht geschätzt werden konnte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="138"/>
+        <location filename="../app/sightline/option_texts.cpp" line="139"/>
         <source>Fewer map points or plane inliers: no normal in this frame.</source>
         <translation>Weniger Kartenpunkte oder Ebenen-Inlier: keine Normale in diesem Bild.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="139"/>
+        <location filename="../app/sightline/option_texts.cpp" line="140"/>
         <source>Fewer points left after the range cut is reported as an error.</source>
         <translation>Bleiben nach dem Entfernungsschnitt weniger Punkte, wird ein Fehler gemeldet.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="140"/>
+        <location filename="../app/sightline/option_texts.cpp" line="141"/>
         <source>Fewer points than this: the plane is not sound (no target is sent).</source>
         <translation>Weniger Punkte als dieser Wert: Die Ebene ist nicht verlässlich (es wird kein Ziel gesendet).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="141"/>
+        <location filename="../app/sightline/option_texts.cpp" line="142"/>
         <source>Fewer points: no 3D position.</source>
         <translation>Weniger Punkte: keine 3D-Position.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="142"/>
+        <location filename="../app/sightline/option_texts.cpp" line="143"/>
         <source>Fewer tracked views with an arm pose: no triangulated point.</source>
         <translation>Weniger verfolgte Ansichten mit einer Armpose: kein triangulierter Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="143"/>
+        <location filename="../app/sightline/option_texts.cpp" line="144"/>
         <source>Fewest tracks (the track included) a surface is fitted to.</source>
         <translation>Wenigste Tracks (einschließlich des Tracks selbst), an die eine Fläche angepasst wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="144"/>
+        <location filename="../app/sightline/option_texts.cpp" line="145"/>
         <source>Field of view to scan, centred on forward; 0 = the camera&apos;s own (rays outside it can never hit anything).</source>
         <translation>Zu scannendes Sichtfeld, zentriert auf vorwärts; 0 = das der Kamera (Strahlen außerhalb davon können nie etwas treffen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="145"/>
+        <location filename="../app/sightline/option_texts.cpp" line="146"/>
         <source>Floor calibration (sightline-cli floor) giving the expected up direction; empty = mobility.mount_pitch_deg / mount_roll_deg.</source>
         <translation>Bodenkalibrierung (sightline-cli floor), die die erwartete Aufwärtsrichtung liefert; leer = mobility.mount_pitch_deg / mount_roll_deg.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="146"/>
+        <location filename="../app/sightline/option_texts.cpp" line="147"/>
         <source>Floor calibration file (sightline-cli floor); empty = calibrate from the first frames of the run.</source>
         <translation>Bodenkalibrierungsdatei (sightline-cli floor); leer = aus den ersten Bildern des Laufs kalibrieren.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="147"/>
+        <location filename="../app/sightline/option_texts.cpp" line="148"/>
         <source>Floor of the residual RMS by which each frame pair&apos;s measurement is weighted.</source>
         <translation>Untergrenze des Residuen-RMS, mit dem die Messung jedes Bildpaars gewichtet wird.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="148"/>
+        <location filename="../app/sightline/option_texts.cpp" line="149"/>
         <source>Format of trajectory.txt; --format kitti.</source>
         <translation>Format von trajectory.txt; --format kitti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="149"/>
+        <location filename="../app/sightline/option_texts.cpp" line="150"/>
         <source>Fraction of a circle&apos;s rim that must lie on an edge.</source>
         <translation>Anteil des Kreisrands, der auf einer Kante liegen muss.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="150"/>
+        <location filename="../app/sightline/option_texts.cpp" line="151"/>
         <source>Fraction of directions around a region&apos;s centre in which its outline lies; a button&apos;s (even broken) outline surrounds its centre.</source>
         <translation>Anteil der Richtungen um die Mitte einer Region, in denen ihr Umriss liegt; der (auch unterbrochene) Umriss eines Knopfs umschließt seine Mitte.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="151"/>
+        <location filename="../app/sightline/option_texts.cpp" line="152"/>
         <source>Fraction of the correction applied per frame (1 = take the walls&apos; heading).</source>
         <translation>Pro Bild angewandter Anteil der Korrektur (1 = die Richtung der Wände übernehmen).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="153"/>
+        <location filename="../app/sightline/option_texts.cpp" line="154"/>
         <source>Frame rate of overlay.avi.</source>
         <translation>Bildrate von overlay.avi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="154"/>
+        <location filename="../app/sightline/option_texts.cpp" line="155"/>
         <source>Frame results carry a rendered map image every n frames (0 = never).</source>
         <translation>Bildergebnisse enthalten alle n Bilder ein gerendertes Kartenbild (0 = nie).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="155"/>
-        <source>Frames at least this far apart are a low-rate (keyframe-rate) sequence: the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
-        <translation>Bilder mit mindestens diesem Abstand bilden eine Sequenz niedriger Rate (Schlüsselbildrate): dann gelten der Versuch ohne Bewegung unten und die dringenden Schlüsselbilder von mono.mapping.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="156"/>
@@ -2626,52 +2621,57 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
         <translation>Ein Bild wird zur Referenz der Odometrie, wenn es sich so weit von der letzten entfernt hat (0 mit keyframe_rotation_deg 0: jedes Bild).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="39"/>
+        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <source>A frame this far after the last, or in a sequence whose recent frames are (median of five steps), is low-rate (keyframe-rate): the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
+        <translation>Ein Bild mindestens so weit nach dem letzten, oder in einer Folge, deren letzte Bilder es sind (Median von fünf Schritten), gilt als niedrige Bildrate (Schlüsselbildrate): der Versuch ohne Bewegung unten und die dringenden Schlüsselbilder von mono.mapping gelten.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="40"/>
         <source>A frame with a smaller fraction of depth pixels in range is not tracked (the pose is held).</source>
         <translation>Ein Bild mit einem kleineren Anteil an Tiefenpixeln im Messbereich wird nicht verfolgt (die Pose wird gehalten).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="50"/>
+        <location filename="../app/sightline/option_texts.cpp" line="51"/>
         <source>A new keyframe looks for a revisit among keyframes at least this many keyframes older.</source>
         <translation>Ein neues Schlüsselbild sucht einen erneuten Besuch unter Schlüsselbildern, die mindestens so viele Schlüsselbilder älter sind.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="60"/>
+        <location filename="../app/sightline/option_texts.cpp" line="61"/>
         <source>A tracked corner within this of where the plane&apos;s homography puts it is on the panel.</source>
         <translation>Eine verfolgte Ecke, die höchstens so weit von der durch die Homographie der Ebene vorhergesagten Stelle liegt, gehört zum Tableau.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="71"/>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
         <source>Always weigh each position by 1 / its own variance (plane fit, tracked centre and scale, growing with the distance): the near frames of the approach count most.</source>
         <translation>Jede Position immer mit 1 / ihrer eigenen Varianz gewichten (Ebenenanpassung, verfolgtes Zentrum und Maßstab, mit der Entfernung wachsend): die nahen Bilder der Annäherung zählen am meisten.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="77"/>
+        <location filename="../app/sightline/option_texts.cpp" line="78"/>
         <source>An odometry step faster than this (sensor time) is rejected.</source>
         <translation>Ein Odometrieschritt, der schneller ist (Sensorzeit), wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="78"/>
+        <location filename="../app/sightline/option_texts.cpp" line="79"/>
         <source>An odometry step turning faster than this (sensor time) is rejected.</source>
         <translation>Ein Odometrieschritt, der sich schneller dreht (Sensorzeit), wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="103"/>
+        <location filename="../app/sightline/option_texts.cpp" line="104"/>
         <source>Corners tracked around the button for the plane from the arm&apos;s motion.</source>
         <translation>Um die Taste verfolgte Ecken für die Ebene aus der Bewegung des Arms.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="111"/>
+        <location filename="../app/sightline/option_texts.cpp" line="112"/>
         <source>Depth readings farther than this are not used by the odometry.</source>
         <translation>Weiter entfernte Tiefenwerte verwendet die Odometrie nicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="112"/>
+        <location filename="../app/sightline/option_texts.cpp" line="113"/>
         <source>Depth readings nearer than this are not used by the odometry.</source>
         <translation>Nähere Tiefenwerte verwendet die Odometrie nicht.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="152"/>
+        <location filename="../app/sightline/option_texts.cpp" line="153"/>
         <source>Fraction of the pixels the odometry uses per pyramid level.</source>
         <translation>Anteil der Pixel, den die Odometrie je Pyramidenstufe verwendet.</translation>
     </message>

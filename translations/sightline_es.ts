@@ -1766,549 +1766,544 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Un fotograma permanece en la ventana cuando la cámara se ha movido esta fracción de la profundidad mediana de sus puntos desde el anterior que permaneció (0 = todos permanecen); si no, el siguiente fotograma lo sustituye.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <location filename="../app/sightline/option_texts.cpp" line="38"/>
         <source>A frame this far from every keyframe (relative to the mean depth) becomes one.</source>
         <translation>Un fotograma a esta distancia de todos los fotogramas clave (relativa a la profundidad media) se convierte en uno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="38"/>
+        <location filename="../app/sightline/option_texts.cpp" line="39"/>
         <source>A frame tracking fewer than this share of the last keyframe&apos;s points becomes one.</source>
         <translation>Un fotograma que sigue menos de esta proporción de los puntos del último fotograma clave se convierte en uno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="40"/>
+        <location filename="../app/sightline/option_texts.cpp" line="41"/>
         <source>A frame with fewer matches than this with the newest candidate becomes a candidate too (the oldest leaves a full ring); at low frame rates every frame does.</source>
         <translation>Un fotograma con menos correspondencias que estas con el candidato más reciente pasa también a ser candidato (con el anillo lleno sale el más antiguo); a baja frecuencia lo es cada fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="41"/>
+        <location filename="../app/sightline/option_texts.cpp" line="42"/>
         <source>A frame&apos;s normal this many sigmas off the average is skipped.</source>
         <translation>Se omite un fotograma cuya normal se aparta esta cantidad de sigmas de la media.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="42"/>
+        <location filename="../app/sightline/option_texts.cpp" line="43"/>
         <source>A frame&apos;s walls count only when their summed vote weight (length x fit quality) reaches this.</source>
         <translation>Las paredes de un fotograma solo cuentan cuando su peso de voto sumado (longitud x calidad del ajuste) alcanza este valor.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="43"/>
+        <location filename="../app/sightline/option_texts.cpp" line="44"/>
         <source>A ground candidate holds at least this fraction of the points.</source>
         <translation>Un candidato a suelo contiene al menos esta fracción de los puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="44"/>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
         <source>A ground plane&apos;s normal lies at most this far from the expected up direction.</source>
         <translation>La normal de un plano del suelo se aparta como máximo esto de la dirección hacia arriba esperada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A ground point&apos;s own normal lies at most this far from the plane&apos;s.</source>
         <translation>La normal propia de un punto del suelo se aparta como máximo esto de la del plano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="46"/>
+        <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A ground-truth or odometry pose belongs to a frame when this close in time.</source>
         <translation>Una pose de ground truth o de odometría pertenece a un fotograma cuando está así de cerca en el tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="47"/>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
         <source>A ground-truth pose belongs to a frame when this close in time.</source>
         <translation>Una pose de ground truth pertenece a un fotograma cuando está así de cerca en el tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="49"/>
+        <location filename="../app/sightline/option_texts.cpp" line="50"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Una línea así de cerca de un eje Manhattan se clasifica como paralela (0) o perpendicular (1) a la referencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="51"/>
+        <location filename="../app/sightline/option_texts.cpp" line="52"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Una pose pertenece a un fotograma cuando está así de cerca en el tiempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="53"/>
+        <location filename="../app/sightline/option_texts.cpp" line="54"/>
         <source>A segment&apos;s raised height is this quantile of its heights above the ground.</source>
         <translation>La altura elevada de un segmento es este cuantil de sus alturas sobre el suelo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="54"/>
+        <location filename="../app/sightline/option_texts.cpp" line="55"/>
         <source>A sloped segment whose plane meets the ground within this distance of its lowest points is connected to the ground (a ramp), not raised.</source>
         <translation>Un segmento inclinado cuyo plano corta el suelo a menos de esta distancia de sus puntos más bajos está conectado al suelo (una rampa), no elevado.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="55"/>
+        <location filename="../app/sightline/option_texts.cpp" line="56"/>
         <source>A streaming device that delivers nothing for this long is treated as lost and reopened; 0 never does (e.g. waiting for rare hardware triggers).</source>
         <translation>Un dispositivo en streaming que no entrega nada durante este tiempo se considera perdido y se vuelve a abrir; 0 no lo hace nunca (p. ej. esperando disparos de hardware poco frecuentes).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="56"/>
+        <location filename="../app/sightline/option_texts.cpp" line="57"/>
         <source>A track must return to its start within this when tracked backwards; 0 = no check.</source>
         <translation>Una pista, seguida hacia atrás, debe volver a su inicio dentro de este valor; 0 = sin comprobación.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="57"/>
+        <location filename="../app/sightline/option_texts.cpp" line="58"/>
         <source>A track seen from a direction differing more than this from its anchor&apos;s is anchored anew: the further aside, the more a wrongly fitted or assumed surface (the road taken as facing the camera) misleads the warp; 3 suits subsampled driving.</source>
         <translation>Una pista vista desde una dirección que difiere más que esto de la de su anclaje se ancla de nuevo: cuanto más lateral, más engaña a la deformación una superficie mal ajustada o supuesta (la carretera tomada como orientada hacia la cámara); 3 conviene a la conducción submuestreada.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="58"/>
+        <location filename="../app/sightline/option_texts.cpp" line="59"/>
         <source>A track whose patch would be scaled by more than this fraction since its anchor (the camera came close) is anchored anew.</source>
         <translation>Una pista cuyo parche se escalaría más de esta fracción desde su anclaje (la cámara se acercó) se ancla de nuevo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="59"/>
+        <location filename="../app/sightline/option_texts.cpp" line="60"/>
         <source>A track&apos;s surface is fitted as a plane to the tracks within this radius at a similar depth, so the anchor&apos;s patch is warped as that plane; 0 = every patch is taken as facing the camera.</source>
         <translation>La superficie de una pista se ajusta como un plano a las pistas dentro de este radio a una profundidad similar, de modo que el parche del anclaje se deforma como ese plano; 0 = cada parche se toma como orientado hacia la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="61"/>
+        <location filename="../app/sightline/option_texts.cpp" line="62"/>
         <source>Accuracy: a segment is compared with the true region holding this fraction of its points.</source>
         <translation>Precisión: un segmento se compara con la región real que contiene esta fracción de sus puntos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="62"/>
+        <location filename="../app/sightline/option_texts.cpp" line="63"/>
         <source>Adaptive termination: stop when an outlier-free sample was drawn with this probability given the best inlier fraction; 1 = always max_iterations.</source>
         <translation>Terminación adaptativa: parar cuando se ha extraído una muestra sin outliers con esta probabilidad dada la mejor fracción de inliers; 1 = siempre max_iterations.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="63"/>
+        <location filename="../app/sightline/option_texts.cpp" line="64"/>
         <source>Add features of confidently tracked frames to the model when the button&apos;s apparent size has changed.</source>
         <translation>Añadir al modelo las características de los fotogramas seguidos con confianza cuando el tamaño aparente del botón ha cambiado.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="64"/>
+        <location filename="../app/sightline/option_texts.cpp" line="65"/>
         <source>Added to the triangulation&apos;s stated 1-sigma: biases no residual shows (the tracked centre&apos;s offset on the button, the size&apos;s depth on a relief).</source>
         <translation>Se suma al 1-sigma declarado de la triangulación: sesgos que ningún residuo muestra (el desplazamiento del centro seguido sobre el botón, la profundidad del tamaño sobre un relieve).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="65"/>
+        <location filename="../app/sightline/option_texts.cpp" line="66"/>
         <source>After a loss, search whole frames and re-acquire the button only on a confident match at a plausible size.</source>
         <translation>Tras una pérdida, buscar en fotogramas completos y volver a adquirir el botón solo con una coincidencia fiable y de tamaño plausible.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="66"/>
+        <location filename="../app/sightline/option_texts.cpp" line="67"/>
         <source>Agreement of the voting lines modulo 90 deg (1 = perfect); below it the frame&apos;s walls are not used.</source>
         <translation>Concordancia de las líneas que votan módulo 90 deg (1 = perfecta); por debajo, no se usan las paredes del fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="67"/>
+        <location filename="../app/sightline/option_texts.cpp" line="68"/>
         <source>Also estimate a constant offset of the tracked centre in the image (a detector&apos;s sub-pixel convention): it would tilt the rays of the approach against the sideways move&apos;s.</source>
         <translation>Estima también un desplazamiento constante del centro seguido en la imagen (la convención subpíxel de un detector): inclinaría los rayos de la aproximación frente a los del movimiento lateral.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="68"/>
+        <location filename="../app/sightline/option_texts.cpp" line="69"/>
         <source>Also list and open Aravis&apos; in-process simulated camera Fake_1 (demos and tests).</source>
         <translation>Listar y abrir también la cámara simulada interna de Aravis Fake_1 (demos y pruebas).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="69"/>
+        <location filename="../app/sightline/option_texts.cpp" line="70"/>
         <source>Also locate the button from the arm&apos;s metric camera poses alone (the tracked centre&apos;s rays and its apparent size, core/button/arm_triangulation.h) and combine that point with the map&apos;s by their variances. Off by default: on the simulated approach&apos;s seeds 1-5 the mean final error goes 4.77 -&gt; 3.68 mm and the worst 10.1 -&gt; 5.9 mm, but seeds 1 and 4 and the 12 cm sideways approach get worse (docs/button.md).</source>
         <translation>Localiza también el botón solo a partir de las poses métricas de la cámara dadas por el brazo (los rayos del centro seguido y su tamaño aparente, core/button/arm_triangulation.h) y combina ese punto con el del mapa según sus varianzas. Desactivado por defecto: en las semillas 1-5 de la aproximación simulada el error final medio pasa de 4.77 -&gt; 3.68 mm y el peor de 10.1 -&gt; 5.9 mm, pero las semillas 1 y 4 y la aproximación con 12 cm de desplazamiento lateral empeoran (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="70"/>
+        <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Also project current points into the previous images (uses both depths).</source>
         <translation>Proyectar también los puntos actuales en las imágenes anteriores (usa ambas profundidades).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <location filename="../app/sightline/option_texts.cpp" line="73"/>
         <source>An aligned patch whose zero-mean normalised correlation with the warped anchor patch is lower failed (occlusion, reflection).</source>
         <translation>Un parche alineado cuya correlación normalizada de media cero con el parche de anclaje deformado es menor ha fallado (oclusión, reflejo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="73"/>
+        <location filename="../app/sightline/option_texts.cpp" line="74"/>
         <source>An alignment that moves the tracked position further than this failed (the KLT position is kept and the track anchored anew).</source>
         <translation>Una alineación que desplaza la posición seguida más que esto ha fallado (se conserva la posición de KLT y la pista se ancla de nuevo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="74"/>
+        <location filename="../app/sightline/option_texts.cpp" line="75"/>
         <source>An anchor is used for at most this many frames; then the track is anchored anew.</source>
         <translation>Un anclaje se usa como máximo durante este número de fotogramas; después la pista se ancla de nuevo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="75"/>
+        <location filename="../app/sightline/option_texts.cpp" line="76"/>
         <source>An arm_pose message with more joint positions is refused.</source>
         <translation>Se rechaza un mensaje arm_pose con más posiciones articulares.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="76"/>
+        <location filename="../app/sightline/option_texts.cpp" line="77"/>
         <source>An arm_pose position farther than this from the base is refused.</source>
         <translation>Se rechaza una posición de arm_pose más alejada que esto de la base.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="79"/>
+        <location filename="../app/sightline/option_texts.cpp" line="80"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Ganancia analógica; un valor negativo conserva la de la cámara. Los valores fuera de rango son errores.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="81"/>
+        <location filename="../app/sightline/option_texts.cpp" line="82"/>
         <source>Ask the device to deliver depth and colour frames of the same instant.</source>
         <translation>Pedir al dispositivo que entregue fotogramas de profundidad y color del mismo instante.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="82"/>
+        <location filename="../app/sightline/option_texts.cpp" line="83"/>
         <source>At low rates (mono.tracking.low_rate_interval_s), a frame tracking fewer than this share of the last keyframe&apos;s points becomes a keyframe within min_keyframe_gap too (0 = off).</source>
         <translation>A baja frecuencia (mono.tracking.low_rate_interval_s), un fotograma que sigue menos de esta fracción de los puntos del último fotograma clave pasa a ser fotograma clave también dentro de min_keyframe_gap (0 = desactivado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="83"/>
+        <location filename="../app/sightline/option_texts.cpp" line="84"/>
         <source>At low rates, a frame this far from every keyframe (relative to the mean depth) becomes a keyframe within min_keyframe_gap too.</source>
         <translation>A baja frecuencia, un fotograma así de lejos de todo fotograma clave (respecto a la profundidad media) pasa a ser fotograma clave también dentro de min_keyframe_gap.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="84"/>
+        <location filename="../app/sightline/option_texts.cpp" line="85"/>
         <source>At low rates, when the constant-velocity prediction tracks fewer inliers, the last pose (zero motion) is tried too and the better kept (0 = off).</source>
         <translation>A baja frecuencia, cuando la predicción de velocidad constante sigue menos inliers, se prueba también la última pose (movimiento nulo) y se conserva la mejor (0 = desactivado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="85"/>
+        <location filename="../app/sightline/option_texts.cpp" line="86"/>
         <source>Authorised clients at most; further ones are closed.</source>
         <translation>Número máximo de clientes autorizados; los siguientes se cierran.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="86"/>
+        <location filename="../app/sightline/option_texts.cpp" line="87"/>
         <source>Band of the refinement (offset histogram bin and refit band): narrower than err_max, so that a door recessed behind the wall face does not tilt the line.</source>
         <translation>Banda del refinamiento (clase del histograma del desplazamiento y banda del reajuste): más estrecha que err_max, para que una puerta retranqueada respecto a la cara de la pared no incline la línea.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="87"/>
+        <location filename="../app/sightline/option_texts.cpp" line="88"/>
         <source>Baseline over the median depth of the first points needed to accept (0.07 is a 4 deg ray angle sideways); a short baseline gives a distorted first map and a drifting scale.</source>
         <translation>Línea base dividida por la profundidad mediana de los primeros puntos necesaria para aceptar (0.07 equivale a un ángulo de rayos de 4 deg lateralmente); una línea base corta da un primer mapa distorsionado y una escala que deriva.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="88"/>
+        <location filename="../app/sightline/option_texts.cpp" line="89"/>
         <source>Best over second-best descriptor distance in a window; 1 = off.</source>
         <translation>Cociente entre la mejor y la segunda mejor distancia de descriptores en una ventana; 1 = desactivado.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="89"/>
+        <location filename="../app/sightline/option_texts.cpp" line="90"/>
         <source>Camera pitched down by this: expected up = camera -y turned by pitch and roll.</source>
         <translation>Cámara inclinada hacia abajo este ángulo: arriba esperado = -y de la cámara girado por cabeceo y alabeo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="90"/>
+        <location filename="../app/sightline/option_texts.cpp" line="91"/>
         <source>Camera roll.</source>
         <translation>Alabeo de la cámara.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="91"/>
+        <location filename="../app/sightline/option_texts.cpp" line="92"/>
         <source>Candidate first frames kept (a ring of recent frames); each new frame is tried against every one, oldest first (the largest baseline).</source>
         <translation>Candidatos a primer fotograma que se guardan (un anillo de fotogramas recientes); cada fotograma nuevo se prueba contra todos, el más antiguo primero (la línea base más larga).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="92"/>
+        <location filename="../app/sightline/option_texts.cpp" line="93"/>
         <source>Canny lower threshold.</source>
         <translation>Umbral inferior de Canny.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="93"/>
+        <location filename="../app/sightline/option_texts.cpp" line="94"/>
         <source>Canny upper threshold.</source>
         <translation>Umbral superior de Canny.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="94"/>
+        <location filename="../app/sightline/option_texts.cpp" line="95"/>
         <source>Cell edge of the global map.</source>
         <translation>Lado de celda del mapa global.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="95"/>
+        <location filename="../app/sightline/option_texts.cpp" line="96"/>
         <source>Cell of the keypoint grid used by window searches.</source>
         <translation>Celda de la rejilla de puntos clave que usan las búsquedas en ventana.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="96"/>
+        <location filename="../app/sightline/option_texts.cpp" line="97"/>
         <source>Coarse search window of the zero-motion try.</source>
         <translation>Ventana de búsqueda gruesa del intento con movimiento nulo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="97"/>
+        <location filename="../app/sightline/option_texts.cpp" line="98"/>
         <source>Collinear lines (angles this close, one fit within the threshold) are merged.</source>
         <translation>Las líneas colineales (ángulos así de cercanos, un ajuste dentro del umbral) se fusionan.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="98"/>
+        <location filename="../app/sightline/option_texts.cpp" line="99"/>
         <source>Compute SIFT only in a window around the predicted centre (fast).</source>
         <translation>Calcular SIFT solo en una ventana alrededor del centro predicho (rápido).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="99"/>
+        <location filename="../app/sightline/option_texts.cpp" line="100"/>
         <source>Connections still owing the token at most; a new one closes the oldest.</source>
         <translation>Número máximo de conexiones que aún deben el token; una nueva cierra la más antigua.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="100"/>
+        <location filename="../app/sightline/option_texts.cpp" line="101"/>
         <source>Consecutive frames of constant-motion fallback before the pose is held.</source>
         <translation>Fotogramas consecutivos con recurso al movimiento constante antes de mantener la pose.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="101"/>
+        <location filename="../app/sightline/option_texts.cpp" line="102"/>
         <source>Consecutive scan points farther apart than this start a new run.</source>
         <translation>Los puntos de barrido consecutivos separados más que esto inician un tramo nuevo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="102"/>
+        <location filename="../app/sightline/option_texts.cpp" line="103"/>
         <source>Consistent matches needed to re-acquire a lost button.</source>
         <translation>Coincidencias coherentes necesarias para volver a adquirir un botón perdido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="104"/>
+        <location filename="../app/sightline/option_texts.cpp" line="105"/>
         <source>Correct the heading with the walls&apos; Manhattan directions; off = dead reckoning only.</source>
         <translation>Corregir el rumbo con las direcciones Manhattan de las paredes; desactivado = solo navegación a estima.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="105"/>
+        <location filename="../app/sightline/option_texts.cpp" line="106"/>
         <source>Demosaic Bayer formats to BGR colour; off delivers the raw mosaic as grey.</source>
         <translation>Convertir por demosaico los formatos Bayer a color BGR; desactivado entrega el mosaico en bruto en gris.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="106"/>
+        <location filename="../app/sightline/option_texts.cpp" line="107"/>
         <source>Depth beyond this is left out of the 3D cloud.</source>
         <translation>La profundidad más allá de este valor queda fuera de la nube 3D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <location filename="../app/sightline/option_texts.cpp" line="49"/>
         <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
         <translation>Una línea necesita al menos esta cantidad de puntos (2 = como se publicó; más descarta el desorden).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="52"/>
+        <location filename="../app/sightline/option_texts.cpp" line="53"/>
         <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
         <translation>Una región cuyo centroide está más lejos del toque y que no lo contiene no es el botón tocado (método publicado).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="80"/>
+        <location filename="../app/sightline/option_texts.cpp" line="81"/>
         <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
         <translation>Ángulo entre los rayos del barrido (publicado: res_scan = 0.2 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="107"/>
+        <location filename="../app/sightline/option_texts.cpp" line="108"/>
         <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
         <translation>Las imágenes de profundidad se muestrean a unas tantas columnas (publicado: 320 x 240).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="108"/>
+        <location filename="../app/sightline/option_texts.cpp" line="109"/>
         <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
         <translation>Puntos de profundidad que necesita una celda para contar como ocupada (1 = como se publicó: cualquier punto que no sea del suelo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="109"/>
+        <location filename="../app/sightline/option_texts.cpp" line="110"/>
         <source>Depth readings beyond this are treated as invalid downstream.</source>
         <translation>Las lecturas de profundidad más allá de este valor se consideran no válidas en las etapas siguientes.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="110"/>
+        <location filename="../app/sightline/option_texts.cpp" line="111"/>
         <source>Depth readings beyond this count as invalid.</source>
         <translation>Las lecturas de profundidad más allá de este valor se consideran no válidas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="113"/>
+        <location filename="../app/sightline/option_texts.cpp" line="114"/>
         <source>Depth sigmas (of both points at both times) added to the rigidity tolerance.</source>
         <translation>Sigmas de profundidad (de ambos puntos en ambos instantes) que se suman a la tolerancia de rigidez.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="114"/>
+        <location filename="../app/sightline/option_texts.cpp" line="115"/>
         <source>Descriptor matches with a keyframe needed to try relocalisation.</source>
         <translation>Coincidencias de descriptores con un fotograma clave necesarias para intentar la relocalización.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="115"/>
+        <location filename="../app/sightline/option_texts.cpp" line="116"/>
         <source>Disparity noise giving the depth sigma Z^2 s / (f b).</source>
         <translation>Ruido de disparidad que da la sigma de profundidad Z^2 s / (f b).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="116"/>
+        <location filename="../app/sightline/option_texts.cpp" line="117"/>
         <source>Displacement pairs between consecutive keyframes (poses refined by bundle adjustment) or between tracked frames scale_interval_frames apart.</source>
         <translation>Pares de desplazamientos entre fotogramas clave consecutivos (poses refinadas por ajuste de haces) o entre fotogramas seguidos separados scale_interval_frames.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="117"/>
+        <location filename="../app/sightline/option_texts.cpp" line="118"/>
         <source>Distance from the epipolar line allowed for a new-point match.</source>
         <translation>Distancia a la línea epipolar permitida para una coincidencia de un punto nuevo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="118"/>
+        <location filename="../app/sightline/option_texts.cpp" line="119"/>
         <source>Distance gate: a match farther than this from the predicted centre is dropped.</source>
         <translation>Gate de distancia: se descarta una coincidencia más alejada que esto del centro predicho.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="119"/>
+        <location filename="../app/sightline/option_texts.cpp" line="120"/>
         <source>Draws per hypothesis to find a pair within the distance limits.</source>
         <translation>Extracciones por hipótesis para encontrar un par dentro de los límites de distancia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="120"/>
+        <location filename="../app/sightline/option_texts.cpp" line="121"/>
         <source>Edge of one occupancy cell; RANSAC&apos;s 5-cell error scales with it.</source>
         <translation>Lado de una celda de ocupación; el error de 5 celdas de RANSAC escala con él.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="121"/>
+        <location filename="../app/sightline/option_texts.cpp" line="122"/>
         <source>Epipolar (row) constraint: largest row difference of a match.</source>
         <translation>Restricción epipolar (de fila): mayor diferencia de fila de una coincidencia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="122"/>
+        <location filename="../app/sightline/option_texts.cpp" line="123"/>
         <source>Estimate a constant disparity offset of the rig (rectification or matcher bias) online from the motion, and add it to every disparity; an offset of a fraction of a pixel moves far points most and makes the translation too long or too short.</source>
         <translation>Estimar en línea a partir del movimiento un desplazamiento de disparidad constante del rig (sesgo de la rectificación o del emparejador) y sumarlo a cada disparidad; un desplazamiento de una fracción de píxel mueve sobre todo los puntos lejanos y hace la traslación demasiado larga o demasiado corta.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="123"/>
+        <location filename="../app/sightline/option_texts.cpp" line="124"/>
         <source>Estimate each pose against the last keyframe&apos;s stereo observations of the tracks (after the frame-to-frame estimate), so per-frame errors do not accumulate.</source>
         <translation>Estimar cada pose frente a las observaciones estéreo de las pistas en el último fotograma clave (tras la estimación fotograma a fotograma), para que los errores de cada fotograma no se acumulen.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="124"/>
+        <location filename="../app/sightline/option_texts.cpp" line="125"/>
         <source>Exposure time; 0 keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Tiempo de exposición; 0 conserva el de la cámara. Los valores fuera de rango son errores.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="125"/>
+        <location filename="../app/sightline/option_texts.cpp" line="126"/>
         <source>FAST corner threshold.</source>
         <translation>Umbral de esquinas FAST.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="126"/>
+        <location filename="../app/sightline/option_texts.cpp" line="127"/>
         <source>FLANN leaf checks per query.</source>
         <translation>Comprobaciones de hojas de FLANN por consulta.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="127"/>
+        <location filename="../app/sightline/option_texts.cpp" line="128"/>
         <source>FLANN randomised kd-trees.</source>
         <translation>Árboles kd aleatorizados de FLANN.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="128"/>
+        <location filename="../app/sightline/option_texts.cpp" line="129"/>
         <source>Faster estimated rotation is rejected.</source>
         <translation>Se rechaza una rotación estimada más rápida.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="129"/>
+        <location filename="../app/sightline/option_texts.cpp" line="130"/>
         <source>Faster estimated translation is rejected.</source>
         <translation>Se rechaza una traslación estimada más rápida.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="130"/>
+        <location filename="../app/sightline/option_texts.cpp" line="131"/>
         <source>Features kept per frame, tracked plus new.</source>
         <translation>Características conservadas por fotograma, seguidas más nuevas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="131"/>
+        <location filename="../app/sightline/option_texts.cpp" line="132"/>
         <source>Features this close to the border are dropped.</source>
         <translation>Se descartan las características así de cerca del borde.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="132"/>
+        <location filename="../app/sightline/option_texts.cpp" line="133"/>
         <source>Features within this many button radii of the centre are added.</source>
         <translation>Se añaden las características dentro de este número de radios del botón alrededor del centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="133"/>
+        <location filename="../app/sightline/option_texts.cpp" line="134"/>
         <source>Fewer SIFT keypoints on the region: the button cannot be tracked.</source>
         <translation>Menos puntos clave SIFT en la región: el botón no se puede seguir.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="134"/>
+        <location filename="../app/sightline/option_texts.cpp" line="135"/>
         <source>Fewer consistent matches: the button is lost.</source>
         <translation>Menos coincidencias coherentes: el botón se ha perdido.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="135"/>
+        <location filename="../app/sightline/option_texts.cpp" line="136"/>
         <source>Fewer inliers after refinement is rejected.</source>
         <translation>Se rechaza un número menor de inliers tras el refinamiento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="136"/>
+        <location filename="../app/sightline/option_texts.cpp" line="137"/>
         <source>Fewer inliers than this fraction of the points: the plane is not sound.</source>
         <translation>Menos inliers que esta fracción de los puntos: el plano no es fiable.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="137"/>
+        <location filename="../app/sightline/option_texts.cpp" line="138"/>
         <source>Fewer inliers than this means the motion could not be estimated.</source>
         <translation>Menos inliers que este valor significa que no se pudo estimar el movimiento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="138"/>
+        <location filename="../app/sightline/option_texts.cpp" line="139"/>
         <source>Fewer map points or plane inliers: no normal in this frame.</source>
         <translation>Menos puntos del mapa o inliers del plano: ninguna normal en este fotograma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="139"/>
+        <location filename="../app/sightline/option_texts.cpp" line="140"/>
         <source>Fewer points left after the range cut is reported as an error.</source>
         <translation>Si quedan menos puntos tras el corte de distancia, se informa de un error.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="140"/>
+        <location filename="../app/sightline/option_texts.cpp" line="141"/>
         <source>Fewer points than this: the plane is not sound (no target is sent).</source>
         <translation>Menos puntos que este valor: el plano no es fiable (no se envía ningún objetivo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="141"/>
+        <location filename="../app/sightline/option_texts.cpp" line="142"/>
         <source>Fewer points: no 3D position.</source>
         <translation>Menos puntos: ninguna posición 3D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="142"/>
+        <location filename="../app/sightline/option_texts.cpp" line="143"/>
         <source>Fewer tracked views with an arm pose: no triangulated point.</source>
         <translation>Menos vistas seguidas con una pose del brazo: ningún punto triangulado.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="143"/>
+        <location filename="../app/sightline/option_texts.cpp" line="144"/>
         <source>Fewest tracks (the track included) a surface is fitted to.</source>
         <translation>Número mínimo de pistas (incluida la propia pista) a las que se ajusta una superficie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="144"/>
+        <location filename="../app/sightline/option_texts.cpp" line="145"/>
         <source>Field of view to scan, centred on forward; 0 = the camera&apos;s own (rays outside it can never hit anything).</source>
         <translation>Campo de visión que se barre, centrado hacia delante; 0 = el de la cámara (los rayos fuera de él nunca pueden alcanzar nada).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="145"/>
+        <location filename="../app/sightline/option_texts.cpp" line="146"/>
         <source>Floor calibration (sightline-cli floor) giving the expected up direction; empty = mobility.mount_pitch_deg / mount_roll_deg.</source>
         <translation>Calibración del suelo (sightline-cli floor) que da la dirección hacia arriba esperada; vacío = mobility.mount_pitch_deg / mount_roll_deg.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="146"/>
+        <location filename="../app/sightline/option_texts.cpp" line="147"/>
         <source>Floor calibration file (sightline-cli floor); empty = calibrate from the first frames of the run.</source>
         <translation>Archivo de calibración del suelo (sightline-cli floor); vacío = calibrar con los primeros fotogramas de la ejecución.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="147"/>
+        <location filename="../app/sightline/option_texts.cpp" line="148"/>
         <source>Floor of the residual RMS by which each frame pair&apos;s measurement is weighted.</source>
         <translation>Límite inferior del RMS de los residuos con el que se pondera la medida de cada par de fotogramas.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="148"/>
+        <location filename="../app/sightline/option_texts.cpp" line="149"/>
         <source>Format of trajectory.txt; --format kitti.</source>
         <translation>Formato de trajectory.txt; --format kitti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="149"/>
+        <location filename="../app/sightline/option_texts.cpp" line="150"/>
         <source>Fraction of a circle&apos;s rim that must lie on an edge.</source>
         <translation>Fracción del borde de un círculo que debe estar sobre un contorno.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="150"/>
+        <location filename="../app/sightline/option_texts.cpp" line="151"/>
         <source>Fraction of directions around a region&apos;s centre in which its outline lies; a button&apos;s (even broken) outline surrounds its centre.</source>
         <translation>Fracción de las direcciones alrededor del centro de una región en las que está su contorno; el contorno (aunque esté roto) de un botón rodea su centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="151"/>
+        <location filename="../app/sightline/option_texts.cpp" line="152"/>
         <source>Fraction of the correction applied per frame (1 = take the walls&apos; heading).</source>
         <translation>Fracción de la corrección aplicada por fotograma (1 = adoptar el rumbo de las paredes).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="153"/>
+        <location filename="../app/sightline/option_texts.cpp" line="154"/>
         <source>Frame rate of overlay.avi.</source>
         <translation>Frecuencia de fotogramas de overlay.avi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="154"/>
+        <location filename="../app/sightline/option_texts.cpp" line="155"/>
         <source>Frame results carry a rendered map image every n frames (0 = never).</source>
         <translation>Los resultados de los fotogramas llevan una imagen renderizada del mapa cada n fotogramas (0 = nunca).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="155"/>
-        <source>Frames at least this far apart are a low-rate (keyframe-rate) sequence: the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
-        <translation>Fotogramas separados al menos esto forman una secuencia de baja frecuencia (a ritmo de fotogramas clave): se aplican el intento con movimiento nulo de abajo y los fotogramas clave urgentes de mono.mapping.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="156"/>
@@ -2626,52 +2621,57 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
         <translation>Un fotograma pasa a ser la referencia de la odometría cuando se ha movido esta distancia desde la última (0 con keyframe_rotation_deg 0: cada fotograma).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="39"/>
+        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <source>A frame this far after the last, or in a sequence whose recent frames are (median of five steps), is low-rate (keyframe-rate): the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
+        <translation>Un fotograma al menos así de separado del anterior, o en una secuencia cuyos fotogramas recientes lo están (mediana de cinco pasos), es de baja frecuencia (de fotogramas clave): se aplican el intento de movimiento nulo de abajo y los fotogramas clave urgentes de mono.mapping.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="40"/>
         <source>A frame with a smaller fraction of depth pixels in range is not tracked (the pose is held).</source>
         <translation>Un fotograma con una fracción menor de píxeles de profundidad dentro del rango no se sigue (la pose se mantiene).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="50"/>
+        <location filename="../app/sightline/option_texts.cpp" line="51"/>
         <source>A new keyframe looks for a revisit among keyframes at least this many keyframes older.</source>
         <translation>Un fotograma clave nuevo busca una revisita entre los fotogramas clave al menos este número de fotogramas clave más antiguos.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="60"/>
+        <location filename="../app/sightline/option_texts.cpp" line="61"/>
         <source>A tracked corner within this of where the plane&apos;s homography puts it is on the panel.</source>
         <translation>Una esquina seguida a esta distancia como máximo de donde la pone la homografía del plano pertenece al panel.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="71"/>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
         <source>Always weigh each position by 1 / its own variance (plane fit, tracked centre and scale, growing with the distance): the near frames of the approach count most.</source>
         <translation>Pondera siempre cada posición por 1 / su propia varianza (ajuste del plano, centro seguido y escala, que crece con la distancia): los fotogramas cercanos de la aproximación cuentan más.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="77"/>
+        <location filename="../app/sightline/option_texts.cpp" line="78"/>
         <source>An odometry step faster than this (sensor time) is rejected.</source>
         <translation>Un paso de odometría más rápido que esto (tiempo del sensor) se rechaza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="78"/>
+        <location filename="../app/sightline/option_texts.cpp" line="79"/>
         <source>An odometry step turning faster than this (sensor time) is rejected.</source>
         <translation>Un paso de odometría que gira más rápido que esto (tiempo del sensor) se rechaza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="103"/>
+        <location filename="../app/sightline/option_texts.cpp" line="104"/>
         <source>Corners tracked around the button for the plane from the arm&apos;s motion.</source>
         <translation>Esquinas seguidas alrededor del botón para el plano a partir del movimiento del brazo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="111"/>
+        <location filename="../app/sightline/option_texts.cpp" line="112"/>
         <source>Depth readings farther than this are not used by the odometry.</source>
         <translation>La odometría no usa las lecturas de profundidad más lejanas que esto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="112"/>
+        <location filename="../app/sightline/option_texts.cpp" line="113"/>
         <source>Depth readings nearer than this are not used by the odometry.</source>
         <translation>La odometría no usa las lecturas de profundidad más cercanas que esto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="152"/>
+        <location filename="../app/sightline/option_texts.cpp" line="153"/>
         <source>Fraction of the pixels the odometry uses per pyramid level.</source>
         <translation>Fracción de los píxeles que la odometría usa en cada nivel de la pirámide.</translation>
     </message>

@@ -1766,549 +1766,544 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Un fotogramma resta nella finestra quando la telecamera si è mossa di questa frazione della profondità mediana dei suoi punti rispetto al precedente rimasto (0 = ogni fotogramma resta); altrimenti il fotogramma successivo lo sostituisce.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <location filename="../app/sightline/option_texts.cpp" line="38"/>
         <source>A frame this far from every keyframe (relative to the mean depth) becomes one.</source>
         <translation>Un fotogramma così lontano da ogni keyframe (rispetto alla profondità media) diventa un keyframe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="38"/>
+        <location filename="../app/sightline/option_texts.cpp" line="39"/>
         <source>A frame tracking fewer than this share of the last keyframe&apos;s points becomes one.</source>
         <translation>Un fotogramma che traccia meno di questa quota dei punti dell&apos;ultimo keyframe diventa un keyframe.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="40"/>
+        <location filename="../app/sightline/option_texts.cpp" line="41"/>
         <source>A frame with fewer matches than this with the newest candidate becomes a candidate too (the oldest leaves a full ring); at low frame rates every frame does.</source>
         <translation>Un fotogramma con meno corrispondenze di queste con il candidato più recente diventa anch&apos;esso candidato (ad anello pieno esce il più vecchio); a bassa frequenza lo diventa ogni fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="41"/>
+        <location filename="../app/sightline/option_texts.cpp" line="42"/>
         <source>A frame&apos;s normal this many sigmas off the average is skipped.</source>
         <translation>Un fotogramma la cui normale si discosta dalla media di questo numero di sigma viene saltato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="42"/>
+        <location filename="../app/sightline/option_texts.cpp" line="43"/>
         <source>A frame&apos;s walls count only when their summed vote weight (length x fit quality) reaches this.</source>
         <translation>I muri di un fotogramma contano solo quando il loro peso di voto sommato (lunghezza x qualità del fit) raggiunge questo valore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="43"/>
+        <location filename="../app/sightline/option_texts.cpp" line="44"/>
         <source>A ground candidate holds at least this fraction of the points.</source>
         <translation>Un candidato pavimento contiene almeno questa frazione dei punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="44"/>
+        <location filename="../app/sightline/option_texts.cpp" line="45"/>
         <source>A ground plane&apos;s normal lies at most this far from the expected up direction.</source>
         <translation>La normale di un piano del suolo si discosta al massimo di tanto dalla direzione verso l&apos;alto attesa.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="45"/>
+        <location filename="../app/sightline/option_texts.cpp" line="46"/>
         <source>A ground point&apos;s own normal lies at most this far from the plane&apos;s.</source>
         <translation>La normale propria di un punto del suolo si discosta al massimo di tanto da quella del piano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="46"/>
+        <location filename="../app/sightline/option_texts.cpp" line="47"/>
         <source>A ground-truth or odometry pose belongs to a frame when this close in time.</source>
         <translation>Una posa di ground truth o di odometria appartiene a un fotogramma quando è così vicina nel tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="47"/>
+        <location filename="../app/sightline/option_texts.cpp" line="48"/>
         <source>A ground-truth pose belongs to a frame when this close in time.</source>
         <translation>Una posa di ground truth appartiene a un fotogramma quando è così vicina nel tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="49"/>
+        <location filename="../app/sightline/option_texts.cpp" line="50"/>
         <source>A line this close to a Manhattan axis is classed as parallel (0) or perpendicular (1) to the reference.</source>
         <translation>Una linea così vicina a un asse Manhattan è classificata come parallela (0) o perpendicolare (1) al riferimento.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="51"/>
+        <location filename="../app/sightline/option_texts.cpp" line="52"/>
         <source>A pose belongs to a frame when this close in time.</source>
         <translation>Una posa appartiene a un fotogramma quando è così vicina nel tempo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="53"/>
+        <location filename="../app/sightline/option_texts.cpp" line="54"/>
         <source>A segment&apos;s raised height is this quantile of its heights above the ground.</source>
         <translation>L&apos;altezza rialzata di un segmento è questo quantile delle sue altezze sopra il suolo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="54"/>
+        <location filename="../app/sightline/option_texts.cpp" line="55"/>
         <source>A sloped segment whose plane meets the ground within this distance of its lowest points is connected to the ground (a ramp), not raised.</source>
         <translation>Un segmento inclinato il cui piano incontra il suolo entro questa distanza dai suoi punti più bassi è collegato al suolo (una rampa), non rialzato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="55"/>
+        <location filename="../app/sightline/option_texts.cpp" line="56"/>
         <source>A streaming device that delivers nothing for this long is treated as lost and reopened; 0 never does (e.g. waiting for rare hardware triggers).</source>
         <translation>Un dispositivo in streaming che non fornisce nulla per questo tempo è considerato perso e viene riaperto; 0 non lo fa mai (ad es. in attesa di trigger hardware rari).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="56"/>
+        <location filename="../app/sightline/option_texts.cpp" line="57"/>
         <source>A track must return to its start within this when tracked backwards; 0 = no check.</source>
         <translation>Una traccia, seguita all&apos;indietro, deve tornare al suo inizio entro questo valore; 0 = nessun controllo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="57"/>
+        <location filename="../app/sightline/option_texts.cpp" line="58"/>
         <source>A track seen from a direction differing more than this from its anchor&apos;s is anchored anew: the further aside, the more a wrongly fitted or assumed surface (the road taken as facing the camera) misleads the warp; 3 suits subsampled driving.</source>
         <translation>Una traccia vista da una direzione che differisce più di così da quella del suo ancoraggio viene ancorata di nuovo: più è laterale, più una superficie adattata o assunta in modo errato (la strada presa come rivolta verso la telecamera) inganna la deformazione; 3 è adatto alla guida sottocampionata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="58"/>
+        <location filename="../app/sightline/option_texts.cpp" line="59"/>
         <source>A track whose patch would be scaled by more than this fraction since its anchor (the camera came close) is anchored anew.</source>
         <translation>Una traccia la cui patch verrebbe scalata di più di questa frazione dal suo ancoraggio (la telecamera si è avvicinata) viene ancorata di nuovo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="59"/>
+        <location filename="../app/sightline/option_texts.cpp" line="60"/>
         <source>A track&apos;s surface is fitted as a plane to the tracks within this radius at a similar depth, so the anchor&apos;s patch is warped as that plane; 0 = every patch is taken as facing the camera.</source>
         <translation>La superficie di una traccia è adattata come piano alle tracce entro questo raggio a profondità simile, così la patch dell&apos;ancoraggio viene deformata come quel piano; 0 = ogni patch è considerata rivolta verso la telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="61"/>
+        <location filename="../app/sightline/option_texts.cpp" line="62"/>
         <source>Accuracy: a segment is compared with the true region holding this fraction of its points.</source>
         <translation>Accuratezza: un segmento è confrontato con la regione vera che contiene questa frazione dei suoi punti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="62"/>
+        <location filename="../app/sightline/option_texts.cpp" line="63"/>
         <source>Adaptive termination: stop when an outlier-free sample was drawn with this probability given the best inlier fraction; 1 = always max_iterations.</source>
         <translation>Terminazione adattiva: fermarsi quando è stato estratto un campione senza outlier con questa probabilità, data la migliore frazione di inlier; 1 = sempre max_iterations.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="63"/>
+        <location filename="../app/sightline/option_texts.cpp" line="64"/>
         <source>Add features of confidently tracked frames to the model when the button&apos;s apparent size has changed.</source>
         <translation>Aggiungere al modello le feature dei fotogrammi tracciati con sicurezza quando la dimensione apparente del pulsante è cambiata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="64"/>
+        <location filename="../app/sightline/option_texts.cpp" line="65"/>
         <source>Added to the triangulation&apos;s stated 1-sigma: biases no residual shows (the tracked centre&apos;s offset on the button, the size&apos;s depth on a relief).</source>
         <translation>Aggiunto all&apos;1-sigma dichiarato della triangolazione: errori sistematici che nessun residuo mostra (lo scostamento del centro tracciato sul pulsante, la profondità della dimensione su un rilievo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="65"/>
+        <location filename="../app/sightline/option_texts.cpp" line="66"/>
         <source>After a loss, search whole frames and re-acquire the button only on a confident match at a plausible size.</source>
         <translation>Dopo una perdita, cercare in fotogrammi interi e riacquisire il pulsante solo con una corrispondenza sicura e di dimensione plausibile.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="66"/>
+        <location filename="../app/sightline/option_texts.cpp" line="67"/>
         <source>Agreement of the voting lines modulo 90 deg (1 = perfect); below it the frame&apos;s walls are not used.</source>
         <translation>Concordanza delle linee votanti modulo 90 deg (1 = perfetta); al di sotto, i muri del fotogramma non vengono usati.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="67"/>
+        <location filename="../app/sightline/option_texts.cpp" line="68"/>
         <source>Also estimate a constant offset of the tracked centre in the image (a detector&apos;s sub-pixel convention): it would tilt the rays of the approach against the sideways move&apos;s.</source>
         <translation>Stima anche uno scostamento costante del centro tracciato nell&apos;immagine (la convenzione sub-pixel di un rilevatore): inclinerebbe i raggi dell&apos;avvicinamento rispetto a quelli del movimento laterale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="68"/>
+        <location filename="../app/sightline/option_texts.cpp" line="69"/>
         <source>Also list and open Aravis&apos; in-process simulated camera Fake_1 (demos and tests).</source>
         <translation>Elencare e aprire anche la telecamera simulata interna di Aravis Fake_1 (demo e test).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="69"/>
+        <location filename="../app/sightline/option_texts.cpp" line="70"/>
         <source>Also locate the button from the arm&apos;s metric camera poses alone (the tracked centre&apos;s rays and its apparent size, core/button/arm_triangulation.h) and combine that point with the map&apos;s by their variances. Off by default: on the simulated approach&apos;s seeds 1-5 the mean final error goes 4.77 -&gt; 3.68 mm and the worst 10.1 -&gt; 5.9 mm, but seeds 1 and 4 and the 12 cm sideways approach get worse (docs/button.md).</source>
         <translation>Localizza il pulsante anche dalle sole pose metriche della camera date dal braccio (i raggi del centro tracciato e la sua dimensione apparente, core/button/arm_triangulation.h) e combina quel punto con quello della mappa secondo le loro varianze. Disattivato per default: sui seed 1-5 dell&apos;avvicinamento simulato l&apos;errore finale medio passa da 4.77 -&gt; 3.68 mm e il peggiore da 10.1 -&gt; 5.9 mm, ma i seed 1 e 4 e l&apos;avvicinamento con 12 cm di spostamento laterale peggiorano (docs/button.md).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="70"/>
+        <location filename="../app/sightline/option_texts.cpp" line="71"/>
         <source>Also project current points into the previous images (uses both depths).</source>
         <translation>Proiettare anche i punti attuali nelle immagini precedenti (usa entrambe le profondità).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="72"/>
+        <location filename="../app/sightline/option_texts.cpp" line="73"/>
         <source>An aligned patch whose zero-mean normalised correlation with the warped anchor patch is lower failed (occlusion, reflection).</source>
         <translation>Una patch allineata la cui correlazione normalizzata a media nulla con la patch di ancoraggio deformata è inferiore è fallita (occlusione, riflesso).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="73"/>
+        <location filename="../app/sightline/option_texts.cpp" line="74"/>
         <source>An alignment that moves the tracked position further than this failed (the KLT position is kept and the track anchored anew).</source>
         <translation>Un allineamento che sposta la posizione tracciata più di così è fallito (si mantiene la posizione KLT e la traccia viene ancorata di nuovo).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="74"/>
+        <location filename="../app/sightline/option_texts.cpp" line="75"/>
         <source>An anchor is used for at most this many frames; then the track is anchored anew.</source>
         <translation>Un ancoraggio viene usato al massimo per questo numero di fotogrammi; poi la traccia viene ancorata di nuovo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="75"/>
+        <location filename="../app/sightline/option_texts.cpp" line="76"/>
         <source>An arm_pose message with more joint positions is refused.</source>
         <translation>Un messaggio arm_pose con più posizioni dei giunti viene rifiutato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="76"/>
+        <location filename="../app/sightline/option_texts.cpp" line="77"/>
         <source>An arm_pose position farther than this from the base is refused.</source>
         <translation>Una posizione arm_pose più lontana di così dalla base viene rifiutata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="79"/>
+        <location filename="../app/sightline/option_texts.cpp" line="80"/>
         <source>Analog gain; negative keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Guadagno analogico; un valore negativo mantiene quello della telecamera. I valori fuori intervallo sono errori.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="81"/>
+        <location filename="../app/sightline/option_texts.cpp" line="82"/>
         <source>Ask the device to deliver depth and colour frames of the same instant.</source>
         <translation>Chiedere al dispositivo di fornire fotogrammi di profondità e colore dello stesso istante.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="82"/>
+        <location filename="../app/sightline/option_texts.cpp" line="83"/>
         <source>At low rates (mono.tracking.low_rate_interval_s), a frame tracking fewer than this share of the last keyframe&apos;s points becomes a keyframe within min_keyframe_gap too (0 = off).</source>
         <translation>A bassa frequenza (mono.tracking.low_rate_interval_s), un fotogramma che traccia meno di questa frazione dei punti dell&apos;ultimo fotogramma chiave diventa fotogramma chiave anche entro min_keyframe_gap (0 = disattivato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="83"/>
+        <location filename="../app/sightline/option_texts.cpp" line="84"/>
         <source>At low rates, a frame this far from every keyframe (relative to the mean depth) becomes a keyframe within min_keyframe_gap too.</source>
         <translation>A bassa frequenza, un fotogramma così lontano da ogni fotogramma chiave (rispetto alla profondità media) diventa fotogramma chiave anche entro min_keyframe_gap.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="84"/>
+        <location filename="../app/sightline/option_texts.cpp" line="85"/>
         <source>At low rates, when the constant-velocity prediction tracks fewer inliers, the last pose (zero motion) is tried too and the better kept (0 = off).</source>
         <translation>A bassa frequenza, quando la previsione a velocità costante traccia meno inlier, si prova anche l&apos;ultima posa (moto nullo) e si tiene la migliore (0 = disattivato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="85"/>
+        <location filename="../app/sightline/option_texts.cpp" line="86"/>
         <source>Authorised clients at most; further ones are closed.</source>
         <translation>Numero massimo di client autorizzati; quelli ulteriori vengono chiusi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="86"/>
+        <location filename="../app/sightline/option_texts.cpp" line="87"/>
         <source>Band of the refinement (offset histogram bin and refit band): narrower than err_max, so that a door recessed behind the wall face does not tilt the line.</source>
         <translation>Banda del raffinamento (classe dell&apos;istogramma dell&apos;offset e banda del nuovo fit): più stretta di err_max, affinché una porta arretrata rispetto alla faccia del muro non inclini la linea.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="87"/>
+        <location filename="../app/sightline/option_texts.cpp" line="88"/>
         <source>Baseline over the median depth of the first points needed to accept (0.07 is a 4 deg ray angle sideways); a short baseline gives a distorted first map and a drifting scale.</source>
         <translation>Baseline sulla profondità mediana dei primi punti necessaria per accettare (0.07 corrisponde a un angolo dei raggi di 4 deg lateralmente); una baseline corta dà una prima mappa distorta e una scala che deriva.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="88"/>
+        <location filename="../app/sightline/option_texts.cpp" line="89"/>
         <source>Best over second-best descriptor distance in a window; 1 = off.</source>
         <translation>Rapporto tra la migliore e la seconda migliore distanza dei descrittori in una finestra; 1 = disattivato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="89"/>
+        <location filename="../app/sightline/option_texts.cpp" line="90"/>
         <source>Camera pitched down by this: expected up = camera -y turned by pitch and roll.</source>
         <translation>Telecamera inclinata verso il basso di tanto: alto atteso = -y della telecamera ruotato di beccheggio e rollio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="90"/>
+        <location filename="../app/sightline/option_texts.cpp" line="91"/>
         <source>Camera roll.</source>
         <translation>Rollio della telecamera.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="91"/>
+        <location filename="../app/sightline/option_texts.cpp" line="92"/>
         <source>Candidate first frames kept (a ring of recent frames); each new frame is tried against every one, oldest first (the largest baseline).</source>
         <translation>Candidati primo fotogramma conservati (un anello di fotogrammi recenti); ogni nuovo fotogramma viene provato con ciascuno, dal più vecchio (la base più lunga).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="92"/>
+        <location filename="../app/sightline/option_texts.cpp" line="93"/>
         <source>Canny lower threshold.</source>
         <translation>Soglia inferiore di Canny.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="93"/>
+        <location filename="../app/sightline/option_texts.cpp" line="94"/>
         <source>Canny upper threshold.</source>
         <translation>Soglia superiore di Canny.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="94"/>
+        <location filename="../app/sightline/option_texts.cpp" line="95"/>
         <source>Cell edge of the global map.</source>
         <translation>Lato della cella della mappa globale.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="95"/>
+        <location filename="../app/sightline/option_texts.cpp" line="96"/>
         <source>Cell of the keypoint grid used by window searches.</source>
         <translation>Cella della griglia dei keypoint usata dalle ricerche a finestra.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="96"/>
+        <location filename="../app/sightline/option_texts.cpp" line="97"/>
         <source>Coarse search window of the zero-motion try.</source>
         <translation>Finestra di ricerca grossolana del tentativo a moto nullo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="97"/>
+        <location filename="../app/sightline/option_texts.cpp" line="98"/>
         <source>Collinear lines (angles this close, one fit within the threshold) are merged.</source>
         <translation>Le linee collineari (angoli così vicini, un fit entro la soglia) vengono unite.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="98"/>
+        <location filename="../app/sightline/option_texts.cpp" line="99"/>
         <source>Compute SIFT only in a window around the predicted centre (fast).</source>
         <translation>Calcolare SIFT solo in una finestra attorno al centro previsto (veloce).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="99"/>
+        <location filename="../app/sightline/option_texts.cpp" line="100"/>
         <source>Connections still owing the token at most; a new one closes the oldest.</source>
         <translation>Numero massimo di connessioni che devono ancora presentare il token; una nuova chiude la più vecchia.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="100"/>
+        <location filename="../app/sightline/option_texts.cpp" line="101"/>
         <source>Consecutive frames of constant-motion fallback before the pose is held.</source>
         <translation>Fotogrammi consecutivi con il ripiego sul moto costante prima che la posa venga mantenuta.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="101"/>
+        <location filename="../app/sightline/option_texts.cpp" line="102"/>
         <source>Consecutive scan points farther apart than this start a new run.</source>
         <translation>Punti di scansione consecutivi distanti più di così iniziano un nuovo tratto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="102"/>
+        <location filename="../app/sightline/option_texts.cpp" line="103"/>
         <source>Consistent matches needed to re-acquire a lost button.</source>
         <translation>Corrispondenze coerenti necessarie per riacquisire un pulsante perso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="104"/>
+        <location filename="../app/sightline/option_texts.cpp" line="105"/>
         <source>Correct the heading with the walls&apos; Manhattan directions; off = dead reckoning only.</source>
         <translation>Correggere la direzione di marcia con le direzioni Manhattan dei muri; disattivato = solo navigazione stimata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="105"/>
+        <location filename="../app/sightline/option_texts.cpp" line="106"/>
         <source>Demosaic Bayer formats to BGR colour; off delivers the raw mosaic as grey.</source>
         <translation>Effettuare il demosaicing dei formati Bayer in colore BGR; disattivato fornisce il mosaico grezzo in scala di grigi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="106"/>
+        <location filename="../app/sightline/option_texts.cpp" line="107"/>
         <source>Depth beyond this is left out of the 3D cloud.</source>
         <translation>La profondità oltre questo valore resta fuori dalla nuvola 3D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="48"/>
+        <location filename="../app/sightline/option_texts.cpp" line="49"/>
         <source>A line needs at least this many points (2 = as published; more rejects clutter).</source>
         <translation>Una linea richiede almeno questo numero di punti (2 = come pubblicato; di più scarta il disordine).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="52"/>
+        <location filename="../app/sightline/option_texts.cpp" line="53"/>
         <source>A region whose centroid is farther from the tap and that does not contain it is not the tapped button (published method).</source>
         <translation>Una regione il cui baricentro è più lontano dal tocco e che non lo contiene non è il pulsante toccato (metodo pubblicato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="80"/>
+        <location filename="../app/sightline/option_texts.cpp" line="81"/>
         <source>Angle between scan rays (published res_scan = 0.2 deg).</source>
         <translation>Angolo tra i raggi della scansione (pubblicato: res_scan = 0.2 deg).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="107"/>
+        <location filename="../app/sightline/option_texts.cpp" line="108"/>
         <source>Depth images are sampled to about this many columns (published: 320 x 240).</source>
         <translation>Le immagini di profondità vengono campionate a circa questo numero di colonne (pubblicato: 320 x 240).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="108"/>
+        <location filename="../app/sightline/option_texts.cpp" line="109"/>
         <source>Depth points a cell needs to count as occupied (1 = as published: any non-floor point).</source>
         <translation>Punti di profondità necessari perché una cella conti come occupata (1 = come pubblicato: qualsiasi punto non del pavimento).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="109"/>
+        <location filename="../app/sightline/option_texts.cpp" line="110"/>
         <source>Depth readings beyond this are treated as invalid downstream.</source>
         <translation>Le letture di profondità oltre questo valore sono considerate non valide a valle.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="110"/>
+        <location filename="../app/sightline/option_texts.cpp" line="111"/>
         <source>Depth readings beyond this count as invalid.</source>
         <translation>Le letture di profondità oltre questo valore sono considerate non valide.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="113"/>
+        <location filename="../app/sightline/option_texts.cpp" line="114"/>
         <source>Depth sigmas (of both points at both times) added to the rigidity tolerance.</source>
         <translation>Sigma di profondità (di entrambi i punti in entrambi gli istanti) aggiunti alla tolleranza di rigidità.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="114"/>
+        <location filename="../app/sightline/option_texts.cpp" line="115"/>
         <source>Descriptor matches with a keyframe needed to try relocalisation.</source>
         <translation>Corrispondenze di descrittori con un keyframe necessarie per tentare la rilocalizzazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="115"/>
+        <location filename="../app/sightline/option_texts.cpp" line="116"/>
         <source>Disparity noise giving the depth sigma Z^2 s / (f b).</source>
         <translation>Rumore di disparità che dà il sigma di profondità Z^2 s / (f b).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="116"/>
+        <location filename="../app/sightline/option_texts.cpp" line="117"/>
         <source>Displacement pairs between consecutive keyframes (poses refined by bundle adjustment) or between tracked frames scale_interval_frames apart.</source>
         <translation>Coppie di spostamenti tra keyframe consecutivi (pose raffinate dal bundle adjustment) o tra fotogrammi tracciati distanti scale_interval_frames.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="117"/>
+        <location filename="../app/sightline/option_texts.cpp" line="118"/>
         <source>Distance from the epipolar line allowed for a new-point match.</source>
         <translation>Distanza dalla linea epipolare ammessa per una corrispondenza di un nuovo punto.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="118"/>
+        <location filename="../app/sightline/option_texts.cpp" line="119"/>
         <source>Distance gate: a match farther than this from the predicted centre is dropped.</source>
         <translation>Gate di distanza: una corrispondenza più lontana di così dal centro previsto viene scartata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="119"/>
+        <location filename="../app/sightline/option_texts.cpp" line="120"/>
         <source>Draws per hypothesis to find a pair within the distance limits.</source>
         <translation>Estrazioni per ipotesi per trovare una coppia entro i limiti di distanza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="120"/>
+        <location filename="../app/sightline/option_texts.cpp" line="121"/>
         <source>Edge of one occupancy cell; RANSAC&apos;s 5-cell error scales with it.</source>
         <translation>Lato di una cella di occupazione; l&apos;errore di 5 celle di RANSAC scala con esso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="121"/>
+        <location filename="../app/sightline/option_texts.cpp" line="122"/>
         <source>Epipolar (row) constraint: largest row difference of a match.</source>
         <translation>Vincolo epipolare (di riga): massima differenza di riga di una corrispondenza.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="122"/>
+        <location filename="../app/sightline/option_texts.cpp" line="123"/>
         <source>Estimate a constant disparity offset of the rig (rectification or matcher bias) online from the motion, and add it to every disparity; an offset of a fraction of a pixel moves far points most and makes the translation too long or too short.</source>
         <translation>Stimare online dal moto un offset di disparità costante del rig (bias della rettifica o del matcher) e aggiungerlo a ogni disparità; un offset di una frazione di pixel sposta soprattutto i punti lontani e rende la traslazione troppo lunga o troppo corta.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="123"/>
+        <location filename="../app/sightline/option_texts.cpp" line="124"/>
         <source>Estimate each pose against the last keyframe&apos;s stereo observations of the tracks (after the frame-to-frame estimate), so per-frame errors do not accumulate.</source>
         <translation>Stimare ogni posa rispetto alle osservazioni stereo delle tracce nell&apos;ultimo keyframe (dopo la stima fotogramma per fotogramma), così gli errori dei singoli fotogrammi non si accumulano.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="124"/>
+        <location filename="../app/sightline/option_texts.cpp" line="125"/>
         <source>Exposure time; 0 keeps the camera&apos;s. Out-of-range values are errors.</source>
         <translation>Tempo di esposizione; 0 mantiene quello della telecamera. I valori fuori intervallo sono errori.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="125"/>
+        <location filename="../app/sightline/option_texts.cpp" line="126"/>
         <source>FAST corner threshold.</source>
         <translation>Soglia dei corner FAST.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="126"/>
+        <location filename="../app/sightline/option_texts.cpp" line="127"/>
         <source>FLANN leaf checks per query.</source>
         <translation>Controlli delle foglie FLANN per interrogazione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="127"/>
+        <location filename="../app/sightline/option_texts.cpp" line="128"/>
         <source>FLANN randomised kd-trees.</source>
         <translation>Alberi kd randomizzati di FLANN.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="128"/>
+        <location filename="../app/sightline/option_texts.cpp" line="129"/>
         <source>Faster estimated rotation is rejected.</source>
         <translation>Una rotazione stimata più veloce viene rifiutata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="129"/>
+        <location filename="../app/sightline/option_texts.cpp" line="130"/>
         <source>Faster estimated translation is rejected.</source>
         <translation>Una traslazione stimata più veloce viene rifiutata.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="130"/>
+        <location filename="../app/sightline/option_texts.cpp" line="131"/>
         <source>Features kept per frame, tracked plus new.</source>
         <translation>Feature mantenute per fotogramma, tracciate più nuove.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="131"/>
+        <location filename="../app/sightline/option_texts.cpp" line="132"/>
         <source>Features this close to the border are dropped.</source>
         <translation>Le feature così vicine al bordo vengono scartate.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="132"/>
+        <location filename="../app/sightline/option_texts.cpp" line="133"/>
         <source>Features within this many button radii of the centre are added.</source>
         <translation>Vengono aggiunte le feature entro questo numero di raggi del pulsante dal centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="133"/>
+        <location filename="../app/sightline/option_texts.cpp" line="134"/>
         <source>Fewer SIFT keypoints on the region: the button cannot be tracked.</source>
         <translation>Meno keypoint SIFT sulla regione: il pulsante non può essere tracciato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="134"/>
+        <location filename="../app/sightline/option_texts.cpp" line="135"/>
         <source>Fewer consistent matches: the button is lost.</source>
         <translation>Meno corrispondenze coerenti: il pulsante è perso.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="135"/>
+        <location filename="../app/sightline/option_texts.cpp" line="136"/>
         <source>Fewer inliers after refinement is rejected.</source>
         <translation>Un numero inferiore di inlier dopo il raffinamento viene rifiutato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="136"/>
+        <location filename="../app/sightline/option_texts.cpp" line="137"/>
         <source>Fewer inliers than this fraction of the points: the plane is not sound.</source>
         <translation>Meno inlier di questa frazione dei punti: il piano non è affidabile.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="137"/>
+        <location filename="../app/sightline/option_texts.cpp" line="138"/>
         <source>Fewer inliers than this means the motion could not be estimated.</source>
         <translation>Meno inlier di questo valore significa che il moto non ha potuto essere stimato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="138"/>
+        <location filename="../app/sightline/option_texts.cpp" line="139"/>
         <source>Fewer map points or plane inliers: no normal in this frame.</source>
         <translation>Meno punti della mappa o inlier del piano: nessuna normale in questo fotogramma.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="139"/>
+        <location filename="../app/sightline/option_texts.cpp" line="140"/>
         <source>Fewer points left after the range cut is reported as an error.</source>
         <translation>Se dopo il taglio di distanza restano meno punti viene segnalato un errore.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="140"/>
+        <location filename="../app/sightline/option_texts.cpp" line="141"/>
         <source>Fewer points than this: the plane is not sound (no target is sent).</source>
         <translation>Meno punti di questo valore: il piano non è affidabile (nessun target viene inviato).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="141"/>
+        <location filename="../app/sightline/option_texts.cpp" line="142"/>
         <source>Fewer points: no 3D position.</source>
         <translation>Meno punti: nessuna posizione 3D.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="142"/>
+        <location filename="../app/sightline/option_texts.cpp" line="143"/>
         <source>Fewer tracked views with an arm pose: no triangulated point.</source>
         <translation>Meno viste tracciate con una posa del braccio: nessun punto triangolato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="143"/>
+        <location filename="../app/sightline/option_texts.cpp" line="144"/>
         <source>Fewest tracks (the track included) a surface is fitted to.</source>
         <translation>Numero minimo di tracce (inclusa la traccia stessa) a cui viene adattata una superficie.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="144"/>
+        <location filename="../app/sightline/option_texts.cpp" line="145"/>
         <source>Field of view to scan, centred on forward; 0 = the camera&apos;s own (rays outside it can never hit anything).</source>
         <translation>Campo visivo da scansionare, centrato in avanti; 0 = quello della telecamera (i raggi al di fuori non possono mai colpire nulla).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="145"/>
+        <location filename="../app/sightline/option_texts.cpp" line="146"/>
         <source>Floor calibration (sightline-cli floor) giving the expected up direction; empty = mobility.mount_pitch_deg / mount_roll_deg.</source>
         <translation>Calibrazione del pavimento (sightline-cli floor) che fornisce la direzione verso l&apos;alto attesa; vuoto = mobility.mount_pitch_deg / mount_roll_deg.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="146"/>
+        <location filename="../app/sightline/option_texts.cpp" line="147"/>
         <source>Floor calibration file (sightline-cli floor); empty = calibrate from the first frames of the run.</source>
         <translation>File di calibrazione del pavimento (sightline-cli floor); vuoto = calibrare dai primi fotogrammi dell&apos;esecuzione.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="147"/>
+        <location filename="../app/sightline/option_texts.cpp" line="148"/>
         <source>Floor of the residual RMS by which each frame pair&apos;s measurement is weighted.</source>
         <translation>Limite inferiore dell&apos;RMS dei residui con cui è pesata la misura di ogni coppia di fotogrammi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="148"/>
+        <location filename="../app/sightline/option_texts.cpp" line="149"/>
         <source>Format of trajectory.txt; --format kitti.</source>
         <translation>Formato di trajectory.txt; --format kitti.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="149"/>
+        <location filename="../app/sightline/option_texts.cpp" line="150"/>
         <source>Fraction of a circle&apos;s rim that must lie on an edge.</source>
         <translation>Frazione del bordo di un cerchio che deve trovarsi su uno spigolo.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="150"/>
+        <location filename="../app/sightline/option_texts.cpp" line="151"/>
         <source>Fraction of directions around a region&apos;s centre in which its outline lies; a button&apos;s (even broken) outline surrounds its centre.</source>
         <translation>Frazione delle direzioni attorno al centro di una regione in cui si trova il suo contorno; il contorno (anche interrotto) di un pulsante circonda il suo centro.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="151"/>
+        <location filename="../app/sightline/option_texts.cpp" line="152"/>
         <source>Fraction of the correction applied per frame (1 = take the walls&apos; heading).</source>
         <translation>Frazione della correzione applicata per fotogramma (1 = adottare la direzione dei muri).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="153"/>
+        <location filename="../app/sightline/option_texts.cpp" line="154"/>
         <source>Frame rate of overlay.avi.</source>
         <translation>Frequenza dei fotogrammi di overlay.avi.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="154"/>
+        <location filename="../app/sightline/option_texts.cpp" line="155"/>
         <source>Frame results carry a rendered map image every n frames (0 = never).</source>
         <translation>I risultati dei fotogrammi includono un&apos;immagine renderizzata della mappa ogni n fotogrammi (0 = mai).</translation>
-    </message>
-    <message>
-        <location filename="../app/sightline/option_texts.cpp" line="155"/>
-        <source>Frames at least this far apart are a low-rate (keyframe-rate) sequence: the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
-        <translation>Fotogrammi distanti almeno tanto formano una sequenza a bassa frequenza (a fotogrammi chiave): valgono il tentativo a moto nullo qui sotto e i fotogrammi chiave urgenti di mono.mapping.</translation>
     </message>
     <message>
         <location filename="../app/sightline/option_texts.cpp" line="156"/>
@@ -2626,52 +2621,57 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
         <translation>Un fotogramma diventa il riferimento dell&apos;odometria quando si è spostato di tanto dall&apos;ultimo (0 con keyframe_rotation_deg 0: ogni fotogramma).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="39"/>
+        <location filename="../app/sightline/option_texts.cpp" line="37"/>
+        <source>A frame this far after the last, or in a sequence whose recent frames are (median of five steps), is low-rate (keyframe-rate): the zero-motion try below and the urgent keyframes of mono.mapping apply.</source>
+        <translation>Un fotogramma almeno così distante dal precedente, o in una sequenza i cui fotogrammi recenti lo sono (mediana di cinque passi), è a bassa frequenza (a fotogrammi chiave): valgono il tentativo a moto nullo qui sotto e i fotogrammi chiave urgenti di mono.mapping.</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/option_texts.cpp" line="40"/>
         <source>A frame with a smaller fraction of depth pixels in range is not tracked (the pose is held).</source>
         <translation>Un fotogramma con una frazione minore di pixel di profondità nell&apos;intervallo non viene tracciato (la posa viene mantenuta).</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="50"/>
+        <location filename="../app/sightline/option_texts.cpp" line="51"/>
         <source>A new keyframe looks for a revisit among keyframes at least this many keyframes older.</source>
         <translation>Un nuovo fotogramma chiave cerca un ritorno tra i fotogrammi chiave più vecchi di almeno questo numero di fotogrammi chiave.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="60"/>
+        <location filename="../app/sightline/option_texts.cpp" line="61"/>
         <source>A tracked corner within this of where the plane&apos;s homography puts it is on the panel.</source>
         <translation>Un angolo tracciato entro questa distanza dal punto in cui lo pone l&apos;omografia del piano appartiene al pannello.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="71"/>
+        <location filename="../app/sightline/option_texts.cpp" line="72"/>
         <source>Always weigh each position by 1 / its own variance (plane fit, tracked centre and scale, growing with the distance): the near frames of the approach count most.</source>
         <translation>Pesa sempre ogni posizione con 1 / la propria varianza (adattamento del piano, centro tracciato e scala, crescente con la distanza): i fotogrammi vicini dell&apos;avvicinamento contano di più.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="77"/>
+        <location filename="../app/sightline/option_texts.cpp" line="78"/>
         <source>An odometry step faster than this (sensor time) is rejected.</source>
         <translation>Un passo di odometria più veloce di questo (tempo del sensore) viene scartato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="78"/>
+        <location filename="../app/sightline/option_texts.cpp" line="79"/>
         <source>An odometry step turning faster than this (sensor time) is rejected.</source>
         <translation>Un passo di odometria che ruota più velocemente di questo (tempo del sensore) viene scartato.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="103"/>
+        <location filename="../app/sightline/option_texts.cpp" line="104"/>
         <source>Corners tracked around the button for the plane from the arm&apos;s motion.</source>
         <translation>Angoli tracciati attorno al pulsante per il piano dal movimento del braccio.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="111"/>
+        <location filename="../app/sightline/option_texts.cpp" line="112"/>
         <source>Depth readings farther than this are not used by the odometry.</source>
         <translation>Le letture di profondità più lontane di questo valore non vengono usate dall&apos;odometria.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="112"/>
+        <location filename="../app/sightline/option_texts.cpp" line="113"/>
         <source>Depth readings nearer than this are not used by the odometry.</source>
         <translation>Le letture di profondità più vicine di questo valore non vengono usate dall&apos;odometria.</translation>
     </message>
     <message>
-        <location filename="../app/sightline/option_texts.cpp" line="152"/>
+        <location filename="../app/sightline/option_texts.cpp" line="153"/>
         <source>Fraction of the pixels the odometry uses per pyramid level.</source>
         <translation>Frazione dei pixel che l&apos;odometria usa per ogni livello della piramide.</translation>
     </message>

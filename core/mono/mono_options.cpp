@@ -165,8 +165,9 @@ OptionTable<MonoTrackingOptions> MonoTrackingOptions::Describe() {
       .Int("reloc_min_inliers", &O::reloc_min_inliers, "points", 6, 10000, 1,
            "Inliers needed to accept a relocalisation.")
       .Double("low_rate_interval_s", &O::low_rate_interval_s, "s", 0.001, 1000, 0.05,
-              "Frames at least this far apart are a low-rate (keyframe-rate) sequence: the "
-              "zero-motion try below and the urgent keyframes of mono.mapping apply.")
+              "A frame this far after the last, or in a sequence whose recent frames are (median "
+              "of five steps), is low-rate (keyframe-rate): the zero-motion try below and the "
+              "urgent keyframes of mono.mapping apply.")
       .Int("fallback_inliers", &O::fallback_inliers, "points", 0, 10000, 1,
            "At low rates, when the constant-velocity prediction tracks fewer inliers, the last "
            "pose (zero motion) is tried too and the better kept (0 = off).")

@@ -62,7 +62,7 @@ struct MonoTrackingOptions {
   // mono.mapping.urgent_* too): when the constant-velocity prediction tracks fewer than
   // fallback_inliers, the last pose is tried too (zero motion) with the unsure window, and the
   // better one kept.
-  double low_rate_interval_s = 0.2;  // Frames this far apart are a low-rate sequence [s].
+  double low_rate_interval_s = 0.2;  // Steps this long (the frame's or the recent median) [s].
   int fallback_inliers = 60;         // Below this many inliers the zero-motion pose is tried.
   double unsure_radius_px = 120;     // Coarse window of the zero-motion try [px].
 

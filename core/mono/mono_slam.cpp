@@ -238,6 +238,7 @@ void MonoSlam::Reset() {
   frames_since_keyframe_ = keyframe_inliers_ = lost_frames_ = relocalisations_ = 0;
   frames_processed_ = 0;
   low_rate_ = false;
+  recent_steps_s_.clear();
   mapping_busy_ = false;
   if (configured_) StartMappingThread();
 }
@@ -552,7 +553,15 @@ StatusOr<std::shared_ptr<const MonoSlamResult>> MonoSlam::Process(const MonoFram
   std::shared_ptr<KeyFrame> new_keyframe;
   ++frames_processed_;
   if (frames_processed_ > 1) {
-    low_rate_ = frame.stamp.sensor_time_s - last_time_s_ >= options_.tracking.low_rate_interval_s;
+    // This step, or the usual step of the last few frames (jitter around the threshold does not
+    // flip the rules from frame to frame), with a microsecond for stamps computed as i / rate.
+    const double step = frame.stamp.sensor_time_s - last_time_s_;
+    recent_steps_s_.push_back(step);
+    if (recent_steps_s_.size() > kRecentSteps) recent_steps_s_.pop_front();
+    std::vector<double> sorted(recent_steps_s_.begin(), recent_steps_s_.end());
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double usual = sorted[sorted.size() / 2];
+    low_rate_ = std::max(step, usual) + 1e-6 >= options_.tracking.low_rate_interval_s;
   }
   last_time_s_ = frame.stamp.sensor_time_s;
   if (!initialised_) {

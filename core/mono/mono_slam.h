@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <opencv2/core.hpp>
@@ -175,7 +176,10 @@ class MonoSlam {
   FrameStamp first_stamp_;
   int64_t frames_processed_ = 0;  // Frames given to Process since Reset (for the velocity).
   double last_time_s_ = 0;        // The previous frame's sensor time.
-  bool low_rate_ = false;         // This frame is low_rate_interval_s or more after the last.
+  bool low_rate_ = false;  // This frame, or the median of recent ones, low_rate_interval_s or
+                           // more after the last.
+  static constexpr size_t kRecentSteps = 5;
+  std::deque<double> recent_steps_s_;  // Sensor-time steps between the last frames [s].
   Eigen::Isometry3d camera_from_map_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d velocity_ = Eigen::Isometry3d::Identity();  // current_from_previous.
   bool lost_ = false;

@@ -1,6 +1,7 @@
 // Sparse, large-motion input (keyframe-rate sequences): a handheld camera circling objects in
 // the simulator's terrain, every 15th and 20th frame of 30 Hz (7.5 and 10 deg around the
-// centre between frames), and kitti_clip1's left images every 3rd frame (3.6 m between frames).
+// centre between frames), and kitti_clip1's left images every 2nd to 4th frame (2.4-4.8 m
+// between frames).
 // Each must initialise within a few frames, track nearly every frame and keep the Sim(3) ATE
 // within a small share of the path.
 #include <gtest/gtest.h>
@@ -132,32 +133,49 @@ TEST(MonoSparse, InitialisationTriesEveryCandidateFirstFrameOldestFirst) {
   }
 }
 
-TEST(MonoSparse, KittiEveryThirdFrameTracksWithinTwoPercent) {
-  SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
+// kitti_clip1's left images, every `stride`-th frame, with the ground-truth scale.
+SparseFigures RunKitti(const std::string& path, int stride, size_t expected_frames) {
+  SparseFigures f;
   MonoSlamRunOptions run_options;
   run_options.metric_source = "ground_truth";
-  run_options.stride = 3;
+  run_options.stride = stride;
   StatusOr<MonoSlamRun> run = RunMonoSlam(path, {}, run_options);
-  ASSERT_TRUE(run.ok()) << run.status().ToString();
-  ASSERT_EQ(run->frames.size(), 17u);  // Frames 0, 3, ..., 48 of 51.
-  int init_frame = -1, tracked = 0;
+  EXPECT_TRUE(run.ok()) << run.status().ToString();
+  if (!run.ok()) return f;
+  EXPECT_EQ(run->frames.size(), expected_frames);
+  int tracked = 0;
   for (size_t i = 0; i < run->frames.size(); ++i) {
     if (!run->frames[i].tracked) continue;
-    if (init_frame < 0) init_frame = static_cast<int>(i);
+    if (f.init_frame < 0) f.init_frame = static_cast<int>(i);
     ++tracked;
   }
+  f.tracked_fraction = static_cast<double>(tracked) / static_cast<double>(run->frames.size());
   std::vector<std::string> notes;
-  std::map<std::string, double> m;
-  for (const auto& [key, value] : MonoSlamAccuracy(*run, 0.02, &notes)) m[key] = value;
-  std::cout << "  kitti every 3rd frame: initialised at " << init_frame << ", tracked " << tracked
-            << " of " << run->frames.size() << ", ATE " << m["ate_rmse_pct_of_path"]
-            << " % of the path\n";
-  // Measured: initialised on the second frame, 16 of 17 tracked, ATE 1.52 % of the path.
-  EXPECT_LE(init_frame, 2);
-  EXPECT_GE(init_frame, 0);
-  EXPECT_GE(tracked, 15);  // 90 % of 17, rounded up.
-  ASSERT_TRUE(m.count("ate_rmse_pct_of_path"));
-  EXPECT_LT(m["ate_rmse_pct_of_path"], 2.0);
+  for (const auto& [key, value] : MonoSlamAccuracy(*run, 0.02, &notes)) {
+    if (key == "ate_rmse_pct_of_path") f.ate_pct_of_path = value;
+  }
+  std::cout << "  kitti every " << stride << " frames: initialised at " << f.init_frame
+            << ", tracked " << tracked << " of " << run->frames.size() << ", ATE "
+            << f.ate_pct_of_path << " % of the path\n";
+  return f;
+}
+
+// Every 2nd, 3rd and 4th frame (2.4, 3.6 and 4.8 m between frames; 0.2 s, 0.3 s and 0.4 s with
+// the stamps the KITTI reader synthesises, i / 10 Hz). Measured: initialised on the second
+// frame, 25 of 26, 16 of 17 and 12 of 13 tracked, ATE 0.63, 0.61 and 0.38 % of the path. Every
+// 2nd frame lies on the low-rate threshold (mono.tracking.low_rate_interval_s, 0.2 s): with
+// the step taken frame by frame the stamps' rounding turned the low-rate keyframe rules on and
+// off, and 8 of 26 frames were tracked.
+TEST(MonoSparse, KittiEverySecondToFourthFrameTracksWithinTwoPercent) {
+  SIGHTLINE_REQUIRE_DATA(path, "kitti_clip1");
+  for (const auto& [stride, frames] : {std::pair<int, size_t>{2, 26}, {3, 17}, {4, 13}}) {
+    SCOPED_TRACE("every " + std::to_string(stride) + " frames");
+    const SparseFigures f = RunKitti(path, stride, frames);
+    EXPECT_LE(f.init_frame, 2);
+    EXPECT_GE(f.init_frame, 0);
+    EXPECT_GE(f.tracked_fraction, 0.9);
+    EXPECT_LT(f.ate_pct_of_path, 2.0);
+  }
 }
 
 TEST(MonoSparse, KittiEveryFifthFrameInitialisesOnTheSecondFrameByGuidedMatching) {
