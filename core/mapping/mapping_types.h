@@ -23,8 +23,8 @@ struct PersonBox {
   cv::Rect2d box;       // Pixels of the image it was found in.
   cv::Size image_size;  // Size of that image (boxes are scaled to the depth image).
   double score = 1;     // Detector confidence (1 for ground truth).
-  // The whole body from the floor to the head, in the same pixels, where a detector in 3D knows
-  // it (its top or feet may lie outside the image); empty otherwise.
+  // The whole body from the floor to the top of the head, in the same pixels, where a detector
+  // in 3D knows it and it lies wholly in the image's rows; empty otherwise.
   cv::Rect2d body;
 
   // Factors (x, y) that take `box` into an image of `size`; 1 along an axis of unknown size.
