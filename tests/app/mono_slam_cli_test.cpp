@@ -2,13 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "tests/app/process.h"
+#include "tests/support/button_csv.h"
 #include "tests/support/test_data.h"
 
 namespace sightline {
@@ -43,27 +42,12 @@ TEST(MonoSlamCli, RunWritesTrajectoryMapKeyframesScaleAndMetrics) {
   EXPECT_GT(std::count(trajectory.begin(), trajectory.end(), '\n'), 40);
 }
 
-// metrics.json's number after `key` ("key": value), NaN when absent.
-double MetricOf(const std::string& metrics, const std::string& key) {
-  const size_t at = metrics.find("\"" + key + "\":");
-  if (at == std::string::npos) return std::nan("");
-  return std::atof(metrics.c_str() + at + key.size() + 3);
-}
-
-// Rows of frames.csv (without its header) and how many of them were tracked.
+// frames.csv's rows and how many of them were tracked.
 void CountFrames(const std::string& csv_path, int* rows, int* tracked) {
-  std::istringstream csv(testing::ReadTextFile(csv_path));
-  std::string line;
-  std::getline(csv, line);  // frame,time_s,quality,tracked,...
-  *rows = *tracked = 0;
-  while (std::getline(csv, line)) {
-    ++*rows;
-    std::istringstream fields(line);
-    std::string field;
-    for (int i = 0; i < 4 && std::getline(fields, field, ','); ++i) {
-    }
-    *tracked += field == "1";
-  }
+  const testing::CsvColumns csv = testing::ReadCsvColumns(csv_path);
+  *rows = static_cast<int>(csv.rows);
+  *tracked = 0;
+  for (size_t i = 0; i < csv.rows; ++i) *tracked += csv.At("tracked", i) == 1;
 }
 
 // An RGB-D recording's colour images are a monocular sequence: a simulated orbit recorded as
@@ -84,7 +68,10 @@ TEST(MonoSlamCli, RunsOnTheColourImagesOfAnRgbdRecording) {
   CountFrames(out + "/frames.csv", &rows, &tracked);
   EXPECT_EQ(rows, 150);
   EXPECT_GE(tracked, 0.9 * rows);
-  EXPECT_LT(MetricOf(testing::ReadTextFile(out + "/metrics.json"), "ate_rmse_pct_of_path"), 0.5);
+  EXPECT_LT(testing::JsonNumber(testing::ReadTextFile(out + "/metrics.json"), "accuracy",
+                                "ate_rmse_pct_of_path")
+                .value_or(1e9),
+            0.5);
 
   SIGHTLINE_REQUIRE_DATA(tum, "tum_fr1_desk");
   const std::string real = testing::TempDir("mono_slam_cli_tum_colour");
