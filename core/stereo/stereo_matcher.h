@@ -20,7 +20,7 @@ struct StereoMatcherOptions {
   double max_row_error_px = 0.5;    // |v_right - v_left| above this rejects a match [px].
   double max_left_right_px = 0.5;   // Right-to-left KLT must return within this [px]; 0 = no check.
   int window_px = 9;                // KLT window side [px] (odd).
-  int klt_levels = 2;               // KLT pyramid levels used from the disparity guess.
+  int klt_levels = 0;               // KLT pyramid levels used from the disparity guess.
   int max_iterations = 10;          // KLT iterations per level.
   int coarse_level = 2;             // Pyramid level of the SAD search for unknown disparities.
   int coarse_window_px = 7;         // SAD window side at that level [px] (odd).
