@@ -159,23 +159,54 @@ void StereoMatcher::Match(const ImagePyramid& left, const ImagePyramid& right,
   if (n == 0 || left.empty() || right.empty()) return;
   const int coarse = std::min({options_.coarse_level, left.max_level, right.max_level});
   const int scale = 1 << coarse;
+  const auto row_search = [&](size_t i) {
+    return CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
+  };
   // Only features with a disparity (guessed or found by the row search) go to KLT.
   std::vector<size_t> index;
-  std::vector<cv::Point2f> from, to;
+  std::vector<float> start;
   index.reserve(n);
-  from.reserve(n);
-  to.reserve(n);
+  start.reserve(n);
+  std::vector<unsigned char> guessed(n, 0);
   for (size_t i = 0; i < n; ++i) {
     float d =
         i < disparity_guess.size() ? disparity_guess[i] : std::numeric_limits<float>::quiet_NaN();
-    if (!std::isfinite(d))
-      d = CoarseDisparity(left.Level(coarse), right.Level(coarse), left_points[i], scale);
+    guessed[i] = std::isfinite(d);
+    if (!guessed[i]) d = row_search(i);
     if (!std::isfinite(d)) continue;
     index.push_back(i);
-    from.push_back(left_points[i]);
-    to.emplace_back(left_points[i].x - d, left_points[i].y);
+    start.push_back(d);
   }
+  MatchFrom(left, right, left_points, index, start, right_points, ok);
+  // A guess (the motion's prediction) can be further off than KLT reaches on the levels it
+  // uses: such features are tried again from the row search's disparity.
+  std::vector<size_t> again;
+  std::vector<float> again_start;
+  for (size_t k = 0; k < index.size(); ++k) {
+    const size_t i = index[k];
+    if ((*ok)[i] || !guessed[i]) continue;
+    const float d = row_search(i);
+    if (!std::isfinite(d) || std::abs(d - start[k]) < 0.5f * scale) continue;
+    again.push_back(i);
+    again_start.push_back(d);
+  }
+  MatchFrom(left, right, left_points, again, again_start, right_points, ok);
+}
+
+void StereoMatcher::MatchFrom(const ImagePyramid& left, const ImagePyramid& right,
+                              const std::vector<cv::Point2f>& left_points,
+                              const std::vector<size_t>& index, const std::vector<float>& start,
+                              std::vector<cv::Point2f>* right_points,
+                              std::vector<unsigned char>* ok) const {
   if (index.empty()) return;
+  std::vector<cv::Point2f> from, to;
+  from.reserve(index.size());
+  to.reserve(index.size());
+  for (size_t k = 0; k < index.size(); ++k) {
+    const cv::Point2f& p = left_points[index[k]];
+    from.push_back(p);
+    to.emplace_back(p.x - start[k], p.y);
+  }
   const cv::Size window(options_.window_px, options_.window_px);
   const int levels = std::min({options_.klt_levels, left.max_level, right.max_level});
   const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,

@@ -40,7 +40,8 @@ class StereoMatcher {
   const StereoMatcherOptions& options() const { return options_; }
 
   // Right-image positions of `left_points`. disparity_guess[i] is the expected disparity, or NaN
-  // (or a missing entry) when unknown, which triggers the coarse row search. ok[i] is 0 where no
+  // (or a missing entry) when unknown, which triggers the coarse row search; a feature whose
+  // guess finds no consistent match is tried again from the row search. ok[i] is 0 where no
   // consistent match within the limits exists. The right point's row is set to the left one's
   // (rectified images), its column is sub-pixel.
   void Match(const ImagePyramid& left, const ImagePyramid& right,
@@ -48,6 +49,12 @@ class StereoMatcher {
              std::vector<cv::Point2f>* right_points, std::vector<unsigned char>* ok) const;
 
  private:
+  // KLT from left_points[index[k]] - (start[k], 0) and the checks; sets right_points and ok of
+  // the features that pass.
+  void MatchFrom(const ImagePyramid& left, const ImagePyramid& right,
+                 const std::vector<cv::Point2f>& left_points, const std::vector<size_t>& index,
+                 const std::vector<float>& start, std::vector<cv::Point2f>* right_points,
+                 std::vector<unsigned char>* ok) const;
   // Best disparity along the row at the coarse level, NaN when no window fits or matches.
   float CoarseDisparity(const cv::Mat& left, const cv::Mat& right, cv::Point2f p, int scale) const;
 
