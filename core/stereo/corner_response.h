@@ -16,4 +16,9 @@ namespace sightline {
 void MinEigenResponse(const cv::Mat& derivatives, const cv::Rect& region, int block_size,
                       cv::Mat* response);
 
+// On x86-64 CPUs with AVX2 the response's loops run eight columns at a time, with the same
+// operations in the same order (identical values). Turning that off (tests compare the two
+// paths) is process-wide and not thread-safe; returns whether the CPU has AVX2.
+bool SetCornerResponseAvx2(bool enabled);
+
 }  // namespace sightline
