@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="91"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
@@ -61,94 +61,94 @@
         <translation>Knopf außer Reichweite</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="72"/>
         <source>The picture changed: tap again</source>
         <translation>Das Bild hat sich geändert: bitte neu antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="77"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="74"/>
         <source>The picture was too old: tap again</source>
         <translation>Das Bild war zu alt: bitte neu antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="79"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="76"/>
         <source>Stopped: press Start again first</source>
         <translation>Gestoppt: zuerst „Neu starten“ drücken</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="203"/>
         <source>Paused</source>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
         <source>Arm link off</source>
         <translation>Arm-Verbindung aus</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
         <source>No arm connected</source>
         <translation>Kein Arm verbunden</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="93"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="208"/>
         <source>Waiting</source>
         <translation>Warten</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="115"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="114"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Knopfwahl (monokulares SLAM)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="147"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="146"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="185"/>
         <source>Operator panel</source>
         <translation>Bedienfeld</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
         <source>Operator panel full screen</source>
         <translation>Bedienfeld im Vollbild</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
         <source>End of the recording</source>
         <translation>Ende der Aufnahme</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="246"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="245"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>Das Bild ist angehalten: erst Abspielen drücken, dann antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="252"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>Die Aufnahme ist zu Ende: nichts zum Antippen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="255"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Noch kein Bild: Kamera oder Aufnahme öffnen</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="292"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="291"/>
         <source>No button at the tap: %1</source>
         <translation>Kein Knopf an der getippten Stelle: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="306"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="195"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Kein metrischer Maßstab (keine Armbewegung)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="309"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="308"/>
         <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
         <translation>Ohne die Posen des Arms wird der Knopf nur in Karteneinheiten verfolgt und verortet; es wird kein Ziel gesendet.</translation>
     </message>
@@ -4483,42 +4483,52 @@ Innenraumkartierung, Befahrbarkeitskarten, Stereo-Odometrie und monokulare Knopf
 <context>
     <name>sightline::RemoteOperatorPresenter</name>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="49"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="50"/>
         <source>Operator panel (ROS node)</source>
         <translation>Bedienfeld (ROS-Knoten)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="86"/>
         <source>Start did not reach the robot: still stopped</source>
         <translation>Neu starten hat den Roboter nicht erreicht: er bleibt gestoppt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
         <source>STOP sent: waiting for the robot</source>
         <translation>STOPP gesendet: warte auf den Roboter</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="110"/>
         <source>STOP kept: sent as soon as the robot is reachable</source>
         <translation>STOPP gehalten: wird gesendet, sobald der Roboter erreichbar ist</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="144"/>
         <source>The robot confirmed STOP</source>
         <translation>Der Roboter hat STOPP bestätigt</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="152"/>
         <source>Target %1, %2, %3 m (%4)</source>
         <translation>Ziel %1, %2, %3 m (%4)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="185"/>
+        <source>The robot did not answer the tap: tap again</source>
+        <translation>Der Roboter hat auf das Antippen nicht geantwortet: bitte neu antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="223"/>
+        <source>The robot did not take the tap: tap again</source>
+        <translation>Der Roboter hat das Antippen nicht angenommen: bitte neu antippen</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="232"/>
         <source>The robot&apos;s node is gone</source>
         <translation>Der Knoten des Roboters ist weg</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="240"/>
         <source>No picture for %1 s</source>
         <translation>Seit %1 s kein Bild</translation>
     </message>

@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="91"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
@@ -61,94 +61,94 @@
         <translation>Botón fuera de alcance</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="72"/>
         <source>The picture changed: tap again</source>
         <translation>La imagen ha cambiado: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="77"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="74"/>
         <source>The picture was too old: tap again</source>
         <translation>La imagen era demasiado antigua: toque de nuevo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="79"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="76"/>
         <source>Stopped: press Start again first</source>
         <translation>Detenido: pulse primero «Empezar de nuevo»</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="203"/>
         <source>Paused</source>
         <translation>En pausa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
         <source>Arm link off</source>
         <translation>Enlace con el brazo apagado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
         <source>No arm connected</source>
         <translation>Ningún brazo conectado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="93"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="208"/>
         <source>Waiting</source>
         <translation>Esperando</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="115"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="114"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Selector de botones (SLAM monocular)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="147"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="146"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="185"/>
         <source>Operator panel</source>
         <translation>Panel del operador</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
         <source>Operator panel full screen</source>
         <translation>Panel del operador a pantalla completa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
         <source>End of the recording</source>
         <translation>Fin de la grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="246"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="245"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>La imagen está en pausa: pulse Reproducir y luego toque</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="252"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>La grabación ha terminado: nada que tocar</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="255"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Todavía no hay imagen: abra una cámara o una grabación</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="292"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="291"/>
         <source>No button at the tap: %1</source>
         <translation>No hay ningún botón donde tocó: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="306"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="195"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Sin escala métrica (sin movimiento del brazo)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="309"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="308"/>
         <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
         <translation>Sin las poses del brazo el botón solo se sigue y se localiza en unidades del mapa; no se envía ningún objetivo.</translation>
     </message>
@@ -4483,42 +4483,52 @@ Mapeo de interiores, mapas de transitabilidad, odometría estéreo y localizaci�
 <context>
     <name>sightline::RemoteOperatorPresenter</name>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="49"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="50"/>
         <source>Operator panel (ROS node)</source>
         <translation>Panel del operador (nodo ROS)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="86"/>
         <source>Start did not reach the robot: still stopped</source>
         <translation>El arranque no llegó al robot: sigue parado</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
         <source>STOP sent: waiting for the robot</source>
         <translation>PARAR enviado: esperando al robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="110"/>
         <source>STOP kept: sent as soon as the robot is reachable</source>
         <translation>PARAR retenido: se envía en cuanto el robot esté accesible</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="144"/>
         <source>The robot confirmed STOP</source>
         <translation>El robot confirmó PARAR</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="152"/>
         <source>Target %1, %2, %3 m (%4)</source>
         <translation>Objetivo %1, %2, %3 m (%4)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="185"/>
+        <source>The robot did not answer the tap: tap again</source>
+        <translation>El robot no respondió al toque: toque de nuevo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="223"/>
+        <source>The robot did not take the tap: tap again</source>
+        <translation>El robot no aceptó el toque: toque de nuevo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="232"/>
         <source>The robot&apos;s node is gone</source>
         <translation>El nodo del robot ya no está</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="240"/>
         <source>No picture for %1 s</source>
         <translation>Sin imagen desde hace %1 s</translation>
     </message>

@@ -5,8 +5,8 @@
     <name>sightline::ButtonPickerPresenter</name>
     <message>
         <location filename="../app/sightline/button_picker_presenter.cpp" line="42"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="87"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="91"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
         <source>Stopped</source>
         <translation>Fermato</translation>
     </message>
@@ -61,94 +61,94 @@
         <translation>Pulsante fuori portata</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="75"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="72"/>
         <source>The picture changed: tap again</source>
         <translation>L&apos;immagine è cambiata: tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="77"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="74"/>
         <source>The picture was too old: tap again</source>
         <translation>L&apos;immagine era troppo vecchia: tocca di nuovo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="79"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="76"/>
         <source>Stopped: press Start again first</source>
         <translation>Fermato: premi prima «Riparti»</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="86"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="199"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="203"/>
         <source>Paused</source>
         <translation>In pausa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="88"/>
         <source>Arm link off</source>
         <translation>Collegamento al braccio spento</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="90"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="89"/>
         <source>No arm connected</source>
         <translation>Nessun braccio collegato</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="94"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="204"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="93"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="208"/>
         <source>Waiting</source>
         <translation>In attesa</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="115"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="114"/>
         <source>Button picker (monocular SLAM)</source>
         <translation>Selettore di pulsanti (SLAM monoculare)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="123"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="147"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="186"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="122"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="146"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="185"/>
         <source>Operator panel</source>
         <translation>Pannello operatore</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="127"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="126"/>
         <source>Operator panel full screen</source>
         <translation>Pannello operatore a schermo intero</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="228"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="227"/>
         <source>End of the recording</source>
         <translation>Fine della registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="246"/>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="245"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
         <source>The picture is paused: press Play, then tap</source>
         <translation>L&apos;immagine è in pausa: premi Riproduci, poi tocca</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="253"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="252"/>
         <source>The recording has ended: nothing to tap</source>
         <translation>La registrazione è finita: niente da toccare</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="255"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="254"/>
         <source>No picture yet: open a camera or a recording</source>
         <translation>Ancora nessuna immagine: apri una telecamera o una registrazione</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="292"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="291"/>
         <source>No button at the tap: %1</source>
         <translation>Nessun pulsante nel punto toccato: %1</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="307"/>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="191"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="306"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="195"/>
         <source>No metric scale (no arm motion)</source>
         <translation>Nessuna scala metrica (nessun movimento del braccio)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/button_picker_presenter.cpp" line="309"/>
+        <location filename="../app/sightline/button_picker_presenter.cpp" line="308"/>
         <source>Without the arm&apos;s poses the button is tracked and located in map units only; no target is sent.</source>
         <translation>Senza le pose del braccio il pulsante è seguito e localizzato solo in unità della mappa; nessun obiettivo viene inviato.</translation>
     </message>
@@ -4483,42 +4483,52 @@ Mappatura di interni, mappe di percorribilità, odometria stereo e localizzazion
 <context>
     <name>sightline::RemoteOperatorPresenter</name>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="49"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="50"/>
         <source>Operator panel (ROS node)</source>
         <translation>Pannello operatore (nodo ROS)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="85"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="86"/>
         <source>Start did not reach the robot: still stopped</source>
         <translation>Il riavvio non ha raggiunto il robot: resta fermo</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="108"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
         <source>STOP sent: waiting for the robot</source>
         <translation>STOP inviato: in attesa del robot</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="109"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="110"/>
         <source>STOP kept: sent as soon as the robot is reachable</source>
         <translation>STOP trattenuto: inviato appena il robot è raggiungibile</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="141"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="144"/>
         <source>The robot confirmed STOP</source>
         <translation>Il robot ha confermato lo STOP</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="149"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="152"/>
         <source>Target %1, %2, %3 m (%4)</source>
         <translation>Obiettivo %1, %2, %3 m (%4)</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="212"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="185"/>
+        <source>The robot did not answer the tap: tap again</source>
+        <translation>Il robot non ha risposto al tocco: tocca di nuovo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="223"/>
+        <source>The robot did not take the tap: tap again</source>
+        <translation>Il robot non ha accettato il tocco: tocca di nuovo</translation>
+    </message>
+    <message>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="232"/>
         <source>The robot&apos;s node is gone</source>
         <translation>Il nodo del robot non c&apos;è più</translation>
     </message>
     <message>
-        <location filename="../app/sightline/remote_operator_presenter.cpp" line="220"/>
+        <location filename="../app/sightline/remote_operator_presenter.cpp" line="240"/>
         <source>No picture for %1 s</source>
         <translation>Nessuna immagine da %1 s</translation>
     </message>

@@ -64,9 +64,6 @@ QString OperatorReasonText(GateReason reason) {
   return {};
 }
 
-namespace {
-
-// Why the operator's tap was not taken.
 QString TapRefusalText(TapRefusal refusal) {
   switch (refusal) {
     case TapRefusal::kNone:
@@ -80,6 +77,8 @@ QString TapRefusalText(TapRefusal refusal) {
   }
   return {};
 }
+
+namespace {
 
 // Why no target goes to the arm on a frame after Yes (the picture plays).
 QString HoldText(const ButtonFrameResult& view) {

@@ -26,6 +26,8 @@ class OperatorPanel;
 
 // Why the gate let no target out, in the operator's words ("Button lost"); empty for kSend.
 QString OperatorReasonText(GateReason reason);
+// Why the operator's tap was not taken, in the operator's words; empty for kNone.
+QString TapRefusalText(TapRefusal refusal);
 
 class ButtonPickerPresenter : public MonoSlamPresenter {
   Q_OBJECT

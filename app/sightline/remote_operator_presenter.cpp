@@ -18,9 +18,10 @@ namespace sightline {
 
 namespace {
 
-// Gate reports after a tap without a candidate: the node found no button there (or refused the
-// tap); it answers on the first frame after the tap, these allow for frames already in flight.
-constexpr int kGatesForNoButton = 10;
+// Gate reports after a tap without its answer (the gate's `tap` key on the frame that took
+// it): the tap or the answer was lost on the way. The node answers on its next frame; these
+// allow for frames already in flight.
+constexpr int kGatesWithoutAnswer = 30;
 // Half the side of the square drawn around the tapped point while the question is open (the
 // node does not send the button's outline) [image pixels].
 constexpr double kTapMarkPx = 18;
@@ -115,6 +116,8 @@ void RemoteOperatorPresenter::OnTapped(QPointF image_px) {
   if (!sent.ok()) return panel_->Refuse(QString::fromStdString(sent.message()));
   ++taps_sent_;
   tap_pending_ = true;
+  tap_stamp_s_ = shown_stamp_s_;
+  tap_answer_.clear();
   answered_ = false;
   gates_since_tap_ = 0;
   tap_px_ = image_px;
@@ -165,6 +168,7 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
   const RemoteGate& gate = update.gate;
   const OperatorState shown = panel_->state();
   if (shown == OperatorState::kStopped) return;  // Only "Start again" leaves STOP.
+  if (tap_pending_ && ShowTapAnswer(gate)) return;
   if (gate.state == "confirm") {
     tap_pending_ = false;
     // Frames the node reported before it heard Yes or Cancel do not ask again.
@@ -176,9 +180,9 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
     return;
   }
   if (tap_pending_) {
-    if (++gates_since_tap_ < kGatesForNoButton) return;
+    if (++gates_since_tap_ < kGatesWithoutAnswer) return;
     tap_pending_ = false;
-    return panel_->SetState(OperatorState::kNoButton);
+    return panel_->Refuse(tr("The robot did not answer the tap: tap again"));
   }
   if (gate.state == "idle" || gate.state == "stopped") {
     if (IsTracking(shown) || shown == OperatorState::kConfirm)
@@ -202,6 +206,22 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
   const QString why = reason ? OperatorReasonText(*reason) : QString();
   panel_->SetState(OperatorState::kHolding,
                    why.isEmpty() ? ButtonPickerPresenter::tr("Waiting") : why);
+}
+
+bool RemoteOperatorPresenter::ShowTapAnswer(const RemoteGate& gate) {
+  // An answer to an earlier tap (the operator tapped again since) is not this tap's.
+  if (gate.tap.empty() || std::abs(gate.tap_stamp_s - tap_stamp_s_) > 1e-6) return false;
+  tap_answer_ = gate.tap;
+  tap_pending_ = false;
+  if (gate.tap == "found") return false;  // The same frame's state asks ("confirm").
+  if (gate.tap == "no_button") {
+    panel_->SetState(OperatorState::kNoButton);
+    return true;
+  }
+  const std::optional<TapRefusal> refusal = TapRefusalOfKey(gate.tap);
+  const QString why = refusal ? TapRefusalText(*refusal) : QString();
+  panel_->Refuse(why.isEmpty() ? tr("The robot did not take the tap: tap again") : why);
+  return true;
 }
 
 void RemoteOperatorPresenter::CheckStale() {

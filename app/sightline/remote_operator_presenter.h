@@ -17,6 +17,7 @@
 #include <QString>
 #include <memory>
 #include <optional>
+#include <string>
 
 class QDockWidget;
 class QMainWindow;
@@ -26,6 +27,7 @@ namespace sightline {
 
 class OperatorPanel;
 class RosNodeView;
+struct RemoteGate;
 struct RemoteUpdate;
 
 class RemoteOperatorPresenter : public QObject {
@@ -49,6 +51,9 @@ class RemoteOperatorPresenter : public QObject {
   // Gate reports the panel showed as "Target sent".
   int target_sent_reports() const { return target_sent_reports_; }
   std::optional<Eigen::Vector3d> last_target_m() const { return last_target_m_; }
+  // The node's answer to the last tap sent ("found", "no_button", "too_old", ... as the gate's
+  // `tap` key), "" while none came.
+  const std::string& tap_answer() const { return tap_answer_; }
 
  signals:
   // The node took STOP (its latched `stop` says so).
@@ -63,6 +68,8 @@ class RemoteOperatorPresenter : public QObject {
   void OnTapped(QPointF image_px);
   void OnStop();
   void ShowGate(const RemoteUpdate& update);
+  // The node's answer to the pending tap, when `gate` carries it; returns whether it did.
+  bool ShowTapAnswer(const RemoteGate& gate);
   void CheckStale();
   void ShowDock();
 
@@ -79,9 +86,11 @@ class RemoteOperatorPresenter : public QObject {
   double shown_stamp_s_ = 0;
   double shown_receive_s_ = 0;  // Host time the picture on screen arrived.
   int taps_sent_ = 0;
-  bool tap_pending_ = false;  // A tap went out; the node's answer (gate "confirm") not yet in.
-  int gates_since_tap_ = 0;   // Gate reports since the tap, still without a candidate.
-  bool answered_ = false;     // Yes or Cancel went out for the tap's candidate.
+  bool tap_pending_ = false;  // A tap went out; the node's answer not yet in.
+  double tap_stamp_s_ = 0;    // The stamp of the picture it was made on (names its answer).
+  int gates_since_tap_ = 0;   // Gate reports since the tap, still without its answer.
+  std::string tap_answer_;
+  bool answered_ = false;  // Yes or Cancel went out for the tap's candidate.
   QPointF tap_px_;
   bool stop_acknowledged_ = false;
   int target_sent_reports_ = 0;

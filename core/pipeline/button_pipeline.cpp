@@ -79,97 +79,6 @@ StatusOr<ButtonTap> ParseButtonTap(const std::string& text) {
   return tap;
 }
 
-void ButtonCommands::Tap(const ButtonTapRequest& tap) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  pending_.tap = tap;
-}
-
-void ButtonCommands::Confirm() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  pending_.confirm = true;
-}
-
-void ButtonCommands::Cancel() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  pending_.cancel = true;
-}
-
-void ButtonCommands::Stop(const std::string& reason) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  pending_.stop = true;
-  stopped_ = true;
-  if (stop_now_) stop_now_(reason);  // At once, not at the next frame.
-}
-
-void ButtonCommands::Restart() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  pending_.restart = true;
-  stopped_ = false;
-  if (restart_now_) restart_now_();
-}
-
-bool ButtonCommands::SetHold(bool hold) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  held_ = hold;
-  if (!hold || !pending_.tap || pending_.tap->ahead) return false;
-  pending_.tap.reset();  // A tap on a picture that is no longer live is never applied later.
-  return true;
-}
-
-bool ButtonCommands::held() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return held_;
-}
-
-bool ButtonCommands::stopped() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return stopped_;
-}
-
-ButtonCommands::Pending ButtonCommands::Take(int64_t index) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  Pending out = pending_;
-  pending_ = Pending();
-  if (out.tap && out.tap->ahead && out.tap->frame > index) {  // For a later frame: it waits.
-    pending_.tap = out.tap;
-    out.tap.reset();
-  }
-  return out;
-}
-
-bool ButtonCommands::tap_pending() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return pending_.tap.has_value();
-}
-
-void ButtonCommands::PostAnswer(ButtonTapAnswer answer) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  answer_ = std::move(answer);
-}
-
-std::optional<ButtonTapAnswer> ButtonCommands::TakeAnswer() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  std::optional<ButtonTapAnswer> out = std::move(answer_);
-  answer_.reset();
-  return out;
-}
-
-void ButtonCommands::SetImmediate(const void* owner, std::function<void(const std::string&)> stop,
-                                  std::function<void()> restart) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  immediate_owner_ = owner;
-  stop_now_ = std::move(stop);
-  restart_now_ = std::move(restart);
-}
-
-void ButtonCommands::ClearImmediate(const void* owner) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (immediate_owner_ != owner) return;  // A newer pipeline object took over.
-  immediate_owner_ = nullptr;
-  stop_now_ = nullptr;
-  restart_now_ = nullptr;
-}
-
 const StatisticTable& ButtonStatistics() {
   static const StatisticTable kTable = [] {
     StatisticTable table;
@@ -497,6 +406,7 @@ StatusOr<std::shared_ptr<const PipelineResult>> ButtonPipeline::Reprocess(const 
   again->tap_answered = false;
   again->tap_status = Status::Ok();
   again->tap_refused = TapRefusal::kNone;
+  again->tap_stamp_s = 0;
   again->target_published = false;
   AddLinkState(again.get());
   return std::shared_ptr<const PipelineResult>(again);
@@ -590,6 +500,7 @@ Status ButtonPipeline::HandleTap(const ButtonTapRequest& tap, const MonoSlamResu
   int64_t frame_id = FrameId(r.stamp, index);
   cv::Mat still = r.image;
   out->tap_answered = true;
+  out->tap_stamp_s = tap.stamp_s;
   if (!tap.ahead) {  // The operator's: found on the frame the operator saw, or refused.
     const SeenFrame* seen = nullptr;
     out->tap_refused = FindTapped(tap, r.stamp.sensor_time_s, &seen);

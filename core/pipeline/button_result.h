@@ -26,6 +26,10 @@ enum class TapRefusal {
   kTooOld,     // The tapped frame is older than button.gui.max_tap_age_s in data time.
   kStopped,    // STOP is on: press Start first.
 };
+// The refusal as a key for messages ("none", "no_picture", "too_old", "stopped"), and back
+// (nullopt for a key this build does not know).
+const char* TapRefusalKey(TapRefusal refusal);
+std::optional<TapRefusal> TapRefusalOfKey(const std::string& key);
 
 // One frame of the button picker: the monocular SLAM's frame and the picker's.
 struct ButtonFrameResult : MonoSlamFrameResult {
@@ -33,8 +37,9 @@ struct ButtonFrameResult : MonoSlamFrameResult {
   bool tap_answered = false;                   // A tap was handled in this frame ...
   Status tap_status;                           // ... with this outcome.
   TapRefusal tap_refused = TapRefusal::kNone;  // ... and, when not taken, why.
-  std::vector<cv::Point> candidate_outline;    // The button found at the tap (image pixels).
-  bool scale_converged = false;                // The metric scale counts as converged.
+  double tap_stamp_s = 0;  // ... made on the picture with this sensor time (the tap's stamp).
+  std::vector<cv::Point> candidate_outline;  // The button found at the tap (image pixels).
+  bool scale_converged = false;              // The metric scale counts as converged.
   // No metric scale (no arm: mono.run.metric_source = none, or auto without arm poses): the
   // button is tracked and located in map units only and no target is ever sent.
   bool tracking_only = false;

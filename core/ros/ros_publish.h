@@ -121,7 +121,11 @@ nav_msgs::OccupancyGrid MobilityGridMessage(const MobilityResult& result, const 
 geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target);
 // The safety gate's verdict of a button frame as a DiagnosticStatus "sightline/button/gate":
 // OK when it let a target out, WARN otherwise; keys reason (GateReasonKey), state, stopped,
-// held, target_published; message = the verdict's message.
+// held, target_published; message = the verdict's message. The frame that answered a tap adds
+// `tap` (TapAnswerKey) and `tap_stamp` (the tapped picture's stamp, seconds, "%.9f").
 diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result);
+// The answer to the tap a frame handled: "found" (a candidate, the picker asks), "no_button",
+// or the refusal's TapRefusalKey ("no_picture", "too_old", "stopped").
+std::string TapAnswerKey(const ButtonFrameResult& result);
 
 }  // namespace sightline

@@ -1,4 +1,6 @@
 // The button pipeline's messages: the gated target and the gate's verdict.
+#include <cstdio>
+
 #include "core/ros/ros_publish.h"
 
 namespace sightline {
@@ -30,6 +32,12 @@ diagnostic_msgs::KeyValue Pair(const std::string& key, const std::string& value)
 
 }  // namespace
 
+std::string TapAnswerKey(const ButtonFrameResult& result) {
+  if (result.tap_status.ok()) return "found";
+  if (result.tap_refused != TapRefusal::kNone) return TapRefusalKey(result.tap_refused);
+  return "no_button";
+}
+
 diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result) {
   diagnostic_msgs::DiagnosticStatus out;
   out.name = "sightline/button/gate";
@@ -50,6 +58,12 @@ diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& resu
                 Pair("target_published", result.target_published ? "true" : "false")};
   if (!result.arm_pose_missing.empty())
     out.values.push_back(Pair("arm_pose_missing", result.arm_pose_missing));
+  if (result.tap_answered) {  // The answer to a tap, on the frame that handled it.
+    out.values.push_back(Pair("tap", TapAnswerKey(result)));
+    char stamp[32];
+    std::snprintf(stamp, sizeof(stamp), "%.9f", result.tap_stamp_s);
+    out.values.push_back(Pair("tap_stamp", stamp));
+  }
   return out;
 }
 

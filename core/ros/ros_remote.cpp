@@ -24,7 +24,9 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <thread>
@@ -44,6 +46,13 @@ namespace sightline {
 namespace {
 
 double SecondsOf(const ros::Time& t) { return t.sec + 1e-9 * t.nsec; }
+
+// A stamp written as decimal seconds; 0 for text that is not one whole finite number.
+double ParseStamp(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  return (end != text.c_str() && *end == '\0' && std::isfinite(v)) ? v : 0;
+}
 
 Eigen::Isometry3d PoseOf(const geometry_msgs::Pose& p) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -234,6 +243,8 @@ struct RosRemote::Impl {
         if (kv.key == "held") u->gate.held = yes;
         if (kv.key == "tracking_only") u->gate.tracking_only = yes;
         if (kv.key == "target_published") u->gate.target_published = yes;
+        if (kv.key == "tap") u->gate.tap = kv.value;
+        if (kv.key == "tap_stamp") u->gate.tap_stamp_s = ParseStamp(kv.value);
       }
       Emit(std::move(u));
     }

@@ -79,6 +79,10 @@ struct RemoteGate {
   std::string reason;   // GateReasonKey: "send", "not_confirmed", "stale", ...
   std::string message;  // The gate's own words ("target sent" or why not), English.
   bool stopped = false, held = false, tracking_only = false, target_published = false;
+  // On the frame that answered a tap: "found", "no_button", "no_picture", "too_old", "stopped"
+  // (TapAnswerKey), and the stamp of the picture that tap was made on; "" and 0 otherwise.
+  std::string tap;
+  double tap_stamp_s = 0;
 };
 
 // One thing that arrived, or a change of the connection. Immutable once handed out.

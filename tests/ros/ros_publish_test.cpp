@@ -237,3 +237,45 @@ TEST(RosPublish, ButtonTargetOrientationTurnsXOntoTheApproach) {
 
 }  // namespace
 }  // namespace sightline
+
+namespace sightline {
+namespace {
+
+// The value of `key` in `status`, or "(absent)".
+std::string ValueOf(const diagnostic_msgs::DiagnosticStatus& status, const std::string& key) {
+  for (const auto& kv : status.values) {
+    if (kv.key == key) return kv.value;
+  }
+  return "(absent)";
+}
+
+// The frame that handled a tap says how, naming the tapped picture by its stamp; other frames
+// carry no answer (a remote panel must not take a later frame's silence for "no button").
+TEST(RosPublish, ButtonGateCarriesTheTapAnswerOnTheFrameThatTookIt) {
+  ButtonFrameResult result;
+  result.stamp.sensor_time_s = 1700000013.5;
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), "(absent)");
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap_stamp"), "(absent)");
+  result.tap_answered = true;
+  result.tap_stamp_s = 1700000012.345678;
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), "found");
+  const std::string stamp = ValueOf(ButtonGateStatus(result), "tap_stamp");
+  EXPECT_NEAR(std::stod(stamp), 1700000012.345678, 1e-6) << stamp;
+  result.tap_status = NotFound("no compact outline within 35 px");
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), "no_button");
+  const std::pair<TapRefusal, const char*> refusals[] = {{TapRefusal::kTooOld, "too_old"},
+                                                         {TapRefusal::kNoPicture, "no_picture"},
+                                                         {TapRefusal::kStopped, "stopped"}};
+  for (const auto& [refusal, key] : refusals) {
+    result.tap_status = FailedPrecondition("tap on frame 7 refused");
+    result.tap_refused = refusal;
+    EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), key);
+    // The key reads back as the refusal (the remote panel words it as the local one does).
+    ASSERT_TRUE(TapRefusalOfKey(key).has_value()) << key;
+    EXPECT_EQ(*TapRefusalOfKey(key), refusal);
+  }
+  EXPECT_FALSE(TapRefusalOfKey("refused_by_a_newer_node").has_value());
+}
+
+}  // namespace
+}  // namespace sightline

@@ -4,6 +4,7 @@
 // button topics with their stamps, and bad options are named.
 #include "core/ros/ros_remote.h"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -19,6 +20,8 @@
 #include <mutex>
 #include <thread>
 
+#include "core/pipeline/button_result.h"
+#include "core/ros/ros_publish.h"
 #include "tests/ros/raw_message.h"
 #include "tests/ros/ros_test_util.h"
 #include "tests/ros/roscore_fixture.h"
@@ -435,6 +438,55 @@ TEST(RosRemote, AMessageThatLiesAboutItsLengthIsRefusedAndCounted) {
   map.publish(good);
   ASSERT_TRUE(WaitFor([&] { return !received.Of(RemoteUpdate::Kind::kMap).empty(); }, 20));
   EXPECT_EQ(received.Of(RemoteUpdate::Kind::kMap).back()->map.width, 4);
+  remote.Disconnect();
+}
+
+// The gate's answer to a tap reaches the panel's side as the node wrote it; a stamp that is not a
+// number reads as 0 (no tap of the panel has that stamp), never as a crash or a wrong stamp.
+TEST(RosRemote, TheGatesTapAnswerArrivesWithTheTappedPicturesStamp) {
+  RoscoreFixture master;
+  const std::string error = StartMaster(&master);
+  ASSERT_TRUE(error.empty()) << error;
+  Received received;
+  RosRemote remote(received.callback());
+  ASSERT_TRUE(remote.Connect({master.uri(), "/robot3"}).ok());
+  ASSERT_TRUE(WaitFor([&] { return remote.connected(); }, 10));
+  ros::NodeHandle nh("/robot3");
+  ros::Publisher diagnostics = nh.advertise<diagnostic_msgs::DiagnosticArray>("diagnostics", 10);
+  ButtonFrameResult frame;
+  frame.stamp.sensor_time_s = 1700000013.5;
+  frame.tap_answered = true;
+  frame.tap_stamp_s = 1700000012.345678;
+  frame.tap_status = FailedPrecondition("tap on frame 7 refused");
+  frame.tap_refused = TapRefusal::kTooOld;
+  diagnostic_msgs::DiagnosticArray array;
+  array.status.push_back(ButtonGateStatus(frame));
+  ASSERT_TRUE(WaitFor([&] { return diagnostics.getNumSubscribers() > 0; }, 20));
+  diagnostics.publish(array);
+  ASSERT_TRUE(WaitFor([&] { return !received.Of(RemoteUpdate::Kind::kGate).empty(); }, 20));
+  const RemoteGate gate = received.Of(RemoteUpdate::Kind::kGate).front()->gate;
+  EXPECT_EQ(gate.tap, "too_old");
+  EXPECT_NEAR(gate.tap_stamp_s, 1700000012.345678, 1e-6);
+  EXPECT_EQ(gate.state, "idle");
+  // A gate without a tap's answer, and one whose stamp is not a number.
+  frame.tap_answered = false;
+  array.status = {ButtonGateStatus(frame)};
+  diagnostics.publish(array);
+  frame.tap_answered = true;
+  array.status = {ButtonGateStatus(frame)};
+  for (auto& kv : array.status[0].values) {
+    if (kv.key == "tap_stamp") kv.value = "12.5e";
+  }
+  diagnostics.publish(array);
+  ASSERT_TRUE(WaitFor([&] { return received.Of(RemoteUpdate::Kind::kGate).size() >= 3; }, 20));
+  const auto gates = received.Of(RemoteUpdate::Kind::kGate);
+  ASSERT_EQ(gates.size(), 3u);
+  const RemoteGate& silent = gates[1]->gate;
+  EXPECT_EQ(silent.tap, "");
+  EXPECT_EQ(silent.tap_stamp_s, 0);
+  const RemoteGate& garbled = gates.back()->gate;
+  EXPECT_EQ(garbled.tap, "too_old");
+  EXPECT_EQ(garbled.tap_stamp_s, 0);
   remote.Disconnect();
 }
 
