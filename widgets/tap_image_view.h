@@ -26,6 +26,7 @@ class TapImageView : public QWidget {
   void SetImage(const cv::Mat& image);
   // Outlines a region given in image pixels; an empty polygon clears it.
   void SetOutline(const QPolygonF& outline_in_image);
+  const QPolygonF& outline() const { return outline_; }
   // Rings the tracked button: centre and radius in image pixels; nullopt clears it.
   void SetRing(std::optional<QPointF> centre_in_image, double radius_px = 0);
   std::optional<QPointF> ring_centre() const { return ring_centre_; }

@@ -22,8 +22,8 @@ namespace {
 // it): the tap or the answer was lost on the way. The node answers on its next frame; these
 // allow for frames already in flight.
 constexpr int kGatesWithoutAnswer = 30;
-// Half the side of the square drawn around the tapped point while the question is open (the
-// node does not send the button's outline) [image pixels].
+// Half the side of the square drawn around the tapped point while the question is open, when
+// the node sent no outline of the button it found [image pixels].
 constexpr double kTapMarkPx = 18;
 
 // The gate's reason from its key ("tracking_lost"), or nullopt for a key this build does not know.
@@ -118,6 +118,7 @@ void RemoteOperatorPresenter::OnTapped(QPointF image_px) {
   tap_pending_ = true;
   tap_stamp_s_ = shown_stamp_s_;
   tap_answer_.clear();
+  candidate_.clear();
   answered_ = false;
   gates_since_tap_ = 0;
   tap_px_ = image_px;
@@ -173,9 +174,11 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
     tap_pending_ = false;
     // Frames the node reported before it heard Yes or Cancel do not ask again.
     if (!answered_ && shown != OperatorState::kConfirm) {
+      // The node's outline of the button it found; a square about the tap from a node that
+      // sent none.
       const QPointF d(kTapMarkPx, kTapMarkPx);
-      const QRectF box(tap_px_ - d, tap_px_ + d);
-      panel_->ShowCandidate(QPolygonF(box));
+      panel_->ShowCandidate(candidate_.size() >= 3 ? candidate_
+                                                   : QPolygonF(QRectF(tap_px_ - d, tap_px_ + d)));
     }
     return;
   }
@@ -213,7 +216,11 @@ bool RemoteOperatorPresenter::ShowTapAnswer(const RemoteGate& gate) {
   if (gate.tap.empty() || std::abs(gate.tap_stamp_s - tap_stamp_s_) > 1e-6) return false;
   tap_answer_ = gate.tap;
   tap_pending_ = false;
-  if (gate.tap == "found") return false;  // The same frame's state asks ("confirm").
+  if (gate.tap == "found") {  // The same frame's state asks ("confirm") about this outline.
+    candidate_.clear();
+    for (const cv::Point& p : gate.candidate) candidate_ << QPointF(p.x, p.y);
+    return false;
+  }
   if (gate.tap == "no_button") {
     panel_->SetState(OperatorState::kNoButton);
     return true;

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <QObject>
 #include <QPointF>
+#include <QPolygonF>
 #include <QString>
 #include <memory>
 #include <optional>
@@ -90,6 +91,7 @@ class RemoteOperatorPresenter : public QObject {
   double tap_stamp_s_ = 0;    // The stamp of the picture it was made on (names its answer).
   int gates_since_tap_ = 0;   // Gate reports since the tap, still without its answer.
   std::string tap_answer_;
+  QPolygonF candidate_;    // The node's outline of the button found at the tap (image pixels).
   bool answered_ = false;  // Yes or Cancel went out for the tap's candidate.
   QPointF tap_px_;
   bool stop_acknowledged_ = false;

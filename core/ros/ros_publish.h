@@ -122,10 +122,14 @@ geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target);
 // The safety gate's verdict of a button frame as a DiagnosticStatus "sightline/button/gate":
 // OK when it let a target out, WARN otherwise; keys reason (GateReasonKey), state, stopped,
 // held, target_published; message = the verdict's message. The frame that answered a tap adds
-// `tap` (TapAnswerKey) and `tap_stamp` (the tapped picture's stamp, seconds, "%.9f").
+// `tap` (TapAnswerKey) and `tap_stamp` (the tapped picture's stamp, seconds, "%.9f"), and
+// with a candidate `candidate`, its outline (OutlineText), so a remote panel asks about what the
+// node found, not about the spot tapped.
 diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result);
 // The answer to the tap a frame handled: "found" (a candidate, the picker asks), "no_button",
 // or the refusal's TapRefusalKey ("no_picture", "too_old", "stopped").
 std::string TapAnswerKey(const ButtonFrameResult& result);
+// An outline in image pixels as text: "x,y x,y ..." (integers).
+std::string OutlineText(const std::vector<cv::Point>& outline);
 
 }  // namespace sightline

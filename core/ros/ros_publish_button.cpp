@@ -32,6 +32,15 @@ diagnostic_msgs::KeyValue Pair(const std::string& key, const std::string& value)
 
 }  // namespace
 
+std::string OutlineText(const std::vector<cv::Point>& outline) {
+  std::string text;
+  for (const cv::Point& p : outline) {
+    if (!text.empty()) text += ' ';
+    text += std::to_string(p.x) + ',' + std::to_string(p.y);
+  }
+  return text;
+}
+
 std::string TapAnswerKey(const ButtonFrameResult& result) {
   if (result.tap_status.ok()) return "found";
   if (result.tap_refused != TapRefusal::kNone) return TapRefusalKey(result.tap_refused);
@@ -63,6 +72,9 @@ diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& resu
     char stamp[32];
     std::snprintf(stamp, sizeof(stamp), "%.9f", result.tap_stamp_s);
     out.values.push_back(Pair("tap_stamp", stamp));
+    if (result.tap_status.ok() && !result.candidate_outline.empty()) {
+      out.values.push_back(Pair("candidate", OutlineText(result.candidate_outline)));
+    }
   }
   return out;
 }

@@ -47,6 +47,44 @@ namespace {
 
 double SecondsOf(const ros::Time& t) { return t.sec + 1e-9 * t.nsec; }
 
+// An outline written as "x,y x,y ..." (core/ros/ros_publish.h's OutlineText): 3 to 4096
+// points, each within +-1e6 pixels.
+StatusOr<std::vector<cv::Point>> ParseOutline(const std::string& text) {
+  constexpr size_t kMaxPoints = 4096;
+  std::vector<cv::Point> points;
+  const char* s = text.c_str();
+  while (*s != '\0') {
+    if (*s == ' ') {
+      ++s;
+      continue;
+    }
+    if (points.size() >= kMaxPoints) {
+      return InvalidArgument("gate key 'candidate': more than " + std::to_string(kMaxPoints) +
+                             " points");
+    }
+    char* end = nullptr;
+    const long x = std::strtol(s, &end, 10);
+    if (end == s || *end != ',') {
+      return InvalidArgument("gate key 'candidate': point " + std::to_string(points.size() + 1) +
+                             " is not 'x,y'");
+    }
+    s = end + 1;
+    const long y = std::strtol(s, &end, 10);
+    if (end == s || (*end != ' ' && *end != '\0') || std::labs(x) > 1000000 ||
+        std::labs(y) > 1000000) {
+      return InvalidArgument("gate key 'candidate': point " + std::to_string(points.size() + 1) +
+                             " is not 'x,y' within +-1e6 pixels");
+    }
+    points.emplace_back(int(x), int(y));
+    s = end;
+  }
+  if (points.size() < 3) {
+    return InvalidArgument("gate key 'candidate': " + std::to_string(points.size()) +
+                           " points, an outline needs 3");
+  }
+  return points;
+}
+
 // A stamp written as decimal seconds; 0 for text that is not one whole finite number.
 double ParseStamp(const std::string& text) {
   char* end = nullptr;
@@ -245,6 +283,14 @@ struct RosRemote::Impl {
         if (kv.key == "target_published") u->gate.target_published = yes;
         if (kv.key == "tap") u->gate.tap = kv.value;
         if (kv.key == "tap_stamp") u->gate.tap_stamp_s = ParseStamp(kv.value);
+        if (kv.key == "candidate") {
+          StatusOr<std::vector<cv::Point>> outline = ParseOutline(kv.value);
+          if (outline.ok()) {
+            u->gate.candidate = std::move(*outline);
+          } else {
+            u->gate.bad_candidate = outline.status().message();
+          }
+        }
       }
       Emit(std::move(u));
     }

@@ -83,6 +83,10 @@ struct RemoteGate {
   // (TapAnswerKey), and the stamp of the picture that tap was made on; "" and 0 otherwise.
   std::string tap;
   double tap_stamp_s = 0;
+  // With "found": the outline of the button the node found (image pixels); empty when the node
+  // sent none or its text was not an outline (then `bad_candidate` says why).
+  std::vector<cv::Point> candidate;
+  std::string bad_candidate;
 };
 
 // One thing that arrived, or a change of the connection. Immutable once handed out.

@@ -141,9 +141,10 @@ TEST_F(RosOperatorGui, TapAndYesOnTheNodesPictureGiveATargetAtTheTrueButton) {
   // The operator taps at once on what is on screen, a few pixels off the button's centre. On a
   // loaded machine the picture may be older than button.gui.max_tap_age_s in the node's data
   // time by the time the tap reaches it: the node says so, and the operator taps again.
+  int frame = -1;
   for (int attempt = 1; attempt <= 5 && panel_->state() != OperatorState::kConfirm; ++attempt) {
     const double stamp = remote_->shown_stamp_s();
-    const int frame = FrameAt(rec_, stamp);
+    frame = FrameAt(rec_, stamp);
     ASSERT_GE(frame, 0) << "no recorded frame at " << stamp;
     ASSERT_LT(frame, static_cast<int>(target->pixel.size()));
     ASSERT_TRUE(target->visible[frame]);
@@ -165,6 +166,14 @@ TEST_F(RosOperatorGui, TapAndYesOnTheNodesPictureGiveATargetAtTheTrueButton) {
   }
   ASSERT_EQ(panel_->state(), OperatorState::kConfirm) << testing::ReadTextFile(log_);
   EXPECT_EQ(remote_->tap_answer(), "found");
+  // The question shows the outline of the button the node found (not a square about the tap):
+  // around the true button's centre.
+  const QPolygonF outline = panel_->image_view()->outline();
+  EXPECT_GT(outline.size(), 5);
+  const QPointF truth(target->pixel[frame].x(), target->pixel[frame].y());
+  EXPECT_TRUE(outline.containsPoint(truth, Qt::OddEvenFill));
+  EXPECT_LT(QLineF(outline.boundingRect().center(), truth).length(), 3.0)
+      << outline.boundingRect().center().x() << ", " << outline.boundingRect().center().y();
   EXPECT_FALSE(remote_->last_target_m().has_value());
   QTest::mouseClick(panel_->yes_button(), Qt::LeftButton);
   int code = -1;

@@ -261,8 +261,12 @@ TEST(RosPublish, ButtonGateCarriesTheTapAnswerOnTheFrameThatTookIt) {
   EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), "found");
   const std::string stamp = ValueOf(ButtonGateStatus(result), "tap_stamp");
   EXPECT_NEAR(std::stod(stamp), 1700000012.345678, 1e-6) << stamp;
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "candidate"), "(absent)");  // None found.
+  result.candidate_outline = {{10, 20}, {30, 21}, {-2, 40}};
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "candidate"), "10,20 30,21 -2,40");
   result.tap_status = NotFound("no compact outline within 35 px");
   EXPECT_EQ(ValueOf(ButtonGateStatus(result), "tap"), "no_button");
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "candidate"), "(absent)");
   const std::pair<TapRefusal, const char*> refusals[] = {{TapRefusal::kTooOld, "too_old"},
                                                          {TapRefusal::kNoPicture, "no_picture"},
                                                          {TapRefusal::kStopped, "stopped"}};

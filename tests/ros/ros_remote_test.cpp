@@ -487,6 +487,32 @@ TEST(RosRemote, TheGatesTapAnswerArrivesWithTheTappedPicturesStamp) {
   const RemoteGate& garbled = gates.back()->gate;
   EXPECT_EQ(garbled.tap, "too_old");
   EXPECT_EQ(garbled.tap_stamp_s, 0);
+  // A found button's outline arrives as the node wrote it; one that is not an outline is named
+  // and dropped (the panel then marks the tapped spot).
+  frame.tap_status = Status::Ok();
+  frame.tap_refused = TapRefusal::kNone;
+  frame.candidate_outline = {{100, 80}, {120, 81}, {110, 99}};
+  const char* const bad[] = {"100,80 120", "100,80 120,81", "1,2 3,4 5,6x", "1,2 3,4 99999999,6"};
+  array.status = {ButtonGateStatus(frame)};
+  diagnostics.publish(array);
+  for (const char* text : bad) {
+    array.status = {ButtonGateStatus(frame)};
+    for (auto& kv : array.status[0].values) {
+      if (kv.key == "candidate") kv.value = text;
+    }
+    diagnostics.publish(array);
+  }
+  ASSERT_TRUE(WaitFor([&] { return received.Of(RemoteUpdate::Kind::kGate).size() >= 8; }, 20));
+  const auto all = received.Of(RemoteUpdate::Kind::kGate);
+  ASSERT_EQ(all.size(), 8u);
+  EXPECT_EQ(all[3]->gate.tap, "found");
+  EXPECT_EQ(all[3]->gate.candidate, frame.candidate_outline);
+  EXPECT_EQ(all[3]->gate.bad_candidate, "");
+  for (size_t i = 4; i < all.size(); ++i) {
+    EXPECT_TRUE(all[i]->gate.candidate.empty()) << bad[i - 4];
+    EXPECT_NE(all[i]->gate.bad_candidate.find("'candidate'"), std::string::npos)
+        << bad[i - 4] << ": " << all[i]->gate.bad_candidate;
+  }
   remote.Disconnect();
 }
 
