@@ -133,11 +133,19 @@ void RemoteOperatorPresenter::OnUpdate(const std::shared_ptr<const RemoteUpdate>
       ++images_shown_;
       shown_stamp_s_ = update->stamp_s;
       shown_receive_s_ = update->receive_s;
+      ShowRing();
       if (connected_) panel_->SetLink(OperatorLink::kLive);
       break;
     case RemoteUpdate::Kind::kGate:
       ShowDock();
+      ring_stamp_s_ = update->stamp_s;
+      ring_centre_.reset();
+      if (update->gate.ring) {
+        ring_centre_ = QPointF(update->gate.ring->x, update->gate.ring->y);
+        ring_radius_px_ = update->gate.ring->z;
+      }
       ShowGate(*update);
+      ShowRing();
       break;
     case RemoteUpdate::Kind::kStopState:
       if (update->stopped && panel_->state() == OperatorState::kStopped && !stop_acknowledged_) {
@@ -209,6 +217,21 @@ void RemoteOperatorPresenter::ShowGate(const RemoteUpdate& update) {
   const QString why = reason ? OperatorReasonText(*reason) : QString();
   panel_->SetState(OperatorState::kHolding,
                    why.isEmpty() ? ButtonPickerPresenter::tr("Waiting") : why);
+}
+
+void RemoteOperatorPresenter::ShowRing() {
+  const OperatorState s = panel_->state();
+  if (s == OperatorState::kConfirm) return;  // The question's outline stays alone.
+  // The ring of another frame than the one on screen would sit off the button while it moves;
+  // it waits for its picture (or the picture for its gate).
+  if (std::abs(ring_stamp_s_ - shown_stamp_s_) > 1e-6) return;
+  const bool tracking = IsTracking(s) && s != OperatorState::kSearching;
+  if (tracking && ring_centre_) {
+    panel_->SetRing(*ring_centre_, ring_radius_px_);
+    drawn_ring_stamp_s_ = ring_stamp_s_;
+  } else {
+    panel_->SetRing(std::nullopt);
+  }
 }
 
 bool RemoteOperatorPresenter::ShowTapAnswer(const RemoteGate& gate) {

@@ -55,6 +55,8 @@ class RemoteOperatorPresenter : public QObject {
   // The node's answer to the last tap sent ("found", "no_button", "too_old", ... as the gate's
   // `tap` key), "" while none came.
   const std::string& tap_answer() const { return tap_answer_; }
+  // The stamp of the frame whose tracked button the ring on the panel shows.
+  double ring_stamp_s() const { return drawn_ring_stamp_s_; }
 
  signals:
   // The node took STOP (its latched `stop` says so).
@@ -71,6 +73,8 @@ class RemoteOperatorPresenter : public QObject {
   void ShowGate(const RemoteUpdate& update);
   // The node's answer to the pending tap, when `gate` carries it; returns whether it did.
   bool ShowTapAnswer(const RemoteGate& gate);
+  // Rings the tracked button on the picture on screen, with the gate of that very frame.
+  void ShowRing();
   void CheckStale();
   void ShowDock();
 
@@ -91,7 +95,12 @@ class RemoteOperatorPresenter : public QObject {
   double tap_stamp_s_ = 0;    // The stamp of the picture it was made on (names its answer).
   int gates_since_tap_ = 0;   // Gate reports since the tap, still without its answer.
   std::string tap_answer_;
-  QPolygonF candidate_;    // The node's outline of the button found at the tap (image pixels).
+  QPolygonF candidate_;  // The node's outline of the button found at the tap (image pixels).
+  // The tracked button of the last gate (centre, radius; image pixels) and that frame's stamp.
+  std::optional<QPointF> ring_centre_;
+  double ring_radius_px_ = 0;
+  double ring_stamp_s_ = -1;
+  double drawn_ring_stamp_s_ = -1;
   bool answered_ = false;  // Yes or Cancel went out for the tap's candidate.
   QPointF tap_px_;
   bool stop_acknowledged_ = false;

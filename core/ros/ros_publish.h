@@ -124,7 +124,8 @@ geometry_msgs::PoseStamped ButtonTargetMessage(const ArmTarget& target);
 // held, target_published; message = the verdict's message. The frame that answered a tap adds
 // `tap` (TapAnswerKey) and `tap_stamp` (the tapped picture's stamp, seconds, "%.9f"), and
 // with a candidate `candidate`, its outline (OutlineText), so a remote panel asks about what the
-// node found, not about the spot tapped.
+// node found, not about the spot tapped. A frame that tracks the button adds `ring`: "x,y,r",
+// its centre and radius in image pixels.
 diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& result);
 // The answer to the tap a frame handled: "found" (a candidate, the picker asks), "no_button",
 // or the refusal's TapRefusalKey ("no_picture", "too_old", "stopped").

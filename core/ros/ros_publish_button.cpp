@@ -67,6 +67,14 @@ diagnostic_msgs::DiagnosticStatus ButtonGateStatus(const ButtonFrameResult& resu
                 Pair("target_published", result.target_published ? "true" : "false")};
   if (!result.arm_pose_missing.empty())
     out.values.push_back(Pair("arm_pose_missing", result.arm_pose_missing));
+  const PickerFrame& f = result.picker;
+  if (f.track.found && f.state != PickerState::kIdle && f.state != PickerState::kConfirm &&
+      f.state != PickerState::kStopped) {  // The tracked button, for a remote panel's ring.
+    char ring[96];
+    std::snprintf(ring, sizeof(ring), "%.1f,%.1f,%.1f", f.track.center.x, f.track.center.y,
+                  f.track.radius_px);
+    out.values.push_back(Pair("ring", ring));
+  }
   if (result.tap_answered) {  // The answer to a tap, on the frame that handled it.
     out.values.push_back(Pair("tap", TapAnswerKey(result)));
     char stamp[32];

@@ -85,6 +85,20 @@ StatusOr<std::vector<cv::Point>> ParseOutline(const std::string& text) {
   return points;
 }
 
+// A ring written as "x,y,r" (finite, r > 0); nullopt for anything else.
+std::optional<cv::Point3d> ParseRing(const std::string& text) {
+  double v[3];
+  const char* s = text.c_str();
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtod(s, &end);
+    if (end == s || !std::isfinite(v[i]) || *end != (i < 2 ? ',' : '\0')) return std::nullopt;
+    s = end + 1;
+  }
+  if (!(v[2] > 0)) return std::nullopt;
+  return cv::Point3d(v[0], v[1], v[2]);
+}
+
 // A stamp written as decimal seconds; 0 for text that is not one whole finite number.
 double ParseStamp(const std::string& text) {
   char* end = nullptr;
@@ -283,6 +297,7 @@ struct RosRemote::Impl {
         if (kv.key == "target_published") u->gate.target_published = yes;
         if (kv.key == "tap") u->gate.tap = kv.value;
         if (kv.key == "tap_stamp") u->gate.tap_stamp_s = ParseStamp(kv.value);
+        if (kv.key == "ring") u->gate.ring = ParseRing(kv.value);
         if (kv.key == "candidate") {
           StatusOr<std::vector<cv::Point>> outline = ParseOutline(kv.value);
           if (outline.ok()) {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,8 @@ struct RemoteGate {
   // sent none or its text was not an outline (then `bad_candidate` says why).
   std::vector<cv::Point> candidate;
   std::string bad_candidate;
+  // The tracked button on this frame (centre and radius, image pixels), when the node tracks it.
+  std::optional<cv::Point3d> ring;
 };
 
 // One thing that arrived, or a change of the connection. Immutable once handed out.

@@ -176,6 +176,16 @@ TEST_F(RosOperatorGui, TapAndYesOnTheNodesPictureGiveATargetAtTheTrueButton) {
       << outline.boundingRect().center().x() << ", " << outline.boundingRect().center().y();
   EXPECT_FALSE(remote_->last_target_m().has_value());
   QTest::mouseClick(panel_->yes_button(), Qt::LeftButton);
+  // While the node tracks the button the panel rings it, on the frame the ring was found in.
+  ASSERT_TRUE(PumpUntil([&] { return panel_->image_view()->ring_centre().has_value(); }, 60))
+      << testing::ReadTextFile(log_);
+  const int ring_frame = FrameAt(rec_, remote_->ring_stamp_s());
+  ASSERT_GE(ring_frame, 0);
+  const QPointF ring = *panel_->image_view()->ring_centre();
+  EXPECT_LT(
+      QLineF(ring, QPointF(target->pixel[ring_frame].x(), target->pixel[ring_frame].y())).length(),
+      3.0)
+      << "frame " << ring_frame;
   int code = -1;
   ASSERT_TRUE(PumpUntil(
       [&] {

@@ -281,5 +281,22 @@ TEST(RosPublish, ButtonGateCarriesTheTapAnswerOnTheFrameThatTookIt) {
   EXPECT_FALSE(TapRefusalOfKey("refused_by_a_newer_node").has_value());
 }
 
+// A frame that tracks the button says where, for a remote panel's ring; others do not.
+TEST(RosPublish, ButtonGateRingsTheTrackedButtonOnly) {
+  ButtonFrameResult result;
+  result.picker.state = PickerState::kTracking;
+  result.picker.track.found = true;
+  result.picker.track.center = {321.25, 200.5};
+  result.picker.track.radius_px = 9.46;
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "ring"), "321.2,200.5,9.5");
+  result.picker.track.found = false;  // Lost.
+  EXPECT_EQ(ValueOf(ButtonGateStatus(result), "ring"), "(absent)");
+  result.picker.track.found = true;
+  for (PickerState s : {PickerState::kIdle, PickerState::kConfirm, PickerState::kStopped}) {
+    result.picker.state = s;
+    EXPECT_EQ(ValueOf(ButtonGateStatus(result), "ring"), "(absent)") << PickerStateKey(s);
+  }
+}
+
 }  // namespace
 }  // namespace sightline

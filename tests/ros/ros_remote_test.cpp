@@ -502,13 +502,31 @@ TEST(RosRemote, TheGatesTapAnswerArrivesWithTheTappedPicturesStamp) {
     }
     diagnostics.publish(array);
   }
-  ASSERT_TRUE(WaitFor([&] { return received.Of(RemoteUpdate::Kind::kGate).size() >= 8; }, 20));
+  // The tracked button's ring, and rings that are none.
+  frame.tap_answered = false;
+  frame.picker.state = PickerState::kTracking;
+  frame.picker.track.found = true;
+  frame.picker.track.center = {50.5, 60};
+  frame.picker.track.radius_px = 7;
+  array.status = {ButtonGateStatus(frame)};
+  diagnostics.publish(array);
+  const char* const bad_rings[] = {"1,2", "1,2,-3", "nan,2,3", "1,2,3,4", "1;2;3"};
+  for (const char* text : bad_rings) {
+    for (auto& kv : array.status[0].values) {
+      if (kv.key == "ring") kv.value = text;
+    }
+    diagnostics.publish(array);
+  }
+  ASSERT_TRUE(WaitFor([&] { return received.Of(RemoteUpdate::Kind::kGate).size() >= 14; }, 20));
   const auto all = received.Of(RemoteUpdate::Kind::kGate);
-  ASSERT_EQ(all.size(), 8u);
+  ASSERT_EQ(all.size(), 14u);
+  ASSERT_TRUE(all[8]->gate.ring.has_value());
+  EXPECT_EQ(*all[8]->gate.ring, cv::Point3d(50.5, 60, 7));
+  for (size_t i = 9; i < all.size(); ++i) EXPECT_FALSE(all[i]->gate.ring) << bad_rings[i - 9];
   EXPECT_EQ(all[3]->gate.tap, "found");
   EXPECT_EQ(all[3]->gate.candidate, frame.candidate_outline);
   EXPECT_EQ(all[3]->gate.bad_candidate, "");
-  for (size_t i = 4; i < all.size(); ++i) {
+  for (size_t i = 4; i < 8; ++i) {
     EXPECT_TRUE(all[i]->gate.candidate.empty()) << bad[i - 4];
     EXPECT_NE(all[i]->gate.bad_candidate.find("'candidate'"), std::string::npos)
         << bad[i - 4] << ": " << all[i]->gate.bad_candidate;
