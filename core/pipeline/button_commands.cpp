@@ -1,5 +1,5 @@
-// The operator's commands to a running button pipeline (ButtonCommands) and the words of a
-// tap's refusal.
+// The operator's commands to a running button pipeline (ButtonCommands) and the message keys of
+// a tap's refusal.
 #include <utility>
 
 #include "core/pipeline/button_result.h"
