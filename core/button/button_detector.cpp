@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/button/option_check.h"
+#include "core/button/radial_outline.h"
 #include "core/button/region_classifier.h"
 
 namespace sightline {
@@ -65,6 +66,12 @@ bool ButtonDetectorOptions::IsValid(std::string* error) const {
   if (!(circle_min_radius_px >= 2 && circle_max_radius_px > circle_min_radius_px)) {
     return Invalid(
         error, "button.detect.circle_min_radius_px must be >= 2 and below circle_max_radius_px");
+  }
+  if (!(radial_min_contrast >= 1 && radial_min_contrast <= 100)) {
+    return Invalid(error, "button.detect.radial_min_contrast must lie in [1, 100]");
+  }
+  if (!(radial_min_edge > 0 && radial_min_edge <= 255)) {
+    return Invalid(error, "button.detect.radial_min_edge must lie in (0, 255]");
   }
   if (!(sift_max_radius_px == 0 || (sift_max_radius_px >= 4 && sift_max_radius_px <= 1000))) {
     return Invalid(error, "button.detect.sift_max_radius_px must be 0 or lie in [4, 1000]");
@@ -126,6 +133,14 @@ OptionTable<ButtonDetectorOptions> ButtonDetectorOptions::Describe() {
               "Smallest Hough circle radius.")
       .Double("circle_max_radius_px", &O::circle_max_radius_px, "px", 3, 4000, 1,
               "Largest Hough circle radius.")
+      .Bool("radial", &O::radial,
+            "multiscale: when no outline holds the tap, look for closed outlines of the "
+            "strongest radial edges around it (faint or thin-ringed buttons).")
+      .Double("radial_min_edge", &O::radial_min_edge, "grey/px", 0.5, 255, 0.5,
+              "Edge strength most rays of such an outline must reach.")
+      .Double("radial_min_contrast", &O::radial_min_contrast, "", 1, 100, 0.1,
+              "A ray of such an outline is on an edge when that edge is also this many times "
+              "the median edge along the ray in its radius band (texture stands out less).")
       .Double("sift_margin_px", &O::sift_margin_px, "px", 0, 200, 1,
               "SIFT keypoints up to this far outside the region belong to the button model.")
       .Double("sift_margin_radius", &O::sift_margin_radius, "radii", 0, 20, 0.1,
@@ -409,6 +424,51 @@ const Candidate* ChooseContaining(const std::vector<Candidate>& candidates, cv::
   return best;
 }
 
+// multiscale fallback: closed outlines of the strongest radial edges around the tap, found on
+// `grey` (the full-resolution frame: small buttons keep their shape) and scaled by `scale` to
+// the working image, as candidates: most rays on an edge first and, among equals, the smaller.
+std::vector<Candidate> RadialCandidates(const cv::Mat& grey, double scale, cv::Point2d tap,
+                                        const ButtonDetectorOptions& o, double image_area) {
+  RadialOutlineOptions r;
+  r.min_radius_px = 3;
+  r.max_radius_px = std::min(o.circle_max_radius_px, o.search_radius_px) / scale;
+  r.min_edge = o.radial_min_edge;
+  r.min_contrast = o.radial_min_contrast;
+  r.min_support = o.min_coverage;
+  r.blur_sigma_px = o.blur_sigma_px;
+  std::vector<RadialOutline> outlines = RadialOutlines(grey, tap, r);
+  std::stable_sort(outlines.begin(), outlines.end(),
+                   [](const RadialOutline& a, const RadialOutline& b) {
+                     return a.support > b.support;  // Bands come smallest first.
+                   });
+  std::vector<Candidate> out;
+  for (RadialOutline& outline : outlines) {
+    for (cv::Point& p : outline.points) {
+      p = cv::Point(int(std::lround(p.x * scale)), int(std::lround(p.y * scale)));
+    }
+    std::optional<Candidate> c = CompactHull(outline.points, o.min_area_px,
+                                             o.max_area_fraction * image_area, o.region_max_aspect);
+    if (c) out.push_back(std::move(*c));
+  }
+  return out;
+}
+
+// The first of candidates[first...] (radial outlines, best first) whose centroid lies within
+// max_offset radii of the tap and that holds no other buttons.
+const Candidate* ChooseRadial(const std::vector<Candidate>& candidates, size_t first,
+                              cv::Point2d tap, double max_offset) {
+  for (size_t i = first; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
+    const double offset = std::hypot(c.centroid.x - tap.x, c.centroid.y - tap.y);
+    if (offset > max_offset * std::sqrt(c.area / M_PI)) continue;
+    if (HoldsOtherButtons(c, candidates, tap) || HoldsRegionsLikeTheTapped(c, candidates, tap)) {
+      continue;
+    }
+    return &c;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point2d tap) const {
@@ -451,6 +511,13 @@ StatusOr<ButtonModel> ButtonDetector::FindRegion(const cv::Mat& image, cv::Point
         cv::Rect(0, 0, work.cols, work.rows);
     candidates = MultiScaleCandidates(work, window, options_);
     best = ChooseContaining(candidates, t, options_.max_centre_offset, options_.size_bias_px);
+    if (!best && options_.radial) {
+      const std::vector<Candidate> outlines =
+          RadialCandidates(grey, scale, tap, options_, work.cols * work.rows);
+      const size_t first = candidates.size();
+      candidates.insert(candidates.end(), outlines.begin(), outlines.end());
+      best = ChooseRadial(candidates, first, t, options_.max_centre_offset);
+    }
     if (!best) {
       return NotFound("no button here: no outline around the tap with its centre within " +
                       std::to_string(options_.max_centre_offset).substr(0, 4) + " radii of it");

@@ -6,7 +6,10 @@
 //    two Canny threshold pairs plus Hough circles confirmed by edges along their rim (round
 //    buttons with a thin ring); the region that contains the tap with its centroid nearest
 //    the tap relative to its radius (at most max_centre_offset radii away; size_bias_px favours
-//    the button's outline over a glyph on it), skipping regions that hold other buttons.
+//    the button's outline over a glyph on it), skipping regions that hold other buttons. When
+//    no region fits, the closed outlines of the strongest radial edges around the tap
+//    (radial_outline.h, on the full-resolution frame; faint rims and thin rings whose Canny
+//    contours break): the one with most rays on an edge, among equals the smaller.
 //  - seed (default): the seed's rule, contours at one scale and the centroid nearest the tap within
 //    max_tap_distance_px.
 // Both skip a region that holds, besides a smaller region at the tap, two or more regions like
@@ -55,6 +58,10 @@ struct ButtonDetectorOptions {
   double circle_support = 0.6;  // Fraction of the circle's rim on an edge to keep it.
   double circle_min_radius_px = 8;    // Smallest circle radius [px].
   double circle_max_radius_px = 120;  // Largest circle radius [px].
+  bool radial = true;                 // No region at the tap: closed outlines of the strongest
+                                      // radial edges around it (radial_outline.h).
+  double radial_min_edge = 4;         // Edge a ray of such an outline must reach [grey/px].
+  double radial_min_contrast = 3;     // ... and this many times the ray's median edge.
   double sift_margin_px = 8;          // Features up to this far outside the region are kept [px]
   double sift_margin_radius = 5.0;    // ... or this many region radii, if larger.
   double sift_max_radius_px = 12;     // Larger regions: SIFT on the crop scaled down so the

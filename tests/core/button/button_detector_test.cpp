@@ -120,6 +120,46 @@ TEST(ButtonDetector, TapOnBlankWallIsNoButtonHere) {
   EXPECT_NE(model.status().message().find("no button here"), std::string::npos);
 }
 
+// Three flat keys on a noisy plate (sigma 2.5 grey levels) whose only outline is a 2 px rim 16
+// levels darker: too faint for the contour step's Canny thresholds (at 20 levels it finds
+// them), not for the radial outlines.
+cv::Mat FaintKeys() {
+  cv::Mat noise(480, 640, CV_32F);
+  cv::RNG rng(5);
+  rng.fill(noise, cv::RNG::NORMAL, 128, 2.5);
+  cv::Mat image;
+  noise.convertTo(image, CV_8U);
+  for (int x : {200, 320, 440}) {
+    cv::circle(image, {x, 240}, 30, cv::Scalar(112), 2, cv::LINE_AA);
+    cv::putText(image, std::to_string(x / 100), {x - 7, 248}, cv::FONT_HERSHEY_SIMPLEX, 0.6,
+                cv::Scalar(110), 1, cv::LINE_AA);
+  }
+  return image;
+}
+
+TEST(ButtonDetector, AFaintRimTheContoursBreakIsClosedByTheRadialOutline) {
+  ButtonDetectorOptions o;
+  o.method = "multiscale";
+  o.radial = false;
+  for (int x : {200, 320, 440}) {
+    EXPECT_EQ(ButtonDetector(o).FindRegion(FaintKeys(), {x + 3.0, 236}).status().code(),
+              StatusCode::kNotFound)
+        << x;
+  }
+  o.radial = true;
+  for (int x : {200, 320, 440}) {
+    const auto region = ButtonDetector(o).FindRegion(FaintKeys(), {x + 3.0, 236});
+    ASSERT_TRUE(region.ok()) << x << ": " << region.status().message();
+    EXPECT_LT(cv::norm(region->center - cv::Point2d(x, 240)), 2.5) << x;
+    EXPECT_NEAR(region->RadiusPx(), 30, 3) << x;
+  }
+  // Between the keys: nothing.
+  EXPECT_EQ(ButtonDetector(o).FindRegion(FaintKeys(), {260, 240}).status().code(),
+            StatusCode::kNotFound);
+  EXPECT_EQ(ButtonDetector(o).FindRegion(FaintKeys(), {320, 400}).status().code(),
+            StatusCode::kNotFound);
+}
+
 TEST(ButtonDetector, BadInputIsAClearStatus) {
   ButtonDetector detector;
   EXPECT_EQ(detector.Detect(cv::Mat(), {1, 1}).status().code(), StatusCode::kInvalidArgument);
@@ -135,6 +175,16 @@ TEST(ButtonDetector, BadInputIsAClearStatus) {
   EXPECT_NE(error.find("canny"), std::string::npos);
   EXPECT_EQ(ButtonDetector(o).Detect(DrawnPanel(), {200, 140}).status().code(),
             StatusCode::kInvalidArgument);
+  for (double bad : {0.0, -1.0, 300.0, double(NAN)}) {
+    o = ButtonDetectorOptions();
+    o.radial_min_edge = bad;
+    EXPECT_FALSE(o.IsValid(&error)) << bad;
+    EXPECT_NE(error.find("radial_min_edge"), std::string::npos);
+    o = ButtonDetectorOptions();
+    o.radial_min_contrast = bad;
+    EXPECT_FALSE(o.IsValid(&error)) << bad;
+    EXPECT_NE(error.find("radial_min_contrast"), std::string::npos);
+  }
 }
 
 }  // namespace
