@@ -380,7 +380,9 @@ std::vector<Candidate> MultiScaleCandidates(cv::Mat& work, cv::Rect window,
 
 // multiscale: true when `outer` holds two or more distinct button-sized regions (4-50 % of its
 // area) away from its centre that do not hold the tap: a plate or a group of buttons. Glyphs
-// and slots on a button are smaller or near its centre.
+// and slots on a button are smaller or near its centre; regions that overlap (centres less
+// than 0.9 of their summed radii apart) count once: the halves of one large digit on a small
+// button are not two buttons, a plate's buttons do not overlap.
 bool HoldsOtherButtons(const Candidate& outer, const std::vector<Candidate>& all, cv::Point2d tap) {
   const double off_centre = 0.4 * std::sqrt(outer.area / M_PI);
   std::vector<const Candidate*> held;
@@ -392,8 +394,7 @@ bool HoldsOtherButtons(const Candidate& outer, const std::vector<Candidate>& all
     const double r = std::sqrt(c.area / M_PI);
     bool seen = false;
     for (const Candidate* h : held) {
-      seen =
-          seen || cv::norm(c.centroid - h->centroid) < 0.5 * std::max(r, std::sqrt(h->area / M_PI));
+      seen = seen || cv::norm(c.centroid - h->centroid) < 0.9 * (r + std::sqrt(h->area / M_PI));
     }
     if (seen) continue;
     held.push_back(&c);

@@ -1,8 +1,7 @@
 // Button detection from a tap (the seed's plan phase): outlines of the still frame's edges,
 // each closed by its convex hull, the one that best fits the tap, its region, and SIFT
 // features on it. Two methods:
-//  - multiscale (opt-in for now): in a window around the tap, contours of the edges at two blurs
-//  and
+//  - multiscale (default): in a window around the tap, contours of the edges at two blurs and
 //    two Canny threshold pairs plus Hough circles confirmed by edges along their rim (round
 //    buttons with a thin ring); the region that contains the tap with its centroid nearest
 //    the tap relative to its radius (at most max_centre_offset radii away; size_bias_px favours
@@ -10,8 +9,8 @@
 //    no region fits, the closed outlines of the strongest radial edges around the tap
 //    (radial_outline.h, on the full-resolution frame; faint rims and thin rings whose Canny
 //    contours break): the one with most rays on an edge, among equals the smaller.
-//  - seed (default): the seed's rule, contours at one scale and the centroid nearest the tap within
-//    max_tap_distance_px.
+//  - seed: the seed's rule, contours at one scale and the centroid nearest the tap within
+//    max_tap_distance_px (on real panels it selects a neighbouring button or a label more often).
 // Both skip a region that holds, besides a smaller region at the tap, two or more regions like
 // that one: a plate full of buttons, whose centroid relative to its size can lie nearer the tap
 // than the small tapped button's own.
@@ -32,24 +31,24 @@ namespace sightline {
 // Detector options. Keys "button.detect.*". Pixel sizes refer to the working image, the still
 // frame scaled so its longer side is at most working_size_px.
 struct ButtonDetectorOptions {
-  std::string method = "seed";      // seed or multiscale (see the file comment).
-  int working_size_px = 960;        // Longer image side the contours are searched at [px].
-  double blur_sigma_px = 1.2;       // Gaussian blur before edge detection [px].
-  double canny_low = 30;            // Canny lower hysteresis threshold [grey levels].
-  double canny_high = 90;           // Canny upper hysteresis threshold [grey levels].
-  int close_px = 3;                 // Morphological closing of the edge map (0 = none) [px].
-  double min_area_px = 150;         // Smallest region area [px^2].
-  double max_area_fraction = 0.08;  // Largest region area as a fraction of the image.
-  double min_coverage = 0.75;       // Fraction of directions (16 sectors) around a region's
-                                    // centre in which its outline lies.
-  double max_aspect = 3.0;          // Longest / shortest side of the rotated bounding box.
-  double max_tap_distance_px = 35;  // seed: centroid farther from the tap: not this button [px].
+  std::string method = "multiscale";  // multiscale or seed (see the file comment).
+  int working_size_px = 960;          // Longer image side the contours are searched at [px].
+  double blur_sigma_px = 1.2;         // Gaussian blur before edge detection [px].
+  double canny_low = 30;              // Canny lower hysteresis threshold [grey levels].
+  double canny_high = 90;             // Canny upper hysteresis threshold [grey levels].
+  int close_px = 3;                   // Morphological closing of the edge map (0 = none) [px].
+  double min_area_px = 150;           // Smallest region area [px^2].
+  double max_area_fraction = 0.08;    // Largest region area as a fraction of the image.
+  double min_coverage = 0.75;         // Fraction of directions (16 sectors) around a region's
+                                      // centre in which its outline lies.
+  double max_aspect = 3.0;            // Longest / shortest side of the rotated bounding box.
+  double max_tap_distance_px = 35;    // seed: centroid farther from the tap: not this button [px].
   // multiscale only:
   double search_radius_px = 200;    // Half size of the window around the tap searched [px].
   double second_blur = 2.0;         // The second scale's blur, times blur_sigma_px.
   double canny_spread = 2.0;        // Two Canny pairs: (canny_low, canny_high) times
                                     // 2 / (1 + spread) and 2 spread / (1 + spread).
-  double max_centre_offset = 0.75;  // Region centroid at most this many radii from the tap.
+  double max_centre_offset = 0.85;  // Region centroid at most this many radii from the tap.
   double region_max_aspect = 2.2;   // Longest / shortest side of a region (max_aspect: seed).
   double size_bias_px = 4;      // Ranking (offset + bias) / radius: of the regions about the tap,
                                 // the larger (the button around its glyph) wins [px].
