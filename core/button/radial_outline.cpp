@@ -100,19 +100,16 @@ std::vector<RadialOutline> RadialOutlines(const cv::Mat& grey, cv::Point2d centr
     const std::vector<int> path = StrongestPath(edges, lo, hi, o.min_radius_px);
     values.resize(hi - lo + 1);
     int on_edge = 0;
-    double edge_sum = 0;
     for (int k = 0; k < o.rays; ++k) {
       const float* row = edges.ptr<float>(k);
       std::copy(row + lo, row + hi + 1, values.begin());
       std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
       const float e = row[path[k]];
-      edge_sum += e;
       on_edge += e >= std::max(o.min_edge, o.min_contrast * values[values.size() / 2]);
     }
     RadialOutline outline;
     outline.support = double(on_edge) / o.rays;
     if (outline.support < o.min_support) continue;
-    outline.mean_edge = edge_sum / o.rays;
     outline.points.resize(o.rays);
     for (int k = 0; k < o.rays; ++k) {
       const double angle = 2 * M_PI * k / o.rays, r = o.min_radius_px - 1 + path[k];

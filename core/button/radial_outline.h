@@ -26,7 +26,6 @@ struct RadialOutlineOptions {
 struct RadialOutline {
   std::vector<cv::Point> points;  // One per ray, image pixels.
   double support = 0;             // Fraction of rays on an edge (see above).
-  double mean_edge = 0;           // Mean edge strength along the path [grey levels per px].
 };
 
 // Outlines around `centre` in `grey` (CV_8UC1), at most one per radius band, smallest band
